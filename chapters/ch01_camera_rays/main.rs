@@ -1,0 +1,29 @@
+//! Chapter 1 — camera rays: one ray per pixel, coloured by its direction (d̂ + 1)/2.
+//! See README.md beside this file.
+
+use std::process::ExitCode;
+
+use clap::Parser;
+use whitted::cli::{Common, run};
+use whitted::render::Stage;
+
+/// Chapter 1 of whitted: builds the viewing coordinates and the near plane from the scene's
+/// camera and shoots one ray through each pixel centre. Each pixel shows its ray's direction
+/// as a colour: red = x, green = y, blue = z, each mapped from [−1, 1] to [0, 1].
+#[derive(Parser)]
+#[command(name = "ch01_camera_rays", version)]
+struct Args {
+    #[command(flatten)]
+    common: Common,
+}
+
+fn main() -> ExitCode {
+    let args = Args::parse();
+    run(
+        "ch01_camera_rays",
+        Stage::CameraRays,
+        &args.common,
+        None,
+        None,
+    )
+}

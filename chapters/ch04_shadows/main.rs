@@ -1,0 +1,31 @@
+//! Chapter 4 — shadows: a feeler ray towards each light.
+//! See README.md beside this file.
+
+use std::process::ExitCode;
+
+use clap::Parser;
+use whitted::cli::{Common, ViewArg, run};
+use whitted::render::Stage;
+
+/// Chapter 4 of whitted: chapter 3's shading, where each light first sends a feeler ray
+/// S(u) = P + (L − P)·u from the hit point; an opaque object with u ∈ ]0, 1] leaves the point
+/// with ambient light only, a translucent one lets its transmission share through.
+#[derive(Parser)]
+#[command(name = "ch04_shadows", version)]
+struct Args {
+    #[command(flatten)]
+    common: Common,
+    #[command(flatten)]
+    view: ViewArg,
+}
+
+fn main() -> ExitCode {
+    let args = Args::parse();
+    run(
+        "ch04_shadows",
+        Stage::Shadows,
+        &args.common,
+        Some(&args.view),
+        None,
+    )
+}

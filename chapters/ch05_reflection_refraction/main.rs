@@ -1,0 +1,33 @@
+//! Chapter 5 — reflection and refraction: the complete Whitted renderer.
+//! See README.md beside this file.
+
+use std::process::ExitCode;
+
+use clap::Parser;
+use whitted::cli::{Common, Tracing, ViewArg, run};
+use whitted::render::Stage;
+
+/// Chapter 5 of whitted, the complete renderer: I = I_a + I_d + I_s + I_l + I_r. Mirror
+/// materials spawn reflected rays l = d − 2(d·n)n, translucent ones transmitted rays by
+/// Snell's law (with total internal reflection), recursively up to --max-depth.
+#[derive(Parser)]
+#[command(name = "ch05_reflection_refraction", version)]
+struct Args {
+    #[command(flatten)]
+    common: Common,
+    #[command(flatten)]
+    view: ViewArg,
+    #[command(flatten)]
+    tracing: Tracing,
+}
+
+fn main() -> ExitCode {
+    let args = Args::parse();
+    run(
+        "ch05_reflection_refraction",
+        Stage::ReflectionRefraction,
+        &args.common,
+        Some(&args.view),
+        Some(&args.tracing),
+    )
+}

@@ -1,0 +1,151 @@
+//! Chapter 1 — camera rays (notes: "Principles of Ray Tracing").
+//!
+//! The synthetic camera is the viewing coordinate system: the eye e and three unit vectors
+//! u (right), v (up) and n (backwards, away from what the camera looks at). The near plane
+//! sits at distance N in front of the eye, along −n, and spans 2W × 2H where
+//!
+//! ```text
+//! H = N·tan(θ/2)        θ: vertical viewing angle, converted from degrees to radians
+//! W = H·A               A = width / height, the aspect ratio
+//! (u_c, v_r) = (−W + W·2c/n,  −H + H·2r/m)        column c of n, row r of m (r from the bottom)
+//! d = −N·n + W(2c/n − 1)·u + H(2r/m − 1)·v
+//! r(t) = e + d·t
+//! ```
+//!
+//! The notes' (c, r) name a pixel's lower-left *corner*: c = 0 lands on the left edge −W and
+//! c = n on the right edge +W. The renderer shoots through pixel *centres*, (c + ½, r + ½), so
+//! that the image is symmetric; see `chapters/ch01_camera_rays/README.md`.
+//!
+//! ```toml
+//! [camera]
+//! eye = [0.0, 2.0, 8.0]
+//! look_at = [0.0, 0.5, 0.0]
+//! up = [0.0, 1.0, 0.0]
+//! fov = 60.0
+//! near = 1.0
+//! ```
+
+use crate::ray::Ray;
+use crate::real::{Real, Vec3};
+
+/// H = N·tan(θ/2): half the height of the near plane, for a vertical viewing angle θ in degrees.
+#[must_use]
+pub fn near_plane_half_height(near: Real, fov_degrees: Real) -> Real {
+    near * (fov_degrees.to_radians() / 2.0).tan() // H = N tan(π/180 · θ/2)
+}
+
+/// W = H·A: half the width of the near plane for the aspect ratio A = width / height.
+#[must_use]
+pub fn near_plane_half_width(half_height: Real, aspect: Real) -> Real {
+    half_height * aspect // W = H A
+}
+
+/// The notes' (u_c, v_r) = (−W + W·2c/n, −H + H·2r/m): where pixel (c, r) of an n × m window
+/// lands on the near plane. Integer c, r give the pixel's lower-left corner; add ½ for its centre.
+#[must_use]
+pub fn pixel_on_near_plane(
+    c: Real,
+    r: Real,
+    columns: Real,
+    rows: Real,
+    half_width: Real,
+    half_height: Real,
+) -> (Real, Real) {
+    let u_c = -half_width + half_width * 2.0 * c / columns;
+    let v_r = -half_height + half_height * 2.0 * r / rows;
+    (u_c, v_r)
+}
+
+/// The viewing coordinate system (u, v, n) of an eye looking at a point, with `up` as the
+/// approximate up direction. Returns `None` when the view direction is zero or parallel to `up`.
+#[must_use]
+pub fn viewing_basis(eye: Vec3, look_at: Vec3, up: Vec3) -> Option<(Vec3, Vec3, Vec3)> {
+    let n = (eye - look_at).try_normalize()?; // n points from the scene back to the eye
+    let u = up.cross(n).try_normalize()?; // u = up × n, to the right
+    let v = n.cross(u); // v = n × u, already unit
+    Some((u, v, n))
+}
+
+/// A pinhole camera with the notes' parameters, and the derived near-plane size.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Camera {
+    /// The eye e, origin of the viewing coordinates.
+    pub eye: Vec3,
+    /// Unit vector to the right on the near plane.
+    pub u: Vec3,
+    /// Unit vector up on the near plane.
+    pub v: Vec3,
+    /// Unit vector pointing backwards (the camera looks along −n).
+    pub n: Vec3,
+    /// Distance N from the eye to the near plane.
+    pub near: Real,
+    /// Vertical viewing angle θ in degrees.
+    pub fov: Real,
+    /// Number of pixel columns (the notes' n).
+    pub columns: u32,
+    /// Number of pixel rows (the notes' m).
+    pub rows: u32,
+    /// H, half the near plane's height.
+    pub half_height: Real,
+    /// W, half the near plane's width.
+    pub half_width: Real,
+}
+
+impl Camera {
+    /// Builds the camera. Returns `None` when the basis is degenerate (see [`viewing_basis`]).
+    #[must_use]
+    pub fn new(
+        eye: Vec3,
+        look_at: Vec3,
+        up: Vec3,
+        fov: Real,
+        near: Real,
+        columns: u32,
+        rows: u32,
+    ) -> Option<Self> {
+        let (u, v, n) = viewing_basis(eye, look_at, up)?;
+        let aspect = columns as Real / rows as Real; // A
+        let half_height = near_plane_half_height(near, fov);
+        let half_width = near_plane_half_width(half_height, aspect);
+        Some(Self {
+            eye,
+            u,
+            v,
+            n,
+            near,
+            fov,
+            columns,
+            rows,
+            half_height,
+            half_width,
+        })
+    }
+
+    /// The notes' direction d = −N·n + W(2c/n − 1)·u + H(2r/m − 1)·v for a (possibly
+    /// fractional) column c and row r counted from the bottom. d reaches the near plane at t = 1.
+    #[must_use]
+    pub fn direction(&self, c: Real, r: Real) -> Vec3 {
+        let cols = self.columns as Real;
+        let rows = self.rows as Real;
+        -self.near * self.n
+            + self.half_width * (2.0 * c / cols - 1.0) * self.u
+            + self.half_height * (2.0 * r / rows - 1.0) * self.v
+    }
+
+    /// The ray r(t) = e + d·t through the notes' pixel corner (c, r).
+    #[must_use]
+    pub fn ray(&self, c: Real, r: Real) -> Ray {
+        Ray::new(self.eye, self.direction(c, r))
+    }
+
+    /// The ray through a point of an image pixel, addressed as images are stored: column `x`
+    /// from the left, row `y` from the *top*; (`dx`, `dy`) ∈ [0, 1)² is the position inside the
+    /// pixel, (½, ½) being its centre.
+    #[must_use]
+    pub fn pixel_ray(&self, x: u32, y: u32, dx: Real, dy: Real) -> Ray {
+        let c = x as Real + dx;
+        // row r counts from the bottom: the image row y (from the top) covers r ∈ [m−1−y, m−y]
+        let r = (self.rows - 1 - y) as Real + (1.0 - dy);
+        self.ray(c, r)
+    }
+}

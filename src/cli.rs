@@ -1,0 +1,155 @@
+//! The command line every chapter binary shares.
+//!
+//! ```text
+//! chNN [SCENE] [-o OUT.png] [--width W] [--height H]      every chapter
+//!      [--view color|flat|normals|depth]                   chapters 2–5
+//!      [--samples N] [--max-depth N] [--stats]             chapter 5
+//! ```
+//!
+//! Without SCENE the embedded default scene `scenes/showcase.toml` is rendered. Every failure
+//! is one line on stderr, `error: …`, and exit status 2; nothing is written unless the whole
+//! image was rendered.
+
+use std::path::{Path, PathBuf};
+use std::process::ExitCode;
+use std::time::Instant;
+
+use clap::Args;
+
+use crate::error::Error;
+use crate::output;
+use crate::real::Real;
+use crate::render::{self, Options, Stage, View};
+use crate::scene::{self, Scene, load::MAX_SIDE};
+
+/// The default scene, compiled into every binary.
+pub const SHOWCASE: &str = include_str!("../scenes/showcase.toml");
+/// The name the default scene goes by in messages.
+pub const SHOWCASE_NAME: &str = "scenes/showcase.toml";
+
+/// Arguments shared by every chapter.
+#[derive(Args, Debug, Clone)]
+pub struct Common {
+    /// Scene file (TOML). Without it, the built-in showcase scene (scenes/showcase.toml) is rendered.
+    pub scene: Option<PathBuf>,
+    /// Where to write the PNG image [default: <binary name>.png in the current directory].
+    #[arg(short, long, value_name = "OUT.png")]
+    pub output: Option<PathBuf>,
+    /// Image width in pixels; alone, the height follows the scene's aspect ratio.
+    #[arg(long, value_name = "W", value_parser = clap::value_parser!(u32).range(1..=MAX_SIDE as i64))]
+    pub width: Option<u32>,
+    /// Image height in pixels; alone, the width follows the scene's aspect ratio.
+    #[arg(long, value_name = "H", value_parser = clap::value_parser!(u32).range(1..=MAX_SIDE as i64))]
+    pub height: Option<u32>,
+}
+
+/// The view switch of chapters 2–5.
+#[derive(Args, Debug, Clone)]
+pub struct ViewArg {
+    /// What each pixel shows: the chapter's colour, the flat material colour, normals, or depth.
+    #[arg(long, value_enum, default_value_t = View::Color)]
+    pub view: View,
+}
+
+/// Chapter 5's tracing controls.
+#[derive(Args, Debug, Clone)]
+pub struct Tracing {
+    /// Samples per pixel (jittered from a fixed seed: the same image every run) [default: the scene's, else 1].
+    #[arg(long, value_name = "N", value_parser = clap::value_parser!(u32).range(1..=4096))]
+    pub samples: Option<u32>,
+    /// Maximum recursion depth of mirror and transmitted rays [default: the scene's, else 5].
+    #[arg(long, value_name = "N", value_parser = clap::value_parser!(u32).range(0..=64))]
+    pub max_depth: Option<u32>,
+    /// Print rays cast by kind, time and rays per second.
+    #[arg(long)]
+    pub stats: bool,
+}
+
+/// Reads the scene named on the command line, or the embedded showcase.
+pub fn read_scene(path: Option<&Path>) -> Result<Scene, Error> {
+    match path {
+        Some(p) => scene::load(p),
+        None => scene::parse(SHOWCASE, SHOWCASE_NAME),
+    }
+}
+
+/// The image size after the command line's overrides, keeping the scene's aspect ratio when
+/// only one side is given.
+#[must_use]
+pub fn image_size(scene: &Scene, width: Option<u32>, height: Option<u32>) -> (u32, u32) {
+    let aspect = scene.width as Real / scene.height as Real;
+    let clampside = |x: Real| (x.round() as u32).clamp(1, MAX_SIDE);
+    match (width, height) {
+        (Some(w), Some(h)) => (w, h),
+        (Some(w), None) => (w, clampside(w as Real / aspect)),
+        (None, Some(h)) => (clampside(h as Real * aspect), h),
+        (None, None) => (scene.width, scene.height),
+    }
+}
+
+/// Runs a chapter: read, render, write. Returns the exit status (0, or 2 after printing the
+/// error).
+pub fn run(
+    binary: &str,
+    stage: Stage,
+    common: &Common,
+    view: Option<&ViewArg>,
+    tracing: Option<&Tracing>,
+) -> ExitCode {
+    match run_inner(binary, stage, common, view, tracing) {
+        Ok(()) => ExitCode::SUCCESS,
+        Err(e) => {
+            eprintln!("error: {e}");
+            ExitCode::from(2)
+        }
+    }
+}
+
+fn run_inner(
+    binary: &str,
+    stage: Stage,
+    common: &Common,
+    view: Option<&ViewArg>,
+    tracing: Option<&Tracing>,
+) -> Result<(), Error> {
+    let out = common
+        .output
+        .clone()
+        .unwrap_or_else(|| PathBuf::from(format!("{binary}.png")));
+    output::check_destination(&out)?;
+    let scene = read_scene(common.scene.as_deref())?;
+    for w in &scene.warnings {
+        eprintln!("warning: {w}");
+    }
+    let mut options = Options::for_scene(&scene, stage);
+    (options.width, options.height) = image_size(&scene, common.width, common.height);
+    if let Some(v) = view {
+        options.view = v.view;
+    }
+    if let Some(t) = tracing {
+        options.samples = t.samples.unwrap_or(options.samples);
+        options.max_depth = t.max_depth.unwrap_or(options.max_depth);
+    }
+    let start = Instant::now();
+    let (fb, stats) = render::render(&scene, &options);
+    let seconds = start.elapsed().as_secs_f64();
+    output::save(&fb, &out)?;
+    eprintln!("wrote {} ({}×{})", out.display(), fb.width, fb.height);
+    if tracing.is_some_and(|t| t.stats) {
+        eprintln!(
+            "{}×{}, {} sample(s)/px, depth {}: rays {} primary, {} shadow, {} reflected, {} refracted ({} total); {:.3} s, {:.2} M rays/s",
+            fb.width,
+            fb.height,
+            options.samples,
+            options.max_depth,
+            stats.primary,
+            stats.shadow,
+            stats.reflected,
+            stats.refracted,
+            stats.total(),
+            seconds,
+            stats.total() as f64 / seconds.max(1e-9) / 1e6
+        );
+    }
+    Ok(())
+}

@@ -1,0 +1,29 @@
+//! # whitted — classic ray tracing, chapter by chapter
+//!
+//! whitted follows the course notes (`course-notes.md`) from camera rays to a complete
+//! Whitted-style renderer. Each module belongs to the chapter that introduces it:
+//!
+//! | chapter | binary | modules |
+//! |---|---|---|
+//! | 1 camera rays | `ch01_camera_rays` | [`camera`], [`ray`], [`real`] |
+//! | 2 generic objects | `ch02_generic_objects` | [`shapes`], [`transform`], [`scene`] |
+//!
+//! Everything computes with [`real::Real`], `f64` by default and `f32` under the `f32` feature.
+
+pub mod camera;
+pub mod cli;
+pub mod error;
+pub mod light;
+pub mod material;
+pub mod numeric;
+pub mod offset;
+pub mod optics;
+pub mod output;
+pub mod ray;
+pub mod real;
+pub mod render;
+pub mod scene;
+pub mod shading;
+pub mod shadow;
+pub mod shapes;
+pub mod transform;

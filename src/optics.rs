@@ -1,0 +1,62 @@
+//! Chapter 5 — reflection and refraction (notes: "Reflection and Refraction", "Lighting Equations").
+//!
+//! A ray with unit direction d meets a surface with unit normal n. The mirror ray leaves along
+//!
+//! ```text
+//! l = d − 2(d·n)·n
+//! ```
+//!
+//! (the notes write the hit point r(t₀) where the direction d belongs: an erratum). The
+//! transmitted ray obeys Snell's law, sin θ₁/c₁ = sin θ₂/c₂, that is n₁·sin θ₁ = n₂·sin θ₂ with
+//! indices n = c₀/c. With η = n₁/n₂ and cos θ₁ = −d·n (n facing the incoming ray):
+//!
+//! ```text
+//! sin²θ₂ = η²·(1 − cos²θ₁)
+//! t = η·d + (η·cos θ₁ − cos θ₂)·n       cos θ₂ = √(1 − sin²θ₂)
+//! ```
+//!
+//! When sin²θ₂ would exceed 1 there is no transmitted ray: total internal reflection. It starts
+//! at the critical angle where sin θ₂ = 1, (c₂/c₁)·sin θc = 1, i.e. sin θc = n₂/n₁ (the notes
+//! print c₁/c₂, which gives sin θc > 1 for glass to air: an erratum).
+//!
+//! ```toml
+//! [materials.glass]
+//! transmission = 0.9
+//! reflection = 0.1
+//! ior = 1.5
+//! ```
+
+use crate::real::{Real, Vec3};
+
+/// l = d − 2(d·n)·n: the mirror direction of the incoming direction d about the unit normal n.
+#[must_use]
+pub fn reflect(d: Vec3, n: Vec3) -> Vec3 {
+    d - 2.0 * d.dot(n) * n
+}
+
+/// The transmitted direction for the unit incoming direction `d`, the unit normal `n` facing
+/// the incoming ray (d·n ≤ 0) and η = n₁/n₂; `None` under total internal reflection.
+#[must_use]
+pub fn refract(d: Vec3, n: Vec3, eta: Real) -> Option<Vec3> {
+    let cos1 = -d.dot(n);
+    let sin2_sq = eta * eta * (1.0 - cos1 * cos1).max(0.0);
+    if sin2_sq > 1.0 {
+        return None; // total internal reflection
+    }
+    let cos2 = (1.0 - sin2_sq).sqrt();
+    Some(eta * d + (eta * cos1 - cos2) * n)
+}
+
+/// The critical angle θc (radians) going from index n₁ into index n₂: sin θc = n₂/n₁, i.e.
+/// (c₂/c₁)·sin θc = 1. `None` when n₁ ≤ n₂ (no total internal reflection is possible).
+#[must_use]
+pub fn critical_angle(n1: Real, n2: Real) -> Option<Real> {
+    (n1 > n2).then(|| (n2 / n1).asin())
+}
+
+/// The indices (n₁, n₂) for a ray hitting a surface of index `ior` in air: entering goes from
+/// air into the material, leaving from the material into air.
+#[must_use]
+pub fn indices(entering: bool, ior: Real) -> (Real, Real) {
+    if entering { (1.0, ior) } else { (ior, 1.0) }
+}

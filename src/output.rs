@@ -1,0 +1,107 @@
+//! Writing images: linear RGB → 8-bit PNG, atomically.
+//!
+//! Intensities are written as they are (clamped to [0, 1], times 255, rounded): the notes
+//! compute display intensities directly and whitted applies no gamma curve, so a value of 0.5
+//! is the byte 128.
+//!
+//! The PNG is first written to a temporary file in the destination directory and then renamed
+//! over the destination, so an interrupted run never leaves a truncated image behind.
+
+use std::io::{BufWriter, Write};
+use std::path::Path;
+
+use image::ImageEncoder;
+use image::codecs::png::PngEncoder;
+
+use crate::error::Error;
+use crate::real::Real;
+use crate::render::Framebuffer;
+
+/// One linear intensity as a byte: clamp to [0, 1], scale by 255, round; NaN becomes 0.
+#[must_use]
+pub fn to_byte(x: Real) -> u8 {
+    if x.is_nan() {
+        return 0;
+    }
+    (x.clamp(0.0, 1.0) * 255.0).round() as u8
+}
+
+/// The framebuffer as RGB bytes, row by row from the top.
+#[must_use]
+pub fn to_rgb8(fb: &Framebuffer) -> Vec<u8> {
+    fb.pixels
+        .iter()
+        .flat_map(|p| [to_byte(p.x), to_byte(p.y), to_byte(p.z)])
+        .collect()
+}
+
+/// Checks, before any rendering, that `path` can receive a PNG: it ends in `.png` and its
+/// directory exists.
+pub fn check_destination(path: &Path) -> Result<(), Error> {
+    let fail = |message: &str| Error::Write {
+        path: path.to_path_buf(),
+        message: message.into(),
+    };
+    let is_png = path
+        .extension()
+        .and_then(|e| e.to_str())
+        .is_some_and(|e| e.eq_ignore_ascii_case("png"));
+    if !is_png {
+        return Err(fail(
+            "only PNG output is supported: the name must end in .png",
+        ));
+    }
+    if path.is_dir() {
+        return Err(fail("it is a directory"));
+    }
+    let dir = parent_dir(path);
+    if !dir.is_dir() {
+        return Err(fail("its directory does not exist"));
+    }
+    Ok(())
+}
+
+fn parent_dir(path: &Path) -> &Path {
+    match path.parent() {
+        Some(p) if !p.as_os_str().is_empty() => p,
+        _ => Path::new("."),
+    }
+}
+
+/// Encodes RGB bytes as PNG into `path`, through a temporary file renamed into place.
+pub fn write_png(path: &Path, width: u32, height: u32, rgb: &[u8]) -> Result<(), Error> {
+    let fail = |message: String| Error::Write {
+        path: path.to_path_buf(),
+        message,
+    };
+    let dir = parent_dir(path);
+    let tmp = tempfile::Builder::new()
+        .prefix(".whitted-")
+        .suffix(".png.part")
+        .tempfile_in(dir)
+        .map_err(|e| fail(e.to_string()))?;
+    {
+        let mut out = BufWriter::new(tmp.as_file());
+        PngEncoder::new(&mut out)
+            .write_image(rgb, width, height, image::ExtendedColorType::Rgb8)
+            .map_err(|e| fail(e.to_string()))?;
+        out.flush().map_err(|e| fail(e.to_string()))?;
+    }
+    tmp.as_file().sync_all().map_err(|e| fail(e.to_string()))?;
+    #[cfg(unix)]
+    {
+        // a temporary file is private (0600); the image should be as readable as any new file
+        use std::os::unix::fs::PermissionsExt;
+        let perms = std::fs::Permissions::from_mode(0o644);
+        tmp.as_file()
+            .set_permissions(perms)
+            .map_err(|e| fail(e.to_string()))?;
+    }
+    tmp.persist(path).map_err(|e| fail(e.error.to_string()))?;
+    Ok(())
+}
+
+/// Writes the framebuffer as a PNG, atomically.
+pub fn save(fb: &Framebuffer, path: &Path) -> Result<(), Error> {
+    write_png(path, fb.width, fb.height, &to_rgb8(fb))
+}

@@ -1,0 +1,436 @@
+//! The trace loop shared by every chapter: one straight road with more stops per chapter.
+//!
+//! [`render`] shoots one or more rays through every pixel and asks [`Tracer::trace`] for the
+//! light coming back along each. [`Stage`] decides which stops exist:
+//!
+//! | stage | what a primary ray returns |
+//! |---|---|
+//! | 1 [`Stage::CameraRays`] | the ray direction as a colour, (d̂ + 1)/2 |
+//! | 2 [`Stage::GenericObjects`] | the nearest hit, seen through a [`View`] (flat colour, normals, depth) |
+//! | 3 [`Stage::Shading`] | ambient + diffuse + specular from every light (Phong) |
+//! | 4 [`Stage::Shadows`] | the same, each light tested by a feeler ray |
+//! | 5 [`Stage::ReflectionRefraction`] | plus mirror and transmitted rays, recursively: I = I_a + I_d + I_s + I_l + I_r |
+//!
+//! and the scene decides which of those stops are needed: no feeler for a light with
+//! `shadows = false`, no mirror ray from a material with `reflection = 0`, no transmitted ray
+//! where `transmission = 0`. [`Stats`] counts the rays of each kind, which is how the tests
+//! show that no work is done for a feature a scene does not use.
+//!
+//! The image is cut into tiles rendered in parallel (rayon). Every pixel depends only on its
+//! own coordinates (supersampling positions come from a hash of the pixel and sample index),
+//! so the image is the same whatever the number of threads.
+
+use rayon::prelude::*;
+
+use crate::camera::Camera;
+use crate::offset::{Offset, SpawnPoint};
+use crate::optics;
+use crate::ray::Ray;
+use crate::real::{Real, Vec3};
+use crate::scene::Scene;
+use crate::shading;
+use crate::shadow;
+use crate::shapes::{Formula, Hit};
+
+/// Which chapter's renderer runs.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash)]
+pub enum Stage {
+    /// Chapter 1: rays only.
+    CameraRays = 1,
+    /// Chapter 2: nearest hit.
+    GenericObjects = 2,
+    /// Chapter 3: Phong shading.
+    Shading = 3,
+    /// Chapter 4: shadows.
+    Shadows = 4,
+    /// Chapter 5: reflection and refraction.
+    ReflectionRefraction = 5,
+}
+
+/// What a stage-2 (or later) render shows at each pixel.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash, clap::ValueEnum)]
+pub enum View {
+    /// The stage's own colour (for stage 2: the flat colour).
+    #[default]
+    Color,
+    /// The material's diffuse colour ρd, unlit.
+    Flat,
+    /// The world normal n mapped to a colour, (n + 1)/2.
+    Normals,
+    /// Distance to the nearest hit, near = white, far = dark.
+    Depth,
+}
+
+/// Everything about a render that is not in the scene.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Options {
+    /// The chapter.
+    pub stage: Stage,
+    /// What to show.
+    pub view: View,
+    /// Image width (pixels).
+    pub width: u32,
+    /// Image height (pixels).
+    pub height: u32,
+    /// Samples per pixel (1 = the pixel centre).
+    pub samples: u32,
+    /// Maximum recursion depth: a primary ray has depth 0, its mirror ray depth 1 …
+    pub max_depth: u32,
+    /// A secondary ray whose weight (product of reflection/transmission shares) falls below
+    /// this is not traced.
+    pub min_weight: Real,
+    /// Textbook or robust intersection formulas.
+    pub formula: Formula,
+    /// How secondary rays leave a surface.
+    pub offset: Offset,
+    /// Seed of the supersampling positions.
+    pub seed: u64,
+}
+
+impl Options {
+    /// The scene's own settings for `stage`: its size, samples and depth, robust formulas and
+    /// the default offset.
+    #[must_use]
+    pub fn for_scene(scene: &Scene, stage: Stage) -> Self {
+        Self {
+            stage,
+            view: View::Color,
+            width: scene.width,
+            height: scene.height,
+            samples: scene.samples,
+            max_depth: scene.max_depth,
+            min_weight: Self::MIN_WEIGHT,
+            formula: Formula::default(),
+            offset: Offset::default(),
+            seed: 0x5eed,
+        }
+    }
+
+    /// The default weight threshold: a contribution below 1/1000 (a quarter of one 8-bit step)
+    /// cannot change a pixel.
+    pub const MIN_WEIGHT: Real = 1e-3;
+}
+
+/// Rays cast, by kind.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct Stats {
+    /// Camera rays.
+    pub primary: u64,
+    /// Feeler rays towards lights.
+    pub shadow: u64,
+    /// Mirror rays.
+    pub reflected: u64,
+    /// Transmitted rays.
+    pub refracted: u64,
+    /// Mirror rays spawned by total internal reflection (counted in `reflected` too).
+    pub total_internal: u64,
+}
+
+impl Stats {
+    /// All rays.
+    #[must_use]
+    pub fn total(&self) -> u64 {
+        self.primary + self.shadow + self.reflected + self.refracted
+    }
+
+    fn add(&mut self, o: &Stats) {
+        self.primary += o.primary;
+        self.shadow += o.shadow;
+        self.reflected += o.reflected;
+        self.refracted += o.refracted;
+        self.total_internal += o.total_internal;
+    }
+}
+
+/// A linear-RGB image, rows from the top.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Framebuffer {
+    /// Width in pixels.
+    pub width: u32,
+    /// Height in pixels.
+    pub height: u32,
+    /// Row-major pixels, top row first.
+    pub pixels: Vec<Vec3>,
+}
+
+impl Framebuffer {
+    /// The pixel at column x, row y (from the top).
+    #[must_use]
+    pub fn get(&self, x: u32, y: u32) -> Vec3 {
+        self.pixels[(y * self.width + x) as usize]
+    }
+}
+
+/// The nearest hit of a ray: the hit, the object's index.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Nearest {
+    /// The hit.
+    pub hit: Hit,
+    /// Index of the object hit.
+    pub object: usize,
+}
+
+/// Traces rays through one scene with one set of options.
+pub struct Tracer<'a> {
+    /// The scene.
+    pub scene: &'a Scene,
+    /// The options.
+    pub options: &'a Options,
+    /// The camera at the options' image size.
+    pub camera: Camera,
+}
+
+const TILE: u32 = 16;
+
+/// Renders the scene: returns the image and the rays cast.
+#[must_use]
+pub fn render(scene: &Scene, options: &Options) -> (Framebuffer, Stats) {
+    let tracer = Tracer::new(scene, options);
+    let (w, h) = (options.width, options.height);
+    let tiles: Vec<(u32, u32)> = (0..h.div_ceil(TILE))
+        .flat_map(|ty| (0..w.div_ceil(TILE)).map(move |tx| (tx * TILE, ty * TILE)))
+        .collect();
+    let done: Vec<(u32, u32, Vec<Vec3>, Stats)> = tiles
+        .par_iter()
+        .map(|&(x0, y0)| {
+            let mut stats = Stats::default();
+            let mut px = Vec::with_capacity((TILE * TILE) as usize);
+            for y in y0..(y0 + TILE).min(h) {
+                for x in x0..(x0 + TILE).min(w) {
+                    px.push(tracer.pixel(x, y, &mut stats));
+                }
+            }
+            (x0, y0, px, stats)
+        })
+        .collect();
+    let mut fb = Framebuffer {
+        width: w,
+        height: h,
+        pixels: vec![Vec3::ZERO; (w as usize) * (h as usize)],
+    };
+    let mut stats = Stats::default();
+    for (x0, y0, px, s) in done {
+        let tw = (x0 + TILE).min(w) - x0;
+        for (i, c) in px.into_iter().enumerate() {
+            let (x, y) = (x0 + i as u32 % tw, y0 + i as u32 / tw);
+            fb.pixels[(y * w + x) as usize] = c;
+        }
+        stats.add(&s);
+    }
+    if options.view == View::Depth && options.stage >= Stage::GenericObjects {
+        shade_depth(&mut fb);
+    }
+    (fb, stats)
+}
+
+/// Maps distances (∞ for a miss) to grey levels: nearest 1, farthest 0.15, misses 0.
+fn shade_depth(fb: &mut Framebuffer) {
+    let finite = fb.pixels.iter().map(|p| p.x).filter(|d| d.is_finite());
+    let (lo, hi) = finite.fold((Real::INFINITY, Real::NEG_INFINITY), |(lo, hi), d| {
+        (lo.min(d), hi.max(d))
+    });
+    let range = (hi - lo).max(Real::MIN_POSITIVE);
+    for p in &mut fb.pixels {
+        *p = if p.x.is_finite() {
+            Vec3::splat(1.0 - 0.85 * (p.x - lo) / range)
+        } else {
+            Vec3::ZERO
+        };
+    }
+}
+
+/// A well-mixed 64-bit hash (the SplitMix64 finaliser) for sample positions.
+fn mix(mut z: u64) -> u64 {
+    z = (z ^ (z >> 30)).wrapping_mul(0xbf58_476d_1ce4_e5b9);
+    z = (z ^ (z >> 27)).wrapping_mul(0x94d0_49bb_1331_11eb);
+    z ^ (z >> 31)
+}
+
+/// A number in [0, 1) from a hash.
+fn unit(h: u64) -> Real {
+    (h >> 11) as Real * (1.0 / (1u64 << 53) as Real)
+}
+
+impl<'a> Tracer<'a> {
+    /// A tracer for the scene with the options' image size.
+    #[must_use]
+    pub fn new(scene: &'a Scene, options: &'a Options) -> Self {
+        Self {
+            scene,
+            options,
+            camera: scene.camera.camera(options.width, options.height),
+        }
+    }
+
+    /// The position inside pixel (x, y) of sample `s`: the centre for one sample, otherwise
+    /// stratified jitter from a fixed seed (the same every run).
+    #[must_use]
+    pub fn sample_position(&self, x: u32, y: u32, s: u32) -> (Real, Real) {
+        let n = self.options.samples;
+        if n <= 1 {
+            return (0.5, 0.5);
+        }
+        let k = (n as Real).sqrt().ceil() as u32; // a k × k grid of strata, visited in order
+        let (sx, sy) = (s % k, (s / k) % k);
+        let h = mix(self.options.seed ^ mix(((y as u64) << 32 | x as u64) ^ mix(s as u64)));
+        let jx = unit(h);
+        let jy = unit(mix(h));
+        ((sx as Real + jx) / k as Real, (sy as Real + jy) / k as Real)
+    }
+
+    /// The colour of pixel (x, y), row y from the top: the mean over its samples.
+    pub fn pixel(&self, x: u32, y: u32, stats: &mut Stats) -> Vec3 {
+        let o = self.options;
+        let samples = if o.view == View::Depth {
+            1
+        } else {
+            o.samples.max(1)
+        };
+        let mut sum = Vec3::ZERO;
+        for s in 0..samples {
+            let (dx, dy) = if samples == 1 {
+                (0.5, 0.5)
+            } else {
+                self.sample_position(x, y, s)
+            };
+            let ray = self.camera.pixel_ray(x, y, dx, dy);
+            stats.primary += 1;
+            sum += self.primary(&ray, stats);
+        }
+        sum / samples as Real
+    }
+
+    fn primary(&self, ray: &Ray, stats: &mut Stats) -> Vec3 {
+        let o = self.options;
+        if o.stage == Stage::CameraRays {
+            return (crate::numeric::normalize(ray.dir) + Vec3::ONE) * 0.5;
+        }
+        match o.view {
+            View::Color if o.stage == Stage::GenericObjects => self.flat(ray),
+            View::Color => self.trace(ray, 0.0, 0, 1.0, stats),
+            View::Flat => self.flat(ray),
+            View::Normals => match self.nearest(ray, 0.0) {
+                Some(n) => (self.facing(n.hit.normal, ray.dir) + Vec3::ONE) * 0.5,
+                None => self.scene.background,
+            },
+            View::Depth => match self.nearest(ray, 0.0) {
+                Some(n) => Vec3::splat(n.hit.t * ray.dir.length()),
+                None => Vec3::splat(Real::INFINITY),
+            },
+        }
+    }
+
+    fn flat(&self, ray: &Ray) -> Vec3 {
+        match self.nearest(ray, 0.0) {
+            Some(n) => self.scene.materials[self.scene.objects[n.object].material].diffuse,
+            None => self.scene.background,
+        }
+    }
+
+    /// The nearest hit with t > `t_min` over all objects (the notes' step 5: smallest t).
+    #[must_use]
+    pub fn nearest(&self, ray: &Ray, t_min: Real) -> Option<Nearest> {
+        let mut best: Option<Nearest> = None;
+        for (i, object) in self.scene.objects.iter().enumerate() {
+            let hits = object.intersect(ray, self.options.formula);
+            if let Some(hit) = hits.first_after(t_min)
+                && best.is_none_or(|b| hit.t < b.hit.t)
+            {
+                best = Some(Nearest { hit, object: i });
+            }
+        }
+        best
+    }
+
+    /// The normal turned to face against the direction `d` (towards where the ray came from).
+    fn facing(&self, n: Vec3, d: Vec3) -> Vec3 {
+        if n.dot(d) > 0.0 { -n } else { n }
+    }
+
+    /// The light coming back along `ray` (stages 3–5): local Phong shading, shadows from
+    /// stage 4, mirror and transmitted rays from stage 5 while `depth < max_depth` and the
+    /// ray's `weight` stays above the threshold.
+    pub fn trace(
+        &self,
+        ray: &Ray,
+        t_min: Real,
+        depth: u32,
+        weight: Real,
+        stats: &mut Stats,
+    ) -> Vec3 {
+        let Some(nearest) = self.nearest(ray, t_min) else {
+            return self.scene.background;
+        };
+        let scene = self.scene;
+        let o = self.options;
+        let hit = nearest.hit;
+        let object = &scene.objects[nearest.object];
+        let material = &scene.materials[object.material];
+        let p = ray.at(hit.t);
+        let d = crate::numeric::normalize(ray.dir);
+        let n = self.facing(hit.normal, d); // shading normal, towards the viewer
+        let v = -d;
+        let spawn = SpawnPoint {
+            p,
+            normal: hit.normal,
+            ray_origin: ray.origin,
+            step: ray.dir * hit.t,
+        };
+
+        // I_a + Σ (I_d + I_s), with feelers from stage 4
+        let mut color = shading::ambient(material, scene.ambient);
+        for light in &scene.lights {
+            let mut local = shading::direct(material, light, p, n, v);
+            if local == Vec3::ZERO {
+                continue; // light behind the surface: no feeler needed
+            }
+            if o.stage >= Stage::Shadows && light.shadows {
+                stats.shadow += 1;
+                let (origin, u_min) = o.offset.spawn(&spawn, light.position - p);
+                local *= shadow::transmittance(
+                    &scene.objects,
+                    &scene.materials,
+                    origin,
+                    light.position,
+                    u_min,
+                    o.formula,
+                );
+            }
+            color += local;
+        }
+
+        if o.stage < Stage::ReflectionRefraction || depth >= o.max_depth {
+            return color;
+        }
+
+        // I_l + I_r
+        let mut kr = material.reflection;
+        if material.is_translucent() {
+            let entering = hit.normal.dot(d) < 0.0; // the side that was hit
+            let (n1, n2) = optics::indices(entering, material.ior);
+            match optics::refract(d, n, n1 / n2) {
+                Some(t_dir) => {
+                    let w = weight * material.transmission;
+                    if w >= o.min_weight {
+                        stats.refracted += 1;
+                        let (origin, t0) = o.offset.spawn(&spawn, t_dir);
+                        let r = Ray::new(origin, t_dir);
+                        color += material.transmission * self.trace(&r, t0, depth + 1, w, stats);
+                    }
+                }
+                None => {
+                    kr += material.transmission; // total internal reflection: all goes to the mirror ray
+                    stats.total_internal += 1;
+                }
+            }
+        }
+        if kr > 0.0 && weight * kr >= o.min_weight {
+            stats.reflected += 1;
+            let l = optics::reflect(d, n);
+            let (origin, t0) = o.offset.spawn(&spawn, l);
+            let r = Ray::new(origin, l);
+            color += kr * self.trace(&r, t0, depth + 1, weight * kr, stats);
+        }
+        color
+    }
+}

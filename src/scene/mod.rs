@@ -1,0 +1,100 @@
+//! Scenes: what to render, read from a TOML file (chapters 1–5 each read the parts they use).
+//!
+//! [`load`] reads a file, [`parse`] a string; both check every value and report a bad one as
+//! `file:line:col: what was expected`. The result is a [`Scene`]: the camera settings, image
+//! size, lights, materials and placed objects, ready to render.
+//!
+//! ```toml
+//! [camera]
+//! eye = [0.0, 1.0, 6.0]
+//!
+//! [[objects]]
+//! sphere = { center = [0.0, 0.0, 0.0], radius = 1.0 }
+//! ```
+
+pub mod format;
+pub mod load;
+
+pub use load::{load, parse};
+
+use crate::camera::Camera;
+use crate::light::Light;
+use crate::material::Material;
+use crate::real::{Real, Vec3};
+use crate::shapes::Object;
+
+/// The camera as the scene describes it; [`CameraSettings::camera`] adds the image size.
+#[derive(Clone, Debug, PartialEq)]
+pub struct CameraSettings {
+    /// The eye e.
+    pub eye: Vec3,
+    /// The point looked at.
+    pub look_at: Vec3,
+    /// The up direction.
+    pub up: Vec3,
+    /// θ in degrees.
+    pub fov: Real,
+    /// N.
+    pub near: Real,
+}
+
+impl CameraSettings {
+    /// The camera for an image of `width` × `height` pixels. The loader has checked that the
+    /// basis is not degenerate.
+    #[must_use]
+    pub fn camera(&self, width: u32, height: u32) -> Camera {
+        Camera::new(
+            self.eye,
+            self.look_at,
+            self.up,
+            self.fov,
+            self.near,
+            width,
+            height,
+        )
+        .expect("camera basis checked when the scene was loaded")
+    }
+}
+
+/// A scene ready to render.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Scene {
+    /// Where the camera is and how it sees.
+    pub camera: CameraSettings,
+    /// Image width in pixels.
+    pub width: u32,
+    /// Image height in pixels.
+    pub height: u32,
+    /// Colour of rays that hit nothing.
+    pub background: Vec3,
+    /// Maximum recursion depth (chapter 5).
+    pub max_depth: u32,
+    /// Samples per pixel.
+    pub samples: u32,
+    /// I_m, the ambient light.
+    pub ambient: Vec3,
+    /// The point lights.
+    pub lights: Vec<Light>,
+    /// The materials; objects refer to them by index.
+    pub materials: Vec<Material>,
+    /// The material names, in the order of `materials` (index 0 is the default material).
+    pub material_names: Vec<String>,
+    /// The placed objects.
+    pub objects: Vec<Object>,
+    /// Remarks about the scene that do not stop it from rendering (e.g. ρa + ρd + ρs > 1).
+    pub warnings: Vec<String>,
+}
+
+impl Scene {
+    /// The camera at the scene's own image size.
+    #[must_use]
+    pub fn camera(&self) -> Camera {
+        self.camera.camera(self.width, self.height)
+    }
+
+    /// The material of object `i`.
+    #[must_use]
+    pub fn material_of(&self, object: &Object) -> &Material {
+        &self.materials[object.material]
+    }
+}

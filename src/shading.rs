@@ -1,0 +1,76 @@
+//! Chapter 3 — shading (notes: "Shading").
+//!
+//! At a hit point with unit normal n, unit vector s towards a light, unit vector v towards the
+//! viewer and r the mirror direction of s about n, each RGB channel receives
+//!
+//! ```text
+//! I = ρa·I_m + Σ_lights  I_p / (a0 + a1·d + a2·d²) · ( ρd·max(n·s, 0) + ρs·max(r·v, 0)^f )
+//! r = 2(n·s)·n − s
+//! ```
+//!
+//! The notes write n·s and (r·v)^f without clamping; a light behind the surface (n·s < 0) would
+//! then *subtract* light, and a negative r·v raised to an even f would add a highlight that
+//! does not exist. whitted clamps both at 0 and drops the specular term entirely when n·s ≤ 0
+//! (docs/errata.md).
+//!
+//! The normal used for shading faces the viewer: for the plane, an open surface, this means
+//! the side the camera sees is lit like a front face; for closed shapes it only matters for
+//! rays that travel inside glass.
+//!
+//! ```toml
+//! [ambient]
+//! intensity = 0.3
+//!
+//! [materials.red]
+//! ambient = [0.1, 0.0, 0.0]
+//! diffuse = [0.6, 0.05, 0.05]
+//! specular = 0.3
+//! shininess = 40
+//! ```
+
+use crate::light::Light;
+use crate::material::Material;
+use crate::real::{Real, Vec3};
+
+/// The ambient term I_a = ρa·I_m, per channel.
+#[must_use]
+pub fn ambient(material: &Material, ambient_light: Vec3) -> Vec3 {
+    material.ambient * ambient_light
+}
+
+/// r = 2(n·s)·n − s: the mirror direction of s about the unit normal n.
+#[must_use]
+pub fn mirror(s: Vec3, n: Vec3) -> Vec3 {
+    2.0 * n.dot(s) * n - s
+}
+
+/// max(n·s, 0): the cosine law of the diffuse term, zero for a light behind the surface.
+#[must_use]
+pub fn lambert(n: Vec3, s: Vec3) -> Real {
+    n.dot(s).max(0.0)
+}
+
+/// max(r·v, 0)^f: the specular highlight, zero when the light is behind the surface (n·s ≤ 0).
+#[must_use]
+pub fn highlight(n: Vec3, s: Vec3, v: Vec3, shininess: Real) -> Real {
+    if n.dot(s) <= 0.0 {
+        return 0.0;
+    }
+    mirror(s, n).dot(v).max(0.0).powf(shininess)
+}
+
+/// One light's diffuse and specular contribution, per channel, before shadowing:
+/// I_p/(a0 + a1·d + a2·d²)·(ρd·max(n·s, 0) + ρs·max(r·v, 0)^f), for a point P with unit
+/// normal n seen from the unit direction v.
+#[must_use]
+pub fn direct(material: &Material, light: &Light, p: Vec3, n: Vec3, v: Vec3) -> Vec3 {
+    let to_light = light.position - p;
+    let d = to_light.length();
+    if d == 0.0 {
+        return Vec3::ZERO;
+    }
+    let s = to_light / d;
+    let diffuse = material.diffuse * lambert(n, s);
+    let specular = material.specular * highlight(n, s, v, material.shininess);
+    light.intensity * light.attenuation_at(d) * (diffuse + specular)
+}

@@ -1,0 +1,144 @@
+//! The generic cone x² + y² = (1 − z)², z ∈ [−1, 1], with its base at z = −1 (notes: "Generic Cone").
+//!
+//! The apex is (0, 0, 1) and the base a unit disc at z = −1. With the ray e + d·t:
+//!
+//! ```text
+//! a = d_x² + d_y² − d_z²
+//! b = e_x·d_x + e_y·d_y + d_z·(1 − e_z)
+//! c = e_x² + e_y² − (1 − e_z)²
+//! ```
+//!
+//! and a·t² + 2b·t + c = 0. A root is on the wall when z ∈ [−1, 1]; the base is the plane
+//! z = −1 inside the unit circle. Normals: (x, y, 1 − z) on the wall and (0, 0, −1) on the
+//! base. At the apex the wall normal (x, y, 1 − z) is the zero vector; whitted uses the axis
+//! (0, 0, 1) there, so every hit has a finite unit normal.
+//!
+//! Note that a can be zero (a ray parallel to a generator of the cone: the equation is then
+//! linear) or negative (a ray steeper than the wall: the solid is outside the roots). The
+//! robust variant handles both by working with the set where a·t² + 2b·t + c ≤ 0 (inside the
+//! double cone) and clipping it to the slab z ∈ [−1, 1], which keeps only the lower nappe.
+
+use super::cylinder::nearest_and_farthest;
+use super::quadratic::{Formula, Roots, solve};
+use super::{Hit, Hits, Part, Span};
+use crate::ray::Ray;
+use crate::real::{Real, Vec3};
+
+/// The cone's quadratic coefficients (a, b, c) for a·t² + 2b·t + c = 0.
+#[must_use]
+pub fn coefficients(ray: &Ray) -> (Real, Real, Real) {
+    let (e, d) = (ray.origin, ray.dir);
+    (
+        d.x * d.x + d.y * d.y - d.z * d.z,                 // a
+        e.x * d.x + e.y * d.y + d.z * (1.0 - e.z),         // b
+        e.x * e.x + e.y * e.y - (1.0 - e.z) * (1.0 - e.z), // c
+    )
+}
+
+/// The object-space normal of `part` at the point p.
+#[must_use]
+pub fn normal(part: Part, p: Vec3) -> Vec3 {
+    match part {
+        Part::Base => Vec3::NEG_Z,
+        Part::Apex => Vec3::Z,
+        _ => {
+            let n = Vec3::new(p.x, p.y, 1.0 - p.z); // the wall: (x, y, 1 − z)
+            if n == Vec3::ZERO { Vec3::Z } else { n }
+        }
+    }
+}
+
+/// Intersects an object-space ray with the closed generic cone.
+#[must_use]
+pub fn intersect(ray: &Ray, formula: Formula) -> Hits {
+    match formula {
+        Formula::Textbook => intersect_textbook(ray),
+        Formula::Robust => intersect_robust(ray),
+    }
+}
+
+fn intersect_robust(ray: &Ray) -> Hits {
+    let (a, b, c) = coefficients(ray);
+    let wall = |lo: Real, hi: Real| Span {
+        lo,
+        lo_part: Part::Wall,
+        hi,
+        hi_part: Part::Wall,
+    };
+    // The stretches of the line inside the double cone (a·t² + 2b·t + c ≤ 0): one, or two
+    // half-lines when a < 0.
+    let mut pieces: [Option<Span>; 2] = [None, None];
+    if a == 0.0 {
+        // linear: 2b·t + c ≤ 0
+        pieces[0] = if b > 0.0 {
+            Some(wall(Real::NEG_INFINITY, -c / (2.0 * b)))
+        } else if b < 0.0 {
+            Some(wall(-c / (2.0 * b), Real::INFINITY))
+        } else if c <= 0.0 {
+            Some(Span::ALL)
+        } else {
+            None
+        };
+    } else {
+        match solve(a, b, c, Formula::Robust) {
+            Roots::Two(t1, t2) if a > 0.0 => pieces[0] = Some(wall(t1, t2)),
+            Roots::One(t) if a > 0.0 => pieces[0] = Some(wall(t, t)),
+            Roots::Two(t1, t2) => {
+                pieces[0] = Some(wall(Real::NEG_INFINITY, t1));
+                pieces[1] = Some(wall(t2, Real::INFINITY));
+            }
+            // a < 0 with no or one root: the whole line is inside the double cone
+            Roots::One(_) | Roots::None if a < 0.0 => pieces[0] = Some(Span::ALL),
+            _ => {}
+        }
+    }
+    let Some(slab) = Span::slab(ray.origin.z, ray.dir.z, -1.0, Part::Base, 1.0, Part::Apex) else {
+        return Hits::none();
+    };
+    // Within the slab only the lower nappe remains; keep the longest clipped piece.
+    let best = pieces
+        .into_iter()
+        .flatten()
+        .filter_map(|p| p.clip(slab))
+        .max_by(|p, q| (p.hi - p.lo).total_cmp(&(q.hi - q.lo)));
+    match best {
+        Some(span) => span.hits(|part, t| normal(part, ray.at(t))),
+        None => Hits::none(),
+    }
+}
+
+/// The notes' method as written: roots kept when z ∈ [−1, 1], and the base plane z = −1 kept
+/// when the point lies inside the unit circle.
+fn intersect_textbook(ray: &Ray) -> Hits {
+    let (a, b, c) = coefficients(ray);
+    let mut found: Vec<Hit> = Vec::with_capacity(3);
+    let roots = match solve(a, b, c, Formula::Textbook) {
+        Roots::None => vec![],
+        Roots::One(t) => vec![t],
+        Roots::Two(t1, t2) => vec![t1, t2],
+    };
+    for t in roots {
+        let p = ray.at(t);
+        if (-1.0..=1.0).contains(&p.z) {
+            found.push(Hit {
+                t,
+                normal: normal(Part::Wall, p),
+                part: Part::Wall,
+                entering: true,
+            });
+        }
+    }
+    if ray.dir.z != 0.0 {
+        let t = (-1.0 - ray.origin.z) / ray.dir.z;
+        let p = ray.at(t);
+        if t.is_finite() && p.x * p.x + p.y * p.y <= 1.0 {
+            found.push(Hit {
+                t,
+                normal: Vec3::NEG_Z,
+                part: Part::Base,
+                entering: true,
+            });
+        }
+    }
+    nearest_and_farthest(&found)
+}

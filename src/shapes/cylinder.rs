@@ -1,0 +1,138 @@
+//! The generic cylinder x² + y² = 1, z ∈ [−1, 1], with caps at z = ±1 (notes: "Generic Cylinder").
+//!
+//! The wall: a = d_x² + d_y², b = e_x·d_x + e_y·d_y, c = e_x² + e_y² − 1, and a·t² + 2b·t + c = 0.
+//! The notes keep a root when z = e_z + d_z·t ∈ [−1, 1] and test the cap planes z = ±1 for a
+//! point inside the unit circle. The notes' cylinder is infinite; whitted's is finite and
+//! closed, so a ray along the axis (a = 0) enters through one cap and leaves through the other.
+//!
+//! Normals: (x, y, 0) on the wall, (0, 0, 1) on the top cap and (0, 0, −1) on the bottom cap.
+//!
+//! The robust variant clips the line twice, as the notes clip a polyhedron: the stretch inside
+//! the infinite tube (between the two roots), then the stretch between the cap planes. The
+//! answer is their common part, so a ray through a rim can never slip between a wall test and
+//! a cap test, and a = 0 needs no special case.
+
+use super::quadratic::{Formula, Roots, solve, solve_with_discriminant};
+use super::{Hit, Hits, Part, Span, entering_leaving};
+use crate::ray::Ray;
+use crate::real::{Real, Vec3};
+
+/// The wall's quadratic coefficients (a, b, c) for a·t² + 2b·t + c = 0.
+#[must_use]
+pub fn coefficients(ray: &Ray) -> (Real, Real, Real) {
+    let (e, d) = (ray.origin, ray.dir);
+    (
+        d.x * d.x + d.y * d.y,       // a = d_x² + d_y²
+        e.x * d.x + e.y * d.y,       // b = e_x d_x + e_y d_y
+        e.x * e.x + e.y * e.y - 1.0, // c = e_x² + e_y² − 1
+    )
+}
+
+/// The object-space normal of `part` at the point p.
+#[must_use]
+pub fn normal(part: Part, p: Vec3) -> Vec3 {
+    match part {
+        Part::TopCap => Vec3::Z,
+        Part::BottomCap => Vec3::NEG_Z,
+        _ => Vec3::new(p.x, p.y, 0.0), // the wall: (x, y, 0)
+    }
+}
+
+/// Intersects an object-space ray with the closed unit cylinder.
+#[must_use]
+pub fn intersect(ray: &Ray, formula: Formula) -> Hits {
+    match formula {
+        Formula::Textbook => intersect_textbook(ray),
+        Formula::Robust => intersect_robust(ray),
+    }
+}
+
+fn intersect_robust(ray: &Ray) -> Hits {
+    let (a, b, c) = coefficients(ray);
+    let tube = if a == 0.0 {
+        // parallel to the axis: inside the tube for every t, or never
+        if c <= 0.0 {
+            Span::ALL
+        } else {
+            return Hits::none();
+        }
+    } else {
+        // Δ = a·(1 − |f|²) with f the point of the (x, y) line closest to the axis
+        let f = ray.origin.truncate() - ray.dir.truncate() * (b / a);
+        let disc = a * (1.0 - f.dot(f));
+        match solve_with_discriminant(a, b, c, disc, Formula::Robust) {
+            Roots::None => return Hits::none(),
+            Roots::One(t) => Span {
+                lo: t,
+                lo_part: Part::Wall,
+                hi: t,
+                hi_part: Part::Wall,
+            },
+            Roots::Two(t1, t2) => Span {
+                lo: t1,
+                lo_part: Part::Wall,
+                hi: t2,
+                hi_part: Part::Wall,
+            },
+        }
+    };
+    let slab = Span::slab(
+        ray.origin.z,
+        ray.dir.z,
+        -1.0,
+        Part::BottomCap,
+        1.0,
+        Part::TopCap,
+    );
+    match slab.and_then(|s| tube.clip(s)) {
+        Some(span) => span.hits(|part, t| normal(part, ray.at(t))),
+        None => Hits::none(),
+    }
+}
+
+/// The notes' method as written: roots of the wall quadratic kept when z ∈ [−1, 1], cap
+/// planes kept when the point lies inside the unit circle.
+fn intersect_textbook(ray: &Ray) -> Hits {
+    let (a, b, c) = coefficients(ray);
+    let mut found: Vec<Hit> = Vec::with_capacity(4);
+    let mut keep = |t: Real, part: Part| {
+        let p = ray.at(t);
+        found.push(Hit {
+            t,
+            normal: normal(part, p),
+            part,
+            entering: true,
+        });
+    };
+    let wall_roots = match solve(a, b, c, Formula::Textbook) {
+        Roots::None => vec![],
+        Roots::One(t) => vec![t],
+        Roots::Two(t1, t2) => vec![t1, t2],
+    };
+    for t in wall_roots {
+        let z = ray.origin.z + ray.dir.z * t;
+        if (-1.0..=1.0).contains(&z) {
+            keep(t, Part::Wall);
+        }
+    }
+    if ray.dir.z != 0.0 {
+        for (z, part) in [(-1.0, Part::BottomCap), (1.0, Part::TopCap)] {
+            let t = (z - ray.origin.z) / ray.dir.z;
+            let p = ray.at(t);
+            if t.is_finite() && p.x * p.x + p.y * p.y <= 1.0 {
+                keep(t, part);
+            }
+        }
+    }
+    nearest_and_farthest(&found)
+}
+
+/// For a convex shape: the first and last of the candidate hits (duplicates at rims collapse).
+pub(crate) fn nearest_and_farthest(found: &[Hit]) -> Hits {
+    let near = found.iter().copied().min_by(|p, q| p.t.total_cmp(&q.t));
+    let far = found.iter().copied().max_by(|p, q| p.t.total_cmp(&q.t));
+    match (near, far) {
+        (Some(n), Some(f)) => entering_leaving(n, f),
+        _ => Hits::none(),
+    }
+}

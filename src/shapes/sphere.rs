@@ -1,0 +1,48 @@
+//! The generic sphere x² + y² + z² = 1 (notes: "Generic Sphere").
+//!
+//! With the ray e + d·t: a = |d|², b = e·d, c = |e|² − 1 and a·t² + 2b·t + c = 0;
+//! b² − ac < 0 misses, = 0 grazes, > 0 enters and leaves. The normal at P is P itself.
+//!
+//! The robust variant computes the discriminant as a·(1 − |e − (b/a)·d|²): e − (b/a)·d is the
+//! point of the line closest to the centre, so the difference is taken between numbers of the
+//! size of the radius, not of |e|² (Ray Tracing Gems, ch. 7). This keeps small spheres far away
+//! hittable in f32.
+
+use super::quadratic::{Formula, Roots, discriminant, solve_with_discriminant};
+use super::{Hit, Hits, Part, entering_leaving};
+use crate::ray::Ray;
+use crate::real::Real;
+
+/// The sphere's quadratic coefficients (a, b, c) for a·t² + 2b·t + c = 0.
+#[must_use]
+pub fn coefficients(ray: &Ray) -> (Real, Real, Real) {
+    let (e, d) = (ray.origin, ray.dir);
+    (d.dot(d), e.dot(d), e.dot(e) - 1.0) // a = |d|², b = e·d, c = |e|² − 1
+}
+
+/// Intersects an object-space ray with the unit sphere.
+#[must_use]
+pub fn intersect(ray: &Ray, formula: Formula) -> Hits {
+    let (a, b, c) = coefficients(ray);
+    if a == 0.0 || !a.is_finite() {
+        return Hits::none();
+    }
+    let disc = match formula {
+        Formula::Textbook => discriminant(a, b, c),
+        Formula::Robust => {
+            let f = ray.origin - ray.dir * (b / a); // closest point of the line to the centre
+            a * (1.0 - f.dot(f))
+        }
+    };
+    let hit = |t: Real| Hit {
+        t,
+        normal: ray.at(t), // the normal at P is P
+        part: Part::Surface,
+        entering: true,
+    };
+    match solve_with_discriminant(a, b, c, disc, formula) {
+        Roots::None => Hits::none(),
+        Roots::One(t) => Hits::one(hit(t)),
+        Roots::Two(t1, t2) => entering_leaving(hit(t1), hit(t2)),
+    }
+}
