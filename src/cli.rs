@@ -65,6 +65,26 @@ pub struct Tracing {
     pub stats: bool,
 }
 
+/// Parses the command line. `--help` and `--version` print and exit 0; any other problem is
+/// printed as one line `error: …` (clap's own first line) with exit status 2.
+#[must_use]
+pub fn parse_args<T: clap::Parser>() -> T {
+    match T::try_parse() {
+        Ok(args) => args,
+        Err(e) if !e.use_stderr() => {
+            // --help, --version: not errors
+            let _ = e.print();
+            std::process::exit(0);
+        }
+        Err(e) => {
+            let text = e.render().to_string();
+            let first = text.lines().next().unwrap_or("error: invalid arguments");
+            eprintln!("{first} (see --help)");
+            std::process::exit(2);
+        }
+    }
+}
+
 /// Reads the scene named on the command line, or the embedded showcase.
 pub fn read_scene(path: Option<&Path>) -> Result<Scene, Error> {
     match path {

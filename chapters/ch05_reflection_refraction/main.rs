@@ -22,7 +22,7 @@ struct Args {
 }
 
 fn main() -> ExitCode {
-    let args = Args::parse();
+    let args: Args = whitted::cli::parse_args();
     run(
         "ch05_reflection_refraction",
         Stage::ReflectionRefraction,
