@@ -10,20 +10,41 @@ use common::{TOL, assert_vec_eq};
 use whitted::camera::{
     Camera, near_plane_half_height, near_plane_half_width, pixel_on_near_plane, viewing_basis,
 };
-use whitted::real::{Real, Vec3, vec3};
+use whitted::real::{Real, Vec3, real, vec3};
 
 /// A camera at the origin looking down −z (so n = +z, u = +x, v = +y).
 fn straight_camera(fov: Real, near: Real, columns: u32, rows: u32) -> Camera {
-    Camera::new(Vec3::ZERO, vec3(0.0, 0.0, -1.0), Vec3::Y, fov, near, columns, rows).unwrap()
+    Camera::new(
+        Vec3::ZERO,
+        vec3(0.0, 0.0, -1.0),
+        Vec3::Y,
+        fov,
+        near,
+        columns,
+        rows,
+    )
+    .unwrap()
 }
 
 /// "Principles of Ray Tracing": H = N·tan(π/180·θ/2) for several θ and N.
 #[test]
 fn half_height_is_near_times_tangent_of_half_the_angle() {
     assert_abs_diff_eq!(near_plane_half_height(1.0, 90.0), 1.0, epsilon = TOL); // tan 45° = 1
-    assert_abs_diff_eq!(near_plane_half_height(2.0, 60.0), 2.0 / (3.0 as Real).sqrt(), epsilon = TOL); // 2·tan 30°
-    assert_abs_diff_eq!(near_plane_half_height(1.0, 45.0), (2.0 as Real).sqrt() - 1.0, epsilon = TOL); // tan 22.5°
-    assert_abs_diff_eq!(near_plane_half_height(0.5, 120.0), 0.5 * (3.0 as Real).sqrt(), epsilon = TOL); // ½·tan 60°
+    assert_abs_diff_eq!(
+        near_plane_half_height(2.0, 60.0),
+        2.0 / (3.0 as Real).sqrt(),
+        epsilon = TOL
+    ); // 2·tan 30°
+    assert_abs_diff_eq!(
+        near_plane_half_height(1.0, 45.0),
+        (2.0 as Real).sqrt() - 1.0,
+        epsilon = TOL
+    ); // tan 22.5°
+    assert_abs_diff_eq!(
+        near_plane_half_height(0.5, 120.0),
+        0.5 * (3.0 as Real).sqrt(),
+        epsilon = TOL
+    ); // ½·tan 60°
 }
 
 /// "Principles of Ray Tracing": the angle is in degrees; reading it as radians is wrong.
@@ -31,19 +52,34 @@ fn half_height_is_near_times_tangent_of_half_the_angle() {
 fn viewing_angle_is_converted_from_degrees() {
     let h = near_plane_half_height(1.0, 60.0);
     let as_radians = (60.0 as Real / 2.0).tan(); // tan(30 rad) ≈ −6.405
-    assert!((h - as_radians).abs() > 1.0, "θ must be converted to radians first");
-    assert_abs_diff_eq!(h, 0.577_350_269_189_625_8, epsilon = TOL);
+    assert!(
+        (h - as_radians).abs() > 1.0,
+        "θ must be converted to radians first"
+    );
+    assert_abs_diff_eq!(h, real(0.577_350_269_189_625_8), epsilon = TOL);
 }
 
 /// "Principles of Ray Tracing": W = H·A with A = width/height, for several aspects.
 #[test]
 fn half_width_is_half_height_times_aspect() {
     let h = near_plane_half_height(1.0, 90.0);
-    assert_abs_diff_eq!(near_plane_half_width(h, 4.0 / 3.0), 4.0 / 3.0, epsilon = TOL);
-    assert_abs_diff_eq!(near_plane_half_width(h, 16.0 / 9.0), 16.0 / 9.0, epsilon = TOL);
+    assert_abs_diff_eq!(
+        near_plane_half_width(h, 4.0 / 3.0),
+        4.0 / 3.0,
+        epsilon = TOL
+    );
+    assert_abs_diff_eq!(
+        near_plane_half_width(h, 16.0 / 9.0),
+        16.0 / 9.0,
+        epsilon = TOL
+    );
     assert_abs_diff_eq!(near_plane_half_width(h, 1.0), 1.0, epsilon = TOL);
     let cam = straight_camera(60.0, 2.0, 640, 480);
-    assert_abs_diff_eq!(cam.half_width, cam.half_height * 640.0 / 480.0, epsilon = TOL);
+    assert_abs_diff_eq!(
+        cam.half_width,
+        cam.half_height * 640.0 / 480.0,
+        epsilon = TOL
+    );
     assert_abs_diff_eq!(cam.half_height, 2.0 / (3.0 as Real).sqrt(), epsilon = TOL);
 }
 
@@ -54,7 +90,8 @@ fn pixel_formula_spans_the_near_plane_corner_to_corner() {
     let (w, h) = (2.0, 1.5);
     let (n, m) = (8.0, 6.0);
     let at = |c, r| pixel_on_near_plane(c, r, n, m, w, h);
-    let close = |(a, b): (Real, Real), (x, y): (Real, Real)| (a - x).abs() <= TOL && (b - y).abs() <= TOL;
+    let close =
+        |(a, b): (Real, Real), (x, y): (Real, Real)| (a - x).abs() <= TOL && (b - y).abs() <= TOL;
     assert!(close(at(0.0, 0.0), (-2.0, -1.5)));
     assert!(close(at(8.0, 0.0), (2.0, -1.5)));
     assert!(close(at(0.0, 6.0), (-2.0, 1.5)));
@@ -115,7 +152,16 @@ fn direction_at_the_four_corners() {
 /// at the world point u_c·u + v_r·v − N·n + e.
 #[test]
 fn ray_reaches_the_near_plane_pixel_at_t_equal_one() {
-    let cam = Camera::new(vec3(1.0, 2.0, 3.0), vec3(-1.0, 0.5, 0.0), Vec3::Y, 50.0, 2.5, 320, 200).unwrap();
+    let cam = Camera::new(
+        vec3(1.0, 2.0, 3.0),
+        vec3(-1.0, 0.5, 0.0),
+        Vec3::Y,
+        50.0,
+        2.5,
+        320,
+        200,
+    )
+    .unwrap();
     let (c, r) = (37.0, 150.0);
     let (u_c, v_r) = pixel_on_near_plane(c, r, 320.0, 200.0, cam.half_width, cam.half_height);
     let world = u_c * cam.u + v_r * cam.v - cam.near * cam.n + cam.eye;

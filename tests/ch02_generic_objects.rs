@@ -24,9 +24,16 @@ fn generic(shape: Shape) -> Object {
 #[track_caller]
 fn assert_hits(hits: &Hits, expected: &[(Real, Part)]) {
     let got: Vec<(Real, Part)> = hits.as_slice().iter().map(|h| (h.t, h.part)).collect();
-    assert_eq!(got.len(), expected.len(), "hits {got:?}, expected {expected:?}");
+    assert_eq!(
+        got.len(),
+        expected.len(),
+        "hits {got:?}, expected {expected:?}"
+    );
     for ((t, part), (te, pe)) in got.iter().zip(expected) {
-        assert!((t - te).abs() <= 10.0 * TOL, "t = {t}, expected {te} (all: {got:?})");
+        assert!(
+            (t - te).abs() <= 10.0 * TOL,
+            "t = {t}, expected {te} (all: {got:?})"
+        );
         assert_eq!(part, pe);
     }
 }
@@ -66,14 +73,16 @@ fn sphere_coefficients_are_d_squared_e_dot_d_and_e_squared_minus_one() {
 /// equal to the hit points ("Surface Normals at Intersections").
 #[test]
 fn sphere_two_hits_with_the_point_as_normal() {
-    let hits = generic(Shape::Sphere).intersect(&ray([0.0, 0.0, 5.0], [0.0, 0.0, -1.0]), Formula::Robust);
+    let hits =
+        generic(Shape::Sphere).intersect(&ray([0.0, 0.0, 5.0], [0.0, 0.0, -1.0]), Formula::Robust);
     assert_hits(&hits, &[(4.0, Part::Surface), (6.0, Part::Surface)]);
     let [h1, h2] = [hits.as_slice()[0], hits.as_slice()[1]];
     assert_vec_eq(h1.normal, Vec3::Z, TOL);
     assert_vec_eq(h2.normal, Vec3::NEG_Z, TOL);
     assert!(h1.entering && !h2.entering);
     // an oblique ray: e = (0.6, 0, 5), d = (0, 0, −1) meets z = ±0.8
-    let hits = generic(Shape::Sphere).intersect(&ray([0.6, 0.0, 5.0], [0.0, 0.0, -1.0]), Formula::Robust);
+    let hits =
+        generic(Shape::Sphere).intersect(&ray([0.6, 0.0, 5.0], [0.0, 0.0, -1.0]), Formula::Robust);
     assert_hits(&hits, &[(4.2, Part::Surface), (5.8, Part::Surface)]);
     assert_vec_eq(hits.as_slice()[0].normal, vec3(0.6, 0.0, 0.8), 10.0 * TOL);
 }
@@ -86,7 +95,10 @@ fn sphere_tangent_ray_grazes_once_and_outside_ray_misses() {
         let graze = s.intersect(&ray([1.0, 0.0, 5.0], [0.0, 0.0, -1.0]), formula);
         assert_hits(&graze, &[(5.0, Part::Surface)]);
         assert_vec_eq(graze.as_slice()[0].normal, Vec3::X, TOL);
-        assert!(s.intersect(&ray([1.5, 0.0, 5.0], [0.0, 0.0, -1.0]), formula).is_empty());
+        assert!(
+            s.intersect(&ray([1.5, 0.0, 5.0], [0.0, 0.0, -1.0]), formula)
+                .is_empty()
+        );
     }
 }
 
@@ -134,7 +146,8 @@ fn cylinder_coefficients_follow_the_notes() {
 #[test]
 fn cylinder_wall_two_hits_with_normals_x_y_0() {
     for formula in [Formula::Textbook, Formula::Robust] {
-        let hits = generic(Shape::Cylinder).intersect(&ray([0.0, -5.0, 0.5], [0.0, 1.0, 0.0]), formula);
+        let hits =
+            generic(Shape::Cylinder).intersect(&ray([0.0, -5.0, 0.5], [0.0, 1.0, 0.0]), formula);
         assert_hits(&hits, &[(4.0, Part::Wall), (6.0, Part::Wall)]);
         assert_vec_eq(hits.as_slice()[0].normal, Vec3::NEG_Y, TOL);
         assert_vec_eq(hits.as_slice()[1].normal, Vec3::Y, TOL);
@@ -146,8 +159,14 @@ fn cylinder_wall_two_hits_with_normals_x_y_0() {
 fn cylinder_miss_beyond_the_caps_and_tangent_graze() {
     for formula in [Formula::Textbook, Formula::Robust] {
         let c = generic(Shape::Cylinder);
-        assert!(c.intersect(&ray([0.0, -5.0, 2.0], [0.0, 1.0, 0.0]), formula).is_empty());
-        assert!(c.intersect(&ray([1.5, -5.0, 0.0], [0.0, 1.0, 0.0]), formula).is_empty());
+        assert!(
+            c.intersect(&ray([0.0, -5.0, 2.0], [0.0, 1.0, 0.0]), formula)
+                .is_empty()
+        );
+        assert!(
+            c.intersect(&ray([1.5, -5.0, 0.0], [0.0, 1.0, 0.0]), formula)
+                .is_empty()
+        );
         let graze = c.intersect(&ray([1.0, -5.0, 0.0], [0.0, 1.0, 0.0]), formula);
         assert_hits(&graze, &[(5.0, Part::Wall)]);
         assert_vec_eq(graze.as_slice()[0].normal, Vec3::X, TOL);
@@ -160,7 +179,8 @@ fn cylinder_miss_beyond_the_caps_and_tangent_graze() {
 #[test]
 fn cylinder_ray_along_the_axis_crosses_both_caps() {
     for formula in [Formula::Textbook, Formula::Robust] {
-        let hits = generic(Shape::Cylinder).intersect(&ray([0.3, 0.2, 5.0], [0.0, 0.0, -1.0]), formula);
+        let hits =
+            generic(Shape::Cylinder).intersect(&ray([0.3, 0.2, 5.0], [0.0, 0.0, -1.0]), formula);
         assert_hits(&hits, &[(4.0, Part::TopCap), (6.0, Part::BottomCap)]);
         assert_vec_eq(hits.as_slice()[0].normal, Vec3::Z, TOL);
         assert_vec_eq(hits.as_slice()[1].normal, Vec3::NEG_Z, TOL);
@@ -173,7 +193,8 @@ fn cylinder_ray_along_the_axis_crosses_both_caps() {
 fn cylinder_ray_from_cap_to_wall() {
     // e = (0, 0, 2), d = (0.5, 0, −1): z = 1 at t = 1 (x = 0.5, inside); x = 1 at t = 2 (z = 0)
     for formula in [Formula::Textbook, Formula::Robust] {
-        let hits = generic(Shape::Cylinder).intersect(&ray([0.0, 0.0, 2.0], [0.5, 0.0, -1.0]), formula);
+        let hits =
+            generic(Shape::Cylinder).intersect(&ray([0.0, 0.0, 2.0], [0.5, 0.0, -1.0]), formula);
         assert_hits(&hits, &[(1.0, Part::TopCap), (2.0, Part::Wall)]);
         assert_vec_eq(hits.as_slice()[1].normal, Vec3::X, TOL);
     }
@@ -232,7 +253,8 @@ fn upper_nappe_of_the_double_cone_is_not_hit() {
 /// leaves through the base.
 #[test]
 fn cone_apex_has_a_finite_unit_normal() {
-    let hits = generic(Shape::Cone).intersect(&ray([0.0, 0.0, 3.0], [0.0, 0.0, -1.0]), Formula::Robust);
+    let hits =
+        generic(Shape::Cone).intersect(&ray([0.0, 0.0, 3.0], [0.0, 0.0, -1.0]), Formula::Robust);
     assert_eq!(hits.len(), 2, "{hits:?}");
     let (apex, base) = (hits.as_slice()[0], hits.as_slice()[1]);
     assert_abs_diff_eq!(apex.t, 2.0, epsilon = 10.0 * TOL);
@@ -262,7 +284,8 @@ fn facet_t_is_d_minus_n_dot_e_all_over_n_dot_d() {
 /// facet −z (index 5) at t = 6, each with its facet's outward normal.
 #[test]
 fn cube_entering_and_leaving_facets() {
-    let hits = generic(Shape::Polyhedron(Polyhedron::cube())).intersect(&ray([0.2, 0.3, 5.0], [0.0, 0.0, -1.0]), Formula::Robust);
+    let hits = generic(Shape::Polyhedron(Polyhedron::cube()))
+        .intersect(&ray([0.2, 0.3, 5.0], [0.0, 0.0, -1.0]), Formula::Robust);
     assert_hits(&hits, &[(4.0, Part::Facet(4)), (6.0, Part::Facet(5))]);
     assert_vec_eq(hits.as_slice()[0].normal, Vec3::Z, TOL);
     assert_vec_eq(hits.as_slice()[1].normal, Vec3::NEG_Z, TOL);
@@ -274,7 +297,10 @@ fn cube_entering_and_leaving_facets() {
 fn ray_parallel_to_a_facet_misses_outside_and_passes_inside() {
     let cube = generic(Shape::Polyhedron(Polyhedron::cube()));
     // parallel to the facet y = 1, at y = 2 (outside)
-    assert!(cube.intersect(&ray([0.0, 2.0, 5.0], [0.0, 0.0, -1.0]), Formula::Robust).is_empty());
+    assert!(
+        cube.intersect(&ray([0.0, 2.0, 5.0], [0.0, 0.0, -1.0]), Formula::Robust)
+            .is_empty()
+    );
     // parallel to it at y = 0.5 (inside its half-space)
     let hits = cube.intersect(&ray([0.0, 0.5, 5.0], [0.0, 0.0, -1.0]), Formula::Robust);
     assert_hits(&hits, &[(4.0, Part::Facet(4)), (6.0, Part::Facet(5))]);
@@ -284,7 +310,8 @@ fn ray_parallel_to_a_facet_misses_outside_and_passes_inside() {
 /// |x| ≤ 0.65: t = 4.35 through the facet with normal (1, 1, 1)/√3.
 #[test]
 fn octahedron_hits_through_its_facets() {
-    let hits = generic(Shape::Polyhedron(Polyhedron::octahedron())).intersect(&ray([5.0, 0.25, 0.1], [-1.0, 0.0, 0.0]), Formula::Robust);
+    let hits = generic(Shape::Polyhedron(Polyhedron::octahedron()))
+        .intersect(&ray([5.0, 0.25, 0.1], [-1.0, 0.0, 0.0]), Formula::Robust);
     assert_eq!(hits.len(), 2);
     assert_abs_diff_eq!(hits.as_slice()[0].t, 4.35, epsilon = 10.0 * TOL);
     assert_abs_diff_eq!(hits.as_slice()[1].t, 5.65, epsilon = 10.0 * TOL);
@@ -297,16 +324,26 @@ fn octahedron_hits_through_its_facets() {
 /// along z at x = 0.2, spans z ∈ [−0.8, 0.8].
 #[test]
 fn tetrahedron_hits_through_its_facets() {
-    let hits = generic(Shape::Polyhedron(Polyhedron::tetrahedron())).intersect(&ray([0.2, 0.0, 5.0], [0.0, 0.0, -1.0]), Formula::Robust);
+    let hits = generic(Shape::Polyhedron(Polyhedron::tetrahedron()))
+        .intersect(&ray([0.2, 0.0, 5.0], [0.0, 0.0, -1.0]), Formula::Robust);
     let k = 1.0 / (3.0 as Real).sqrt();
     assert_hits(&hits, &[(4.2, Part::Facet(2)), (5.8, Part::Facet(3))]);
     assert_vec_eq(hits.as_slice()[0].normal, vec3(1.0, -1.0, 1.0) * k, TOL);
     assert_vec_eq(hits.as_slice()[1].normal, vec3(1.0, 1.0, -1.0) * k, TOL);
     // every preset's vertices satisfy n·P ≤ d with equality on three or more facets
-    let vertices = [[1.0, 1.0, 1.0], [1.0, -1.0, -1.0], [-1.0, 1.0, -1.0], [-1.0, -1.0, 1.0]];
+    let vertices = [
+        [1.0, 1.0, 1.0],
+        [1.0, -1.0, -1.0],
+        [-1.0, 1.0, -1.0],
+        [-1.0, -1.0, 1.0],
+    ];
     for v in vertices {
         let p = vec3(v[0], v[1], v[2]);
-        let on = Polyhedron::tetrahedron().facets.iter().filter(|f| (f.normal.dot(p) - f.d).abs() <= TOL).count();
+        let on = Polyhedron::tetrahedron()
+            .facets
+            .iter()
+            .filter(|f| (f.normal.dot(p) - f.d).abs() <= TOL)
+            .count();
         assert_eq!(on, 3);
     }
 }
@@ -314,7 +351,11 @@ fn tetrahedron_hits_through_its_facets() {
 // --- placement ----------------------------------------------------------------------------
 
 fn ellipsoid() -> Object {
-    let steps = [Step::Scale(vec3(2.0, 0.5, 1.0)), Step::RotateZ(30.0), Step::Translate(vec3(1.0, -2.0, 3.0))];
+    let steps = [
+        Step::Scale(vec3(2.0, 0.5, 1.0)),
+        Step::RotateZ(30.0),
+        Step::Translate(vec3(1.0, -2.0, 3.0)),
+    ];
     Object::new(Shape::Sphere, Placement::from_steps(&steps).unwrap())
 }
 
@@ -323,11 +364,18 @@ fn ellipsoid() -> Object {
 fn inverse_from_inverse_steps_undoes_the_placement() {
     let o = ellipsoid();
     let product = o.placement.m * o.placement.inv;
-    assert!(product.abs_diff_eq(Mat4::IDENTITY, 10.0 * TOL), "{product:?}");
+    assert!(
+        product.abs_diff_eq(Mat4::IDENTITY, 10.0 * TOL),
+        "{product:?}"
+    );
     // steps apply in order: scale first, so the scale stretches the object's own x axis
     let p = o.placement.m.transform_point3(Vec3::X);
     let a = (30.0 as Real).to_radians();
-    assert_vec_eq(p, Vec3::new(2.0 * a.cos() + 1.0, 2.0 * a.sin() - 2.0, 3.0), 10.0 * TOL);
+    assert_vec_eq(
+        p,
+        Vec3::new(2.0 * a.cos() + 1.0, 2.0 * a.sin() - 2.0, 3.0),
+        10.0 * TOL,
+    );
 }
 
 /// "Ray Tracing Process": M⁻¹d is not renormalised, so the t found in object space gives the
@@ -337,20 +385,30 @@ fn t_is_the_same_in_world_and_object_space() {
     let o = ellipsoid();
     let world = ray([-4.0, -1.0, 2.5], [3.0, -0.5, 0.2]);
     let local = world.transformed(&o.placement.inv);
-    assert!((local.dir.length() - world.dir.length()).abs() > 0.1, "the scale changes |d|");
+    assert!(
+        (local.dir.length() - world.dir.length()).abs() > 0.1,
+        "the scale changes |d|"
+    );
     let hits = o.intersect(&world, Formula::Robust);
     assert_eq!(hits.len(), 2);
     for h in hits.as_slice() {
         let p_world = world.at(h.t);
         let p_object = local.at(h.t);
         assert_abs_diff_eq!(p_object.length(), 1.0, epsilon = 100.0 * TOL); // on the unit sphere
-        assert_vec_eq(o.placement.m.transform_point3(p_object), p_world, 100.0 * TOL);
+        assert_vec_eq(
+            o.placement.m.transform_point3(p_object),
+            p_world,
+            100.0 * TOL,
+        );
     }
     // renormalising M⁻¹d would change t: the hit would no longer be at world.at(t)
     let renormalised = Ray::new(local.origin, local.dir.normalize());
     let t_bad = sphere::intersect(&renormalised, Formula::Robust).as_slice()[0].t;
     let miss = o.placement.inv.transform_point3(world.at(t_bad)).length();
-    assert!((miss - 1.0).abs() > 0.1, "renormalised t lands off the surface ({miss})");
+    assert!(
+        (miss - 1.0).abs() > 0.1,
+        "renormalised t lands off the surface ({miss})"
+    );
 }
 
 /// "Surface Normals at Intersections" and "Ray Tracing Process": under the non-uniform scale
@@ -358,7 +416,10 @@ fn t_is_the_same_in_world_and_object_space() {
 /// perpendicular to the surface; M·n′ ∝ (2, 1, 0) is not.
 #[test]
 fn normal_under_non_uniform_scale_uses_inverse_transpose() {
-    let o = Object::new(Shape::Sphere, Placement::from_steps(&[Step::Scale(vec3(2.0, 1.0, 1.0))]).unwrap());
+    let o = Object::new(
+        Shape::Sphere,
+        Placement::from_steps(&[Step::Scale(vec3(2.0, 1.0, 1.0))]).unwrap(),
+    );
     let s = (2.0 as Real).sqrt();
     let p_world = Vec3::new(s, 1.0 / s, 0.0); // M·(1/√2, 1/√2, 0)
     let r = Ray::new(p_world + vec3(1.0, 2.0, 0.0), vec3(-1.0, -2.0, 0.0));
@@ -369,8 +430,15 @@ fn normal_under_non_uniform_scale_uses_inverse_transpose() {
     // the tangent at P: M·(−1/√2, 1/√2, 0)
     let tangent = Vec3::new(-s, 1.0 / s, 0.0);
     assert_abs_diff_eq!(hit.normal.dot(tangent), 0.0, epsilon = 10.0 * TOL);
-    let wrong = o.placement.m.transform_vector3(vec3(1.0, 1.0, 0.0) / s).normalize();
-    assert!(wrong.dot(tangent).abs() > 0.3, "M·n′ is not perpendicular to the surface");
+    let wrong = o
+        .placement
+        .m
+        .transform_vector3(vec3(1.0, 1.0, 0.0) / s)
+        .normalize();
+    assert!(
+        wrong.dot(tangent).abs() > 0.3,
+        "M·n′ is not perpendicular to the surface"
+    );
     assert!((wrong - right).length() > 0.3);
 }
 
@@ -400,4 +468,38 @@ fn zero_scale_is_not_invertible() {
     assert!(Placement::from_steps(&[Step::Scale(vec3(1.0, 0.0, 1.0))]).is_none());
     assert!(Placement::from_steps(&[Step::Scale(Vec3::new(1.0, Real::NAN, 1.0))]).is_none());
     assert!(Placement::from_steps(&[Step::Scale(vec3(1.0, 2.0, 1.0))]).is_some());
+}
+
+/// "Generic Cone": a ray touching the wall at z = 0 (radius 1) has b² − ac = 0 and grazes once,
+/// with the wall normal (x, y, 1 − z) there.
+#[test]
+fn cone_tangent_ray_grazes_once() {
+    let r = ray([1.0, -5.0, 0.0], [0.0, 1.0, 0.0]);
+    let (a, b, c) = cone::coefficients(&r);
+    assert_abs_diff_eq!(b * b - a * c, 0.0, epsilon = TOL);
+    let k = 1.0 / (2.0 as Real).sqrt();
+    for formula in [Formula::Textbook, Formula::Robust] {
+        let hits = generic(Shape::Cone).intersect(&r, formula);
+        assert_hits(&hits, &[(5.0, Part::Wall)]);
+        assert_vec_eq(hits.as_slice()[0].normal, vec3(1.0, 0.0, 1.0) * k, TOL);
+    }
+    assert!(
+        generic(Shape::Cone)
+            .intersect(&ray([1.2, -5.0, 0.0], [0.0, 1.0, 0.0]), Formula::Robust)
+            .is_empty()
+    );
+}
+
+/// "Convex Polyhedra": a ray across an edge of the cube enters (facet +z) and leaves (facet +x)
+/// at the same t: t_near = t_far, one grazing hit; a little further out it misses
+/// (t_near > t_far).
+#[test]
+fn polyhedron_ray_across_an_edge_grazes_once() {
+    let cube = generic(Shape::Polyhedron(Polyhedron::cube()));
+    let hits = cube.intersect(&ray([0.0, 0.0, 2.0], [1.0, 0.0, -1.0]), Formula::Robust);
+    assert_hits(&hits, &[(1.0, Part::Facet(4))]);
+    assert!(
+        cube.intersect(&ray([0.5, 0.0, 2.5], [1.0, 0.0, -1.0]), Formula::Robust)
+            .is_empty()
+    );
 }

@@ -27,7 +27,8 @@ fn sphere_scene(light: &str, extra: &str) -> String {
 fn light_behind_the_eye_gives_ambient_plus_full_diffuse_and_specular() {
     let s = scene(&sphere_scene("[0.0, 0.0, 10.0]", ""));
     let (c, _) = centre(&s, Stage::Shading);
-    let expected = vec3(0.1 * 0.5, 0.2 * 0.4, 0.3 * 0.3) + vec3(0.9, 0.8, 0.7) * vec3(0.5 + 0.2, 0.4 + 0.3, 0.3 + 0.4);
+    let expected = vec3(0.1 * 0.5, 0.2 * 0.4, 0.3 * 0.3)
+        + vec3(0.9, 0.8, 0.7) * vec3(0.5 + 0.2, 0.4 + 0.3, 0.3 + 0.4);
     assert_vec_eq(c, expected, 10.0 * TOL);
 }
 
@@ -60,7 +61,11 @@ fn negative_dot_products_are_clamped() {
 #[test]
 fn mirror_direction_of_the_light() {
     let k = 1.0 / (2.0 as Real).sqrt();
-    assert_vec_eq(mirror(vec3(1.0, 0.0, 1.0) * k, Vec3::Z), vec3(-1.0, 0.0, 1.0) * k, TOL);
+    assert_vec_eq(
+        mirror(vec3(1.0, 0.0, 1.0) * k, Vec3::Z),
+        vec3(-1.0, 0.0, 1.0) * k,
+        TOL,
+    );
     assert_vec_eq(mirror(Vec3::Z, Vec3::Z), Vec3::Z, TOL);
     // highlight: with v on r the term is 1, at 60° from r it is cos(60°)^f
     let s = vec3(1.0, 0.0, 1.0) * k;
@@ -69,13 +74,22 @@ fn mirror_direction_of_the_light() {
     // r points 45° from +z towards −x; v 15° towards +x is 60° away from it
     let a = (15.0 as Real).to_radians();
     let v = Vec3::new(a.sin(), 0.0, a.cos());
-    assert_abs_diff_eq!(highlight(Vec3::Z, s, v, 3.0), (0.5 as Real).powi(3), epsilon = 10.0 * TOL);
+    assert_abs_diff_eq!(
+        highlight(Vec3::Z, s, v, 3.0),
+        (0.5 as Real).powi(3),
+        epsilon = 10.0 * TOL
+    );
 }
 
 /// "Shading": the diffuse term follows the cosine law ρd·I_p·(n·s).
 #[test]
 fn diffuse_follows_the_cosine_law() {
-    let m = Material { ambient: Vec3::ZERO, diffuse: Vec3::splat(0.8), specular: Vec3::ZERO, ..Material::default() };
+    let m = Material {
+        ambient: Vec3::ZERO,
+        diffuse: Vec3::splat(0.8),
+        specular: Vec3::ZERO,
+        ..Material::default()
+    };
     let p = Vec3::ZERO;
     let n = Vec3::Y;
     // a light 60° from the normal, at distance 2: n·s = cos 60° = 0.5
@@ -83,7 +97,11 @@ fn diffuse_follows_the_cosine_law() {
     let light = Light::white(Vec3::new(2.0 * a.sin(), 2.0 * a.cos(), 0.0));
     let i = direct(&m, &light, p, n, Vec3::Y);
     assert_vec_eq(i, Vec3::splat(0.8 * 0.5), 10.0 * TOL);
-    assert_vec_eq(ambient(&Material::default(), Vec3::splat(0.5)), Vec3::splat(0.05), TOL);
+    assert_vec_eq(
+        ambient(&Material::default(), Vec3::splat(0.5)),
+        Vec3::splat(0.05),
+        TOL,
+    );
 }
 
 /// "Shading": I_p/(a0 + a1·d + a2·d²): at d = 2 with (1, 0.5, 0.25), the light is divided by 3.
@@ -95,12 +113,20 @@ fn attenuation_divides_by_a0_plus_a1_d_plus_a2_d_squared() {
     assert_abs_diff_eq!(light.attenuation_at(0.0), 1.0, epsilon = TOL);
     light.attenuation = [0.0, 0.0, 1.0]; // inverse square
     assert_abs_diff_eq!(light.attenuation_at(4.0), 1.0 / 16.0, epsilon = TOL);
-    let m = Material { ambient: Vec3::ZERO, diffuse: Vec3::ONE, specular: Vec3::ZERO, ..Material::default() };
+    let m = Material {
+        ambient: Vec3::ZERO,
+        diffuse: Vec3::ONE,
+        specular: Vec3::ZERO,
+        ..Material::default()
+    };
     light.attenuation = [1.0, 0.5, 0.25];
     let i = direct(&m, &light, Vec3::ZERO, Vec3::Y, Vec3::Y);
     assert_vec_eq(i, Vec3::splat(1.0 / 3.0), 10.0 * TOL);
     // in a scene: the same light through the renderer
-    let s = scene(&sphere_scene("[0.0, 0.0, 10.0]", "attenuation = [1.0, 0.5, 0.25]"));
+    let s = scene(&sphere_scene(
+        "[0.0, 0.0, 10.0]",
+        "attenuation = [1.0, 0.5, 0.25]",
+    ));
     let (c, _) = centre(&s, Stage::Shading);
     let d: Real = 9.0; // from (0, 0, 1) to (0, 0, 10)
     let k = 1.0 / (1.0 + 0.5 * d + 0.25 * d * d);
@@ -112,7 +138,10 @@ fn attenuation_divides_by_a0_plus_a1_d_plus_a2_d_squared() {
 #[test]
 fn several_lights_add_up() {
     let one = scene(&sphere_scene("[0.0, 0.0, 10.0]", ""));
-    let two = scene(&sphere_scene("[0.0, 0.0, 10.0]", "[[lights]]\nposition = [0.0, 0.0, 20.0]\nintensity = 0.5"));
+    let two = scene(&sphere_scene(
+        "[0.0, 0.0, 10.0]",
+        "[[lights]]\nposition = [0.0, 0.0, 20.0]\nintensity = 0.5",
+    ));
     let (c1, _) = centre(&one, Stage::Shading);
     let (c2, _) = centre(&two, Stage::Shading);
     assert_vec_eq(c2 - c1, Vec3::splat(0.5) * vec3(0.7, 0.7, 0.7), 10.0 * TOL);

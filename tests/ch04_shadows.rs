@@ -13,12 +13,19 @@ use whitted::shapes::{Formula, Object, Shape};
 use whitted::transform::{Placement, Step};
 
 fn ball(center: Vec3, material: usize) -> Object {
-    let p = Placement::from_steps(&[Step::Scale(Vec3::splat(1.0)), Step::Translate(center)]).unwrap();
-    Object { material, ..Object::new(Shape::Sphere, p) }
+    let p =
+        Placement::from_steps(&[Step::Scale(Vec3::splat(1.0)), Step::Translate(center)]).unwrap();
+    Object {
+        material,
+        ..Object::new(Shape::Sphere, p)
+    }
 }
 
 fn materials() -> Vec<Material> {
-    let glass = Material { transmission: 0.6, ..Material::default() };
+    let glass = Material {
+        transmission: 0.6,
+        ..Material::default()
+    };
     vec![Material::default(), glass]
 }
 
@@ -29,31 +36,46 @@ const L: Vec3 = Vec3::new(0.0, 10.0, 0.0);
 #[test]
 fn opaque_sphere_between_point_and_light_shadows_it() {
     let objects = [ball(vec3(0.0, 5.0, 0.0), 0)];
-    assert_eq!(transmittance(&objects, &materials(), P, L, 0.0, Formula::Robust), 0.0);
+    assert_eq!(
+        transmittance(&objects, &materials(), P, L, 0.0, Formula::Robust),
+        0.0
+    );
 }
 
 /// "Shadowing": a sphere beyond the light (u > 1) casts no shadow on P.
 #[test]
 fn sphere_beyond_the_light_casts_no_shadow() {
     let objects = [ball(vec3(0.0, 15.0, 0.0), 0)];
-    assert_eq!(transmittance(&objects, &materials(), P, L, 0.0, Formula::Robust), 1.0);
+    assert_eq!(
+        transmittance(&objects, &materials(), P, L, 0.0, Formula::Robust),
+        1.0
+    );
     // the same sphere with the light moved behind it does
     let far = vec3(0.0, 20.0, 0.0);
-    assert_eq!(transmittance(&objects, &materials(), P, far, 0.0, Formula::Robust), 0.0);
+    assert_eq!(
+        transmittance(&objects, &materials(), P, far, 0.0, Formula::Robust),
+        0.0
+    );
 }
 
 /// "Shadowing": a sphere behind the point (u ≤ 0) casts no shadow on P.
 #[test]
 fn sphere_behind_the_point_casts_no_shadow() {
     let objects = [ball(vec3(0.0, -5.0, 0.0), 0)];
-    assert_eq!(transmittance(&objects, &materials(), P, L, 0.0, Formula::Robust), 1.0);
+    assert_eq!(
+        transmittance(&objects, &materials(), P, L, 0.0, Formula::Robust),
+        1.0
+    );
 }
 
 /// "Shadowing": u ∈ ]0, 1] — an occluder whose surface touches the light (u = 1) counts.
 #[test]
 fn occluder_reaching_the_light_counts() {
     let objects = [ball(vec3(0.0, 11.0, 0.0), 0)]; // surface at y = 10: u = 1 exactly
-    assert_eq!(transmittance(&objects, &materials(), P, L, 0.0, Formula::Robust), 0.0);
+    assert_eq!(
+        transmittance(&objects, &materials(), P, L, 0.0, Formula::Robust),
+        0.0
+    );
 }
 
 /// "Shadowing" (extended): a translucent occluder lets its transmission share through; two of
@@ -67,7 +89,10 @@ fn translucent_occluders_let_their_transmission_through() {
     let t2 = transmittance(&two, &materials(), P, L, 0.0, Formula::Robust);
     assert!((t2 - 0.36).abs() <= TOL);
     let mixed = [ball(vec3(0.0, 3.0, 0.0), 1), ball(vec3(0.0, 7.0, 0.0), 0)];
-    assert_eq!(transmittance(&mixed, &materials(), P, L, 0.0, Formula::Robust), 0.0);
+    assert_eq!(
+        transmittance(&mixed, &materials(), P, L, 0.0, Formula::Robust),
+        0.0
+    );
 }
 
 /// A floor lit from above with a sphere hovering over it: the point under the sphere is in
@@ -108,11 +133,24 @@ fn wrongly_shadowed(text: &str, offset: Offset) -> (usize, usize) {
     let mut o3 = Options::for_scene(&s, Stage::Shading);
     o3.width = 96;
     o3.height = 72;
-    let o4 = Options { stage: Stage::Shadows, offset, ..o3.clone() };
+    let o4 = Options {
+        stage: Stage::Shadows,
+        offset,
+        ..o3.clone()
+    };
     let (a, _) = render(&s, &o3);
     let (b, _) = render(&s, &o4);
-    let lit = a.pixels.iter().filter(|p| p.max_element() > 0.2 + 1e-3).count();
-    let bad = a.pixels.iter().zip(&b.pixels).filter(|(x, y)| (**x - **y).abs().max_element() > 1e-6).count();
+    let lit = a
+        .pixels
+        .iter()
+        .filter(|p| p.max_element() > 0.2 + 1e-3)
+        .count();
+    let bad = a
+        .pixels
+        .iter()
+        .zip(&b.pixels)
+        .filter(|(x, y)| (**x - **y).abs().max_element() > 1e-6)
+        .count();
     (bad, lit)
 }
 
@@ -135,7 +173,10 @@ fn lit_sphere_and_plane_show_no_shadow_acne() {
         assert_eq!(bad, 0, "{bad} of {lit} lit pixels wrongly shadowed");
     }
     let (bad, lit) = wrongly_shadowed(LIT_SPHERE, Offset::Fixed(0.0));
-    assert!(bad as Real > 0.05 * lit as Real, "no offset: {bad} of {lit} should show acne");
+    assert!(
+        bad as Real > 0.05 * lit as Real,
+        "no offset: {bad} of {lit} should show acne"
+    );
 }
 
 /// "Shadowing": feelers are cast only where needed — one per light facing the point, none for

@@ -6,7 +6,7 @@ mod common;
 use approx::assert_abs_diff_eq;
 use common::{TOL, assert_vec_eq, centre, render_at, scene};
 use whitted::optics::{critical_angle, reflect, refract};
-use whitted::real::{Real, Vec3, vec3};
+use whitted::real::{Real, Vec3, real, vec3};
 use whitted::render::{Options, Stage, render};
 
 fn deg(x: Real) -> Real {
@@ -50,7 +50,11 @@ fn snell_air_to_glass_at_30_degrees() {
     assert_abs_diff_eq!(sin2, 1.0 / 3.0, epsilon = TOL);
     assert_abs_diff_eq!(-t.y, (8.0 as Real).sqrt() / 3.0, epsilon = TOL); // cos θ₂ = √(1 − 1/9)
     assert_abs_diff_eq!(t.z, 0.0, epsilon = TOL);
-    assert_abs_diff_eq!(sin2.asin().to_degrees(), 19.471_220_634_490_69, epsilon = 1e4 * TOL);
+    assert_abs_diff_eq!(
+        sin2.asin().to_degrees(),
+        real(19.471_220_634_490_69),
+        epsilon = 1e4 * TOL
+    );
 }
 
 /// "Reflection and Refraction" (erratum): the critical angle satisfies (c₂/c₁)·sin θc = 1, so
@@ -60,13 +64,23 @@ fn snell_air_to_glass_at_30_degrees() {
 fn critical_angle_from_glass_to_air() {
     let theta_c = critical_angle(1.5, 1.0).unwrap();
     assert_abs_diff_eq!(theta_c.sin(), 1.0 / 1.5, epsilon = TOL);
-    assert_abs_diff_eq!(theta_c.to_degrees(), 41.810_314_895_778_6, epsilon = 1e4 * TOL);
+    assert_abs_diff_eq!(
+        theta_c.to_degrees(),
+        real(41.810_314_895_778_6),
+        epsilon = 1e4 * TOL
+    );
     // speeds: c = c₀/n, medium 1 glass, medium 2 air
     let (c1, c2): (Real, Real) = (1.0 / 1.5, 1.0);
     assert_abs_diff_eq!((c2 / c1) * theta_c.sin(), 1.0, epsilon = TOL);
     let notes_sin = 1.0 / (c1 / c2); // from (c₁/c₂)·sin θc = 1
-    assert!(notes_sin > 1.0, "the notes' form has no solution: sin θc = {notes_sin}");
-    assert!(critical_angle(1.0, 1.5).is_none(), "no TIR from air into glass");
+    assert!(
+        notes_sin > 1.0,
+        "the notes' form has no solution: sin θc = {notes_sin}"
+    );
+    assert!(
+        critical_angle(1.0, 1.5).is_none(),
+        "no TIR from air into glass"
+    );
 }
 
 /// "Reflection and Refraction": glass → air just below the critical angle still refracts,
@@ -97,7 +111,11 @@ fn glass_sphere_scene(max_depth: u32) -> String {
 /// the transmission share twice.
 #[test]
 fn ray_along_the_axis_of_a_glass_sphere_leaves_undeflected() {
-    assert_vec_eq(refract(Vec3::NEG_Z, Vec3::Z, 1.0 / 1.5).unwrap(), Vec3::NEG_Z, TOL);
+    assert_vec_eq(
+        refract(Vec3::NEG_Z, Vec3::Z, 1.0 / 1.5).unwrap(),
+        Vec3::NEG_Z,
+        TOL,
+    );
     let s = scene(&glass_sphere_scene(5));
     let (c, stats) = centre(&s, Stage::ReflectionRefraction);
     assert_vec_eq(c, vec3(0.81, 0.0, 0.0), 10.0 * TOL); // 0.9 · 0.9 · red
@@ -130,9 +148,14 @@ fn facing_mirrors(max_depth: u32, reflection: f64) -> String {
 #[test]
 fn two_facing_mirrors_stop_at_max_depth() {
     for depth in [0, 1, 3, 5, 8] {
-        let (c, stats) = centre(&scene(&facing_mirrors(depth, 0.5)), Stage::ReflectionRefraction);
+        let (c, stats) = centre(
+            &scene(&facing_mirrors(depth, 0.5)),
+            Stage::ReflectionRefraction,
+        );
         assert_eq!(stats.reflected, depth as u64, "max_depth {depth}");
-        let expected: Real = (0..=depth).map(|i| 0.1 * (0.5 as Real).powi(i as i32)).sum();
+        let expected: Real = (0..=depth)
+            .map(|i| 0.1 * (0.5 as Real).powi(i as i32))
+            .sum();
         assert_abs_diff_eq!(c.x, expected, epsilon = 10.0 * TOL);
     }
 }
@@ -179,7 +202,11 @@ fn secondary_rays_only_for_mirror_and_glass_materials() {
     assert!(stats.reflected > 0);
     assert_eq!(stats.refracted, 0);
     let (_, stats) = render_at(&scene(&mirror), Stage::Shadows, 24, 24);
-    assert_eq!((stats.reflected, stats.refracted), (0, 0), "chapter 4 never recurses");
+    assert_eq!(
+        (stats.reflected, stats.refracted),
+        (0, 0),
+        "chapter 4 never recurses"
+    );
     let glass = format!("{matte}material = \"g\"\n[materials.g]\ntransmission = 0.5\n");
     let (_, stats) = render_at(&scene(&glass), Stage::ReflectionRefraction, 24, 24);
     assert!(stats.refracted > 0);

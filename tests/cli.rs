@@ -14,7 +14,11 @@ const CHAPTERS: [&str; 5] = [
 ];
 
 fn run(bin: &str, args: &[&str], dir: &Path) -> Output {
-    Command::new(bin).args(args).current_dir(dir).output().expect("binary runs")
+    Command::new(bin)
+        .args(args)
+        .current_dir(dir)
+        .output()
+        .expect("binary runs")
 }
 
 fn stderr(o: &Output) -> String {
@@ -34,7 +38,12 @@ fn every_chapter_renders_the_default_scene() {
     for bin in CHAPTERS {
         let o = run(bin, &["--width", "64", "--height", "48"], dir.path());
         assert!(o.status.success(), "{bin}: {}", stderr(&o));
-        let name = Path::new(bin).file_name().unwrap().to_str().unwrap().trim_end_matches(".exe");
+        let name = Path::new(bin)
+            .file_name()
+            .unwrap()
+            .to_str()
+            .unwrap()
+            .trim_end_matches(".exe");
         let out: PathBuf = dir.path().join(format!("{name}.png"));
         assert_eq!(png_size(&out), (64, 48), "{bin}");
     }
@@ -45,7 +54,12 @@ fn every_chapter_renders_the_default_scene() {
         .collect();
     names.sort();
     assert_eq!(names.len(), 5, "{names:?}");
-    assert!(names.iter().all(|n| n.ends_with(".png") && !n.starts_with('.')), "{names:?}");
+    assert!(
+        names
+            .iter()
+            .all(|n| n.ends_with(".png") && !n.starts_with('.')),
+        "{names:?}"
+    );
 }
 
 /// A width alone keeps the scene's aspect ratio (the showcase is 640 × 480).
@@ -81,7 +95,11 @@ fn assert_scene_error(text: &str, line: usize, col: Option<usize>, needle: &str)
     std::fs::write(dir.path().join("bad.toml"), text).unwrap();
     std::fs::write(dir.path().join("out.png"), b"previous image").unwrap();
     for bin in [CHAPTERS[1], CHAPTERS[4]] {
-        let o = run(bin, &["bad.toml", "-o", "out.png", "--width", "16"], dir.path());
+        let o = run(
+            bin,
+            &["bad.toml", "-o", "out.png", "--width", "16"],
+            dir.path(),
+        );
         let err = stderr(&o);
         assert_eq!(o.status.code(), Some(2), "{bin} on {text:?}: {err}");
         assert!(!err.contains("panicked"), "{err}");
@@ -92,46 +110,109 @@ fn assert_scene_error(text: &str, line: usize, col: Option<usize>, needle: &str)
         };
         assert!(err.starts_with(&prefix), "expected {prefix:?}, got {err:?}");
         assert!(err.contains(needle), "expected {needle:?} in {err:?}");
-        assert_eq!(std::fs::read(dir.path().join("out.png")).unwrap(), b"previous image");
+        assert_eq!(
+            std::fs::read(dir.path().join("out.png")).unwrap(),
+            b"previous image"
+        );
     }
 }
 
 /// An unknown key is refused at its line, listing the keys that exist.
 #[test]
 fn unknown_key_is_refused() {
-    assert_scene_error("[[objects]]\nsphere = { radius = 1 }\ncolour = 3\n", 3, Some(1), "unknown field `colour`");
-    assert_scene_error("[camera]\neye = [0, 0, 5]\nzoom = 2\n[[objects]]\nshape = \"cone\"\n", 3, Some(1), "unknown field `zoom`");
+    assert_scene_error(
+        "[[objects]]\nsphere = { radius = 1 }\ncolour = 3\n",
+        3,
+        Some(1),
+        "unknown field `colour`",
+    );
+    assert_scene_error(
+        "[camera]\neye = [0, 0, 5]\nzoom = 2\n[[objects]]\nshape = \"cone\"\n",
+        3,
+        Some(1),
+        "unknown field `zoom`",
+    );
 }
 
 /// A value of the wrong type is refused where it stands.
 #[test]
 fn wrong_type_is_refused() {
-    assert_scene_error("[[objects]]\nsphere = { center = [0, 0, 0], radius = \"big\" }\n", 2, Some(41), "invalid type");
-    assert_scene_error("[[lights]]\nposition = [1, 2]\n[[objects]]\nshape = \"cone\"\n", 2, None, "three numbers");
+    assert_scene_error(
+        "[[objects]]\nsphere = { center = [0, 0, 0], radius = \"big\" }\n",
+        2,
+        Some(41),
+        "invalid type",
+    );
+    assert_scene_error(
+        "[[lights]]\nposition = [1, 2]\n[[objects]]\nshape = \"cone\"\n",
+        2,
+        None,
+        "three numbers",
+    );
 }
 
 /// NaN and infinity are refused.
 #[test]
 fn nan_and_infinity_are_refused() {
-    assert_scene_error("[[objects]]\nsphere = { center = [0, nan, 0] }\n", 2, Some(21), "finite");
-    assert_scene_error("[camera]\nnear = inf\n[[objects]]\nshape = \"cone\"\n", 2, Some(8), "finite");
+    assert_scene_error(
+        "[[objects]]\nsphere = { center = [0, nan, 0] }\n",
+        2,
+        Some(21),
+        "finite",
+    );
+    assert_scene_error(
+        "[camera]\nnear = inf\n[[objects]]\nshape = \"cone\"\n",
+        2,
+        Some(8),
+        "finite",
+    );
 }
 
 /// Zero and negative sizes are refused.
 #[test]
 fn zero_or_negative_sizes_are_refused() {
-    assert_scene_error("[[objects]]\nsphere = { radius = -1 }\n", 2, Some(21), "> 0");
+    assert_scene_error(
+        "[[objects]]\nsphere = { radius = -1 }\n",
+        2,
+        Some(21),
+        "> 0",
+    );
     assert_scene_error("[[objects]]\nsphere = { radius = 0 }\n", 2, Some(21), "> 0");
-    assert_scene_error("[image]\nwidth = 0\n[[objects]]\nshape = \"cone\"\n", 2, Some(9), "from 1 to");
-    assert_scene_error("[[objects]]\ncylinder = { base = [0, 0, 0], top = [0, 0, 0] }\n", 2, None, "no height");
-    assert_scene_error("[[objects]]\nbox = { min = [0, 0, 0], max = [1, 0, 1] }\n", 2, None, "min < max");
+    assert_scene_error(
+        "[image]\nwidth = 0\n[[objects]]\nshape = \"cone\"\n",
+        2,
+        Some(9),
+        "from 1 to",
+    );
+    assert_scene_error(
+        "[[objects]]\ncylinder = { base = [0, 0, 0], top = [0, 0, 0] }\n",
+        2,
+        None,
+        "no height",
+    );
+    assert_scene_error(
+        "[[objects]]\nbox = { min = [0, 0, 0], max = [1, 0, 1] }\n",
+        2,
+        None,
+        "min < max",
+    );
 }
 
 /// A zero scale is refused: M would have no inverse.
 #[test]
 fn zero_scale_is_refused() {
-    assert_scene_error("[[objects]]\nshape = \"cone\"\ntransform = [ { scale = [1, 0, 1] } ]\n", 3, None, "non-zero scale");
-    assert_scene_error("[[objects]]\nshape = \"cone\"\ntransform = [ { scale = 0 } ]\n", 3, None, "non-zero scale");
+    assert_scene_error(
+        "[[objects]]\nshape = \"cone\"\ntransform = [ { scale = [1, 0, 1] } ]\n",
+        3,
+        None,
+        "non-zero scale",
+    );
+    assert_scene_error(
+        "[[objects]]\nshape = \"cone\"\ntransform = [ { scale = 0 } ]\n",
+        3,
+        None,
+        "non-zero scale",
+    );
 }
 
 /// The viewing angle must lie strictly between 0° and 180°.
@@ -146,7 +227,12 @@ fn fov_outside_the_open_interval_is_refused() {
 /// A material that no [materials.NAME] table defines is refused at its name.
 #[test]
 fn undefined_material_is_refused() {
-    assert_scene_error("[materials.red]\ndiffuse = [0.5, 0, 0]\n[[objects]]\nshape = \"cone\"\nmaterial = \"gold\"\n", 5, Some(12), "undefined material `gold`: expected one of red");
+    assert_scene_error(
+        "[materials.red]\ndiffuse = [0.5, 0, 0]\n[[objects]]\nshape = \"cone\"\nmaterial = \"gold\"\n",
+        5,
+        Some(12),
+        "undefined material `gold`: expected one of red",
+    );
 }
 
 /// An empty file (or one with only comments) is refused, as is a scene without objects.
@@ -167,12 +253,42 @@ fn syntax_error_is_reported_where_it_breaks() {
 /// Other checks: several shapes in one object, an unknown shape or step, a degenerate camera.
 #[test]
 fn other_scene_mistakes_are_refused() {
-    assert_scene_error("[[objects]]\nsphere = {}\nplane = {}\n", 1, Some(1), "exactly one shape");
-    assert_scene_error("[[objects]]\nshape = \"torus\"\n", 2, Some(9), "unknown shape `torus`");
-    assert_scene_error("[[objects]]\nshape = \"cone\"\ntransform = [ { spin = 3 } ]\n", 3, None, "unknown variant `spin`");
-    assert_scene_error("[camera]\neye = [0, 5, 0]\n[[objects]]\nshape = \"cone\"\n", 1, None, "parallel");
-    assert_scene_error("[[objects]]\npolyhedron = { preset = \"dodecahedron\" }\n", 2, None, "cube, tetrahedron, octahedron");
-    assert_scene_error("[[lights]]\nposition = [0, 1, 0]\nattenuation = [0, 0, 0]\n[[objects]]\nshape = \"cone\"\n", 3, None, "cannot all be zero");
+    assert_scene_error(
+        "[[objects]]\nsphere = {}\nplane = {}\n",
+        1,
+        Some(1),
+        "exactly one shape",
+    );
+    assert_scene_error(
+        "[[objects]]\nshape = \"torus\"\n",
+        2,
+        Some(9),
+        "unknown shape `torus`",
+    );
+    assert_scene_error(
+        "[[objects]]\nshape = \"cone\"\ntransform = [ { spin = 3 } ]\n",
+        3,
+        None,
+        "unknown variant `spin`",
+    );
+    assert_scene_error(
+        "[camera]\neye = [0, 5, 0]\n[[objects]]\nshape = \"cone\"\n",
+        1,
+        None,
+        "parallel",
+    );
+    assert_scene_error(
+        "[[objects]]\npolyhedron = { preset = \"dodecahedron\" }\n",
+        2,
+        None,
+        "cube, tetrahedron, octahedron",
+    );
+    assert_scene_error(
+        "[[lights]]\nposition = [0, 1, 0]\nattenuation = [0, 0, 0]\n[[objects]]\nshape = \"cone\"\n",
+        3,
+        None,
+        "cannot all be zero",
+    );
 }
 
 /// Bad flags and paths: one line, exit status 2, nothing written.
@@ -192,9 +308,16 @@ fn bad_flags_and_paths_exit_with_status_2() {
         let err = stderr(&o);
         assert_eq!(o.status.code(), Some(2), "{args:?}: {err}");
         assert_eq!(err.lines().count(), 1, "{args:?}: {err}");
-        assert!(err.starts_with("error: ") && err.contains(needle), "{args:?}: {err}");
+        assert!(
+            err.starts_with("error: ") && err.contains(needle),
+            "{args:?}: {err}"
+        );
     }
-    assert_eq!(std::fs::read_dir(dir.path()).unwrap().count(), 0, "nothing written");
+    assert_eq!(
+        std::fs::read_dir(dir.path()).unwrap().count(),
+        0,
+        "nothing written"
+    );
 }
 
 /// --help explains and exits 0.
@@ -204,7 +327,15 @@ fn help_explains_and_exits_zero() {
     let o = run(CHAPTERS[4], &["--help"], dir.path());
     assert_eq!(o.status.code(), Some(0));
     let text = String::from_utf8_lossy(&o.stdout);
-    for flag in ["--output", "--width", "--height", "--samples", "--max-depth", "--stats", "SCENE"] {
+    for flag in [
+        "--output",
+        "--width",
+        "--height",
+        "--samples",
+        "--max-depth",
+        "--stats",
+        "SCENE",
+    ] {
         assert!(text.contains(flag), "{flag} missing from --help");
     }
 }
@@ -218,9 +349,16 @@ fn over_unity_material_warns_but_renders() {
         "[materials.hot]\nambient = 0.5\ndiffuse = 0.6\nspecular = 0.2\n[[objects]]\nsphere = {}\nmaterial = \"hot\"\n",
     )
     .unwrap();
-    let o = run(CHAPTERS[2], &["s.toml", "-o", "s.png", "--width", "16"], dir.path());
+    let o = run(
+        CHAPTERS[2],
+        &["s.toml", "-o", "s.png", "--width", "16"],
+        dir.path(),
+    );
     assert!(o.status.success(), "{}", stderr(&o));
     let err = stderr(&o);
-    assert!(err.contains("warning:") && err.contains("`hot`") && err.contains("exceeds 1"), "{err}");
+    assert!(
+        err.contains("warning:") && err.contains("`hot`") && err.contains("exceeds 1"),
+        "{err}"
+    );
     assert!(dir.path().join("s.png").exists());
 }
