@@ -20,7 +20,8 @@ use crate::error::Error;
 use crate::output;
 use crate::real::Real;
 use crate::render::{self, Options, Stage, View};
-use crate::scene::{self, Scene, load::MAX_SIDE};
+use crate::scene::load::{MAX_DEPTH, MAX_SAMPLES, MAX_SIDE};
+use crate::scene::{self, Scene};
 
 /// The default scene, compiled into every binary.
 pub const SHOWCASE: &str = include_str!("../scenes/showcase.toml");
@@ -55,10 +56,10 @@ pub struct ViewArg {
 #[derive(Args, Debug, Clone)]
 pub struct Tracing {
     /// Samples per pixel (jittered from a fixed seed: the same image every run) [default: the scene's, else 1].
-    #[arg(long, value_name = "N", value_parser = clap::value_parser!(u32).range(1..=4096))]
+    #[arg(long, value_name = "N", value_parser = clap::value_parser!(u32).range(1..=MAX_SAMPLES as i64))]
     pub samples: Option<u32>,
     /// Maximum recursion depth of mirror and transmitted rays [default: the scene's, else 5].
-    #[arg(long, value_name = "N", value_parser = clap::value_parser!(u32).range(0..=64))]
+    #[arg(long, value_name = "N", value_parser = clap::value_parser!(u32).range(0..=MAX_DEPTH as i64))]
     pub max_depth: Option<u32>,
     /// Print rays cast by kind, time and rays per second.
     #[arg(long)]
@@ -157,7 +158,7 @@ fn run_inner(
     eprintln!("wrote {} ({}×{})", out.display(), fb.width, fb.height);
     if tracing.is_some_and(|t| t.stats) {
         eprintln!(
-            "{}×{}, {} sample(s)/px, depth {}: rays {} primary, {} shadow, {} reflected, {} refracted ({} total); {:.3} s, {:.2} M rays/s",
+            "{}×{}, {} sample(s)/px, depth {}: rays {} primary, {} shadow, {} reflected ({} by total internal reflection), {} refracted ({} total); {:.3} s, {:.2} M rays/s",
             fb.width,
             fb.height,
             options.samples,
@@ -165,6 +166,7 @@ fn run_inner(
             stats.primary,
             stats.shadow,
             stats.reflected,
+            stats.total_internal,
             stats.refracted,
             stats.total(),
             seconds,

@@ -291,12 +291,20 @@ fn cube_entering_and_leaving_facets() {
     assert_vec_eq(hits.as_slice()[1].normal, Vec3::NEG_Z, TOL);
 }
 
-/// "Convex Polyhedra": n·d = 0 and d − n·e < 0 — parallel to a facet and outside it: a miss;
-/// n·d = 0 and d − n·e > 0 — parallel and inside: that facet does not stop the ray.
+/// "Convex Polyhedra" (erratum: the table swaps inside and outside): with n·d = 0, the notes'
+/// own rule (Q·n < d is inside) makes d − n·e < 0 *outside* — a miss — and d − n·e > 0 inside,
+/// where the facet does not stop the ray. The notes' table says the opposite.
 #[test]
 fn ray_parallel_to_a_facet_misses_outside_and_passes_inside() {
     let cube = generic(Shape::Polyhedron(Polyhedron::cube()));
-    // parallel to the facet y = 1, at y = 2 (outside)
+    // parallel to the facet y = 1 (index 2), at y = 2: d − n·e = 1 − 2 < 0, outside
+    let facet = Polyhedron::cube().facets[2];
+    let e = vec3(0.0, 2.0, 5.0);
+    assert!(facet.d - facet.normal.dot(e) < 0.0);
+    assert!(
+        facet.normal.dot(e) > facet.d,
+        "Q·n > d: outside, by the notes' rule"
+    );
     assert!(
         cube.intersect(&ray([0.0, 2.0, 5.0], [0.0, 0.0, -1.0]), Formula::Robust)
             .is_empty()
@@ -502,4 +510,67 @@ fn polyhedron_ray_across_an_edge_grazes_once() {
         cube.intersect(&ray([0.5, 0.0, 2.5], [1.0, 0.0, -1.0]), Formula::Robust)
             .is_empty()
     );
+}
+
+/// "Convex Polyhedra": the presets are closed solids; their corners are where three facets meet.
+#[test]
+fn presets_are_closed_solids_with_the_expected_corners() {
+    let distinct = |p: &Polyhedron| {
+        let mut v: Vec<Vec3> = Vec::new();
+        for q in p.vertices() {
+            if v.iter().all(|w| (*w - q).length() > 1e3 * TOL) {
+                v.push(q);
+            }
+        }
+        v
+    };
+    for (p, corners) in [
+        (Polyhedron::cube(), 8),
+        (Polyhedron::tetrahedron(), 4),
+        (Polyhedron::octahedron(), 6),
+    ] {
+        assert_eq!(p.check(), Ok(()));
+        let v = distinct(&p);
+        assert_eq!(v.len(), corners, "{v:?}");
+        for q in v {
+            assert_abs_diff_eq!(q.abs().max_element(), 1.0, epsilon = 1e3 * TOL); // corners on the unit cube's surface
+        }
+    }
+}
+
+/// "Convex Polyhedra": facets that leave a direction open, contradict each other, or squeeze
+/// the solid flat describe no polyhedron; `check` says which.
+#[test]
+fn open_empty_or_flat_facet_sets_are_not_polyhedra() {
+    let from = |rows: &[[f64; 4]]| Polyhedron {
+        facets: rows
+            .iter()
+            .map(|r| polyhedron::Facet::new(vec3(r[0], r[1], r[2]), r[3] as Real).unwrap())
+            .collect(),
+    };
+    let open = from(&[
+        [0.0, -1.0, 0.0, 0.0],
+        [1.0, 1.0, 0.0, 1.0],
+        [-1.0, 1.0, 0.0, 1.0],
+        [0.0, 0.0, 1.0, 0.5],
+    ]);
+    assert!(open.check().unwrap_err().contains("unbounded"));
+    let empty = from(&[
+        [1.0, 0.0, 0.0, -1.0],
+        [-1.0, 0.0, 0.0, -1.0],
+        [0.0, 1.0, 0.0, 1.0],
+        [0.0, -1.0, 0.0, 1.0],
+        [0.0, 0.0, 1.0, 1.0],
+        [0.0, 0.0, -1.0, 1.0],
+    ]);
+    assert!(empty.check().unwrap_err().contains("no solid"));
+    let flat = from(&[
+        [1.0, 0.0, 0.0, 0.0],
+        [-1.0, 0.0, 0.0, 0.0],
+        [0.0, 1.0, 0.0, 1.0],
+        [0.0, -1.0, 0.0, 1.0],
+        [0.0, 0.0, 1.0, 1.0],
+        [0.0, 0.0, -1.0, 1.0],
+    ]);
+    assert!(flat.check().unwrap_err().contains("flat"));
 }

@@ -14,16 +14,30 @@ use toml::Spanned;
 // ---------------------------------------------------------------------------------------------
 // Checked numbers
 
+/// True when x is finite in f64 *and* at the precision in use (1e300 is not an f32).
+fn representable(x: f64) -> bool {
+    x.is_finite() && crate::real::real(x).is_finite()
+}
+
+fn not_finite(x: f64) -> String {
+    if x.is_finite() {
+        format!(
+            "expected a finite number, found {x:e}, which is too large for {} precision",
+            crate::real::PRECISION
+        )
+    } else {
+        format!("expected a finite number, found {x}")
+    }
+}
+
 /// Reads one number (TOML float or integer) and applies `check`, which names what is expected.
 fn number<'de, D: Deserializer<'de>>(
     de: D,
     check: fn(f64) -> Result<f64, &'static str>,
 ) -> Result<f64, D::Error> {
     let x = f64::deserialize(de)?;
-    if !x.is_finite() {
-        return Err(de::Error::custom(format!(
-            "expected a finite number, found {x}"
-        )));
+    if !representable(x) {
+        return Err(de::Error::custom(not_finite(x)));
     }
     check(x).map_err(|want| de::Error::custom(format!("expected {want}, found {x}")))
 }
@@ -86,8 +100,8 @@ fn triple<'de, D: Deserializer<'de>>(
     }
     impl V {
         fn one<E: de::Error>(&self, x: f64) -> Result<f64, E> {
-            if !x.is_finite() {
-                return Err(E::custom(format!("expected a finite number, found {x}")));
+            if !representable(x) {
+                return Err(E::custom(not_finite(x)));
             }
             (self.check)(x).map_err(|want| E::custom(format!("expected {want}, found {x}")))
         }
@@ -200,7 +214,7 @@ pub struct SceneFile {
     pub lights: Vec<LightDesc>,
     /// `[materials.NAME]`.
     #[serde(default)]
-    pub materials: BTreeMap<String, MaterialDesc>,
+    pub materials: BTreeMap<String, Spanned<MaterialDesc>>,
     /// `[[objects]]`.
     #[serde(default)]
     pub objects: Vec<Spanned<ObjectDesc>>,
@@ -304,15 +318,15 @@ impl Default for ImageDesc {
 pub struct RenderDesc {
     /// Maximum recursion depth of chapter 5 (default 5).
     #[serde(default = "RenderDesc::default_depth")]
-    pub max_depth: u32,
+    pub max_depth: Spanned<u32>,
     /// Samples per pixel (default 1).
     #[serde(default = "RenderDesc::default_samples")]
     pub samples: Spanned<u32>,
 }
 
 impl RenderDesc {
-    fn default_depth() -> u32 {
-        5
+    fn default_depth() -> Spanned<u32> {
+        Spanned::new(0..0, 5)
     }
     fn default_samples() -> Spanned<u32> {
         Spanned::new(0..0, 1)
@@ -509,6 +523,6 @@ pub struct ObjectDesc {
     pub transform: Vec<Spanned<StepDesc>>,
     /// Name of a `[materials.NAME]` table (default: a matte grey).
     pub material: Option<Spanned<String>>,
-    /// A name for messages and ray trees.
+    /// A label for whoever reads the scene file; the renderer does not use it.
     pub name: Option<String>,
 }
