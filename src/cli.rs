@@ -33,7 +33,7 @@ pub const SHOWCASE_NAME: &str = "scenes/showcase.toml";
 pub struct Common {
     /// Scene file (TOML). Without it, the built-in showcase scene (scenes/showcase.toml) is rendered.
     pub scene: Option<PathBuf>,
-    /// Where to write the PNG image [default: <binary name>.png in the current directory].
+    /// Where to write the PNG image [default: BINARY_NAME.png in the current directory].
     #[arg(short, long, value_name = "OUT.png")]
     pub output: Option<PathBuf>,
     /// Image width in pixels; alone, the height follows the scene's aspect ratio.
