@@ -574,3 +574,43 @@ fn open_empty_or_flat_facet_sets_are_not_polyhedra() {
     ]);
     assert!(flat.check().unwrap_err().contains("flat"));
 }
+
+/// "Generic Cone" (erratum: the base radius): at z = −1 the wall reaches x² + y² = (1 + 1)² = 4,
+/// so the base it closes on has radius 2. A ray from below at x = 1.5 enters through the base
+/// (a unit disc would let it into a hole) and leaves through the wall where 1 − z = 1.5.
+#[test]
+fn cone_base_has_radius_two() {
+    let k = 1.0 / (2.0 as Real).sqrt();
+    for formula in [Formula::Textbook, Formula::Robust] {
+        let hits = generic(Shape::Cone).intersect(&ray([1.5, 0.0, -3.0], [0.0, 0.0, 1.0]), formula);
+        assert_hits(&hits, &[(2.0, Part::Base), (2.5, Part::Wall)]);
+        assert_vec_eq(hits.as_slice()[1].normal, vec3(1.0, 0.0, 1.0) * k, TOL);
+        // just outside the radius-2 base: a miss
+        assert!(
+            generic(Shape::Cone)
+                .intersect(&ray([2.01, 0.0, -3.0], [0.0, 0.0, 1.0]), formula)
+                .is_empty()
+        );
+    }
+}
+
+/// "Ray Tracing Process": the placement form `cone = { base, apex, radius }` puts a base of the
+/// given radius on `base` and the apex on `apex`.
+#[test]
+fn placed_cone_from_base_apex_radius() {
+    let scene = whitted::scene::parse(
+        "[[objects]]\ncone = { base = [0.0, 0.0, 0.0], apex = [0.0, 3.0, 0.0], radius = 0.5 }\n",
+        "t.toml",
+    )
+    .unwrap();
+    let o = &scene.objects[0];
+    // along x just above the floor: the wall at radius 0.5·(1 − 0.3/3) = 0.45
+    let hits = o.intersect(&ray([-3.0, 0.3, 0.0], [1.0, 0.0, 0.0]), Formula::Robust);
+    assert_hits(&hits, &[(2.55, Part::Wall), (3.45, Part::Wall)]);
+    // up the axis from below: base at y = 0, apex at y = 3
+    let hits = o.intersect(&ray([0.0, -1.0, 0.0], [0.0, 1.0, 0.0]), Formula::Robust);
+    assert_eq!(hits.len(), 2);
+    assert_abs_diff_eq!(hits.as_slice()[0].t, 1.0, epsilon = 10.0 * TOL);
+    assert_eq!(hits.as_slice()[0].part, Part::Base);
+    assert_abs_diff_eq!(hits.as_slice()[1].t, 4.0, epsilon = 10.0 * TOL);
+}

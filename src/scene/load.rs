@@ -12,7 +12,7 @@
 //! | `sphere = { center = c, radius = r }` | scale r, translate c |
 //! | `plane = { point = p, normal = n }` | rotate +z onto n, translate p |
 //! | `cylinder = { base = b, top = t, radius = r }` | scale (r, r, h/2), rotate +z onto (t − b)/h, translate (b + t)/2, with h = ‖t − b‖ |
-//! | `cone = { base = b, apex = a, radius = r }` | as the cylinder with t = a: the generic apex (0, 0, 1) lands on a |
+//! | `cone = { base = b, apex = a, radius = r }` | scale (r/2, r/2, h/2), then as the cylinder with t = a: the generic base (radius 2 at z = −1) lands on b with radius r, the apex (0, 0, 1) on a |
 //! | `box = { min = p, max = q }` | the cube [−1, 1]³, scale (q − p)/2, translate (p + q)/2 |
 //!
 //! Any object may add `transform = [ … ]` steps, applied after its placement form.
@@ -244,12 +244,13 @@ pub fn parse(text: &str, file: &str) -> Result<Scene, Error> {
     })
 }
 
-/// The steps that turn a generic shape into the placement form's object.
-fn axial_steps(base: Vec3, top: Vec3, radius: f64) -> Option<Vec<Step>> {
+/// The steps that turn a generic shape whose base disc at z = −1 has radius `generic_radius`
+/// (1 for the cylinder, 2 for the cone) into the object with the given base, top and radius.
+fn axial_steps(base: Vec3, top: Vec3, radius: f64, generic_radius: f64) -> Option<Vec<Step>> {
     let axis = top - base;
     let h = axis.length();
     let dir = axis.try_normalize()?;
-    let r = real(radius);
+    let r = real(radius / generic_radius);
     Some(vec![
         Step::Scale(Vec3::new(r, r, h / 2.0)),
         rotation_from_z(dir),
@@ -396,7 +397,15 @@ fn axial(
         ));
     }
     let top = end(a).ok_or_else(|| err(c.span(), format!("{what}: missing `{end_key}`")))?;
-    axial_steps(vec3_from(a.base.0), vec3_from(top.0), a.radius.0).ok_or_else(|| {
+    // the generic cone x² + y² = (1 − z)² is 2 wide at its base z = −1; the cylinder 1
+    let generic_radius = if end_key == "apex" { 2.0 } else { 1.0 };
+    axial_steps(
+        vec3_from(a.base.0),
+        vec3_from(top.0),
+        a.radius.0,
+        generic_radius,
+    )
+    .ok_or_else(|| {
         err(
             c.span(),
             format!("{what}: `base` and `{end_key}` are the same point, so it has no height"),

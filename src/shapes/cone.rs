@@ -1,6 +1,8 @@
 //! The generic cone x² + y² = (1 − z)², z ∈ [−1, 1], with its base at z = −1 (notes: "Generic Cone").
 //!
-//! The apex is (0, 0, 1) and the base a unit disc at z = −1. With the ray e + d·t:
+//! The apex is (0, 0, 1) and the base a disc of radius 2 at z = −1, where the wall reaches
+//! x² + y² = (1 + 1)² (the notes call it a unit circle, which leaves a ring-shaped hole: an
+//! erratum). With the ray e + d·t:
 //!
 //! ```text
 //! a = d_x² + d_y² − d_z²
@@ -9,7 +11,7 @@
 //! ```
 //!
 //! and a·t² + 2b·t + c = 0. A root is on the wall when z ∈ [−1, 1]; the base is the plane
-//! z = −1 inside the unit circle. Normals: (x, y, 1 − z) on the wall and (0, 0, −1) on the
+//! z = −1 inside the circle of radius 2. Normals: (x, y, 1 − z) on the wall and (0, 0, −1) on the
 //! base. At the apex the wall normal (x, y, 1 − z) is the zero vector; whitted uses the axis
 //! (0, 0, 1) there, so every hit has a finite unit normal.
 //!
@@ -107,8 +109,8 @@ fn intersect_robust(ray: &Ray) -> Hits {
     }
 }
 
-/// The notes' method as written: roots kept when z ∈ [−1, 1], and the base plane z = −1 kept
-/// when the point lies inside the unit circle.
+/// The notes' method: roots kept when z ∈ [−1, 1], and the base plane z = −1 kept when the point
+/// lies inside the base circle (radius 2, not the notes' 1).
 fn intersect_textbook(ray: &Ray) -> Hits {
     let (a, b, c) = coefficients(ray);
     let mut found: Vec<Hit> = Vec::with_capacity(3);
@@ -131,7 +133,8 @@ fn intersect_textbook(ray: &Ray) -> Hits {
     if ray.dir.z != 0.0 {
         let t = (-1.0 - ray.origin.z) / ray.dir.z;
         let p = ray.at(t);
-        if t.is_finite() && p.x * p.x + p.y * p.y <= 1.0 {
+        if t.is_finite() && p.x * p.x + p.y * p.y <= 4.0 {
+            // the base disc at z = −1 has radius 1 − (−1) = 2 (the notes say 1: an erratum)
             found.push(Hit {
                 t,
                 normal: Vec3::NEG_Z,

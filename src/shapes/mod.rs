@@ -161,7 +161,7 @@ pub enum Shape {
     Plane,
     /// The unit cylinder x² + y² = 1 for z ∈ [−1, 1], closed by caps at z = ±1.
     Cylinder,
-    /// The cone x² + y² = (1 − z)² for z ∈ [−1, 1]: apex (0, 0, 1), base of radius 1 at z = −1.
+    /// The cone x² + y² = (1 − z)² for z ∈ [−1, 1]: apex (0, 0, 1), base of radius 2 at z = −1.
     Cone,
     /// A convex polyhedron: the intersection of half-spaces n·P ≤ d.
     Polyhedron(Polyhedron),
