@@ -14,16 +14,32 @@ use toml::Spanned;
 // ---------------------------------------------------------------------------------------------
 // Checked numbers
 
+/// True when x is finite in f64 *and* in [`crate::real::Real`]: under the `f32` feature a value
+/// such as 1e300 is finite as read but would become infinite in the renderer.
+fn representable(x: f64) -> bool {
+    x.is_finite() && crate::real::real(x).is_finite()
+}
+
+/// The message for a number that is not finite at the precision in use.
+fn not_finite(x: f64) -> String {
+    if x.is_finite() {
+        format!(
+            "expected a finite number, found {x}, which is infinite in {}",
+            crate::real::PRECISION
+        )
+    } else {
+        format!("expected a finite number, found {x}")
+    }
+}
+
 /// Reads one number (TOML float or integer) and applies `check`, which names what is expected.
 fn number<'de, D: Deserializer<'de>>(
     de: D,
     check: fn(f64) -> Result<f64, &'static str>,
 ) -> Result<f64, D::Error> {
     let x = f64::deserialize(de)?;
-    if !x.is_finite() {
-        return Err(de::Error::custom(format!(
-            "expected a finite number, found {x}"
-        )));
+    if !representable(x) {
+        return Err(de::Error::custom(not_finite(x)));
     }
     check(x).map_err(|want| de::Error::custom(format!("expected {want}, found {x}")))
 }
@@ -86,8 +102,8 @@ fn triple<'de, D: Deserializer<'de>>(
     }
     impl V {
         fn one<E: de::Error>(&self, x: f64) -> Result<f64, E> {
-            if !x.is_finite() {
-                return Err(E::custom(format!("expected a finite number, found {x}")));
+            if !representable(x) {
+                return Err(E::custom(not_finite(x)));
             }
             (self.check)(x).map_err(|want| E::custom(format!("expected {want}, found {x}")))
         }
