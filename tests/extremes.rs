@@ -815,6 +815,51 @@ proptest! {
     }
 }
 
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 3000, failure_persistence: None, ..ProptestConfig::default() })]
+
+    /// Notes, "Shadowing" and "Reflection and Refraction", at random placements: a ray spawned
+    /// by the default (error-bound) offset from a hit on a convex shape never meets that surface
+    /// again where it starts. Leaving outwards (n·dir > 0) it meets the shape nowhere ahead;
+    /// going inwards it meets it once, leaving, well past its start.
+    #[test]
+    fn spawned_rays_never_meet_their_own_surface_where_they_start(
+        which in 0u8..5,
+        (s, steps) in placement(),
+        from in prop::array::uniform3(-60.0f64..60.0),
+        towards in prop::array::uniform3(-0.9f64..0.9),
+        tangent in prop::array::uniform3(-1.0f64..1.0),
+        lift in 0.02f64..1.0,
+        inwards in any::<bool>(),
+    ) {
+        let shape = shape_of(which);
+        let object = placed(shape.clone(), &steps);
+        let m = object.placement.m;
+        let origin = m.transform_point3(Vec3::ZERO) + vec3(from[0] * s, from[1] * s, from[2] * s);
+        let target = m.transform_point3(vec3(towards[0], towards[1], towards[2]));
+        prop_assume!(origin != target);
+        let ray = Ray::new(origin, target - origin);
+        let hs = hits(&object, &ray, Formula::Robust);
+        let Some(hit) = hs.first() else { return Ok(()); };
+        let n = hit.normal;
+        let t = vec3(tangent[0], tangent[1], tangent[2]);
+        let t = t - n * t.dot(n);
+        let side = if inwards { -1.0 } else { 1.0 };
+        let dir = normalize(t + n * real(side * lift));
+        prop_assume!(f(dir.dot(n)) * side > 0.01);
+        let spawn = whitted::offset::SpawnPoint::new(&object, &ray, hit);
+        let (start, t_min) = Offset::ErrorBound.spawn(&spawn, dir);
+        let again = hits(&object, &Ray::new(start, dir), Formula::Robust);
+        let ahead: Vec<&Hit> = again.iter().filter(|h| h.t > t_min).collect();
+        if !inwards || !shape.is_closed() {
+            prop_assert!(ahead.is_empty(), "met its own surface again: {ahead:?} from {hit:?}");
+        } else {
+            prop_assert_eq!(ahead.len(), 1, "{:?} from {:?}", again, hit);
+            prop_assert!(!ahead[0].entering);
+        }
+    }
+}
+
 /// The example scenes the loader is fuzzed with.
 const SCENES: [(&str, &str); 3] = [
     (

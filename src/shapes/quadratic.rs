@@ -18,13 +18,15 @@ use crate::numeric::sign;
 use crate::real::Real;
 
 /// Which formulas the intersection routines use.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash, clap::ValueEnum)]
 pub enum Formula {
     /// The notes' formulas as printed: t = −b/a ± √(b² − ac)/a, discriminant b² − ac,
     /// and the notes' range tests for the cylinder and cone.
+    #[value(help = "the notes' formulas as printed")]
     Textbook,
     /// Cancellation-free roots and discriminants, interval clipping for finite shapes.
     #[default]
+    #[value(help = "cancellation-free roots and discriminants (default)")]
     Robust,
 }
 
