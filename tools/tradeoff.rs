@@ -180,6 +180,12 @@ struct Image {
     mask: Vec<u8>,
 }
 
+/// A [`Real`] as f64 (a no-op in the default precision, hence the allowed cast).
+#[allow(clippy::unnecessary_cast)]
+fn wide(x: Real) -> f64 {
+    x as f64
+}
+
 fn median(mut xs: Vec<f64>) -> f64 {
     xs.sort_by(f64::total_cmp);
     let n = xs.len();
@@ -206,7 +212,7 @@ fn measure(s: &Setting, width: u32, height: u32, runs: usize) -> (f64, Image) {
     let pixels = fb
         .pixels
         .iter()
-        .map(|p| [f64::from(p.x), f64::from(p.y), f64::from(p.z)])
+        .map(|p| [wide(p.x), wide(p.y), wide(p.z)])
         .collect();
     (
         median(times),
@@ -693,12 +699,12 @@ fn report(
     w(String::new());
     w("| scene | precision | formula | offset | samples | depth | time (ms) | RMSE | max | off > 1/255 | numeric | hit/miss | non-finite |".into());
     w("|---|---|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|".into());
-    for scene in 0..SCENES.len() {
+    for (scene, (scene_name, _, _)) in SCENES.iter().enumerate() {
         for r in rows.iter().filter(|r| r.setting.scene == scene) {
             let s = r.setting;
             w(format!(
                 "| {} | {} | {} | {} | {} | {} | {:.1} | {:.2} | {:.0} | {:.2}% | {:.2}% | {} | {} |",
-                SCENES[scene].0,
+                scene_name,
                 r.precision,
                 formula_name(s.formula),
                 s.offset.name(),
