@@ -23,7 +23,8 @@ use crate::offset::OffsetKind;
 use crate::output;
 use crate::real::Real;
 use crate::render::{self, Options, Stage, View};
-use crate::scene::{self, Scene, load::MAX_SIDE};
+use crate::scene::load::{MAX_DEPTH, MAX_SAMPLES, MAX_SIDE};
+use crate::scene::{self, Scene};
 use crate::shapes::Formula;
 
 /// The default scene, compiled into every binary.
@@ -36,7 +37,7 @@ pub const SHOWCASE_NAME: &str = "scenes/showcase.toml";
 pub struct Common {
     /// Scene file (TOML). Without it, the built-in showcase scene (scenes/showcase.toml) is rendered.
     pub scene: Option<PathBuf>,
-    /// Where to write the PNG image [default: <binary name>.png in the current directory].
+    /// Where to write the PNG image [default: BINARY_NAME.png in the current directory].
     #[arg(short, long, value_name = "OUT.png")]
     pub output: Option<PathBuf>,
     /// Image width in pixels; alone, the height follows the scene's aspect ratio.
@@ -59,10 +60,10 @@ pub struct ViewArg {
 #[derive(Args, Debug, Clone)]
 pub struct Tracing {
     /// Samples per pixel (jittered from a fixed seed: the same image every run) [default: the scene's, else 1].
-    #[arg(long, value_name = "N", value_parser = clap::value_parser!(u32).range(1..=4096))]
+    #[arg(long, value_name = "N", value_parser = clap::value_parser!(u32).range(1..=MAX_SAMPLES as i64))]
     pub samples: Option<u32>,
     /// Maximum recursion depth of mirror and transmitted rays [default: the scene's, else 5].
-    #[arg(long, value_name = "N", value_parser = clap::value_parser!(u32).range(0..=64))]
+    #[arg(long, value_name = "N", value_parser = clap::value_parser!(u32).range(0..=MAX_DEPTH as i64))]
     pub max_depth: Option<u32>,
     /// Print rays cast by kind, time and rays per second.
     #[arg(long)]
@@ -80,6 +81,26 @@ pub struct Accuracy {
     /// by the hit point's magnitude, or a bound on the hit point's rounding error.
     #[arg(long, value_enum, default_value_t = OffsetKind::ErrorBound)]
     pub offset: OffsetKind,
+}
+
+/// Parses the command line. `--help` and `--version` print and exit 0; any other problem is
+/// printed as one line `error: …` (clap's own first line) with exit status 2.
+#[must_use]
+pub fn parse_args<T: clap::Parser>() -> T {
+    match T::try_parse() {
+        Ok(args) => args,
+        Err(e) if !e.use_stderr() => {
+            // --help, --version: not errors
+            let _ = e.print();
+            std::process::exit(0);
+        }
+        Err(e) => {
+            let text = e.render().to_string();
+            let first = text.lines().next().unwrap_or("error: invalid arguments");
+            eprintln!("{first} (see --help)");
+            std::process::exit(2);
+        }
+    }
 }
 
 /// Reads the scene named on the command line, or the embedded showcase.
@@ -171,7 +192,7 @@ fn run_inner(
     eprintln!("wrote {} ({}×{})", out.display(), fb.width, fb.height);
     if tracing.is_some_and(|t| t.stats) {
         eprintln!(
-            "{}×{}, {} sample(s)/px, depth {}: rays {} primary, {} shadow, {} reflected, {} refracted ({} total); {:.3} s, {:.2} M rays/s",
+            "{}×{}, {} sample(s)/px, depth {}: rays {} primary, {} shadow, {} reflected ({} by total internal reflection), {} refracted ({} total); {:.3} s, {:.2} M rays/s",
             fb.width,
             fb.height,
             options.samples,
@@ -179,6 +200,7 @@ fn run_inner(
             stats.primary,
             stats.shadow,
             stats.reflected,
+            stats.total_internal,
             stats.refracted,
             stats.total(),
             seconds,

@@ -7,6 +7,13 @@
 //! |---|---|---|
 //! | 1 camera rays | `ch01_camera_rays` | [`camera`], [`ray`], [`real`] |
 //! | 2 generic objects | `ch02_generic_objects` | [`shapes`], [`transform`], [`scene`] |
+//! | 3 shading | `ch03_shading` | [`shading`], [`light`], [`material`] |
+//! | 4 shadows | `ch04_shadows` | [`shadow`], [`offset`] |
+//! | 5 reflection and refraction | `ch05_reflection_refraction` | [`optics`] |
+//!
+//! Shared by all: [`render`] (the trace loop, [`render::Stage`] decides which stops exist),
+//! [`numeric`], [`error`], [`output`] (atomic PNG writing) and [`cli`] (the arguments every
+//! binary shares).
 //!
 //! Everything computes with [`real::Real`], `f64` by default and `f32` under the `f32` feature.
 

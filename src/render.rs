@@ -97,7 +97,12 @@ impl Options {
             view: View::Color,
             width: scene.width,
             height: scene.height,
-            samples: scene.samples,
+            // supersampling belongs to chapter 5; earlier chapters shoot one ray per pixel centre
+            samples: if stage == Stage::ReflectionRefraction {
+                scene.samples
+            } else {
+                1
+            },
             max_depth: scene.max_depth,
             min_weight: Self::MIN_WEIGHT,
             formula: Formula::default(),
@@ -262,20 +267,25 @@ impl<'a> Tracer<'a> {
         }
     }
 
-    /// The position inside pixel (x, y) of sample `s`: the centre for one sample, otherwise
-    /// stratified jitter from a fixed seed (the same every run).
+    /// The position inside pixel (x, y) of sample `s`: the centre for one sample; for a square
+    /// number of samples k², one jittered point in each cell of a k × k grid; otherwise
+    /// jittered points over the whole pixel. The jitter comes from a hash of the seed, the pixel
+    /// and the sample index, so every run (and every thread count) gives the same image.
     #[must_use]
     pub fn sample_position(&self, x: u32, y: u32, s: u32) -> (Real, Real) {
         let n = self.options.samples;
         if n <= 1 {
             return (0.5, 0.5);
         }
-        let k = (n as Real).sqrt().ceil() as u32; // a k × k grid of strata, visited in order
-        let (sx, sy) = (s % k, (s / k) % k);
         let h = mix(self.options.seed ^ mix(((y as u64) << 32 | x as u64) ^ mix(s as u64)));
-        let jx = unit(h);
-        let jy = unit(mix(h));
-        ((sx as Real + jx) / k as Real, (sy as Real + jy) / k as Real)
+        let (jx, jy) = (unit(h), unit(mix(h)));
+        let k = (n as f64).sqrt().round() as u32;
+        if k * k == n {
+            let (sx, sy) = (s % k, s / k);
+            ((sx as Real + jx) / k as Real, (sy as Real + jy) / k as Real)
+        } else {
+            (jx, jy)
+        }
     }
 
     /// The colour of pixel (x, y), row y from the top: the mean over its samples.

@@ -18,7 +18,7 @@ struct Args {
 }
 
 fn main() -> ExitCode {
-    let args = Args::parse();
+    let args: Args = whitted::cli::parse_args();
     run(
         "ch01_camera_rays",
         Stage::CameraRays,

@@ -20,7 +20,7 @@ struct Args {
 }
 
 fn main() -> ExitCode {
-    let args = Args::parse();
+    let args: Args = whitted::cli::parse_args();
     run(
         "ch03_shading",
         Stage::Shading,

@@ -22,7 +22,7 @@ struct Args {
 }
 
 fn main() -> ExitCode {
-    let args = Args::parse();
+    let args: Args = whitted::cli::parse_args();
     run_with_accuracy(
         "ch04_shadows",
         Stage::Shadows,

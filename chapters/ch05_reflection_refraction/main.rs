@@ -24,7 +24,7 @@ struct Args {
 }
 
 fn main() -> ExitCode {
-    let args = Args::parse();
+    let args: Args = whitted::cli::parse_args();
     run_with_accuracy(
         "ch05_reflection_refraction",
         Stage::ReflectionRefraction,

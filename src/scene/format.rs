@@ -14,17 +14,15 @@ use toml::Spanned;
 // ---------------------------------------------------------------------------------------------
 // Checked numbers
 
-/// True when x is finite in f64 *and* in [`crate::real::Real`]: under the `f32` feature a value
-/// such as 1e300 is finite as read but would become infinite in the renderer.
+/// True when x is finite in f64 *and* at the precision in use (1e300 is not an f32).
 fn representable(x: f64) -> bool {
     x.is_finite() && crate::real::real(x).is_finite()
 }
 
-/// The message for a number that is not finite at the precision in use.
 fn not_finite(x: f64) -> String {
     if x.is_finite() {
         format!(
-            "expected a finite number, found {x}, which is infinite in {}",
+            "expected a finite number, found {x:e}, which is too large for {} precision",
             crate::real::PRECISION
         )
     } else {
@@ -216,7 +214,7 @@ pub struct SceneFile {
     pub lights: Vec<LightDesc>,
     /// `[materials.NAME]`.
     #[serde(default)]
-    pub materials: BTreeMap<String, MaterialDesc>,
+    pub materials: BTreeMap<String, Spanned<MaterialDesc>>,
     /// `[[objects]]`.
     #[serde(default)]
     pub objects: Vec<Spanned<ObjectDesc>>,
@@ -320,15 +318,15 @@ impl Default for ImageDesc {
 pub struct RenderDesc {
     /// Maximum recursion depth of chapter 5 (default 5).
     #[serde(default = "RenderDesc::default_depth")]
-    pub max_depth: u32,
+    pub max_depth: Spanned<u32>,
     /// Samples per pixel (default 1).
     #[serde(default = "RenderDesc::default_samples")]
     pub samples: Spanned<u32>,
 }
 
 impl RenderDesc {
-    fn default_depth() -> u32 {
-        5
+    fn default_depth() -> Spanned<u32> {
+        Spanned::new(0..0, 5)
     }
     fn default_samples() -> Spanned<u32> {
         Spanned::new(0..0, 1)
@@ -525,6 +523,6 @@ pub struct ObjectDesc {
     pub transform: Vec<Spanned<StepDesc>>,
     /// Name of a `[materials.NAME]` table (default: a matte grey).
     pub material: Option<Spanned<String>>,
-    /// A name for messages and ray trees.
+    /// A label for whoever reads the scene file; the renderer does not use it.
     pub name: Option<String>,
 }

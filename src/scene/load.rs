@@ -35,6 +35,10 @@ use crate::transform::{Placement, Step, rotation_from_z};
 
 /// The largest image side accepted, in pixels.
 pub const MAX_SIDE: u32 = 65_535;
+/// The most samples per pixel accepted.
+pub const MAX_SAMPLES: u32 = 4096;
+/// The deepest recursion accepted.
+pub const MAX_DEPTH: u32 = 64;
 
 /// Reads and checks the scene file at `path`.
 pub fn load(path: &Path) -> Result<Scene, Error> {
@@ -120,10 +124,23 @@ pub fn parse(text: &str, file: &str) -> Result<Scene, Error> {
         }
     }
     let samples = &raw.render.samples;
-    if *samples.get_ref() == 0 {
+    if !(1..=MAX_SAMPLES).contains(samples.get_ref()) {
         return Err(err(
             samples.span(),
-            "render samples: expected at least 1 sample per pixel".into(),
+            format!(
+                "render samples: expected from 1 to {MAX_SAMPLES} samples per pixel, found {}",
+                samples.get_ref()
+            ),
+        ));
+    }
+    let depth = &raw.render.max_depth;
+    if *depth.get_ref() > MAX_DEPTH {
+        return Err(err(
+            depth.span(),
+            format!(
+                "render max_depth: expected at most {MAX_DEPTH}, found {}",
+                depth.get_ref()
+            ),
         ));
     }
 
@@ -153,7 +170,8 @@ pub fn parse(text: &str, file: &str) -> Result<Scene, Error> {
     let mut material_names = vec!["(default)".to_string()];
     let mut warnings = Vec::new();
     let mut by_name = HashMap::new();
-    for (name, m) in &raw.materials {
+    for (name, spanned) in &raw.materials {
+        let m = spanned.get_ref();
         let d = Material::default();
         let material = Material {
             ambient: m.ambient.map_or(d.ambient, |c| vec3_from(c.0)),
@@ -166,8 +184,9 @@ pub fn parse(text: &str, file: &str) -> Result<Scene, Error> {
         };
         let over = material.over_unity_channels();
         if !over.is_empty() {
+            let (line, col) = line_col(text, spanned.span().start);
             warnings.push(format!(
-                "{file}: material `{name}`: ρa + ρd + ρs exceeds 1 in {} (the notes want it to be 1); rendering anyway",
+                "{file}:{line}:{col}: material `{name}`: ρa + ρd + ρs exceeds 1 in {} (the notes want it to be 1); rendering anyway",
                 over.join(", ")
             ));
         }
@@ -214,7 +233,7 @@ pub fn parse(text: &str, file: &str) -> Result<Scene, Error> {
         width: *raw.image.width.get_ref(),
         height: *raw.image.height.get_ref(),
         background: vec3_from(raw.image.background.0),
-        max_depth: raw.render.max_depth,
+        max_depth: *depth.get_ref(),
         samples: *samples.get_ref(),
         ambient: vec3_from(raw.ambient.intensity.0),
         lights,
@@ -419,7 +438,17 @@ fn polyhedron(
             )
         }),
         (None, Some(facets)) => {
-            if facets.get_ref().len() < 4 {
+            let count = facets.get_ref().len();
+            if count > Polyhedron::MAX_FACETS {
+                return Err(err(
+                    facets.span(),
+                    format!(
+                        "polyhedron facets: at most {} facets, found {count}",
+                        Polyhedron::MAX_FACETS
+                    ),
+                ));
+            }
+            if count < 4 {
                 return Err(err(
                     facets.span(),
                     format!(
@@ -442,7 +471,10 @@ fn polyhedron(
                     })
                 })
                 .collect::<Result<Vec<_>, _>>()?;
-            Ok(Polyhedron { facets: list })
+            let poly = Polyhedron { facets: list };
+            poly.check()
+                .map_err(|why| err(facets.span(), format!("polyhedron facets: {why}")))?;
+            Ok(poly)
         }
         _ => Err(err(
             p.span(),

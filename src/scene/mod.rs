@@ -1,6 +1,6 @@
 //! Scenes: what to render, read from a TOML file (chapters 1–5 each read the parts they use).
 //!
-//! [`load`] reads a file, [`parse`] a string; both check every value and report a bad one as
+//! [`load()`] reads a file, [`parse()`] a string; both check every value and report a bad one as
 //! `file:line:col: what was expected`. The result is a [`Scene`]: the camera settings, image
 //! size, lights, materials and placed objects, ready to render.
 //!

@@ -22,7 +22,7 @@
 
 use super::{Hit, Hits, Part, entering_leaving};
 use crate::ray::Ray;
-use crate::real::{Real, Vec3};
+use crate::real::{Mat3, Real, Vec3};
 
 /// One facet: the plane n·P = d with n the outward unit normal.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -171,5 +171,79 @@ impl Polyhedron {
             }),
             (false, false) => Hits::none(),
         }
+    }
+}
+
+impl Polyhedron {
+    /// The most facets a scene may give one polyhedron (checking them costs O(n⁴)).
+    pub const MAX_FACETS: usize = 64;
+
+    /// The corners: each point where three facet planes meet that lies inside every facet.
+    /// Corners shared by more than three facets appear more than once.
+    #[must_use]
+    pub fn vertices(&self) -> Vec<Vec3> {
+        let f = &self.facets;
+        let tol = self.tolerance();
+        let mut out = Vec::new();
+        for i in 0..f.len() {
+            for j in i + 1..f.len() {
+                for k in j + 1..f.len() {
+                    let m = Mat3::from_cols(f[i].normal, f[j].normal, f[k].normal).transpose();
+                    let det = m.determinant();
+                    if det.abs() <= tol {
+                        continue; // two of the planes are parallel, or all three share a line
+                    }
+                    let p = m.inverse() * Vec3::new(f[i].d, f[j].d, f[k].d);
+                    if p.is_finite() && f.iter().all(|g| g.normal.dot(p) <= g.d + tol) {
+                        out.push(p);
+                    }
+                }
+            }
+        }
+        out
+    }
+
+    fn tolerance(&self) -> Real {
+        let scale = self.facets.iter().fold(1.0, |m: Real, f| m.max(f.d.abs()));
+        Real::EPSILON.sqrt() * scale
+    }
+
+    /// Checks that the facets enclose a bounded solid with an inside: not an empty set (facets
+    /// that contradict each other), not an unbounded one (some direction leaves through no
+    /// facet), not a flat one.
+    pub fn check(&self) -> Result<(), &'static str> {
+        let f = &self.facets;
+        // Unbounded: some direction v with n·v ≤ 0 for every facet. If there is one, there is
+        // one along an edge direction n_i × n_j (or the normals do not span space at all).
+        let tol = Real::EPSILON.sqrt();
+        for i in 0..f.len() {
+            for j in i + 1..f.len() {
+                let Some(v) = f[i].normal.cross(f[j].normal).try_normalize() else {
+                    continue;
+                };
+                for dir in [v, -v] {
+                    if f.iter().all(|g| g.normal.dot(dir) <= tol) {
+                        return Err(
+                            "the facets do not close the polyhedron: it is unbounded in some direction",
+                        );
+                    }
+                }
+            }
+        }
+        let vertices = self.vertices();
+        if vertices.len() < 4 {
+            return Err(
+                "the facets enclose no solid: their half-spaces do not overlap in a volume",
+            );
+        }
+        let centre = vertices.iter().copied().sum::<Vec3>() / vertices.len() as Real;
+        let depth = f
+            .iter()
+            .map(|g| g.d - g.normal.dot(centre))
+            .fold(Real::INFINITY, Real::min);
+        if depth <= self.tolerance() {
+            return Err("the facets enclose no solid: the polyhedron is flat");
+        }
+        Ok(())
     }
 }

@@ -1,0 +1,177 @@
+//! Chapter 3 — shading (notes: "Shading"): ambient, diffuse and specular per RGB channel,
+//! attenuation, several lights, and the rays a shaded render casts.
+
+mod common;
+
+use approx::assert_abs_diff_eq;
+use common::{TOL, assert_vec_eq, centre, render_at, scene};
+use whitted::light::Light;
+use whitted::material::Material;
+use whitted::real::{Real, Vec3, vec3};
+use whitted::render::Stage;
+use whitted::shading::{ambient, direct, highlight, lambert, mirror};
+
+/// A unit sphere at the origin seen from (0, 0, 5), with one light at `light` (a TOML array).
+fn sphere_scene(light: &str, extra: &str) -> String {
+    format!(
+        "[camera]\neye = [0.0, 0.0, 5.0]\n[ambient]\nintensity = [0.5, 0.4, 0.3]\n\
+         [[lights]]\nposition = {light}\nintensity = [0.9, 0.8, 0.7]\n{extra}\n\
+         [materials.m]\nambient = [0.1, 0.2, 0.3]\ndiffuse = [0.5, 0.4, 0.3]\nspecular = [0.2, 0.3, 0.4]\nshininess = 10\n\
+         [[objects]]\nsphere = {{}}\nmaterial = \"m\"\n"
+    )
+}
+
+/// "Shading": with the light straight behind the eye, s = v = n at the nearest point, r·v = 1,
+/// so I = ρa·I_m + I_p(ρd + ρs) in every channel.
+#[test]
+fn light_behind_the_eye_gives_ambient_plus_full_diffuse_and_specular() {
+    let s = scene(&sphere_scene("[0.0, 0.0, 10.0]", ""));
+    let (c, _) = centre(&s, Stage::Shading);
+    let expected = vec3(0.1 * 0.5, 0.2 * 0.4, 0.3 * 0.3)
+        + vec3(0.9, 0.8, 0.7) * vec3(0.5 + 0.2, 0.4 + 0.3, 0.3 + 0.4);
+    assert_vec_eq(c, expected, 10.0 * TOL);
+}
+
+/// "Shading": a light behind the surface (n·s < 0) adds nothing: ambient only.
+#[test]
+fn light_behind_the_surface_gives_ambient_only() {
+    let s = scene(&sphere_scene("[0.0, 0.0, -10.0]", ""));
+    let (c, stats) = centre(&s, Stage::Shading);
+    assert_vec_eq(c, vec3(0.05, 0.08, 0.09), 10.0 * TOL);
+    assert_eq!(stats.shadow, 0);
+}
+
+/// "Shading" (erratum: negative dot products): unclamped, the notes' formula would subtract
+/// light for n·s < 0 and add a highlight from (r·v)^f with an even f. whitted clamps.
+#[test]
+fn negative_dot_products_are_clamped() {
+    let n = Vec3::Z;
+    let s = Vec3::NEG_Z; // light exactly behind
+    let v = Vec3::NEG_Z; // viewer on the far side too (e.g. seen through glass)
+    assert_eq!(lambert(n, s), 0.0);
+    assert_eq!(highlight(n, s, v, 2.0), 0.0);
+    // the notes' expressions, unclamped, give −1 and +1 here
+    let notes_diffuse = n.dot(s);
+    let notes_specular = (mirror(s, n).dot(v)).powf(2.0);
+    assert_abs_diff_eq!(notes_diffuse, -1.0, epsilon = TOL);
+    assert_abs_diff_eq!(notes_specular, 1.0, epsilon = TOL);
+}
+
+/// "Shading": r is the mirror of s about n, r = 2(n·s)n − s.
+#[test]
+fn mirror_direction_of_the_light() {
+    let k = 1.0 / (2.0 as Real).sqrt();
+    assert_vec_eq(
+        mirror(vec3(1.0, 0.0, 1.0) * k, Vec3::Z),
+        vec3(-1.0, 0.0, 1.0) * k,
+        TOL,
+    );
+    assert_vec_eq(mirror(Vec3::Z, Vec3::Z), Vec3::Z, TOL);
+    // highlight: with v on r the term is 1, at 60° from r it is cos(60°)^f
+    let s = vec3(1.0, 0.0, 1.0) * k;
+    let r = vec3(-1.0, 0.0, 1.0) * k;
+    assert_abs_diff_eq!(highlight(Vec3::Z, s, r, 50.0), 1.0, epsilon = TOL);
+    // r points 45° from +z towards −x; v 15° towards +x is 60° away from it
+    let a = (15.0 as Real).to_radians();
+    let v = Vec3::new(a.sin(), 0.0, a.cos());
+    assert_abs_diff_eq!(
+        highlight(Vec3::Z, s, v, 3.0),
+        (0.5 as Real).powi(3),
+        epsilon = 10.0 * TOL
+    );
+}
+
+/// "Shading": the diffuse term follows the cosine law ρd·I_p·(n·s).
+#[test]
+fn diffuse_follows_the_cosine_law() {
+    let m = Material {
+        ambient: Vec3::ZERO,
+        diffuse: Vec3::splat(0.8),
+        specular: Vec3::ZERO,
+        ..Material::default()
+    };
+    let p = Vec3::ZERO;
+    let n = Vec3::Y;
+    // a light 60° from the normal, at distance 2: n·s = cos 60° = 0.5
+    let a = (60.0 as Real).to_radians();
+    let light = Light::white(Vec3::new(2.0 * a.sin(), 2.0 * a.cos(), 0.0));
+    let i = direct(&m, &light, p, n, Vec3::Y);
+    assert_vec_eq(i, Vec3::splat(0.8 * 0.5), 10.0 * TOL);
+    assert_vec_eq(
+        ambient(&Material::default(), Vec3::splat(0.5)),
+        Vec3::splat(0.05),
+        TOL,
+    );
+}
+
+/// "Shading": I_p/(a0 + a1·d + a2·d²): at d = 2 with (1, 0.5, 0.25), the light is divided by 3.
+#[test]
+fn attenuation_divides_by_a0_plus_a1_d_plus_a2_d_squared() {
+    let mut light = Light::white(vec3(0.0, 2.0, 0.0));
+    light.attenuation = [1.0, 0.5, 0.25];
+    assert_abs_diff_eq!(light.attenuation_at(2.0), 1.0 / 3.0, epsilon = TOL);
+    assert_abs_diff_eq!(light.attenuation_at(0.0), 1.0, epsilon = TOL);
+    light.attenuation = [0.0, 0.0, 1.0]; // inverse square
+    assert_abs_diff_eq!(light.attenuation_at(4.0), 1.0 / 16.0, epsilon = TOL);
+    let m = Material {
+        ambient: Vec3::ZERO,
+        diffuse: Vec3::ONE,
+        specular: Vec3::ZERO,
+        ..Material::default()
+    };
+    light.attenuation = [1.0, 0.5, 0.25];
+    let i = direct(&m, &light, Vec3::ZERO, Vec3::Y, Vec3::Y);
+    assert_vec_eq(i, Vec3::splat(1.0 / 3.0), 10.0 * TOL);
+    // in a scene: the same light through the renderer
+    let s = scene(&sphere_scene(
+        "[0.0, 0.0, 10.0]",
+        "attenuation = [1.0, 0.5, 0.25]",
+    ));
+    let (c, _) = centre(&s, Stage::Shading);
+    let d: Real = 9.0; // from (0, 0, 1) to (0, 0, 10)
+    let k = 1.0 / (1.0 + 0.5 * d + 0.25 * d * d);
+    let expected = vec3(0.05, 0.08, 0.09) + vec3(0.9, 0.8, 0.7) * vec3(0.7, 0.7, 0.7) * k;
+    assert_vec_eq(c, expected, 10.0 * TOL);
+}
+
+/// "Shading": with several lights, each adds its own diffuse and specular terms.
+#[test]
+fn several_lights_add_up() {
+    let one = scene(&sphere_scene("[0.0, 0.0, 10.0]", ""));
+    let two = scene(&sphere_scene(
+        "[0.0, 0.0, 10.0]",
+        "[[lights]]\nposition = [0.0, 0.0, 20.0]\nintensity = 0.5",
+    ));
+    let (c1, _) = centre(&one, Stage::Shading);
+    let (c2, _) = centre(&two, Stage::Shading);
+    assert_vec_eq(c2 - c1, Vec3::splat(0.5) * vec3(0.7, 0.7, 0.7), 10.0 * TOL);
+}
+
+/// "Shading": the plane is open; seen from below it is shaded with the normal turned to the
+/// viewer, so a light on the viewer's side lights it.
+#[test]
+fn open_plane_is_shaded_on_the_side_the_viewer_sees() {
+    let text = |eye: f64, light: f64| {
+        format!(
+            "[camera]\neye = [0.0, {eye}, 0.0]\nlook_at = [0.0, 0.0, 0.0]\nup = [0.0, 0.0, 1.0]\n\
+             [ambient]\nintensity = 0.0\n[[lights]]\nposition = [0.0, {light}, 0.0]\n\
+             [materials.m]\nambient = 0.0\ndiffuse = 0.5\nspecular = 0.0\n\
+             [[objects]]\nplane = {{ normal = [0.0, 1.0, 0.0] }}\nmaterial = \"m\"\n"
+        )
+    };
+    let (above, _) = centre(&scene(&text(3.0, 5.0)), Stage::Shading);
+    let (below, _) = centre(&scene(&text(-3.0, -5.0)), Stage::Shading);
+    let (across, _) = centre(&scene(&text(-3.0, 5.0)), Stage::Shading);
+    assert_vec_eq(above, Vec3::splat(0.5), TOL);
+    assert_vec_eq(below, Vec3::splat(0.5), TOL);
+    assert_vec_eq(across, Vec3::ZERO, TOL); // light on the other side: dark
+}
+
+/// "Shading": a stage-3 render casts primary rays only — no feelers, no secondary rays.
+#[test]
+fn shading_casts_primary_rays_only() {
+    let s = scene(&sphere_scene("[3.0, 3.0, 10.0]", ""));
+    let (_, stats) = render_at(&s, Stage::Shading, 20, 10);
+    assert_eq!(stats.primary, 200);
+    assert_eq!((stats.shadow, stats.reflected, stats.refracted), (0, 0, 0));
+}

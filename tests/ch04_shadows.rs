@@ -1,0 +1,197 @@
+//! Chapter 4 — shadows (notes: "Shadowing"): feeler rays S(u) = P + (L − P)u, occluders with
+//! u ∈ ]0, 1], translucent occluders, and no self-shadowing ("acne").
+
+mod common;
+
+use common::{TOL, assert_vec_eq, centre, render_at, scene};
+use whitted::material::Material;
+use whitted::offset::Offset;
+use whitted::real::{Real, Vec3, vec3};
+use whitted::render::{Options, Stage, render};
+use whitted::shadow::transmittance;
+use whitted::shapes::{Formula, Object, Shape};
+use whitted::transform::{Placement, Step};
+
+fn ball(center: Vec3, material: usize) -> Object {
+    let p =
+        Placement::from_steps(&[Step::Scale(Vec3::splat(1.0)), Step::Translate(center)]).unwrap();
+    Object {
+        material,
+        ..Object::new(Shape::Sphere, p)
+    }
+}
+
+fn materials() -> Vec<Material> {
+    let glass = Material {
+        transmission: 0.6,
+        ..Material::default()
+    };
+    vec![Material::default(), glass]
+}
+
+const P: Vec3 = Vec3::ZERO;
+const L: Vec3 = Vec3::new(0.0, 10.0, 0.0);
+
+/// "Shadowing": an opaque sphere between P and L (u ≈ 0.5) puts P in shadow.
+#[test]
+fn opaque_sphere_between_point_and_light_shadows_it() {
+    let objects = [ball(vec3(0.0, 5.0, 0.0), 0)];
+    assert_eq!(
+        transmittance(&objects, &materials(), P, L, 0.0, Formula::Robust),
+        0.0
+    );
+}
+
+/// "Shadowing": a sphere beyond the light (u > 1) casts no shadow on P.
+#[test]
+fn sphere_beyond_the_light_casts_no_shadow() {
+    let objects = [ball(vec3(0.0, 15.0, 0.0), 0)];
+    assert_eq!(
+        transmittance(&objects, &materials(), P, L, 0.0, Formula::Robust),
+        1.0
+    );
+    // the same sphere with the light moved behind it does
+    let far = vec3(0.0, 20.0, 0.0);
+    assert_eq!(
+        transmittance(&objects, &materials(), P, far, 0.0, Formula::Robust),
+        0.0
+    );
+}
+
+/// "Shadowing": a sphere behind the point (u ≤ 0) casts no shadow on P.
+#[test]
+fn sphere_behind_the_point_casts_no_shadow() {
+    let objects = [ball(vec3(0.0, -5.0, 0.0), 0)];
+    assert_eq!(
+        transmittance(&objects, &materials(), P, L, 0.0, Formula::Robust),
+        1.0
+    );
+}
+
+/// "Shadowing": u ∈ ]0, 1] — an occluder whose surface touches the light (u = 1) counts.
+#[test]
+fn occluder_reaching_the_light_counts() {
+    let objects = [ball(vec3(0.0, 11.0, 0.0), 0)]; // surface at y = 10: u = 1 exactly
+    assert_eq!(
+        transmittance(&objects, &materials(), P, L, 0.0, Formula::Robust),
+        0.0
+    );
+}
+
+/// "Shadowing" (extended): a translucent occluder lets its transmission share through; two of
+/// them, the product.
+#[test]
+fn translucent_occluders_let_their_transmission_through() {
+    let one = [ball(vec3(0.0, 3.0, 0.0), 1)];
+    let t1 = transmittance(&one, &materials(), P, L, 0.0, Formula::Robust);
+    assert!((t1 - 0.6).abs() <= TOL);
+    let two = [ball(vec3(0.0, 3.0, 0.0), 1), ball(vec3(0.0, 7.0, 0.0), 1)];
+    let t2 = transmittance(&two, &materials(), P, L, 0.0, Formula::Robust);
+    assert!((t2 - 0.36).abs() <= TOL);
+    let mixed = [ball(vec3(0.0, 3.0, 0.0), 1), ball(vec3(0.0, 7.0, 0.0), 0)];
+    assert_eq!(
+        transmittance(&mixed, &materials(), P, L, 0.0, Formula::Robust),
+        0.0
+    );
+}
+
+/// A floor lit from above with a sphere hovering over it: the point under the sphere is in
+/// shadow at stage 4 (ambient only) and lit at stage 3.
+#[test]
+fn point_under_a_sphere_is_lit_at_stage_3_and_shadowed_at_stage_4() {
+    let s = scene(
+        "[camera]\neye = [0.0, 6.0, 0.001]\nlook_at = [0.0, 0.0, 0.0]\n[ambient]\nintensity = 1.0\n\
+         [[lights]]\nposition = [0.0, 10.0, 0.0]\n\
+         [materials.m]\nambient = 0.1\ndiffuse = 0.6\nspecular = 0.0\n\
+         [[objects]]\nplane = { normal = [0.0, 1.0, 0.0] }\nmaterial = \"m\"\n\
+         [[objects]]\nsphere = { center = [0.0, 3.0, 3.0], radius = 0.5 }\n",
+    );
+    // the eye looks straight down at the origin; the sphere is off to the side, not in view
+    let (lit, s3) = centre(&s, Stage::Shading);
+    assert_vec_eq(lit, Vec3::splat(0.1 + 0.6), TOL);
+    assert_eq!(s3.shadow, 0);
+    let (also_lit, s4) = centre(&s, Stage::Shadows);
+    assert_vec_eq(also_lit, Vec3::splat(0.7), TOL);
+    assert_eq!(s4.shadow, 1);
+    // move the sphere between the floor point and the light
+    let shadowed = scene(
+        "[camera]\neye = [0.0, 6.0, 0.001]\nlook_at = [0.0, 0.0, 0.0]\n[ambient]\nintensity = 1.0\n\
+         [[lights]]\nposition = [0.0, 10.0, 0.0]\n\
+         [materials.m]\nambient = 0.1\ndiffuse = 0.6\nspecular = 0.0\n\
+         [[objects]]\nplane = { normal = [0.0, 1.0, 0.0] }\nmaterial = \"m\"\n\
+         [[objects]]\nsphere = { center = [0.0, 8.0, 0.0], radius = 0.5 }\n",
+    );
+    let (dark, _) = centre(&shadowed, Stage::Shadows);
+    assert_vec_eq(dark, Vec3::splat(0.1), TOL);
+}
+
+/// A scene of one convex object (a lit sphere), or one lit plane: nothing can shadow a point
+/// that faces the light, so stage 4 must equal stage 3 pixel for pixel; `n_bad` counts the
+/// pixels that differ.
+fn wrongly_shadowed(text: &str, offset: Offset) -> (usize, usize) {
+    let s = scene(text);
+    let mut o3 = Options::for_scene(&s, Stage::Shading);
+    o3.width = 96;
+    o3.height = 72;
+    let o4 = Options {
+        stage: Stage::Shadows,
+        offset,
+        ..o3.clone()
+    };
+    let (a, _) = render(&s, &o3);
+    let (b, _) = render(&s, &o4);
+    let lit = a
+        .pixels
+        .iter()
+        .filter(|p| p.max_element() > 0.2 + 1e-3)
+        .count();
+    let bad = a
+        .pixels
+        .iter()
+        .zip(&b.pixels)
+        .filter(|(x, y)| (**x - **y).abs().max_element() > 1e-6)
+        .count();
+    (bad, lit)
+}
+
+const LIT_SPHERE: &str = "[camera]\neye = [0.3, 0.4, 4.0]\nfov = 40\n[ambient]\nintensity = 1.0\n\
+    [[lights]]\nposition = [4.0, 5.0, 6.0]\n[materials.m]\nambient = 0.2\ndiffuse = 0.6\nspecular = 0.2\n\
+    [[objects]]\nsphere = { center = [0.0, 0.0, 0.0], radius = 1.3 }\nmaterial = \"m\"\n";
+
+const LIT_PLANE: &str = "[camera]\neye = [0.0, 3.0, 6.0]\nlook_at = [0.0, 0.0, -4.0]\n[ambient]\nintensity = 1.0\n\
+    [[lights]]\nposition = [2.0, 6.0, 1.0]\n[materials.m]\nambient = 0.2\ndiffuse = 0.6\nspecular = 0.2\n\
+    [[objects]]\nplane = { point = [0.0, -0.7, 0.0], normal = [0.1, 1.0, 0.2] }\nmaterial = \"m\"\n";
+
+/// "Shadowing" (self-intersection): with the default offset a lit sphere and a lit plane show
+/// no wrongly shadowed pixel, while feelers started exactly at the hit point (no offset at
+/// all) shadow a good share of them — which is why the offset exists.
+#[test]
+fn lit_sphere_and_plane_show_no_shadow_acne() {
+    for text in [LIT_SPHERE, LIT_PLANE] {
+        let (bad, lit) = wrongly_shadowed(text, Offset::default());
+        assert!(lit > 1000, "the test scene must show lit pixels ({lit})");
+        assert_eq!(bad, 0, "{bad} of {lit} lit pixels wrongly shadowed");
+    }
+    let (bad, lit) = wrongly_shadowed(LIT_SPHERE, Offset::Fixed(0.0));
+    assert!(
+        bad as Real > 0.05 * lit as Real,
+        "no offset: {bad} of {lit} should show acne"
+    );
+}
+
+/// "Shadowing": feelers are cast only where needed — one per light facing the point, none for
+/// a light with `shadows = false`, none in a scene without lights.
+#[test]
+fn feelers_only_where_a_scene_needs_them() {
+    let base = "[camera]\neye = [0.0, 0.0, 5.0]\n[[objects]]\nsphere = {}\n";
+    let (_, none) = render_at(&scene(base), Stage::Shadows, 16, 16);
+    assert_eq!(none.shadow, 0, "no lights, no feelers");
+    let off = format!("{base}[[lights]]\nposition = [0.0, 0.0, 10.0]\nshadows = false\n");
+    let (_, off) = render_at(&scene(&off), Stage::Shadows, 16, 16);
+    assert_eq!(off.shadow, 0, "shadows = false, no feelers");
+    let on = format!("{base}[[lights]]\nposition = [0.0, 0.0, 10.0]\n");
+    let (fb, on) = render_at(&scene(&on), Stage::Shadows, 16, 16);
+    let hits = fb.pixels.iter().filter(|p| **p != Vec3::ZERO).count() as u64;
+    assert!(hits > 0);
+    assert_eq!(on.shadow, hits, "one feeler per visible lit point");
+}

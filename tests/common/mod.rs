@@ -1,0 +1,42 @@
+//! Shared test helpers: tolerances per precision and small builders.
+#![allow(dead_code)]
+
+use whitted::real::{Real, Vec3};
+
+/// Absolute tolerance for values of order 1 computed in a handful of operations.
+#[cfg(not(feature = "f32"))]
+pub const TOL: Real = 1e-12;
+/// Absolute tolerance for values of order 1 computed in a handful of operations.
+#[cfg(feature = "f32")]
+pub const TOL: Real = 1e-5;
+
+/// Asserts two vectors agree component by component within `tol`.
+#[track_caller]
+pub fn assert_vec_eq(actual: Vec3, expected: Vec3, tol: Real) {
+    assert!(
+        (actual - expected).abs().max_element() <= tol,
+        "expected {expected:?}, got {actual:?} (tolerance {tol})"
+    );
+}
+
+use whitted::render::{Framebuffer, Options, Stage, Stats, render};
+use whitted::scene::{Scene, parse};
+
+/// Loads a scene from TOML text (panics on an error: test scenes are valid).
+pub fn scene(text: &str) -> Scene {
+    parse(text, "test.toml").unwrap_or_else(|e| panic!("{e}"))
+}
+
+/// Renders `scene` at stage `stage` and the given size.
+pub fn render_at(scene: &Scene, stage: Stage, width: u32, height: u32) -> (Framebuffer, Stats) {
+    let mut o = Options::for_scene(scene, stage);
+    o.width = width;
+    o.height = height;
+    render(scene, &o)
+}
+
+/// The colour seen along the camera's axis: a 1 × 1 render, whose only ray is d = −N·n.
+pub fn centre(scene: &Scene, stage: Stage) -> (Vec3, Stats) {
+    let (fb, stats) = render_at(scene, stage, 1, 1);
+    (fb.pixels[0], stats)
+}
