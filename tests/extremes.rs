@@ -863,7 +863,7 @@ proptest! {
 }
 
 /// The example scenes the loader is fuzzed with.
-const SCENES: [(&str, &str); 3] = [
+const SCENES: [(&str, &str); 8] = [
     (
         "scenes/showcase.toml",
         include_str!("../scenes/showcase.toml"),
@@ -872,6 +872,26 @@ const SCENES: [(&str, &str); 3] = [
     (
         "scenes/grazing.toml",
         include_str!("../scenes/grazing.toml"),
+    ),
+    (
+        "scenes/ch01_camera_rays.toml",
+        include_str!("../scenes/ch01_camera_rays.toml"),
+    ),
+    (
+        "scenes/ch02_generic_objects.toml",
+        include_str!("../scenes/ch02_generic_objects.toml"),
+    ),
+    (
+        "scenes/ch03_shading.toml",
+        include_str!("../scenes/ch03_shading.toml"),
+    ),
+    (
+        "scenes/ch04_shadows.toml",
+        include_str!("../scenes/ch04_shadows.toml"),
+    ),
+    (
+        "scenes/ch05_reflection_refraction.toml",
+        include_str!("../scenes/ch05_reflection_refraction.toml"),
     ),
 ];
 
@@ -992,7 +1012,7 @@ proptest! {
     /// panic.
     #[test]
     fn corrupted_example_scenes_load_or_fail_with_an_error_never_a_panic(
-        which in 0usize..3,
+        which in 0usize..SCENES.len(),
         cuts in prop::collection::vec(corruption(), 1..4),
     ) {
         let (name, text) = SCENES[which];
@@ -1010,7 +1030,7 @@ proptest! {
     /// to finite pixels, never a panic.
     #[test]
     fn corrupted_excerpts_of_the_example_scenes_load_or_fail_with_an_error_never_a_panic(
-        which in 0usize..3,
+        which in 0usize..SCENES.len(),
         first in 0.0f64..1.0,
         count in 1usize..5,
         object in 0.0f64..1.0,
