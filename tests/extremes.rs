@@ -822,8 +822,11 @@ proptest! {
 
     /// Notes, "Shadowing" and "Reflection and Refraction", at random placements: a ray spawned
     /// by the default (error-bound) offset from a hit on a convex shape never meets that surface
-    /// again where it starts. Leaving outwards (n·dir > 0) it meets the shape nowhere ahead;
-    /// going inwards it meets it once, leaving, well past its start.
+    /// again where it starts. Leaving outwards (n·dir > 0) it never meets the part it left
+    /// (facet, cap, wall …) again; going inwards it meets that part at most once, on its way
+    /// out, never entering it. (At an edge the pushed origin may sit just outside the
+    /// neighbouring part, which the ray then crosses at once: an edge effect of any one-sided
+    /// push, not a self-intersection.)
     #[test]
     fn spawned_rays_never_meet_their_own_surface_where_they_start(
         which in 0u8..5,
@@ -853,11 +856,14 @@ proptest! {
         let (start, t_min) = Offset::ErrorBound.spawn(&spawn, dir);
         let again = hits(&object, &Ray::new(start, dir), Formula::Robust);
         let ahead: Vec<&Hit> = again.iter().filter(|h| h.t > t_min).collect();
+        // the surface it starts from: the same part (a facet, a cap, the wall …); at an edge the
+        // ray may legitimately cross the neighbouring part right away
+        let own: Vec<&&Hit> = ahead.iter().filter(|h| h.part == hit.part).collect();
         if !inwards || !shape.is_closed() {
-            prop_assert!(ahead.is_empty(), "met its own surface again: {ahead:?} from {hit:?}");
+            prop_assert!(own.is_empty(), "met its own surface again: {own:?} from {hit:?}");
         } else {
-            prop_assert_eq!(ahead.len(), 1, "{:?} from {:?}", again, hit);
-            prop_assert!(!ahead[0].entering);
+            prop_assert!(own.len() <= 1, "{:?} from {:?}", again, hit);
+            prop_assert!(own.iter().all(|h| !h.entering), "entered its own surface again: {:?} from {:?}", again, hit);
         }
     }
 }
