@@ -13,6 +13,7 @@
 //! ```
 
 use proptest::prelude::*;
+use proptest::test_runner::RngSeed;
 use whitted::numeric::{normalize, normalize_naive};
 use whitted::offset::Offset;
 use whitted::optics;
@@ -739,6 +740,21 @@ fn no_nan_or_infinity_reaches_a_pixel_of_the_extreme_scenes() {
 // Property tests
 // ---------------------------------------------------------------------------------------------
 
+/// The property tests' settings: `cases` cases from a fixed seed, so that CI is
+/// reproducible; set `EXTREMES_SEED=<u64>` to explore other inputs.
+fn config(cases: u32) -> ProptestConfig {
+    let seed = std::env::var("EXTREMES_SEED")
+        .ok()
+        .and_then(|s| s.parse().ok())
+        .unwrap_or(0x5eed_2026);
+    ProptestConfig {
+        cases,
+        failure_persistence: None,
+        rng_seed: RngSeed::Fixed(seed),
+        ..ProptestConfig::default()
+    }
+}
+
 fn shape_of(i: u8) -> Shape {
     match i % 5 {
         0 => Shape::Sphere,
@@ -767,7 +783,7 @@ prop_compose! {
 }
 
 proptest! {
-    #![proptest_config(ProptestConfig { cases: 4000, failure_persistence: None, ..ProptestConfig::default() })]
+    #![proptest_config(config(4000))]
 
     /// Notes, "Generic Objects" and "Surface Normals at Intersections", for random rays and
     /// random placements of every shape: no NaN or infinity, hits in increasing t, unit normals
@@ -818,7 +834,7 @@ proptest! {
 }
 
 proptest! {
-    #![proptest_config(ProptestConfig { cases: 3000, failure_persistence: None, ..ProptestConfig::default() })]
+    #![proptest_config(config(3000))]
 
     /// Notes, "Shadowing" and "Reflection and Refraction", at random placements: a ray spawned
     /// by the default (error-bound) offset from a hit on a convex shape never meets that surface
@@ -1011,7 +1027,7 @@ fn tables(text: &str) -> Vec<&str> {
 }
 
 proptest! {
-    #![proptest_config(ProptestConfig { cases: 6_000, failure_persistence: None, ..ProptestConfig::default() })]
+    #![proptest_config(config(6_000))]
 
     /// The scene loader ("Errors are for people"): random corruptions of the whole example
     /// scenes give a scene that renders to finite pixels, or an error naming the file, never a
@@ -1029,7 +1045,7 @@ proptest! {
 proptest! {
     // with the 6 000 whole scenes above: 106 000 corrupted scenes. Parsing costs about 70 ns
     // per byte in a debug build, so most cases are excerpts of one to four tables.
-    #![proptest_config(ProptestConfig { cases: 100_000, failure_persistence: None, ..ProptestConfig::default() })]
+    #![proptest_config(config(100_000))]
 
     /// The same for excerpts of the example scenes (a run of one to four of their tables,
     /// then one of their objects), corrupted: an error naming the file or a scene that renders
