@@ -464,11 +464,22 @@ fn main() -> ExitCode {
     }
 }
 
+/// The machine's 1-minute load average (Linux), to judge how far the timings can be trusted.
+fn load_average() -> Option<f64> {
+    fs::read_to_string("/proc/loadavg")
+        .ok()?
+        .split_whitespace()
+        .next()?
+        .parse()
+        .ok()
+}
+
 fn coordinate(args: &Args) -> Result<(), String> {
     if PRECISION != "f64" {
         return Err("run the f64 build: it builds and runs the f32 variant itself".into());
     }
     let started = Instant::now();
+    let load_before = load_average();
     let f32_exe = build_f32()?;
     let work = tempfile::tempdir().map_err(|e| e.to_string())?;
     let dirs = [
@@ -538,7 +549,21 @@ fn coordinate(args: &Args) -> Result<(), String> {
     }
 
     fs::create_dir_all(&args.out).map_err(|e| e.to_string())?;
-    let md = report(&rows, &micro, args, started.elapsed().as_secs_f64());
+    let cores = std::thread::available_parallelism().map_or(1, |n| n.get());
+    let load = match (load_before, load_average()) {
+        (Some(a), Some(b)) => format!(
+            "The machine had {cores} cores and a load average of {a:.1} at the start and {b:.1} at the end{}.",
+            if a.max(b) > cores as f64 {
+                ": other work competed for the cores, so compare times within a precision and read \
+                 the cross-precision render-time ratio with care (the ns-per-test table below, which \
+                 keeps the fastest pass, is steadier)"
+            } else {
+                ""
+            }
+        ),
+        _ => format!("The machine had {cores} cores."),
+    };
+    let md = report(&rows, &micro, args, started.elapsed().as_secs_f64(), &load);
     let md_path = args.out.join("tradeoff.md");
     fs::File::create(&md_path)
         .and_then(|mut f| f.write_all(md.as_bytes()))
@@ -582,6 +607,7 @@ fn report(
     micro: &[(&str, String, String, f64)],
     args: &Args,
     seconds: f64,
+    load: &str,
 ) -> String {
     let mut md = String::new();
     let mut w = |s: String| {
@@ -601,7 +627,7 @@ fn report(
              hits nothing in one image and something in the other, or another object, *non-finite* = NaN or ∞ channels, \
              *numeric* = share of pixels off by more than 1/255 against the f64 robust error-bound render with the \
              same samples and depth (the numerical error alone, without the sampling error). \
-             This run took {:.0} s.",
+             This run took {:.0} s. {load}",
                 args.width, args.height, args.runs, args.reference_samples, seconds
             ),
     );
