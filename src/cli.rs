@@ -4,6 +4,8 @@
 //! chNN [SCENE] [-o OUT.png] [--width W] [--height H]      every chapter
 //!      [--view color|flat|normals|depth]                   chapters 2–5
 //!      [--samples N] [--max-depth N] [--stats]             chapter 5
+//!      [--formula textbook|robust]                         chapters 4–5
+//!      [--offset fixed|scaled|error-bound]                 chapters 4–5
 //! ```
 //!
 //! Without SCENE the embedded default scene `scenes/showcase.toml` is rendered. Every failure
@@ -17,11 +19,13 @@ use std::time::Instant;
 use clap::Args;
 
 use crate::error::Error;
+use crate::offset::OffsetKind;
 use crate::output;
 use crate::real::Real;
 use crate::render::{self, Options, Stage, View};
 use crate::scene::load::{MAX_DEPTH, MAX_SAMPLES, MAX_SIDE};
 use crate::scene::{self, Scene};
+use crate::shapes::Formula;
 
 /// The default scene, compiled into every binary.
 pub const SHOWCASE: &str = include_str!("../scenes/showcase.toml");
@@ -64,6 +68,19 @@ pub struct Tracing {
     /// Print rays cast by kind, time and rays per second.
     #[arg(long)]
     pub stats: bool,
+}
+
+/// The accuracy switches of chapters 4 and 5: which intersection formulas, and how secondary
+/// rays leave a surface (see [`crate::shapes::quadratic`] and [`crate::offset`]).
+#[derive(Args, Debug, Clone)]
+pub struct Accuracy {
+    /// Intersection formulas: the notes' as printed (textbook) or cancellation-free (robust).
+    #[arg(long, value_enum, default_value_t = Formula::Robust)]
+    pub formula: Formula,
+    /// How feeler, mirror and transmitted rays leave a surface: a fixed ε = 1e-4, an ε scaled
+    /// by the hit point's magnitude, or a bound on the hit point's rounding error.
+    #[arg(long, value_enum, default_value_t = OffsetKind::ErrorBound)]
+    pub offset: OffsetKind,
 }
 
 /// Parses the command line. `--help` and `--version` print and exit 0; any other problem is
@@ -117,7 +134,19 @@ pub fn run(
     view: Option<&ViewArg>,
     tracing: Option<&Tracing>,
 ) -> ExitCode {
-    match run_inner(binary, stage, common, view, tracing) {
+    run_with_accuracy(binary, stage, common, view, tracing, None)
+}
+
+/// [`run`] with the accuracy switches of chapters 4 and 5.
+pub fn run_with_accuracy(
+    binary: &str,
+    stage: Stage,
+    common: &Common,
+    view: Option<&ViewArg>,
+    tracing: Option<&Tracing>,
+    accuracy: Option<&Accuracy>,
+) -> ExitCode {
+    match run_inner(binary, stage, common, view, tracing, accuracy) {
         Ok(()) => ExitCode::SUCCESS,
         Err(e) => {
             eprintln!("error: {e}");
@@ -132,6 +161,7 @@ fn run_inner(
     common: &Common,
     view: Option<&ViewArg>,
     tracing: Option<&Tracing>,
+    accuracy: Option<&Accuracy>,
 ) -> Result<(), Error> {
     let out = common
         .output
@@ -150,6 +180,10 @@ fn run_inner(
     if let Some(t) = tracing {
         options.samples = t.samples.unwrap_or(options.samples);
         options.max_depth = t.max_depth.unwrap_or(options.max_depth);
+    }
+    if let Some(a) = accuracy {
+        options.formula = a.formula;
+        options.offset = a.offset.offset();
     }
     let start = Instant::now();
     let (fb, stats) = render::render(&scene, &options);

@@ -9,16 +9,22 @@
 //! |---|---|
 //! | [`Offset::Fixed`] | the classic: start at P, accept hits only for t > ε (ε in world units, along a unit direction) |
 //! | [`Offset::Scaled`] | move P along the normal by ε·max(1, ‖P‖∞), to the side the new ray leaves by |
-//! | [`Offset::ErrorBound`] (default) | move P along the normal by a bound on its rounding error, to the side the new ray leaves by |
+//! | [`Offset::ErrorBound`] (default) | move P back onto the surface, then along the normal by a bound on its rounding error, to the side the new ray leaves by |
 //!
-//! The error bound follows the idea of pbrt-v4 ("Managing Rounding Error"): the computed
-//! P = e + d·t carries an absolute error of a few ulps of each of its terms, so per component
-//! δ = γ·(|e| + |d·t| + |P|) with γ = k·u/(1 − k·u), u the unit roundoff and k a small count of
-//! operations (here 64, covering the transform into object space, the root and the way back).
-//! The offset along n is |n|·δ, which is tiny near the origin and grows with the scene's scale,
-//! so it works at 1e-3 and at 1e4 units alike.
+//! The error bound works in two steps, after the idea of pbrt-v4 ("Managing Rounding Error")
+//! and Wächter & Binder (Ray Tracing Gems, ch. 6). The computed P = e + d·t is off the surface
+//! by an error that grows with |e| and |d·t|: a camera 1e4 units away puts every hit point
+//! ~1e4·u off its surface. So P is first moved back onto the surface in object space
+//! ([`crate::shapes::Object::reproject`]), whose error depends only on the sizes of P and of
+//! the placement M. Then the origin is pushed along the normal by a bound on that error,
+//! δ = γ_k·(|M|·(|q|, 1) + |M|·|M⁻¹|·(|P|, 1)) with γ_k = k·u/(1 − k·u), u the unit roundoff
+//! and k = [`ERROR_OPS`] roundings. The push is tiny near the origin and grows with the scene's
+//! coordinates, so it works at 1e-3 and at 1e4 units alike, without the camera's distance
+//! inflating it.
 
+use crate::ray::Ray;
 use crate::real::{Real, Vec3};
+use crate::shapes::{Hit, Object};
 
 /// How secondary rays leave a surface.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
@@ -66,10 +72,47 @@ impl Offset {
                 (hit.p + hit.normal * (side * eps * scale), 0.0)
             }
             Offset::ErrorBound => {
-                let delta = error_bound(hit);
-                let push = hit.normal.abs().dot(delta);
-                (hit.p + hit.normal * (side * push), 0.0)
+                let push = hit.normal.abs().dot(hit.error);
+                (hit.refined + hit.normal * (side * push), 0.0)
             }
+        }
+    }
+}
+
+/// The three strategies by name, for the command line (`--offset fixed|scaled|error-bound`),
+/// each with its default ε.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash, clap::ValueEnum)]
+pub enum OffsetKind {
+    /// [`Offset::Fixed`] with ε = [`Offset::FIXED_EPSILON`].
+    #[value(help = "accept hits only for t > 1e-4 (world units): the classic")]
+    Fixed,
+    /// [`Offset::Scaled`] with ε = [`Offset::SCALED_EPSILON`].
+    #[value(help = "move the origin by 1e-4·max(1, |P|) along the normal")]
+    Scaled,
+    /// [`Offset::ErrorBound`] (the default).
+    #[default]
+    #[value(help = "move the origin by a bound on the hit point's rounding error (default)")]
+    ErrorBound,
+}
+
+impl OffsetKind {
+    /// The strategy with its default ε.
+    #[must_use]
+    pub fn offset(self) -> Offset {
+        match self {
+            OffsetKind::Fixed => Offset::Fixed(Offset::FIXED_EPSILON),
+            OffsetKind::Scaled => Offset::Scaled(Offset::SCALED_EPSILON),
+            OffsetKind::ErrorBound => Offset::ErrorBound,
+        }
+    }
+
+    /// The name used on the command line and in reports.
+    #[must_use]
+    pub fn name(self) -> &'static str {
+        match self {
+            OffsetKind::Fixed => "fixed",
+            OffsetKind::Scaled => "scaled",
+            OffsetKind::ErrorBound => "error-bound",
         }
     }
 }
@@ -77,25 +120,39 @@ impl Offset {
 /// A hit point with what the offset strategies need to know about how it was computed.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct SpawnPoint {
-    /// The hit point P = e + d·t.
+    /// The hit point P = e + d·t as the ray computed it.
     pub p: Vec3,
     /// The unit geometric normal there (either side).
     pub normal: Vec3,
-    /// The origin e of the ray that found P.
-    pub ray_origin: Vec3,
-    /// d·t, the step from e to P.
-    pub step: Vec3,
+    /// P moved back onto the surface (see [`crate::shapes::Object::reproject`]).
+    pub refined: Vec3,
+    /// A componentwise bound on the rounding error of `refined`, already multiplied by γ.
+    pub error: Vec3,
 }
+
+impl SpawnPoint {
+    /// The spawn point of `hit`, found by `ray` on `object`.
+    #[must_use]
+    pub fn new(object: &Object, ray: &Ray, hit: &Hit) -> Self {
+        let p = ray.at(hit.t);
+        let (refined, magnitude) = object.reproject(p, hit.part);
+        Self {
+            p,
+            normal: hit.normal,
+            refined,
+            error: gamma(ERROR_OPS) * magnitude,
+        }
+    }
+}
+
+/// The number of roundings the error bound allows for: the projection onto the surface (about
+/// six), the way back through M (three), the way into object space of the next ray (three) and
+/// its own intersection arithmetic, with a margin.
+pub const ERROR_OPS: Real = 32.0;
 
 /// γ_k = k·u/(1 − k·u) for the unit roundoff u of [`Real`].
 #[must_use]
 pub fn gamma(k: Real) -> Real {
     let u = Real::EPSILON / 2.0;
     k * u / (1.0 - k * u)
-}
-
-/// A componentwise bound on the rounding error of P = e + d·t.
-#[must_use]
-pub fn error_bound(hit: &SpawnPoint) -> Vec3 {
-    gamma(64.0) * (hit.ray_origin.abs() + hit.step.abs() + hit.p.abs())
 }

@@ -380,12 +380,7 @@ impl<'a> Tracer<'a> {
         let d = crate::numeric::normalize(ray.dir);
         let n = self.facing(hit.normal, d); // shading normal, towards the viewer
         let v = -d;
-        let spawn = SpawnPoint {
-            p,
-            normal: hit.normal,
-            ray_origin: ray.origin,
-            step: ray.dir * hit.t,
-        };
+        let spawn = SpawnPoint::new(object, ray, &hit);
 
         // I_a + Σ (I_d + I_s), with feelers from stage 4
         let mut color = shading::ambient(material, scene.ambient);

@@ -4,7 +4,7 @@
 use std::process::ExitCode;
 
 use clap::Parser;
-use whitted::cli::{Common, ViewArg, run};
+use whitted::cli::{Accuracy, Common, ViewArg, run_with_accuracy};
 use whitted::render::Stage;
 
 /// Chapter 4 of whitted: chapter 3's shading, where each light first sends a feeler ray
@@ -17,15 +17,18 @@ struct Args {
     common: Common,
     #[command(flatten)]
     view: ViewArg,
+    #[command(flatten)]
+    accuracy: Accuracy,
 }
 
 fn main() -> ExitCode {
     let args: Args = whitted::cli::parse_args();
-    run(
+    run_with_accuracy(
         "ch04_shadows",
         Stage::Shadows,
         &args.common,
         Some(&args.view),
         None,
+        Some(&args.accuracy),
     )
 }

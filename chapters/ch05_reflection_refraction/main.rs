@@ -4,7 +4,7 @@
 use std::process::ExitCode;
 
 use clap::Parser;
-use whitted::cli::{Common, Tracing, ViewArg, run};
+use whitted::cli::{Accuracy, Common, Tracing, ViewArg, run_with_accuracy};
 use whitted::render::Stage;
 
 /// Chapter 5 of whitted, the complete renderer: I = I_a + I_d + I_s + I_l + I_r. Mirror
@@ -18,16 +18,19 @@ struct Args {
     #[command(flatten)]
     view: ViewArg,
     #[command(flatten)]
+    accuracy: Accuracy,
+    #[command(flatten)]
     tracing: Tracing,
 }
 
 fn main() -> ExitCode {
     let args: Args = whitted::cli::parse_args();
-    run(
+    run_with_accuracy(
         "ch05_reflection_refraction",
         Stage::ReflectionRefraction,
         &args.common,
         Some(&args.view),
         Some(&args.tracing),
+        Some(&args.accuracy),
     )
 }

@@ -18,10 +18,13 @@
 //! Note that a can be zero (a ray parallel to a generator of the cone: the equation is then
 //! linear) or negative (a ray steeper than the wall: the solid is outside the roots). The
 //! robust variant handles both by working with the set where a·t² + 2b·t + c ≤ 0 (inside the
-//! double cone) and clipping it to the slab z ∈ [−1, 1], which keeps only the lower nappe.
+//! double cone) and clipping it to the slab z ∈ [−1, 1], which keeps only the lower nappe. It
+//! also computes b² − ac as w_x² + w_y² − w_z² with w = d × (e − apex) (see [`discriminant`]),
+//! which keeps small cones far away from losing their discriminant to cancellation, and takes
+//! the roots in the stable form q/a, c/q.
 
 use super::cylinder::nearest_and_farthest;
-use super::quadratic::{Formula, Roots, solve};
+use super::quadratic::{Formula, Roots, solve, stable_pair};
 use super::{Hit, Hits, Part, Span};
 use crate::ray::Ray;
 use crate::real::{Real, Vec3};
@@ -35,6 +38,19 @@ pub fn coefficients(ray: &Ray) -> (Real, Real, Real) {
         e.x * d.x + e.y * d.y + d.z * (1.0 - e.z),         // b
         e.x * e.x + e.y * e.y - (1.0 - e.z) * (1.0 - e.z), // c
     )
+}
+
+/// The discriminant b² − ac of the cone's quadratic, computed without squaring distances.
+///
+/// With u = e − (0, 0, 1) (the origin seen from the apex) the coefficients are quadratic forms
+/// of the metric diag(1, 1, −1): a = d·d, b = d·u, c = u·u in that metric. Lagrange's identity
+/// then gives b² − ac = w_x² + w_y² − w_z² with w = d × u: the terms are of the size of the
+/// cone as seen from e, not of |e|², so a small cone far away keeps its discriminant (the
+/// cone's counterpart of the sphere's Ray Tracing Gems form).
+#[must_use]
+pub fn discriminant(ray: &Ray) -> Real {
+    let w = ray.dir.cross(ray.origin - Vec3::Z); // w = d × u
+    w.x * w.x + w.y * w.y - w.z * w.z
 }
 
 /// The object-space normal of `part` at the point p.
@@ -82,16 +98,15 @@ fn intersect_robust(ray: &Ray) -> Hits {
             None
         };
     } else {
-        match solve(a, b, c, Formula::Robust) {
-            Roots::Two(t1, t2) if a > 0.0 => pieces[0] = Some(wall(t1, t2)),
-            Roots::One(t) if a > 0.0 => pieces[0] = Some(wall(t, t)),
-            Roots::Two(t1, t2) => {
+        match stable_pair(a, b, c, discriminant(ray)) {
+            Some((t1, t2)) if a > 0.0 => pieces[0] = Some(wall(t1, t2)),
+            Some((t1, t2)) => {
                 pieces[0] = Some(wall(Real::NEG_INFINITY, t1));
                 pieces[1] = Some(wall(t2, Real::INFINITY));
             }
-            // a < 0 with no or one root: the whole line is inside the double cone
-            Roots::One(_) | Roots::None if a < 0.0 => pieces[0] = Some(Span::ALL),
-            _ => {}
+            // a < 0 without a real root: the whole line is inside the double cone
+            None if a < 0.0 => pieces[0] = Some(Span::ALL),
+            None => {}
         }
     }
     let Some(slab) = Span::slab(ray.origin.z, ray.dir.z, -1.0, Part::Base, 1.0, Part::Apex) else {

@@ -12,7 +12,7 @@
 //! answer is their common part, so a ray through a rim can never slip between a wall test and
 //! a cap test, and a = 0 needs no special case.
 
-use super::quadratic::{Formula, Roots, solve, solve_with_discriminant};
+use super::quadratic::{Formula, Roots, solve, stable_pair};
 use super::{Hit, Hits, Part, Span, entering_leaving};
 use crate::ray::Ray;
 use crate::real::{Real, Vec3};
@@ -60,20 +60,14 @@ fn intersect_robust(ray: &Ray) -> Hits {
         // Δ = a·(1 − |f|²) with f the point of the (x, y) line closest to the axis
         let f = ray.origin.truncate() - ray.dir.truncate() * (b / a);
         let disc = a * (1.0 - f.dot(f));
-        match solve_with_discriminant(a, b, c, disc, Formula::Robust) {
-            Roots::None => return Hits::none(),
-            Roots::One(t) => Span {
-                lo: t,
-                lo_part: Part::Wall,
-                hi: t,
-                hi_part: Part::Wall,
-            },
-            Roots::Two(t1, t2) => Span {
+        match stable_pair(a, b, c, disc) {
+            Some((t1, t2)) => Span {
                 lo: t1,
                 lo_part: Part::Wall,
                 hi: t2,
                 hi_part: Part::Wall,
             },
+            None => return Hits::none(),
         }
     };
     let slab = Span::slab(

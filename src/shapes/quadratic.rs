@@ -18,13 +18,15 @@ use crate::numeric::sign;
 use crate::real::Real;
 
 /// Which formulas the intersection routines use.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash, clap::ValueEnum)]
 pub enum Formula {
     /// The notes' formulas as printed: t = −b/a ± √(b² − ac)/a, discriminant b² − ac,
     /// and the notes' range tests for the cylinder and cone.
+    #[value(help = "the notes' formulas as printed")]
     Textbook,
     /// Cancellation-free roots and discriminants, interval clipping for finite shapes.
     #[default]
+    #[value(help = "cancellation-free roots and discriminants (default)")]
     Robust,
 }
 
@@ -95,4 +97,25 @@ pub fn solve_with_discriminant(a: Real, b: Real, c: Real, disc: Real, formula: F
 #[must_use]
 pub fn solve(a: Real, b: Real, c: Real, formula: Formula) -> Roots {
     solve_with_discriminant(a, b, c, discriminant(a, b, c), formula)
+}
+
+/// Both roots of at² + 2bt + c = 0 (a ≠ 0) from its discriminant Δ ≥ 0, in increasing order,
+/// by the stable form, *keeping* infinite roots: for a of a few ulps the far root may overflow
+/// to ±∞, which is still the right end of a stretch of the line (a tube or a cone nappe seen
+/// almost along its axis). `None` when Δ < 0 or is NaN.
+#[must_use]
+pub fn stable_pair(a: Real, b: Real, c: Real, disc: Real) -> Option<(Real, Real)> {
+    if disc.is_nan() || disc < 0.0 || a == 0.0 {
+        return None;
+    }
+    let q = -(b + sign(b) * disc.sqrt());
+    if q == 0.0 {
+        // b = 0 and Δ = 0, so ac = 0 with a ≠ 0: the double root t = 0
+        return Some((0.0, 0.0));
+    }
+    let (t1, t2) = (q / a, c / q);
+    if t1.is_nan() || t2.is_nan() {
+        return None;
+    }
+    Some((t1.min(t2), t1.max(t2)))
 }
