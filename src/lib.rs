@@ -10,6 +10,7 @@
 //!
 //! Everything computes with [`real::Real`], `f64` by default and `f32` under the `f32` feature.
 
+pub mod accel;
 pub mod camera;
 pub mod cli;
 pub mod error;
