@@ -26,7 +26,8 @@ struct Node {
     count: u32,
 }
 
-/// A BVH over boxes; its leaves name the boxes' indices.
+/// A BVH over boxes. Its leaves are ranges of [`Bvh::order`]: the walk reports positions in
+/// that order, so a caller that stores its data in that order reads it sequentially.
 #[derive(Clone, Debug)]
 pub struct Bvh {
     nodes: Vec<Node>,
@@ -36,7 +37,7 @@ pub struct Bvh {
 
 const BINS: usize = 12;
 /// Cost of a box test relative to an object test, for the SAH.
-const BOX_COST: f64 = 0.3;
+const BOX_COST: f64 = 0.1;
 const MAX_LEAF: usize = 8;
 
 struct Builder<'a> {
@@ -70,13 +71,19 @@ impl Bvh {
         }
     }
 
+    /// The box indices in leaf order: position k of a walk is box `order()[k]`.
+    #[must_use]
+    pub fn order(&self) -> &[u32] {
+        &self.items
+    }
+
     /// Number of nodes (for reports).
     #[must_use]
     pub fn node_count(&self) -> usize {
         self.nodes.len()
     }
 
-    /// Calls `visit(i)` for every box index i whose leaf box the ray meets with an entry not
+    /// Calls `visit(k)` for every position k (see [`Bvh::order`]) whose leaf box the ray meets with an entry not
     /// beyond `*limit` (re-read after each call, so a nearest-hit search can shrink it), nearer
     /// subtrees first. `visit` returns false to stop the walk.
     #[inline]
@@ -101,8 +108,8 @@ impl Bvh {
             let n = &self.nodes[node as usize];
             if n.count > 0 {
                 let first = n.index as usize;
-                for &i in &self.items[first..first + n.count as usize] {
-                    if !visit(i, limit) {
+                for k in first..first + n.count as usize {
+                    if !visit(k as u32, limit) {
                         return;
                     }
                 }
@@ -169,8 +176,8 @@ impl Bvh {
         }
         if n.count > 0 {
             let first = n.index as usize;
-            for &i in &self.items[first..first + n.count as usize] {
-                if !visit(i, limit) {
+            for k in first..first + n.count as usize {
+                if !visit(k as u32, limit) {
                     return false;
                 }
             }

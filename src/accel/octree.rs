@@ -3,8 +3,9 @@
 //! The notes: enclose the scene in a cube, and subdivide the cube into smaller ones until each
 //! holds at most a preset number k of surfaces, eliminating the cubes void of surfaces. Here a
 //! cell is split into its eight octants while it holds more than k objects (an object belongs
-//! to every cell its box overlaps), down to a maximum depth, and a split that would leave
-//! every octant as crowded as its parent is not made. Empty octants are not stored.
+//! to every cell its box overlaps), down to a maximum depth; a split that would leave every
+//! octant as crowded as its parent, or copy the objects into more than three octants on
+//! average (objects as large as the cell), is not made. Empty octants are not stored.
 //!
 //! A ray walks the cells it crosses front to back (the octants of a cell sorted by where the
 //! ray enters them) and stops as soon as the next cell starts beyond the nearest hit found.
@@ -49,7 +50,7 @@ fn octant(b: &Aabb, k: usize) -> Aabb {
 
 impl Octree {
     /// The deepest subdivision.
-    pub const MAX_DEPTH: u32 = 16;
+    pub const MAX_DEPTH: u32 = 12;
 
     /// Builds the octree over `boxes`, splitting cells holding more than `k` of them.
     #[must_use]
@@ -91,8 +92,11 @@ impl Octree {
                         .collect()
                 })
                 .collect();
-            // split only if some octant is less crowded than its parent
-            if parts.iter().any(|p| p.len() < list.len()) {
+            // split only if some octant is less crowded than its parent, and the objects are
+            // small enough for the octants to separate them (not every object copied into
+            // most octants)
+            let copies: usize = parts.iter().map(Vec::len).sum();
+            if parts.iter().any(|p| p.len() < list.len()) && copies <= 3 * list.len() {
                 let mut children = [NONE; 8];
                 for (o, part) in parts.into_iter().enumerate() {
                     if part.is_empty() {

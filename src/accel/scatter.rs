@@ -1,12 +1,17 @@
 //! Scaling scenes: N random spheres over a plane, for measuring how each [`super::Accel`]
-//! grows with the number of objects.
+//! grows with the number of objects. Two layouts:
 //!
-//! The spheres fill the square [−10, 10]² above the floor, their centres at heights between
-//! r and 2.5. Their radius shrinks as N grows, r = √(120/(πN)), so that the spheres cover
-//! about the same share of the picture at every N (N·πr² = 120 on a 400-unit floor): the
-//! images look alike and the work per pixel stays comparable, and only the number of objects
-//! changes. One sphere in ten is a mirror, so the scene has every kind of ray. The positions
-//! come from a seeded generator (SplitMix64): the same N and seed give the same scene.
+//! - [`Layout::Field`] (the default): spheres of radius 0.35 at a constant density, one per
+//!   4 square units, over a square of side 2√N centred under the camera, centres at heights
+//!   between r and r + 1.5. The scene grows as N does while what lies near the camera stays
+//!   alike: the classic test that a structure's cost grows like log N.
+//! - [`Layout::Fog`]: spheres crowded into the fixed square [−10, 10]², their radius shrinking
+//!   as r = √(120/(πN)) so they cover the same share of the floor at every N. At N = 100 000
+//!   they are a fog of specks 0.02 wide that every ray crosses for units on end: a harder
+//!   test, where the number of boxes a ray must open grows with N as well.
+//!
+//! One sphere in ten is a mirror, so the scene has every kind of ray. The positions come from
+//! a seeded generator (SplitMix64): the same N, layout and seed give the same scene.
 
 use std::fmt::Write;
 
@@ -37,21 +42,40 @@ impl SplitMix64 {
     }
 }
 
-/// The radius of each of N spheres: r = √(120/(πN)).
+/// How the spheres are spread (see the module docs).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, clap::ValueEnum)]
+pub enum Layout {
+    /// Constant size and density over a square of side 2√N.
+    #[default]
+    Field,
+    /// A fixed square; the radius shrinks as 1/√N.
+    Fog,
+}
+
+/// The radius of each of N spheres in the fog layout: r = √(120/(πN)).
 #[must_use]
 pub fn radius(n: usize) -> f64 {
     (120.0 / (std::f64::consts::PI * n.max(1) as f64)).sqrt()
 }
 
-/// The scene file (TOML) of `n` random spheres over a plane, drawn from `seed`, at
-/// `width` × `height` pixels.
+/// The scene file (TOML) of `n` random spheres over a plane in the default layout.
 #[must_use]
 pub fn scene_toml(n: usize, seed: u64, width: u32, height: u32) -> String {
+    scene_toml_with(n, seed, width, height, Layout::Field)
+}
+
+/// The scene file (TOML) of `n` random spheres over a plane, drawn from `seed`, at
+/// `width` × `height` pixels, in `layout`.
+#[must_use]
+pub fn scene_toml_with(n: usize, seed: u64, width: u32, height: u32, layout: Layout) -> String {
     let mut s = String::with_capacity(200 + n * 110);
-    let r = radius(n);
+    let (r, half, top) = match layout {
+        Layout::Field => (0.35, (n.max(1) as f64).sqrt(), 1.85),
+        Layout::Fog => (radius(n), 10.0, radius(n).max(2.5)),
+    };
     let _ = write!(
         s,
-        "# {n} random spheres over a plane (seed {seed}), written by `scatter`.\n\
+        "# {n} random spheres over a plane ({layout:?} layout, seed {seed}), written by `scatter`.\n\
          [camera]\neye = [0.0, 9.0, 17.0]\nlook_at = [0.0, 0.0, 0.0]\nup = [0.0, 1.0, 0.0]\nfov = 50.0\nnear = 1.0\n\n\
          [image]\nwidth = {width}\nheight = {height}\nbackground = [0.1, 0.12, 0.2]\n\n\
          [render]\nmax_depth = 3\n\n\
@@ -64,9 +88,9 @@ pub fn scene_toml(n: usize, seed: u64, width: u32, height: u32) -> String {
     );
     let mut rng = SplitMix64::new(seed);
     for i in 0..n {
-        let x = rng.range(-10.0, 10.0);
-        let z = rng.range(-10.0, 10.0);
-        let y = rng.range(r, r.max(2.5));
+        let x = rng.range(-half, half);
+        let z = rng.range(-half, half);
+        let y = rng.range(r, top);
         let material = if i % 10 == 0 { "mirror" } else { "matte" };
         let _ = write!(
             s,
