@@ -10,7 +10,14 @@
 //! A ray walks the cells it crosses front to back (the octants of a cell sorted by where the
 //! ray enters them) and stops as soon as the next cell starts beyond the nearest hit found.
 
-use super::aabb::{Aabb, RayBox, widen};
+use super::aabb::{Aabb, RayBox, SLACK, widen};
+
+/// Per axis, the parameters where the ray crosses a cell's near and far faces.
+#[derive(Clone, Copy, Debug)]
+struct Span {
+    lo: Vec3,
+    hi: Vec3,
+}
 use crate::real::{Real, Vec3};
 
 /// No child in this octant.
@@ -140,14 +147,23 @@ impl Octree {
         }
         let (e, x) = self.root.slabs(ray);
         if e <= x && x >= t_min && e <= widen(*limit) {
-            self.visit_cell(0, &self.root, ray, t_min, limit, &mut visit);
+            // per axis, where the ray crosses the cube's near and far faces
+            let a = (self.root.min - ray.origin) * ray.inv_dir;
+            let b = (self.root.max - ray.origin) * ray.inv_dir;
+            let span = Span {
+                lo: a.min(b),
+                hi: a.max(b),
+            };
+            self.visit_cell(0, &self.root, span, ray, t_min, limit, &mut visit);
         }
     }
 
+    #[allow(clippy::too_many_arguments)]
     fn visit_cell(
         &self,
         cell: usize,
         bounds: &Aabb,
+        span: Span,
         ray: &RayBox,
         t_min: Real,
         limit: &mut Real,
@@ -164,30 +180,52 @@ impl Octree {
                 true
             }
             Cell::Inner(children) => {
-                // the octants the ray crosses, sorted by entry
-                let mut order: [(Real, u32, Aabb); 8] = [(0.0, NONE, Aabb::EMPTY); 8];
+                // Where the ray crosses the three mid-planes; each octant's interval on an axis
+                // is the near or the far half of the cell's, so no octant box is intersected
+                // anew. A NaN (the origin on a mid-plane, moving along it) keeps both halves.
+                let mid = (bounds.centre() - ray.origin) * ray.inv_dir;
+                let mut order: [(Real, u32, Span); 8] = [(0.0, NONE, span); 8];
                 let mut n = 0;
                 for (o, &child) in children.iter().enumerate() {
                     if child == NONE {
                         continue;
                     }
-                    let b = octant(bounds, o);
-                    let (e, x) = b.slabs(ray);
+                    let mut lo = span.lo;
+                    let mut hi = span.hi;
+                    for k in 0..3 {
+                        let m = mid[k];
+                        if m.is_nan() {
+                            continue;
+                        }
+                        // the upper half lies beyond the mid-plane when the ray moves up the axis
+                        let upper = o & (1 << k) != 0;
+                        let near = upper == (ray.inv_dir[k] < 0.0);
+                        if near {
+                            hi[k] = m;
+                        } else {
+                            lo[k] = m;
+                        }
+                    }
+                    let enter = lo.x.max(lo.y).max(lo.z);
+                    let exit = hi.x.min(hi.y).min(hi.z);
+                    let (e, x) = (enter - enter.abs() * SLACK, exit + exit.abs() * SLACK);
                     if e <= x && x >= t_min && e <= widen(*limit) {
                         let mut j = n;
                         while j > 0 && order[j - 1].0 > e {
                             order[j] = order[j - 1];
                             j -= 1;
                         }
-                        order[j] = (e, child, b);
+                        order[j] = (e, child | (o as u32) << 28, Span { lo, hi });
                         n += 1;
                     }
                 }
-                for &(e, child, b) in &order[..n] {
+                for &(e, tagged, sub) in &order[..n] {
                     if e > widen(*limit) {
                         break; // this cell and all after it start beyond the nearest hit
                     }
-                    if !self.visit_cell(child as usize, &b, ray, t_min, limit, visit) {
+                    let (child, o) = (tagged & 0x0fff_ffff, (tagged >> 28) as usize);
+                    let b = octant(bounds, o);
+                    if !self.visit_cell(child as usize, &b, sub, ray, t_min, limit, visit) {
                         return false;
                     }
                 }
