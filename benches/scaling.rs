@@ -72,7 +72,11 @@ fn parse_args() -> Result<Config, String> {
 fn median(mut v: Vec<f64>) -> f64 {
     v.sort_by(f64::total_cmp);
     let n = v.len();
-    if n % 2 == 1 { v[n / 2] } else { (v[n / 2 - 1] + v[n / 2]) / 2.0 }
+    if n % 2 == 1 {
+        v[n / 2]
+    } else {
+        (v[n / 2 - 1] + v[n / 2]) / 2.0
+    }
 }
 
 fn main() {
@@ -104,15 +108,22 @@ fn main() {
     println!("---:|");
     let mut last: Vec<Option<(usize, f64)>> = vec![None; c.accels.len()];
     for &n in &c.sizes {
-        let scene = parse(&scatter::scene_toml_with(n, 1, c.width, c.height, c.layout), "scatter.toml")
-            .expect("the scatter scene parses");
+        let scene = parse(
+            &scatter::scene_toml_with(n, 1, c.width, c.height, c.layout),
+            "scatter.toml",
+        )
+        .expect("the scatter scene parses");
         print!("| {n} |");
         let mut rays = 0;
         for (k, &accel) in c.accels.iter().enumerate() {
             if let Some((n0, t0)) = last[k] {
                 // brute force and lists grow linearly; hierarchies are not skipped on a guess
                 let linear = matches!(accel, Accel::None | Accel::Boxes | Accel::Extents);
-                let estimate = if linear { t0 * n as f64 / n0 as f64 } else { t0 };
+                let estimate = if linear {
+                    t0 * n as f64 / n0 as f64
+                } else {
+                    t0
+                };
                 if estimate > c.budget {
                     print!(" skipped (≈{estimate:.0} s) |");
                     continue;

@@ -13,7 +13,13 @@ fn showcase() -> Scene {
     whitted::cli::read_scene(None).expect("the showcase parses")
 }
 
-fn render_with(scene: &Scene, stage: Stage, w: u32, h: u32, f: impl Fn(&mut Options)) -> Vec<(Accel, Framebuffer, Stats)> {
+fn render_with(
+    scene: &Scene,
+    stage: Stage,
+    w: u32,
+    h: u32,
+    f: impl Fn(&mut Options),
+) -> Vec<(Accel, Framebuffer, Stats)> {
     Accel::ALL
         .iter()
         .map(|&accel| {
@@ -31,7 +37,10 @@ fn render_with(scene: &Scene, stage: Stage, w: u32, h: u32, f: impl Fn(&mut Opti
 /// Asserts that every option rendered the `none` image bit for bit, and cast the same rays.
 fn assert_all_equal(renders: &[(Accel, Framebuffer, Stats)]) {
     let (_, reference, ref_stats) = &renders[0];
-    assert!(reference.pixels.iter().any(|p| *p != reference.pixels[0]), "a blank image proves nothing");
+    assert!(
+        reference.pixels.iter().any(|p| *p != reference.pixels[0]),
+        "a blank image proves nothing"
+    );
     for (accel, fb, stats) in &renders[1..] {
         let differing = fb
             .pixels
@@ -39,7 +48,12 @@ fn assert_all_equal(renders: &[(Accel, Framebuffer, Stats)]) {
             .zip(&reference.pixels)
             .filter(|(a, b)| a != b)
             .count();
-        assert_eq!(differing, 0, "--accel {} differs from none in {differing} pixels", accel.name());
+        assert_eq!(
+            differing,
+            0,
+            "--accel {} differs from none in {differing} pixels",
+            accel.name()
+        );
         assert_eq!(stats, ref_stats, "--accel {} cast other rays", accel.name());
     }
 }
@@ -143,7 +157,13 @@ material = "glass"
 #[test]
 fn every_accel_renders_the_showcase_exactly_as_brute_force() {
     let scene = showcase();
-    assert_all_equal(&render_with(&scene, Stage::ReflectionRefraction, 128, 96, |_| {}));
+    assert_all_equal(&render_with(
+        &scene,
+        Stage::ReflectionRefraction,
+        128,
+        96,
+        |_| {},
+    ));
 }
 
 /// The chapter-2 views go through the same nearest-hit query: identical normals and depths.
@@ -151,7 +171,9 @@ fn every_accel_renders_the_showcase_exactly_as_brute_force() {
 fn every_accel_gives_the_same_normals_and_depths() {
     let scene = showcase();
     for view in [View::Normals, View::Depth, View::Color] {
-        assert_all_equal(&render_with(&scene, Stage::GenericObjects, 80, 60, |o| o.view = view));
+        assert_all_equal(&render_with(&scene, Stage::GenericObjects, 80, 60, |o| {
+            o.view = view
+        }));
     }
 }
 
@@ -160,8 +182,16 @@ fn every_accel_gives_the_same_normals_and_depths() {
 #[test]
 fn every_accel_renders_a_demanding_scene_exactly_as_brute_force() {
     let scene = parse(STRAIN, "strain.toml").expect("the strain scene parses");
-    assert_all_equal(&render_with(&scene, Stage::ReflectionRefraction, 96, 72, |_| {}));
-    assert_all_equal(&render_with(&scene, Stage::Shadows, 48, 36, |o| o.samples = 4));
+    assert_all_equal(&render_with(
+        &scene,
+        Stage::ReflectionRefraction,
+        96,
+        72,
+        |_| {},
+    ));
+    assert_all_equal(&render_with(&scene, Stage::Shadows, 48, 36, |o| {
+        o.samples = 4
+    }));
 }
 
 /// Many small random spheres, the scaling scene: still the brute-force image.
@@ -171,7 +201,13 @@ fn every_accel_renders_many_spheres_exactly_as_brute_force() {
         let text = scatter::scene_toml_with(300, 7, 96, 54, layout);
         let scene = parse(&text, "scatter.toml").expect("parses");
         assert_eq!(scene.objects.len(), 301);
-        assert_all_equal(&render_with(&scene, Stage::ReflectionRefraction, 96, 54, |_| {}));
+        assert_all_equal(&render_with(
+            &scene,
+            Stage::ReflectionRefraction,
+            96,
+            54,
+            |_| {},
+        ));
     }
 }
 
@@ -185,12 +221,18 @@ fn one_thread_and_four_render_the_same_image() {
     o.height = 45;
     o.samples = 2;
     let run = |threads: usize| {
-        let pool = rayon::ThreadPoolBuilder::new().num_threads(threads).build().unwrap();
+        let pool = rayon::ThreadPoolBuilder::new()
+            .num_threads(threads)
+            .build()
+            .unwrap();
         pool.install(|| render::render(&scene, &o))
     };
     let (one, s1) = run(1);
     let (four, s4) = run(4);
-    assert_eq!(whitted::output::to_rgb8(&one), whitted::output::to_rgb8(&four));
+    assert_eq!(
+        whitted::output::to_rgb8(&one),
+        whitted::output::to_rgb8(&four)
+    );
     assert_eq!(one, four);
     assert_eq!(s1, s4);
 }
@@ -207,9 +249,17 @@ fn world_boxes_hold_every_hit() {
             continue;
         };
         for _ in 0..2000 {
-            let origin = vec3(rng.range(-8.0, 8.0), rng.range(-8.0, 8.0), rng.range(-8.0, 8.0));
+            let origin = vec3(
+                rng.range(-8.0, 8.0),
+                rng.range(-8.0, 8.0),
+                rng.range(-8.0, 8.0),
+            );
             let target = b.centre()
-                + vec3(rng.range(-1.0, 1.0), rng.range(-1.0, 1.0), rng.range(-1.0, 1.0)) * (b.max - b.min) as Vec3;
+                + vec3(
+                    rng.range(-1.0, 1.0),
+                    rng.range(-1.0, 1.0),
+                    rng.range(-1.0, 1.0),
+                ) * (b.max - b.min) as Vec3;
             let ray = Ray::new(origin, target - origin);
             let hits = o.intersect(&ray, Default::default());
             for h in hits.as_slice() {
@@ -266,10 +316,18 @@ fn planes_stay_outside_the_hierarchy() {
     let cam = scene.camera();
     for accel in [Accel::Boxes, Accel::Extents, Accel::Octree, Accel::Bvh] {
         let a = Accelerator::build(&scene.objects, &cam, accel, TILE);
-        assert!(a.describe().contains("6 bounded, 1 unbounded"), "{}", a.describe());
+        assert!(
+            a.describe().contains("6 bounded, 1 unbounded"),
+            "{}",
+            a.describe()
+        );
     }
     let a = Accelerator::build(&scene.objects, &cam, Accel::None, TILE);
-    assert!(a.describe().contains("0 bounded, 7 unbounded"), "{}", a.describe());
+    assert!(
+        a.describe().contains("0 bounded, 7 unbounded"),
+        "{}",
+        a.describe()
+    );
 }
 
 /// The framebuffer limit: 8192 × 8192 is allowed, 65535 × 65535 is refused with one line.
@@ -283,8 +341,14 @@ fn framebuffer_limit_allows_8192_squared_and_refuses_65535_squared() {
 /// The scaling scene is reproducible: same N and seed, same text; another seed, another scene.
 #[test]
 fn scatter_scenes_are_seeded() {
-    assert_eq!(scatter::scene_toml(50, 1, 64, 36), scatter::scene_toml(50, 1, 64, 36));
-    assert_ne!(scatter::scene_toml(50, 1, 64, 36), scatter::scene_toml(50, 2, 64, 36));
+    assert_eq!(
+        scatter::scene_toml(50, 1, 64, 36),
+        scatter::scene_toml(50, 1, 64, 36)
+    );
+    assert_ne!(
+        scatter::scene_toml(50, 1, 64, 36),
+        scatter::scene_toml(50, 2, 64, 36)
+    );
     let s = parse(&scatter::scene_toml(1000, 1, 64, 36), "s.toml").unwrap();
     assert_eq!(s.objects.len(), 1001);
     assert!((scatter::radius(10) / scatter::radius(1000) - 10.0).abs() < 1e-9);

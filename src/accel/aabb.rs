@@ -26,7 +26,12 @@ pub struct Aabb {
 
 /// Relative padding of a box, in units of its size: covers the error of the square root in a
 /// grazing hit (about √ε of the object's size).
-const PAD_SIZE: Real = 64.0 * if cfg!(feature = "f32") { 3.5e-4 } else { 1.5e-8 };
+const PAD_SIZE: Real = 64.0
+    * if cfg!(feature = "f32") {
+        3.5e-4
+    } else {
+        1.5e-8
+    };
 /// Padding in units of the coordinates' magnitude: covers rounding in M⁻¹ and in r(t).
 const PAD_MAGNITUDE: Real = 1024.0 * Real::EPSILON;
 /// Relative slack of a slab test's interval (pbrt's 1 + 2γ₃, generously).

@@ -36,6 +36,13 @@ pub struct Bvh {
 }
 
 const BINS: usize = 12;
+
+/// A [`crate::real::Real`] as f64 (the build's arithmetic is in f64 in both precisions).
+#[allow(clippy::unnecessary_cast)] // a no-op in f64, a widening under the `f32` feature
+#[inline]
+fn wide(x: crate::real::Real) -> f64 {
+    x as f64
+}
 /// Cost of a box test relative to an object test, for the SAH.
 const BOX_COST: f64 = 0.1;
 const MAX_LEAF: usize = 8;
@@ -56,7 +63,7 @@ impl Bvh {
                 .iter()
                 .map(|x| {
                     let c = x.centre();
-                    [c.x as f64, c.y as f64, c.z as f64]
+                    [wide(c.x), wide(c.y), wide(c.z)]
                 })
                 .collect(),
             nodes: Vec::with_capacity(2 * boxes.len().max(1)),
@@ -251,15 +258,17 @@ impl Builder<'_> {
     fn best_split(&self, items: &[u32], bounds: &Aabb) -> Option<(usize, f64)> {
         let mut best: Option<(f64, usize, f64)> = None;
         let leaf_cost = items.len() as f64;
-        let area = bounds.half_area() as f64;
+        let area = wide(bounds.half_area());
         if area <= 0.0 {
             return None;
         }
         for axis in 0..3 {
-            let (lo, hi) = items.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), &i| {
-                let c = self.centres[i as usize][axis];
-                (lo.min(c), hi.max(c))
-            });
+            let (lo, hi) = items
+                .iter()
+                .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), &i| {
+                    let c = self.centres[i as usize][axis];
+                    (lo.min(c), hi.max(c))
+                });
             if hi <= lo {
                 continue;
             }
@@ -278,7 +287,7 @@ impl Builder<'_> {
             for k in (1..BINS).rev() {
                 b = b.union(&bin_boxes[k]);
                 c += bin_counts[k];
-                right_area[k] = b.half_area() as f64;
+                right_area[k] = wide(b.half_area());
                 right_count[k] = c;
             }
             let (mut b, mut c) = (Aabb::EMPTY, 0);
@@ -289,7 +298,7 @@ impl Builder<'_> {
                     continue;
                 }
                 let cost = BOX_COST
-                    + (b.half_area() as f64 * c as f64 + right_area[k] * right_count[k] as f64)
+                    + (wide(b.half_area()) * c as f64 + right_area[k] * right_count[k] as f64)
                         / area;
                 if best.is_none_or(|(bc, _, _)| cost < bc) {
                     best = Some((cost, axis, lo + k as f64 / scale));

@@ -48,7 +48,7 @@ pub fn rectangle(b: &Aabb, camera: &Camera) -> Option<[i64; 4]> {
         );
         let q = p - camera.eye;
         let depth = -q.dot(camera.n);
-        if !(depth > 1e-6 * q.length()) {
+        if depth.is_nan() || depth <= 1e-6 * q.length() {
             return None;
         }
         let s = camera.near / depth;
@@ -84,8 +84,7 @@ impl Extents {
         for (i, b) in boxes.iter().enumerate() {
             let (tx0, tx1, ty0, ty1) = match rectangle(b, camera) {
                 Some([x0, x1, y0, y1]) => {
-                    if x1 < 0 || y1 < 0 || x0 >= camera.columns as i64 || y0 >= camera.rows as i64
-                    {
+                    if x1 < 0 || y1 < 0 || x0 >= camera.columns as i64 || y0 >= camera.rows as i64 {
                         continue; // off screen: no camera ray can see it
                     }
                     (

@@ -188,9 +188,7 @@ impl Best {
         t_min: Real,
         formula: Formula,
     ) {
-        if let Some(h) = object
-            .hits(ray, formula)
-            .first_after(t_min)
+        if let Some(h) = object.hits(ray, formula).first_after(t_min)
             && (h.t < self.t || (h.t == self.t && i < self.object))
         {
             self.t = h.t;
@@ -346,7 +344,13 @@ impl Accelerator {
             let test = |c: u32, best: &mut Best| {
                 let c = c as usize;
                 if self.boxes[c].hit_between(&rb, t_min, best.t) {
-                    best.consider(&self.local[c], self.bounded[c] as usize, ray, t_min, formula);
+                    best.consider(
+                        &self.local[c],
+                        self.bounded[c] as usize,
+                        ray,
+                        t_min,
+                        formula,
+                    );
                 }
             };
             match &self.index {

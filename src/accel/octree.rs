@@ -88,7 +88,15 @@ impl Octree {
         tree
     }
 
-    fn fill(&mut self, cell: usize, bounds: Aabb, list: Vec<u32>, boxes: &[Aabb], k: usize, depth: u32) {
+    fn fill(
+        &mut self,
+        cell: usize,
+        bounds: Aabb,
+        list: Vec<u32>,
+        boxes: &[Aabb],
+        k: usize,
+        depth: u32,
+    ) {
         if list.len() > k && depth < Self::MAX_DEPTH {
             let parts: Vec<Vec<u32>> = (0..8)
                 .map(|o| {
@@ -124,6 +132,21 @@ impl Octree {
             first,
             count: list.len() as u32,
         };
+    }
+
+    /// The number of objects in the fullest leaf, and the number of (object, leaf) pairs.
+    #[must_use]
+    pub fn leaf_load(&self) -> (usize, usize) {
+        let max = self
+            .cells
+            .iter()
+            .map(|c| match c {
+                Cell::Leaf { count, .. } => *count as usize,
+                Cell::Inner(_) => 0,
+            })
+            .max()
+            .unwrap_or(0);
+        (max, self.items.len())
     }
 
     /// Number of cells (for reports).
@@ -180,13 +203,19 @@ impl Octree {
                 true
             }
             Cell::Inner(children) => {
-                // Where the ray crosses the three mid-planes; each octant's interval on an axis
+                // Where the ray crosses the three mid-planes: each octant's interval on an axis
                 // is the near or the far half of the cell's, so no octant box is intersected
                 // anew. A NaN (the origin on a mid-plane, moving along it) keeps both halves.
                 let mid = (bounds.centre() - ray.origin) * ray.inv_dir;
-                let mut order: [(Real, u32, Span); 8] = [(0.0, NONE, span); 8];
-                let mut n = 0;
-                for (o, &child) in children.iter().enumerate() {
+                // bit k set where the ray moves down axis k: there the upper half comes first
+                let flip = usize::from(ray.inv_dir.x < 0.0)
+                    | usize::from(ray.inv_dir.y < 0.0) << 1
+                    | usize::from(ray.inv_dir.z < 0.0) << 2;
+                // Along the ray each axis passes from its near half to its far half only, so
+                // the octants come in increasing order of (octant XOR flip): front to back.
+                for j in 0..8 {
+                    let o = j ^ flip;
+                    let child = children[o];
                     if child == NONE {
                         continue;
                     }
@@ -197,36 +226,21 @@ impl Octree {
                         if m.is_nan() {
                             continue;
                         }
-                        // the upper half lies beyond the mid-plane when the ray moves up the axis
-                        let upper = o & (1 << k) != 0;
-                        let near = upper == (ray.inv_dir[k] < 0.0);
-                        if near {
-                            hi[k] = m;
+                        if j & (1 << k) == 0 {
+                            hi[k] = m; // the near half
                         } else {
-                            lo[k] = m;
+                            lo[k] = m; // the far half
                         }
                     }
                     let enter = lo.x.max(lo.y).max(lo.z);
                     let exit = hi.x.min(hi.y).min(hi.z);
                     let (e, x) = (enter - enter.abs() * SLACK, exit + exit.abs() * SLACK);
                     if e <= x && x >= t_min && e <= widen(*limit) {
-                        let mut j = n;
-                        while j > 0 && order[j - 1].0 > e {
-                            order[j] = order[j - 1];
-                            j -= 1;
+                        let b = octant(bounds, o);
+                        let sub = Span { lo, hi };
+                        if !self.visit_cell(child as usize, &b, sub, ray, t_min, limit, visit) {
+                            return false;
                         }
-                        order[j] = (e, child | (o as u32) << 28, Span { lo, hi });
-                        n += 1;
-                    }
-                }
-                for &(e, tagged, sub) in &order[..n] {
-                    if e > widen(*limit) {
-                        break; // this cell and all after it start beyond the nearest hit
-                    }
-                    let (child, o) = (tagged & 0x0fff_ffff, (tagged >> 28) as usize);
-                    let b = octant(bounds, o);
-                    if !self.visit_cell(child as usize, &b, sub, ray, t_min, limit, visit) {
-                        return false;
                     }
                 }
                 true
