@@ -2,7 +2,8 @@
 //! technique gives exactly the brute-force image, whatever the number of threads.
 
 use whitted::accel::aabb::{RayBox, polyhedron_bounds, world_bounds};
-use whitted::accel::{Accel, Accelerator, scatter};
+use whitted::accel::extents::{Footprint, footprint};
+use whitted::accel::{Aabb, Accel, Accelerator, Bvh, scatter};
 use whitted::ray::Ray;
 use whitted::real::{Real, Vec3, vec3};
 use whitted::render::{self, Framebuffer, Options, Stage, Stats, TILE, View};
@@ -352,4 +353,61 @@ fn scatter_scenes_are_seeded() {
     let s = parse(&scatter::scene_toml(1000, 1, 64, 36), "s.toml").unwrap();
     assert_eq!(s.objects.len(), 1001);
     assert!((scatter::radius(10) / scatter::radius(1000) - 10.0).abs() < 1e-9);
+}
+
+/// Projection extents: a box in front of the eye covers the rectangle of its projected
+/// corners, one straddling the eye plane may cover any pixel, one wholly behind it none.
+#[test]
+fn projection_extents_follow_the_box_around_the_eye() {
+    let cam = showcase().camera.camera(64, 48); // eye (0, 2.4, 8.5) looking towards −z
+    let boxed = |lo: [f64; 3], hi: [f64; 3]| Aabb {
+        min: vec3(lo[0], lo[1], lo[2]),
+        max: vec3(hi[0], hi[1], hi[2]),
+    };
+    match footprint(&boxed([-0.1, 0.8, -0.1], [0.1, 1.0, 0.1]), &cam) {
+        Footprint::Rectangle([x0, x1, y0, y1]) => {
+            // a small box at the point looked at: a few pixels around the image centre
+            assert!(
+                x0 > 20 && x1 < 44 && y0 > 14 && y1 < 34,
+                "{x0} {x1} {y0} {y1}"
+            );
+            assert!(x0 < 32 && 32 < x1);
+        }
+        other => panic!("expected a rectangle, found {other:?}"),
+    }
+    assert_eq!(
+        footprint(&boxed([-1.0, 2.0, 8.0], [1.0, 3.0, 9.0]), &cam),
+        Footprint::Anywhere
+    );
+    assert_eq!(
+        footprint(&boxed([-1.0, 2.0, 10.0], [1.0, 3.0, 12.0]), &cam),
+        Footprint::Nowhere
+    );
+}
+
+/// A distribution the SAH bins would peel one object at a time (centres in a geometric
+/// progression) still gives a tree shallow enough to walk, which finds every box.
+#[test]
+fn a_bvh_over_a_geometric_progression_stays_walkable() {
+    let boxes: Vec<Aabb> = (0..3000)
+        .map(|i| {
+            let x = (1.01 as Real).powi(i);
+            Aabb {
+                min: vec3(0.0, 0.0, 0.0) + Vec3::X * x,
+                max: Vec3::new(x + 0.5, 1.0, 1.0),
+            }
+        })
+        .collect();
+    let bvh = Bvh::build(&boxes);
+    let ray = Ray::new(vec3(-1.0, 0.5, 0.5), vec3(1.0, 0.0, 0.0));
+    let mut limit = Real::INFINITY;
+    let mut seen = vec![false; boxes.len()];
+    bvh.walk(&RayBox::new(&ray), 0.0, &mut limit, |k, _| {
+        seen[bvh.order()[k as usize] as usize] = true;
+        true
+    });
+    assert!(
+        seen.iter().all(|&s| s),
+        "the walk along the row must meet every box"
+    );
 }

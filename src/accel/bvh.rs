@@ -46,6 +46,8 @@ fn wide(x: crate::real::Real) -> f64 {
 /// Cost of a box test relative to an object test, for the SAH.
 const BOX_COST: f64 = 0.1;
 const MAX_LEAF: usize = 8;
+/// Depth after which nodes are split at the median instead of by the SAH.
+const SAH_DEPTH: u32 = 32;
 
 struct Builder<'a> {
     boxes: &'a [Aabb],
@@ -70,7 +72,7 @@ impl Bvh {
         };
         let mut items: Vec<u32> = (0..boxes.len() as u32).collect();
         if !boxes.is_empty() {
-            b.split(&mut items, 0);
+            b.split(&mut items, 0, 0);
         }
         Self {
             nodes: b.nodes,
@@ -198,7 +200,7 @@ impl Bvh {
 impl Builder<'_> {
     /// Builds the subtree over `items` (a slice of the global item list starting at `offset`)
     /// and returns its node index.
-    fn split(&mut self, items: &mut [u32], offset: usize) -> u32 {
+    fn split(&mut self, items: &mut [u32], offset: usize, depth: u32) -> u32 {
         let bounds = items
             .iter()
             .fold(Aabb::EMPTY, |b, &i| b.union(&self.boxes[i as usize]));
@@ -211,7 +213,14 @@ impl Builder<'_> {
         if items.len() <= 1 {
             return me;
         }
-        let Some((axis, border)) = self.best_split(items, &bounds) else {
+        // Past SAH_DEPTH levels (a distribution the bins keep peeling a few objects off) the
+        // median split takes over, which bounds the depth by SAH_DEPTH + log₂ n.
+        let sah = if depth < SAH_DEPTH {
+            self.best_split(items, &bounds)
+        } else {
+            None
+        };
+        let Some((axis, border)) = sah else {
             if items.len() <= MAX_LEAF {
                 return me;
             }
@@ -228,7 +237,7 @@ impl Builder<'_> {
                 self.centres[*a as usize][axis].total_cmp(&self.centres[*b as usize][axis])
             });
             let mid = items.len() / 2;
-            return self.inner(me, items, mid, offset);
+            return self.inner(me, items, mid, offset, depth);
         };
         // partition: centres below the border go left
         let mut mid = 0;
@@ -241,13 +250,13 @@ impl Builder<'_> {
         if mid == 0 || mid == items.len() {
             mid = items.len() / 2;
         }
-        self.inner(me, items, mid, offset)
+        self.inner(me, items, mid, offset, depth)
     }
 
-    fn inner(&mut self, me: u32, items: &mut [u32], mid: usize, offset: usize) -> u32 {
+    fn inner(&mut self, me: u32, items: &mut [u32], mid: usize, offset: usize, depth: u32) -> u32 {
         let (left, right) = items.split_at_mut(mid);
-        self.split(left, offset);
-        let r = self.split(right, offset + mid);
+        self.split(left, offset, depth + 1);
+        let r = self.split(right, offset + mid, depth + 1);
         let n = &mut self.nodes[me as usize];
         n.index = r;
         n.count = 0;

@@ -5,7 +5,8 @@
 //! through that image point lies on the same line. So an object can only be hit by the camera
 //! rays of the pixels inside the projection of its bounding box. A box entirely in front of the
 //! eye projects inside the rectangle around its eight projected corners; a box reaching behind
-//! the eye may cover any pixel, and gets the whole image.
+//! the eye may cover any pixel, and gets the whole image; a box wholly behind the eye is seen
+//! by no camera ray, and gets no pixel.
 //!
 //! With q = P − e in the viewing basis, (q·u, q·v, q·n) with q·n < 0 in front, the ray
 //! through P has d = s·q with s = N/(−q·n), so it crosses the near plane at
@@ -27,6 +28,45 @@ pub struct Extents {
     /// For tile t: its objects are `items[starts[t]..starts[t + 1]]`.
     starts: Vec<u32>,
     items: Vec<u32>,
+}
+
+/// Where a box lies on the image.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Footprint {
+    /// Inside the rectangle [x0, x1] × [y0, y1] (pixel columns and rows from the top,
+    /// inclusive; it may reach beyond the image).
+    Rectangle([i64; 4]),
+    /// Anywhere: the box reaches behind the eye.
+    Anywhere,
+    /// Nowhere: the box lies wholly behind the eye, where no camera ray goes (a camera ray
+    /// e + d·t, t > 0, has depth t·N > 0).
+    Nowhere,
+}
+
+/// The part of the image that may see the box.
+#[must_use]
+pub fn footprint(b: &Aabb, camera: &Camera) -> Footprint {
+    let corner = |i: usize| {
+        Vec3::new(
+            if i & 1 == 0 { b.min.x } else { b.max.x },
+            if i & 2 == 0 { b.min.y } else { b.max.y },
+            if i & 4 == 0 { b.min.z } else { b.max.z },
+        )
+    };
+    // depth is linear, so the box's deepest point is a corner
+    let deepest = (0..8)
+        .map(|i| {
+            let q = corner(i) - camera.eye;
+            -q.dot(camera.n) / q.length().max(Real::MIN_POSITIVE)
+        })
+        .fold(Real::NEG_INFINITY, Real::max);
+    if deepest < -1e-3 {
+        return Footprint::Nowhere;
+    }
+    match rectangle(b, camera) {
+        Some(r) => Footprint::Rectangle(r),
+        None => Footprint::Anywhere,
+    }
 }
 
 /// The image rectangle [x0, x1] × [y0, y1] (pixel columns and rows from the top, inclusive)
@@ -82,8 +122,9 @@ impl Extents {
         let mut lists: Vec<Vec<u32>> = vec![Vec::new(); count];
         let t = tile as i64;
         for (i, b) in boxes.iter().enumerate() {
-            let (tx0, tx1, ty0, ty1) = match rectangle(b, camera) {
-                Some([x0, x1, y0, y1]) => {
+            let (tx0, tx1, ty0, ty1) = match footprint(b, camera) {
+                Footprint::Nowhere => continue,
+                Footprint::Rectangle([x0, x1, y0, y1]) => {
                     if x1 < 0 || y1 < 0 || x0 >= camera.columns as i64 || y0 >= camera.rows as i64 {
                         continue; // off screen: no camera ray can see it
                     }
@@ -94,7 +135,7 @@ impl Extents {
                         ((y1 / t) as usize).min(tiles_y as usize - 1),
                     )
                 }
-                None => (0, tiles_x as usize - 1, 0, tiles_y as usize - 1),
+                Footprint::Anywhere => (0, tiles_x as usize - 1, 0, tiles_y as usize - 1),
             };
             for ty in ty0..=ty1 {
                 for tx in tx0..=tx1 {
