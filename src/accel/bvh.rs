@@ -44,7 +44,7 @@ fn wide(x: crate::real::Real) -> f64 {
     x as f64
 }
 /// Cost of a box test relative to an object test, for the SAH.
-const BOX_COST: f64 = 0.1;
+const BOX_COST: f64 = 0.3;
 const MAX_LEAF: usize = 8;
 /// Depth after which nodes are split at the median instead of by the SAH.
 const SAH_DEPTH: u32 = 32;
