@@ -7,17 +7,13 @@
 //! octant as crowded as its parent, or copy the objects into more than three octants on
 //! average (objects as large as the cell), is not made. Empty octants are not stored.
 //!
-//! A ray walks the cells it crosses front to back (the octants of a cell sorted by where the
-//! ray enters them) and stops as soon as the next cell starts beyond the nearest hit found.
+//! Each cell also keeps the box of what it holds (its objects' boxes, clipped to the cube): a
+//! ray opens a cell only if it meets that box, so the emptier corners of a cube cost nothing.
+//! A ray walks the cells front to back (along the ray, each axis goes from the near half of a
+//! cube to the far half, so the octants come in a fixed order given by the signs of the
+//! direction), and skips every cell whose contents start beyond the nearest hit found.
 
-use super::aabb::{Aabb, RayBox, SLACK, widen};
-
-/// Per axis, the parameters where the ray crosses a cell's near and far faces.
-#[derive(Clone, Copy, Debug)]
-struct Span {
-    lo: Vec3,
-    hi: Vec3,
-}
+use super::aabb::{Aabb, RayBox, widen};
 use crate::real::{Real, Vec3};
 
 /// No child in this octant.
@@ -35,8 +31,9 @@ enum Cell {
 /// An octree over boxes; its leaves name the boxes' indices.
 #[derive(Clone, Debug)]
 pub struct Octree {
-    root: Aabb,
     cells: Vec<Cell>,
+    /// Per cell, what it holds: the union of its objects' boxes, clipped to the cube.
+    content: Vec<Aabb>,
     items: Vec<u32>,
 }
 
@@ -76,13 +73,14 @@ impl Octree {
             .union(&all)
         };
         let mut tree = Self {
-            root,
             cells: Vec::new(),
+            content: Vec::new(),
             items: Vec::new(),
         };
         if !boxes.is_empty() {
             let list: Vec<u32> = (0..boxes.len() as u32).collect();
             tree.cells.push(Cell::Leaf { first: 0, count: 0 });
+            tree.content.push(Aabb::EMPTY);
             tree.fill(0, root, list, boxes, k.max(1), 0);
         }
         tree
@@ -97,6 +95,13 @@ impl Octree {
         k: usize,
         depth: u32,
     ) {
+        let held = list
+            .iter()
+            .fold(Aabb::EMPTY, |b, &i| b.union(&boxes[i as usize]));
+        self.content[cell] = Aabb {
+            min: held.min.max(bounds.min),
+            max: held.max.min(bounds.max),
+        };
         if list.len() > k && depth < Self::MAX_DEPTH {
             let parts: Vec<Vec<u32>> = (0..8)
                 .map(|o| {
@@ -119,6 +124,7 @@ impl Octree {
                     }
                     let id = self.cells.len();
                     self.cells.push(Cell::Leaf { first: 0, count: 0 });
+                    self.content.push(Aabb::EMPTY);
                     children[o] = id as u32;
                     self.fill(id, octant(&bounds, o), part, boxes, k, depth + 1);
                 }
@@ -168,25 +174,26 @@ impl Octree {
         if self.cells.is_empty() {
             return;
         }
-        let (e, x) = self.root.slabs(ray);
-        if e <= x && x >= t_min && e <= widen(*limit) {
-            // per axis, where the ray crosses the cube's near and far faces
-            let a = (self.root.min - ray.origin) * ray.inv_dir;
-            let b = (self.root.max - ray.origin) * ray.inv_dir;
-            let span = Span {
-                lo: a.min(b),
-                hi: a.max(b),
-            };
-            self.visit_cell(0, &self.root, span, ray, t_min, limit, &mut visit);
+        // bit k set where the ray moves down axis k: there the upper octants come first
+        let flip = usize::from(ray.inv_dir.x < 0.0)
+            | usize::from(ray.inv_dir.y < 0.0) << 1
+            | usize::from(ray.inv_dir.z < 0.0) << 2;
+        if self.crosses(0, ray, t_min, *limit) {
+            self.visit_cell(0, flip, ray, t_min, limit, &mut visit);
         }
     }
 
-    #[allow(clippy::too_many_arguments)]
+    /// Whether the ray meets what cell `cell` holds, between t_min and the limit.
+    #[inline]
+    fn crosses(&self, cell: usize, ray: &RayBox, t_min: Real, limit: Real) -> bool {
+        let (e, x) = self.content[cell].slabs(ray);
+        e <= x && x >= t_min && e <= widen(limit)
+    }
+
     fn visit_cell(
         &self,
         cell: usize,
-        bounds: &Aabb,
-        span: Span,
+        flip: usize,
         ray: &RayBox,
         t_min: Real,
         limit: &mut Real,
@@ -203,44 +210,16 @@ impl Octree {
                 true
             }
             Cell::Inner(children) => {
-                // Where the ray crosses the three mid-planes: each octant's interval on an axis
-                // is the near or the far half of the cell's, so no octant box is intersected
-                // anew. A NaN (the origin on a mid-plane, moving along it) keeps both halves.
-                let mid = (bounds.centre() - ray.origin) * ray.inv_dir;
-                // bit k set where the ray moves down axis k: there the upper half comes first
-                let flip = usize::from(ray.inv_dir.x < 0.0)
-                    | usize::from(ray.inv_dir.y < 0.0) << 1
-                    | usize::from(ray.inv_dir.z < 0.0) << 2;
-                // Along the ray each axis passes from its near half to its far half only, so
-                // the octants come in increasing order of (octant XOR flip): front to back.
+                // Along the ray each axis passes from its near half of the cube to its far half
+                // only, so the octants come in increasing order of (octant XOR flip): front to
+                // back. Each is opened only if the ray meets what it holds before the limit.
                 for j in 0..8 {
-                    let o = j ^ flip;
-                    let child = children[o];
-                    if child == NONE {
-                        continue;
-                    }
-                    let mut lo = span.lo;
-                    let mut hi = span.hi;
-                    for k in 0..3 {
-                        let m = mid[k];
-                        if m.is_nan() {
-                            continue;
-                        }
-                        if j & (1 << k) == 0 {
-                            hi[k] = m; // the near half
-                        } else {
-                            lo[k] = m; // the far half
-                        }
-                    }
-                    let enter = lo.x.max(lo.y).max(lo.z);
-                    let exit = hi.x.min(hi.y).min(hi.z);
-                    let (e, x) = (enter - enter.abs() * SLACK, exit + exit.abs() * SLACK);
-                    if e <= x && x >= t_min && e <= widen(*limit) {
-                        let b = octant(bounds, o);
-                        let sub = Span { lo, hi };
-                        if !self.visit_cell(child as usize, &b, sub, ray, t_min, limit, visit) {
-                            return false;
-                        }
+                    let child = children[j ^ flip];
+                    if child != NONE
+                        && self.crosses(child as usize, ray, t_min, *limit)
+                        && !self.visit_cell(child as usize, flip, ray, t_min, limit, visit)
+                    {
+                        return false;
                     }
                 }
                 true
