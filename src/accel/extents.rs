@@ -14,7 +14,8 @@
 //! m − (v_r + H)·m/(2H). The rectangles are padded by a pixel on each side.
 //!
 //! The renderer works in 16 × 16 tiles, so each tile keeps the list of objects whose rectangle
-//! overlaps it, and a camera ray of that tile tests only those.
+//! overlaps it, and a camera ray of that tile tests only those (and the objects that may be
+//! anywhere, kept in one list of their own).
 
 use super::aabb::Aabb;
 use crate::camera::Camera;
@@ -28,6 +29,8 @@ pub struct Extents {
     /// For tile t: its objects are `items[starts[t]..starts[t + 1]]`.
     starts: Vec<u32>,
     items: Vec<u32>,
+    /// Objects that may cover any pixel (kept once, not in every tile's list).
+    everywhere: Vec<u32>,
 }
 
 /// Where a box lies on the image.
@@ -120,6 +123,7 @@ impl Extents {
         let tiles_y = camera.rows.div_ceil(tile);
         let count = (tiles_x as usize) * (tiles_y as usize);
         let mut lists: Vec<Vec<u32>> = vec![Vec::new(); count];
+        let mut everywhere = Vec::new();
         let t = tile as i64;
         for (i, b) in boxes.iter().enumerate() {
             let (tx0, tx1, ty0, ty1) = match footprint(b, camera) {
@@ -135,7 +139,10 @@ impl Extents {
                         ((y1 / t) as usize).min(tiles_y as usize - 1),
                     )
                 }
-                Footprint::Anywhere => (0, tiles_x as usize - 1, 0, tiles_y as usize - 1),
+                Footprint::Anywhere => {
+                    everywhere.push(i as u32);
+                    continue;
+                }
             };
             for ty in ty0..=ty1 {
                 for tx in tx0..=tx1 {
@@ -155,17 +162,20 @@ impl Extents {
             tiles_x,
             starts,
             items,
+            everywhere,
         }
     }
 
-    /// The candidates of the tile holding pixel (x, y).
+    /// The candidates of the tile holding pixel (x, y) of the image, and those that may cover
+    /// any pixel.
     #[inline]
     #[must_use]
-    pub fn candidates(&self, x: u32, y: u32) -> &[u32] {
+    pub fn candidates(&self, x: u32, y: u32) -> (&[u32], &[u32]) {
         let t = ((y / self.tile) * self.tiles_x + x / self.tile) as usize;
-        match (self.starts.get(t), self.starts.get(t + 1)) {
+        let here = match (self.starts.get(t), self.starts.get(t + 1)) {
             (Some(&a), Some(&b)) => &self.items[a as usize..b as usize],
             _ => &[],
-        }
+        };
+        (here, &self.everywhere)
     }
 }

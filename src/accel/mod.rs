@@ -356,7 +356,8 @@ impl Accelerator {
             match &self.index {
                 Index::List => match (&self.extents, pixel) {
                     (Some(e), Some((x, y))) => {
-                        for &c in e.candidates(x, y) {
+                        let (here, everywhere) = e.candidates(x, y);
+                        for &c in here.iter().chain(everywhere) {
                             test(c, &mut best);
                         }
                     }
