@@ -2,7 +2,9 @@
 //!
 //! ```text
 //! chNN [SCENE] [-o OUT.png] [--width W] [--height H]      every chapter
+//!      [--quiet]                                           every chapter
 //!      [--view color|flat|normals|depth]                   chapters 2–5
+//!      [--accel none|boxes|extents|octree|bvh]             chapters 2–5
 //!      [--samples N] [--max-depth N] [--stats]             chapter 5
 //!      [--formula textbook|robust]                         chapters 4–5
 //!      [--offset fixed|scaled|error-bound]                 chapters 4–5
@@ -10,14 +12,22 @@
 //!
 //! Without SCENE the embedded default scene `scenes/showcase.toml` is rendered. Every failure
 //! is one line on stderr, `error: …`, and exit status 2; nothing is written unless the whole
-//! image was rendered.
+//! image was rendered. An image whose framebuffer would pass
+//! [`render::MAX_FRAMEBUFFER_BYTES`] is refused before any work starts.
+//!
+//! A render that lasts more than a second shows a progress bar on stderr (only when stderr
+//! is a terminal, and not with `--quiet`). Unless `--quiet`, the last line on stderr gives the
+//! resolution, the rays cast by kind, the time and the millions of rays per second.
 
+use std::io::IsTerminal;
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
-use std::time::Instant;
+use std::sync::atomic::{AtomicBool, Ordering};
+use std::time::{Duration, Instant};
 
 use clap::Args;
 
+use crate::accel::Accel;
 use crate::error::Error;
 use crate::offset::OffsetKind;
 use crate::output;
@@ -46,6 +56,9 @@ pub struct Common {
     /// Image height in pixels; alone, the width follows the scene's aspect ratio.
     #[arg(long, value_name = "H", value_parser = clap::value_parser!(u32).range(1..=MAX_SIDE as i64))]
     pub height: Option<u32>,
+    /// No progress bar and no statistics line (errors and warnings are still printed).
+    #[arg(short, long)]
+    pub quiet: bool,
 }
 
 /// The view switch of chapters 2–5.
@@ -54,6 +67,10 @@ pub struct ViewArg {
     /// What each pixel shows: the chapter's colour, the flat material colour, normals, or depth.
     #[arg(long, value_enum, default_value_t = View::Color)]
     pub view: View,
+    /// How ray queries are accelerated (notes: "Computational Aspects"); the image is the same
+    /// with every choice, only the time changes.
+    #[arg(long, value_enum, default_value_t = Accel::default())]
+    pub accel: Accel,
 }
 
 /// Chapter 5's tracing controls.
@@ -65,7 +82,7 @@ pub struct Tracing {
     /// Maximum recursion depth of mirror and transmitted rays [default: the scene's, else 5].
     #[arg(long, value_name = "N", value_parser = clap::value_parser!(u32).range(0..=MAX_DEPTH as i64))]
     pub max_depth: Option<u32>,
-    /// Print rays cast by kind, time and rays per second.
+    /// Also print the samples, depth, threads and the acceleration structure built.
     #[arg(long)]
     pub stats: bool,
 }
@@ -176,6 +193,7 @@ fn run_inner(
     (options.width, options.height) = image_size(&scene, common.width, common.height);
     if let Some(v) = view {
         options.view = v.view;
+        options.accel = v.accel;
     }
     if let Some(t) = tracing {
         options.samples = t.samples.unwrap_or(options.samples);
@@ -185,27 +203,93 @@ fn run_inner(
         options.formula = a.formula;
         options.offset = a.offset.offset();
     }
+    render::check_size(options.width, options.height)?;
     let start = Instant::now();
-    let (fb, stats) = render::render(&scene, &options);
+    let accel = render::build_accel(&scene, &options);
+    let progress = Progress::new(
+        u64::from(options.width) * u64::from(options.height),
+        !common.quiet && std::io::stderr().is_terminal(),
+    );
+    let (fb, stats) = render::render_with(&scene, &options, &accel, &|n| progress.advance(n));
+    progress.finish();
     let seconds = start.elapsed().as_secs_f64();
     output::save(&fb, &out)?;
-    eprintln!("wrote {} ({}×{})", out.display(), fb.width, fb.height);
-    if tracing.is_some_and(|t| t.stats) {
-        eprintln!(
-            "{}×{}, {} sample(s)/px, depth {}: rays {} primary, {} shadow, {} reflected ({} by total internal reflection), {} refracted ({} total); {:.3} s, {:.2} M rays/s",
-            fb.width,
-            fb.height,
-            options.samples,
-            options.max_depth,
-            stats.primary,
-            stats.shadow,
-            stats.reflected,
-            stats.total_internal,
-            stats.refracted,
-            stats.total(),
-            seconds,
-            stats.total() as f64 / seconds.max(1e-9) / 1e6
-        );
+    if !common.quiet {
+        eprintln!("wrote {} ({}×{})", out.display(), fb.width, fb.height);
+        if tracing.is_some_and(|t| t.stats) {
+            eprintln!(
+                "{} sample(s)/px, depth {}, {} thread(s), {} mirror rays by total internal reflection; {}",
+                options.samples,
+                options.max_depth,
+                rayon::current_num_threads(),
+                stats.total_internal,
+                accel.describe()
+            );
+        }
+        eprintln!("{}", summary(fb.width, fb.height, &stats, seconds));
     }
     Ok(())
+}
+
+/// The final line: resolution, rays by kind, time (structure build and render) and M rays/s.
+#[must_use]
+pub fn summary(width: u32, height: u32, stats: &render::Stats, seconds: f64) -> String {
+    format!(
+        "{width}×{height}: rays {} primary, {} shadow, {} reflected, {} refracted ({} total); {:.3} s, {:.2} M rays/s",
+        stats.primary,
+        stats.shadow,
+        stats.reflected,
+        stats.refracted,
+        stats.total(),
+        seconds,
+        stats.total() as f64 / seconds.max(1e-9) / 1e6
+    )
+}
+
+/// A progress bar on stderr that appears only once a render has lasted a second.
+struct Progress {
+    bar: indicatif::ProgressBar,
+    enabled: bool,
+    shown: AtomicBool,
+    start: Instant,
+}
+
+impl Progress {
+    fn new(total: u64, enabled: bool) -> Self {
+        let bar = indicatif::ProgressBar::with_draw_target(
+            Some(total),
+            indicatif::ProgressDrawTarget::hidden(),
+        );
+        if let Ok(style) = indicatif::ProgressStyle::with_template(
+            "{elapsed_precise} [{bar:40}] {percent:>3}% ({eta} left)",
+        ) {
+            bar.set_style(style.progress_chars("=> "));
+        }
+        Self {
+            bar,
+            enabled,
+            shown: AtomicBool::new(false),
+            start: Instant::now(),
+        }
+    }
+
+    fn advance(&self, pixels: u64) {
+        if !self.enabled {
+            return;
+        }
+        self.bar.inc(pixels);
+        if !self.shown.load(Ordering::Relaxed)
+            && self.start.elapsed() > Duration::from_secs(1)
+            && !self.shown.swap(true, Ordering::Relaxed)
+        {
+            self.bar
+                .set_draw_target(indicatif::ProgressDrawTarget::stderr());
+        }
+    }
+
+    fn finish(&self) {
+        if self.shown.load(Ordering::Relaxed) {
+            self.bar.finish_and_clear();
+        }
+    }
 }

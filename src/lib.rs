@@ -16,7 +16,12 @@
 //! binary shares).
 //!
 //! Everything computes with [`real::Real`], `f64` by default and `f32` under the `f32` feature.
+//!
+//! Speed (the notes' "Computational Aspects") lives in [`accel`]: bounding boxes, projection
+//! extents, an octree and a BVH, chosen with `--accel` and never changing a pixel; the image is
+//! rendered in parallel tiles ([`render`]). Measurements: `docs/performance.md`.
 
+pub mod accel;
 pub mod camera;
 pub mod cli;
 pub mod error;

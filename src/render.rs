@@ -18,18 +18,29 @@
 //!
 //! The image is cut into tiles rendered in parallel (rayon). Every pixel depends only on its
 //! own coordinates (supersampling positions come from a hash of the pixel and sample index),
-//! so the image is the same whatever the number of threads.
+//! so the image is the same whatever the number of threads. Tiles are written straight into
+//! the framebuffer (one band of tile rows per task), so memory is the framebuffer itself:
+//! [`check_size`] refuses, before any work, an image whose framebuffer would pass
+//! [`MAX_FRAMEBUFFER_BYTES`].
+//!
+//! Nearest-hit and feeler queries go through the acceleration structure chosen by
+//! [`Options::accel`] (notes: "Computational Aspects"; see [`crate::accel`]); every choice
+//! gives the same image.
+
+use std::borrow::Cow;
 
 use rayon::prelude::*;
 
+use crate::accel::{Accel, Accelerator};
+
 use crate::camera::Camera;
+use crate::error::Error;
 use crate::offset::{Offset, SpawnPoint};
 use crate::optics;
 use crate::ray::Ray;
 use crate::real::{Real, Vec3};
 use crate::scene::Scene;
 use crate::shading;
-use crate::shadow;
 use crate::shapes::{Formula, Hit};
 
 /// Which chapter's renderer runs.
@@ -85,6 +96,8 @@ pub struct Options {
     pub offset: Offset,
     /// Seed of the supersampling positions.
     pub seed: u64,
+    /// Which acceleration structure answers ray queries (the image does not depend on it).
+    pub accel: Accel,
 }
 
 impl Options {
@@ -108,6 +121,7 @@ impl Options {
             formula: Formula::default(),
             offset: Offset::default(),
             seed: 0x5eed,
+            accel: Accel::default(),
         }
     }
 
@@ -183,45 +197,94 @@ pub struct Tracer<'a> {
     pub options: &'a Options,
     /// The camera at the options' image size.
     pub camera: Camera,
+    /// The acceleration structure over the scene's objects.
+    pub accel: Cow<'a, Accelerator>,
 }
 
-const TILE: u32 = 16;
+/// Side of the square tiles the image is rendered in.
+pub const TILE: u32 = 16;
+
+/// The largest framebuffer a render may allocate: 4 GiB, that is width × height × 3 ×
+/// `size_of::<Real>()` bytes (f64: 178 956 970 pixels, e.g. 13 377 × 13 377; f32: twice as
+/// many). The 8-bit copy written to the PNG adds 3 bytes per pixel.
+pub const MAX_FRAMEBUFFER_BYTES: u64 = 4 << 30;
+
+/// Refuses an image whose framebuffer would pass [`MAX_FRAMEBUFFER_BYTES`]: call it before
+/// any work starts.
+pub fn check_size(width: u32, height: u32) -> Result<(), Error> {
+    let bytes = u64::from(width) * u64::from(height) * std::mem::size_of::<Vec3>() as u64;
+    if bytes > MAX_FRAMEBUFFER_BYTES {
+        return Err(Error::Usage(format!(
+            "image {width}×{height} is too large: its framebuffer would take {:.1} GiB, more than the limit of {} GiB",
+            bytes as f64 / (1u64 << 30) as f64,
+            MAX_FRAMEBUFFER_BYTES >> 30
+        )));
+    }
+    Ok(())
+}
+
+/// Builds the acceleration structure `options.accel` for the scene seen at the options' size.
+#[must_use]
+pub fn build_accel(scene: &Scene, options: &Options) -> Accelerator {
+    let camera = scene.camera.camera(options.width, options.height);
+    // chapter 1 intersects nothing
+    let kind = if options.stage == Stage::CameraRays {
+        Accel::None
+    } else {
+        options.accel
+    };
+    Accelerator::build(&scene.objects, &camera, kind, TILE)
+}
 
 /// Renders the scene: returns the image and the rays cast.
 #[must_use]
 pub fn render(scene: &Scene, options: &Options) -> (Framebuffer, Stats) {
-    let tracer = Tracer::new(scene, options);
+    let accel = build_accel(scene, options);
+    render_with(scene, options, &accel, &|_| {})
+}
+
+/// Renders the scene with a prepared acceleration structure, calling `progress(pixels)` as
+/// each tile is done (from any thread).
+#[must_use]
+pub fn render_with(
+    scene: &Scene,
+    options: &Options,
+    accel: &Accelerator,
+    progress: &(dyn Fn(u64) + Sync),
+) -> (Framebuffer, Stats) {
+    let tracer = Tracer::with_accel(scene, options, accel);
     let (w, h) = (options.width, options.height);
-    let tiles: Vec<(u32, u32)> = (0..h.div_ceil(TILE))
-        .flat_map(|ty| (0..w.div_ceil(TILE)).map(move |tx| (tx * TILE, ty * TILE)))
-        .collect();
-    let done: Vec<(u32, u32, Vec<Vec3>, Stats)> = tiles
-        .par_iter()
-        .map(|&(x0, y0)| {
-            let mut stats = Stats::default();
-            let mut px = Vec::with_capacity((TILE * TILE) as usize);
-            for y in y0..(y0 + TILE).min(h) {
-                for x in x0..(x0 + TILE).min(w) {
-                    px.push(tracer.pixel(x, y, &mut stats));
-                }
-            }
-            (x0, y0, px, stats)
-        })
-        .collect();
     let mut fb = Framebuffer {
         width: w,
         height: h,
         pixels: vec![Vec3::ZERO; (w as usize) * (h as usize)],
     };
-    let mut stats = Stats::default();
-    for (x0, y0, px, s) in done {
-        let tw = (x0 + TILE).min(w) - x0;
-        for (i, c) in px.into_iter().enumerate() {
-            let (x, y) = (x0 + i as u32 % tw, y0 + i as u32 / tw);
-            fb.pixels[(y * w + x) as usize] = c;
-        }
-        stats.add(&s);
-    }
+    // one band of TILE rows per task; inside it, tile by tile
+    let band = (w as usize) * TILE as usize;
+    let stats = fb
+        .pixels
+        .par_chunks_mut(band)
+        .enumerate()
+        .map(|(ty, rows)| {
+            let mut stats = Stats::default();
+            let y0 = ty as u32 * TILE;
+            let y1 = (y0 + TILE).min(h);
+            for x0 in (0..w).step_by(TILE as usize) {
+                let x1 = (x0 + TILE).min(w);
+                for y in y0..y1 {
+                    let row = (y - y0) as usize * w as usize;
+                    for x in x0..x1 {
+                        rows[row + x as usize] = tracer.pixel(x, y, &mut stats);
+                    }
+                }
+                progress(u64::from((x1 - x0) * (y1 - y0)));
+            }
+            stats
+        })
+        .reduce(Stats::default, |mut a, b| {
+            a.add(&b);
+            a
+        });
     if options.view == View::Depth && options.stage >= Stage::GenericObjects {
         shade_depth(&mut fb);
     }
@@ -257,13 +320,25 @@ fn unit(h: u64) -> Real {
 }
 
 impl<'a> Tracer<'a> {
-    /// A tracer for the scene with the options' image size.
+    /// A tracer for the scene with the options' image size (builds `options.accel`).
     #[must_use]
     pub fn new(scene: &'a Scene, options: &'a Options) -> Self {
         Self {
             scene,
             options,
             camera: scene.camera.camera(options.width, options.height),
+            accel: Cow::Owned(build_accel(scene, options)),
+        }
+    }
+
+    /// A tracer using an acceleration structure built beforehand (see [`build_accel`]).
+    #[must_use]
+    pub fn with_accel(scene: &'a Scene, options: &'a Options, accel: &'a Accelerator) -> Self {
+        Self {
+            scene,
+            options,
+            camera: scene.camera.camera(options.width, options.height),
+            accel: Cow::Borrowed(accel),
         }
     }
 
@@ -305,51 +380,50 @@ impl<'a> Tracer<'a> {
             };
             let ray = self.camera.pixel_ray(x, y, dx, dy);
             stats.primary += 1;
-            sum += self.primary(&ray, stats);
+            sum += self.primary(&ray, (x, y), stats);
         }
         sum / samples as Real
     }
 
-    fn primary(&self, ray: &Ray, stats: &mut Stats) -> Vec3 {
+    fn primary(&self, ray: &Ray, pixel: (u32, u32), stats: &mut Stats) -> Vec3 {
+        let at = Some(pixel);
         let o = self.options;
         if o.stage == Stage::CameraRays {
             return (crate::numeric::normalize(ray.dir) + Vec3::ONE) * 0.5;
         }
         match o.view {
-            View::Color if o.stage == Stage::GenericObjects => self.flat(ray),
-            View::Color => self.trace(ray, 0.0, 0, 1.0, stats),
-            View::Flat => self.flat(ray),
-            View::Normals => match self.nearest(ray, 0.0) {
+            View::Color if o.stage == Stage::GenericObjects => self.flat(ray, at),
+            View::Color => self.trace_from(ray, 0.0, 0, 1.0, stats, at),
+            View::Flat => self.flat(ray, at),
+            View::Normals => match self.nearest_from(ray, 0.0, at) {
                 Some(n) => (self.facing(n.hit.normal, ray.dir) + Vec3::ONE) * 0.5,
                 None => self.scene.background,
             },
-            View::Depth => match self.nearest(ray, 0.0) {
+            View::Depth => match self.nearest_from(ray, 0.0, at) {
                 Some(n) => Vec3::splat(n.hit.t * ray.dir.length()),
                 None => Vec3::splat(Real::INFINITY),
             },
         }
     }
 
-    fn flat(&self, ray: &Ray) -> Vec3 {
-        match self.nearest(ray, 0.0) {
+    fn flat(&self, ray: &Ray, at: Option<(u32, u32)>) -> Vec3 {
+        match self.nearest_from(ray, 0.0, at) {
             Some(n) => self.scene.materials[self.scene.objects[n.object].material].diffuse,
             None => self.scene.background,
         }
     }
 
-    /// The nearest hit with t > `t_min` over all objects (the notes' step 5: smallest t).
+    /// The nearest hit with t > `t_min` over all objects (the notes' step 5: smallest t; among
+    /// equal t, the object listed first).
     #[must_use]
     pub fn nearest(&self, ray: &Ray, t_min: Real) -> Option<Nearest> {
-        let mut best: Option<Nearest> = None;
-        for (i, object) in self.scene.objects.iter().enumerate() {
-            let hits = object.intersect(ray, self.options.formula);
-            if let Some(hit) = hits.first_after(t_min)
-                && best.is_none_or(|b| hit.t < b.hit.t)
-            {
-                best = Some(Nearest { hit, object: i });
-            }
-        }
-        best
+        self.nearest_from(ray, t_min, None)
+    }
+
+    /// [`Tracer::nearest`] for a ray that may be the camera ray of image pixel `pixel`.
+    fn nearest_from(&self, ray: &Ray, t_min: Real, pixel: Option<(u32, u32)>) -> Option<Nearest> {
+        self.accel
+            .nearest(&self.scene.objects, ray, t_min, self.options.formula, pixel)
     }
 
     /// The normal turned to face against the direction `d` (towards where the ray came from).
@@ -368,7 +442,20 @@ impl<'a> Tracer<'a> {
         weight: Real,
         stats: &mut Stats,
     ) -> Vec3 {
-        let Some(nearest) = self.nearest(ray, t_min) else {
+        self.trace_from(ray, t_min, depth, weight, stats, None)
+    }
+
+    /// [`Tracer::trace`] for a ray that may be the camera ray of image pixel `pixel`.
+    fn trace_from(
+        &self,
+        ray: &Ray,
+        t_min: Real,
+        depth: u32,
+        weight: Real,
+        stats: &mut Stats,
+        pixel: Option<(u32, u32)>,
+    ) -> Vec3 {
+        let Some(nearest) = self.nearest_from(ray, t_min, pixel) else {
             return self.scene.background;
         };
         let scene = self.scene;
@@ -392,7 +479,7 @@ impl<'a> Tracer<'a> {
             if o.stage >= Stage::Shadows && light.shadows {
                 stats.shadow += 1;
                 let (origin, u_min) = o.offset.spawn(&spawn, light.position - p);
-                local *= shadow::transmittance(
+                local *= self.accel.transmittance(
                     &scene.objects,
                     &scene.materials,
                     origin,

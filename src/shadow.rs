@@ -13,6 +13,10 @@
 //! caustics: the feeler is not bent). The feeler starts from an offset origin so that it does
 //! not meet the surface it leaves (see [`crate::offset`]).
 //!
+//! [`transmittance`] is the brute-force form, every object in turn; the renderer asks the
+//! acceleration structure instead ([`crate::accel::Accelerator::transmittance`]), which skips
+//! the objects the feeler cannot meet and returns exactly the same share.
+//!
 //! ```toml
 //! [[lights]]
 //! position = [5.0, 8.0, 5.0]

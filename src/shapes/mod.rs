@@ -226,8 +226,7 @@ impl Object {
     /// back with (M⁻¹)ᵀ, renormalised.
     #[must_use]
     pub fn intersect(&self, ray: &Ray, formula: Formula) -> Hits {
-        let local = ray.transformed(&self.placement.inv);
-        let mut hits = self.shape.intersect_local(&local, formula);
+        let mut hits = self.intersect_object_space(ray, formula);
         for hit in hits.as_mut_slice() {
             hit.normal = self.placement.normal_to_world(hit.normal);
         }
@@ -236,6 +235,16 @@ impl Object {
 }
 
 impl Object {
+    /// The hits of a world ray with the object, normals left in object space: the first half
+    /// of [`Object::intersect`]. The acceleration structures ([`crate::accel`]) use it to carry
+    /// only the nearest hit's normal back to the world, and none for a feeler ray.
+    #[inline]
+    #[must_use]
+    pub fn intersect_object_space(&self, ray: &Ray, formula: Formula) -> Hits {
+        self.shape
+            .intersect_local(&ray.transformed(&self.placement.inv), formula)
+    }
+
     /// The hit point `p` (computed as e + d·t, so off the surface by an error that grows with
     /// the distance the ray travelled) moved back onto the surface, with a componentwise bound
     /// on the error of the result.

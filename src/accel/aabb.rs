@@ -1,0 +1,275 @@
+//! Bounding boxes (notes: "Computational Aspects", item 1).
+//!
+//! Every generic shape but the plane fits in a known box in its own space: the sphere and the
+//! cylinder in [−1, 1]³, the cone x² + y² = (1 − z)², z ∈ [−1, 1] in [−2, 2]² × [−1, 1], a polyhedron in the box of its vertices. Placing the
+//! object by M carries that box into the world; the world box of the placed object is the box
+//! around the eight carried corners (for a sphere, the exact box of the ellipsoid). A ray that
+//! misses the box cannot hit the object, and a slab test costs a few multiplications where an
+//! object test costs a transform and a square root.
+//!
+//! The boxes are *conservative*: they are padded by more than the rounding error of any hit
+//! the object test can report, so skipping an object whose box is missed never changes an
+//! image (the tests compare every accelerated image with the brute-force one, bit for bit).
+
+use crate::ray::Ray;
+use crate::real::{Mat4, Real, Vec3};
+use crate::shapes::{Object, Polyhedron, Shape};
+
+/// An axis-aligned box [min, max].
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Aabb {
+    /// The lower corner.
+    pub min: Vec3,
+    /// The upper corner.
+    pub max: Vec3,
+}
+
+/// Relative padding of a box, in units of its size: covers the error of the square root in a
+/// grazing hit (about √ε of the object's size).
+const PAD_SIZE: Real = 64.0
+    * if cfg!(feature = "f32") {
+        3.5e-4
+    } else {
+        1.5e-8
+    };
+/// Padding in units of the coordinates' magnitude: covers rounding in M⁻¹ and in r(t).
+const PAD_MAGNITUDE: Real = 1024.0 * Real::EPSILON;
+/// Relative slack of a slab test's interval (pbrt's 1 + 2γ₃, generously).
+pub(crate) const SLACK: Real = 16.0 * Real::EPSILON;
+
+/// A ray prepared for slab tests: origin and reciprocal direction.
+#[derive(Clone, Copy, Debug)]
+pub struct RayBox {
+    /// The origin e.
+    pub origin: Vec3,
+    /// 1/d, componentwise (±∞ where d has a zero component).
+    pub inv_dir: Vec3,
+}
+
+impl RayBox {
+    /// Prepares `ray` for slab tests.
+    #[inline]
+    #[must_use]
+    pub fn new(ray: &Ray) -> Self {
+        Self {
+            origin: ray.origin,
+            inv_dir: ray.dir.recip(),
+        }
+    }
+}
+
+/// Widens t a little towards +∞: the bound used when comparing an entry parameter with the
+/// nearest hit found so far.
+#[inline]
+#[must_use]
+pub(crate) fn widen(t: Real) -> Real {
+    t + t.abs() * SLACK
+}
+
+impl Aabb {
+    /// The empty box (min = +∞, max = −∞): the neutral element of [`Aabb::union`].
+    pub const EMPTY: Aabb = Aabb {
+        min: Vec3::splat(Real::INFINITY),
+        max: Vec3::splat(Real::NEG_INFINITY),
+    };
+
+    /// The generic box [−1, 1]³ of the sphere, the cylinder and the cone.
+    pub const GENERIC: Aabb = Aabb {
+        min: Vec3::splat(-1.0),
+        max: Vec3::splat(1.0),
+    };
+
+    /// The smallest box holding both.
+    #[inline]
+    #[must_use]
+    pub fn union(&self, o: &Aabb) -> Aabb {
+        Aabb {
+            min: self.min.min(o.min),
+            max: self.max.max(o.max),
+        }
+    }
+
+    /// The box grown to hold the point p.
+    #[inline]
+    #[must_use]
+    pub fn with_point(&self, p: Vec3) -> Aabb {
+        Aabb {
+            min: self.min.min(p),
+            max: self.max.max(p),
+        }
+    }
+
+    /// True when min ≤ max on every axis and every bound is finite.
+    #[must_use]
+    pub fn is_finite_nonempty(&self) -> bool {
+        self.min.is_finite() && self.max.is_finite() && self.min.cmple(self.max).all()
+    }
+
+    /// The centre of the box.
+    #[inline]
+    #[must_use]
+    pub fn centre(&self) -> Vec3 {
+        (self.min + self.max) * 0.5
+    }
+
+    /// Half the surface area, the measure the SAH weighs children by (0 for an empty box).
+    #[must_use]
+    pub fn half_area(&self) -> Real {
+        let e = (self.max - self.min).max(Vec3::ZERO);
+        e.x * e.y + e.y * e.z + e.z * e.x
+    }
+
+    /// True when the two closed boxes share a point.
+    #[inline]
+    #[must_use]
+    pub fn overlaps(&self, o: &Aabb) -> bool {
+        self.min.cmple(o.max).all() && o.min.cmple(self.max).all()
+    }
+
+    /// The box grown on every side by a margin covering rounding error (see the module docs).
+    #[must_use]
+    pub fn padded(&self) -> Aabb {
+        let size = (self.max - self.min).max_element();
+        let magnitude = self.min.abs().max(self.max.abs()).max_element();
+        let pad = Vec3::splat(size * PAD_SIZE + magnitude * PAD_MAGNITUDE + Real::MIN_POSITIVE);
+        Aabb {
+            min: self.min - pad,
+            max: self.max + pad,
+        }
+    }
+
+    /// The box around the eight corners of this (object-space) box carried by M.
+    #[must_use]
+    pub fn transformed(&self, m: &Mat4) -> Aabb {
+        let mut out = Aabb::EMPTY;
+        for i in 0..8 {
+            let corner = Vec3::new(
+                if i & 1 == 0 { self.min.x } else { self.max.x },
+                if i & 2 == 0 { self.min.y } else { self.max.y },
+                if i & 4 == 0 { self.min.z } else { self.max.z },
+            );
+            out = out.with_point(m.transform_point3(corner));
+        }
+        out
+    }
+
+    /// The parameters (t_enter, t_exit) where the ray crosses the box, by the slab method:
+    /// on each axis t = (bound − e)/d, the entry is the largest near crossing and the exit the
+    /// smallest far one. The interval is widened by a relative slack; it is empty
+    /// (t_enter > t_exit) when the ray misses.
+    #[inline]
+    #[must_use]
+    pub fn slabs(&self, ray: &RayBox) -> (Real, Real) {
+        let t0 = (self.min - ray.origin) * ray.inv_dir;
+        let t1 = (self.max - ray.origin) * ray.inv_dir;
+        // f64::min/max ignore a NaN (0·∞ for a ray lying in a slab's plane)
+        let near = t0.min(t1);
+        let far = t0.max(t1);
+        let enter = near.x.max(near.y).max(near.z);
+        let exit = far.x.min(far.y).min(far.z);
+        (enter - enter.abs() * SLACK, exit + exit.abs() * SLACK)
+    }
+
+    /// True when the ray meets the box somewhere in [lo, hi].
+    #[inline]
+    #[must_use]
+    pub fn hit_between(&self, ray: &RayBox, lo: Real, hi: Real) -> bool {
+        let (enter, exit) = self.slabs(ray);
+        enter <= exit && exit >= lo && enter <= hi
+    }
+}
+
+/// The generic (object-space) bounds of a shape, or `None` for a shape without finite bounds
+/// (the plane, or a polyhedron whose facets leave it open).
+#[must_use]
+pub fn generic_bounds(shape: &Shape) -> Option<Aabb> {
+    match shape {
+        Shape::Plane => None,
+        Shape::Sphere | Shape::Cylinder => Some(Aabb::GENERIC),
+        // the wall x² + y² = (1 − z)² reaches radius 2 at z = −1: the box must hold what the
+        // intersection routine can return, whatever the base disc's radius
+        Shape::Cone => Some(Aabb {
+            min: Vec3::new(-2.0, -2.0, -1.0),
+            max: Vec3::new(2.0, 2.0, 1.0),
+        }),
+        Shape::Polyhedron(p) => polyhedron_bounds(p),
+    }
+}
+
+/// The padded world box of a placed object, or `None` if it is unbounded (it is then tested
+/// against every ray, outside any hierarchy).
+#[must_use]
+pub fn world_bounds(object: &Object) -> Option<Aabb> {
+    let m = &object.placement.m;
+    let b = match object.shape {
+        // the exact box of the ellipsoid M·(unit sphere): half-extent on axis k is |row k of M|
+        Shape::Sphere => {
+            let c = m.transform_point3(Vec3::ZERO);
+            let rows = m.transpose();
+            let half = Vec3::new(
+                rows.x_axis.truncate().length(),
+                rows.y_axis.truncate().length(),
+                rows.z_axis.truncate().length(),
+            );
+            Aabb {
+                min: c - half,
+                max: c + half,
+            }
+        }
+        _ => generic_bounds(&object.shape)?.transformed(m),
+    };
+    let b = b.padded();
+    b.is_finite_nonempty().then_some(b)
+}
+
+/// The box of a convex polyhedron's vertices. The vertices are the points where three facets
+/// with independent normals meet and that lie inside every other facet. Returns `None` when
+/// the facets do not close a bounded solid (some direction v has n·v ≤ 0 for every facet),
+/// or when no vertex is found: such a polyhedron is treated as unbounded, which is always safe.
+#[must_use]
+pub fn polyhedron_bounds(p: &Polyhedron) -> Option<Aabb> {
+    let f = &p.facets;
+    let tol = 1e-6 as Real;
+    // Unbounded if the recession cone {v : n_i·v ≤ 0 ∀i} holds a non-zero v: its extreme
+    // rays lie along n_i × n_j. Normals spanning fewer than 3 dimensions leave a line free.
+    let mut rank3 = false;
+    for i in 0..f.len() {
+        for j in i + 1..f.len() {
+            let Some(v) = f[i].normal.cross(f[j].normal).try_normalize() else {
+                continue;
+            };
+            for v in [v, -v] {
+                if f.iter().all(|k| k.normal.dot(v) <= tol) {
+                    return None;
+                }
+            }
+            if f.iter().any(|k| k.normal.dot(v).abs() > tol) {
+                rank3 = true;
+            }
+        }
+    }
+    if !rank3 {
+        return None;
+    }
+    let mut b = Aabb::EMPTY;
+    let mut found = false;
+    for i in 0..f.len() {
+        for j in i + 1..f.len() {
+            for k in j + 1..f.len() {
+                let (a, bb, c) = (f[i].normal, f[j].normal, f[k].normal);
+                let det = a.dot(bb.cross(c));
+                if det.abs() < 1e-9 {
+                    continue;
+                }
+                // Cramer's rule for n_a·P = d_a, n_b·P = d_b, n_c·P = d_c
+                let pt = (bb.cross(c) * f[i].d + c.cross(a) * f[j].d + a.cross(bb) * f[k].d) / det;
+                let scale = pt.abs().max_element().max(1.0);
+                if pt.is_finite() && f.iter().all(|q| q.normal.dot(pt) <= q.d + tol * scale) {
+                    b = b.with_point(pt);
+                    found = true;
+                }
+            }
+        }
+    }
+    (found && b.is_finite_nonempty()).then_some(b)
+}

@@ -1,0 +1,324 @@
+//! A bounding volume hierarchy built with the binned surface area heuristic (SAH).
+//!
+//! The notes' bounding boxes, nested: a binary tree whose every node holds the box of the
+//! objects below it. A ray that misses a node's box skips the whole subtree, so a ray meets
+//! O(log n) boxes instead of n. Each node is split where the SAH predicts the cheapest
+//! traversal: for a split into L and R,
+//!
+//! ```text
+//! cost = C_box + (A(L)/A(node))·|L|·C_obj + (A(R)/A(node))·|R|·C_obj
+//! ```
+//!
+//! (A the surface area: the chance that a ray through the node meets the child's box). The
+//! candidate planes are the borders of 12 bins along each axis, over the objects' centres.
+//! A node becomes a leaf when no split beats testing its objects one by one.
+
+use super::aabb::{Aabb, RayBox, widen};
+
+/// One node of the flattened tree: an inner node's left child follows it, its right child is
+/// at `right`; a leaf lists `count` objects from `first` in [`Bvh::items`].
+#[derive(Clone, Copy, Debug)]
+struct Node {
+    bounds: Aabb,
+    /// Leaf: index of the first item; inner node: index of the right child.
+    index: u32,
+    /// Number of items in a leaf, 0 for an inner node.
+    count: u32,
+}
+
+/// A BVH over boxes. Its leaves are ranges of [`Bvh::order`]: the walk reports positions in
+/// that order, so a caller that stores its data in that order reads it sequentially.
+#[derive(Clone, Debug)]
+pub struct Bvh {
+    nodes: Vec<Node>,
+    /// Box indices in leaf order.
+    items: Vec<u32>,
+}
+
+const BINS: usize = 12;
+
+/// A [`crate::real::Real`] as f64 (the build's arithmetic is in f64 in both precisions).
+#[allow(clippy::unnecessary_cast)] // a no-op in f64, a widening under the `f32` feature
+#[inline]
+fn wide(x: crate::real::Real) -> f64 {
+    x as f64
+}
+/// Cost of a box test relative to an object test, for the SAH.
+const BOX_COST: f64 = 0.3;
+const MAX_LEAF: usize = 8;
+/// Depth after which nodes are split at the median instead of by the SAH.
+const SAH_DEPTH: u32 = 32;
+
+struct Builder<'a> {
+    boxes: &'a [Aabb],
+    centres: Vec<[f64; 3]>,
+    nodes: Vec<Node>,
+}
+
+impl Bvh {
+    /// Builds the hierarchy over `boxes` (all finite).
+    #[must_use]
+    pub fn build(boxes: &[Aabb]) -> Self {
+        let mut b = Builder {
+            boxes,
+            centres: boxes
+                .iter()
+                .map(|x| {
+                    let c = x.centre();
+                    [wide(c.x), wide(c.y), wide(c.z)]
+                })
+                .collect(),
+            nodes: Vec::with_capacity(2 * boxes.len().max(1)),
+        };
+        let mut items: Vec<u32> = (0..boxes.len() as u32).collect();
+        if !boxes.is_empty() {
+            b.split(&mut items, 0, 0);
+        }
+        Self {
+            nodes: b.nodes,
+            items,
+        }
+    }
+
+    /// The box indices in leaf order: position k of a walk is box `order()[k]`.
+    #[must_use]
+    pub fn order(&self) -> &[u32] {
+        &self.items
+    }
+
+    /// Number of nodes (for reports).
+    #[must_use]
+    pub fn node_count(&self) -> usize {
+        self.nodes.len()
+    }
+
+    /// Calls `visit(k)` for every position k (see [`Bvh::order`]) whose leaf box the ray meets with an entry not
+    /// beyond `*limit` (re-read after each call, so a nearest-hit search can shrink it), nearer
+    /// subtrees first. `visit` returns false to stop the walk.
+    #[inline]
+    pub fn walk(
+        &self,
+        ray: &RayBox,
+        t_min: crate::real::Real,
+        limit: &mut crate::real::Real,
+        mut visit: impl FnMut(u32, &mut crate::real::Real) -> bool,
+    ) {
+        if self.nodes.is_empty() {
+            return;
+        }
+        let mut stack = [0u32; 64];
+        let mut top = 0usize;
+        let mut node = 0u32;
+        let (e, x) = self.nodes[0].bounds.slabs(ray);
+        if !(e <= x && x >= t_min && e <= widen(*limit)) {
+            return;
+        }
+        loop {
+            let n = &self.nodes[node as usize];
+            if n.count > 0 {
+                let first = n.index as usize;
+                for k in first..first + n.count as usize {
+                    if !visit(k as u32, limit) {
+                        return;
+                    }
+                }
+            } else {
+                let (l, r) = (node + 1, n.index);
+                let (le, lx) = self.nodes[l as usize].bounds.slabs(ray);
+                let (re, rx) = self.nodes[r as usize].bounds.slabs(ray);
+                let lim = widen(*limit);
+                let hit_l = le <= lx && lx >= t_min && le <= lim;
+                let hit_r = re <= rx && rx >= t_min && re <= lim;
+                match (hit_l, hit_r) {
+                    (true, true) => {
+                        let (near, far) = if le <= re { (l, r) } else { (r, l) };
+                        if top < stack.len() {
+                            stack[top] = far;
+                            top += 1;
+                            node = near;
+                            continue;
+                        }
+                        // a degenerate, very deep tree: visit the far side without the stack
+                        self.walk_from(far, ray, t_min, limit, &mut visit);
+                        node = near;
+                        continue;
+                    }
+                    (true, false) => {
+                        node = l;
+                        continue;
+                    }
+                    (false, true) => {
+                        node = r;
+                        continue;
+                    }
+                    (false, false) => {}
+                }
+            }
+            // pop the next subtree that is still worth visiting
+            loop {
+                if top == 0 {
+                    return;
+                }
+                top -= 1;
+                node = stack[top];
+                let (e, x) = self.nodes[node as usize].bounds.slabs(ray);
+                if e <= x && x >= t_min && e <= widen(*limit) {
+                    break;
+                }
+            }
+        }
+    }
+
+    /// The recursive walk of one subtree (used only past the stack's depth).
+    fn walk_from(
+        &self,
+        node: u32,
+        ray: &RayBox,
+        t_min: crate::real::Real,
+        limit: &mut crate::real::Real,
+        visit: &mut impl FnMut(u32, &mut crate::real::Real) -> bool,
+    ) -> bool {
+        let n = &self.nodes[node as usize];
+        let (e, x) = n.bounds.slabs(ray);
+        if !(e <= x && x >= t_min && e <= widen(*limit)) {
+            return true;
+        }
+        if n.count > 0 {
+            let first = n.index as usize;
+            for k in first..first + n.count as usize {
+                if !visit(k as u32, limit) {
+                    return false;
+                }
+            }
+            return true;
+        }
+        self.walk_from(node + 1, ray, t_min, limit, visit)
+            && self.walk_from(n.index, ray, t_min, limit, visit)
+    }
+}
+
+impl Builder<'_> {
+    /// Builds the subtree over `items` (a slice of the global item list starting at `offset`)
+    /// and returns its node index.
+    fn split(&mut self, items: &mut [u32], offset: usize, depth: u32) -> u32 {
+        let bounds = items
+            .iter()
+            .fold(Aabb::EMPTY, |b, &i| b.union(&self.boxes[i as usize]));
+        let me = self.nodes.len() as u32;
+        self.nodes.push(Node {
+            bounds,
+            index: offset as u32,
+            count: items.len() as u32,
+        });
+        if items.len() <= 1 {
+            return me;
+        }
+        // Past SAH_DEPTH levels (a distribution the bins keep peeling a few objects off) the
+        // median split takes over, which bounds the depth by SAH_DEPTH + log₂ n.
+        let sah = if depth < SAH_DEPTH {
+            self.best_split(items, &bounds)
+        } else {
+            None
+        };
+        let Some((axis, border)) = sah else {
+            if items.len() <= MAX_LEAF {
+                return me;
+            }
+            // no useful SAH split (e.g. all centres equal): halve by position along the widest axis
+            let ext = bounds.max - bounds.min;
+            let axis = if ext.x >= ext.y && ext.x >= ext.z {
+                0
+            } else if ext.y >= ext.z {
+                1
+            } else {
+                2
+            };
+            items.sort_by(|a, b| {
+                self.centres[*a as usize][axis].total_cmp(&self.centres[*b as usize][axis])
+            });
+            let mid = items.len() / 2;
+            return self.inner(me, items, mid, offset, depth);
+        };
+        // partition: centres below the border go left
+        let mut mid = 0;
+        for k in 0..items.len() {
+            if self.centres[items[k] as usize][axis] < border {
+                items.swap(k, mid);
+                mid += 1;
+            }
+        }
+        if mid == 0 || mid == items.len() {
+            mid = items.len() / 2;
+        }
+        self.inner(me, items, mid, offset, depth)
+    }
+
+    fn inner(&mut self, me: u32, items: &mut [u32], mid: usize, offset: usize, depth: u32) -> u32 {
+        let (left, right) = items.split_at_mut(mid);
+        self.split(left, offset, depth + 1);
+        let r = self.split(right, offset + mid, depth + 1);
+        let n = &mut self.nodes[me as usize];
+        n.index = r;
+        n.count = 0;
+        me
+    }
+
+    /// The (axis, border) of the cheapest binned SAH split, or `None` if a leaf is cheaper.
+    fn best_split(&self, items: &[u32], bounds: &Aabb) -> Option<(usize, f64)> {
+        let mut best: Option<(f64, usize, f64)> = None;
+        let leaf_cost = items.len() as f64;
+        let area = wide(bounds.half_area());
+        if area <= 0.0 {
+            return None;
+        }
+        for axis in 0..3 {
+            let (lo, hi) = items
+                .iter()
+                .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), &i| {
+                    let c = self.centres[i as usize][axis];
+                    (lo.min(c), hi.max(c))
+                });
+            if hi <= lo {
+                continue;
+            }
+            let scale = BINS as f64 / (hi - lo);
+            let mut bin_boxes = [Aabb::EMPTY; BINS];
+            let mut bin_counts = [0usize; BINS];
+            for &i in items {
+                let k = (((self.centres[i as usize][axis] - lo) * scale) as usize).min(BINS - 1);
+                bin_boxes[k] = bin_boxes[k].union(&self.boxes[i as usize]);
+                bin_counts[k] += 1;
+            }
+            // sweep from the right to get the area and count of every right part
+            let mut right_area = [0.0f64; BINS];
+            let mut right_count = [0usize; BINS];
+            let (mut b, mut c) = (Aabb::EMPTY, 0);
+            for k in (1..BINS).rev() {
+                b = b.union(&bin_boxes[k]);
+                c += bin_counts[k];
+                right_area[k] = wide(b.half_area());
+                right_count[k] = c;
+            }
+            let (mut b, mut c) = (Aabb::EMPTY, 0);
+            for k in 1..BINS {
+                b = b.union(&bin_boxes[k - 1]);
+                c += bin_counts[k - 1];
+                if c == 0 || right_count[k] == 0 {
+                    continue;
+                }
+                let cost = BOX_COST
+                    + (wide(b.half_area()) * c as f64 + right_area[k] * right_count[k] as f64)
+                        / area;
+                if best.is_none_or(|(bc, _, _)| cost < bc) {
+                    best = Some((cost, axis, lo + k as f64 / scale));
+                }
+            }
+        }
+        match best {
+            Some((cost, axis, border)) if cost < leaf_cost || items.len() > MAX_LEAF => {
+                Some((axis, border))
+            }
+            _ => None,
+        }
+    }
+}

@@ -1,0 +1,467 @@
+//! Speed: the notes' "Computational Aspects", and a modern hierarchy beside them.
+//!
+//! The notes observe that the computation a ray tracer must do "is often times staggering",
+//! and name the simplest remedies: bounding boxes, projection extents, and space subdivision
+//! into cubes until each holds a preset number of surfaces. This module builds each of them,
+//! selectable per render with [`Accel`] (`--accel` on the chapter binaries 2–5):
+//!
+//! | `--accel` | what a ray tests |
+//! |---|---|
+//! | `none` | every object, as the notes' step 4 says (brute force) |
+//! | `boxes` | every object's world box ([`aabb`]); the object only if its box is hit |
+//! | `extents` | camera rays: only the objects whose screen rectangle holds the pixel ([`extents`]); other rays as `boxes` |
+//! | `octree` | the objects of the cubes of an octree the ray crosses, front to back ([`octree`]) |
+//! | `bvh` (default) | the leaves of a bounding volume hierarchy built by the binned SAH ([`bvh`]) |
+//!
+//! Infinite planes (and polyhedra whose facets leave them open) have no box: they live outside
+//! every structure and are tested against every ray.
+//!
+//! Every option returns exactly what brute force returns: the hit with the smallest t, and
+//! among equal t the object listed first in the scene, and for a feeler ray the product of the
+//! transmissions of the objects in between, taken in scene order. So the images are identical,
+//! bit for bit, whichever option renders them.
+//!
+//! ```text
+//! ch05_reflection_refraction scene.toml --accel octree
+//! ```
+
+pub mod aabb;
+pub mod bvh;
+pub mod extents;
+pub mod octree;
+pub mod scatter;
+
+use std::time::Instant;
+
+pub use aabb::Aabb;
+use aabb::RayBox;
+pub use bvh::Bvh;
+pub use extents::Extents;
+pub use octree::Octree;
+
+use crate::camera::Camera;
+use crate::material::Material;
+use crate::ray::Ray;
+use crate::real::{Real, Vec3};
+use crate::render::Nearest;
+use crate::shapes::{Formula, Hit, Object};
+
+/// Which acceleration technique answers the ray queries.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash, clap::ValueEnum)]
+pub enum Accel {
+    /// Brute force: every ray against every object.
+    None,
+    /// A bounding box per object, tested before the object.
+    Boxes,
+    /// Boxes, and screen rectangles that limit the objects a camera ray tests.
+    Extents,
+    /// An octree: cubes subdivided until each holds at most k objects.
+    Octree,
+    /// A bounding volume hierarchy (binned SAH).
+    #[default]
+    Bvh,
+}
+
+impl Accel {
+    /// Every option, in the order of the notes and then the modern one.
+    pub const ALL: [Accel; 5] = [
+        Accel::None,
+        Accel::Boxes,
+        Accel::Extents,
+        Accel::Octree,
+        Accel::Bvh,
+    ];
+
+    /// The option's name as `--accel` writes it.
+    #[must_use]
+    pub fn name(self) -> &'static str {
+        match self {
+            Accel::None => "none",
+            Accel::Boxes => "boxes",
+            Accel::Extents => "extents",
+            Accel::Octree => "octree",
+            Accel::Bvh => "bvh",
+        }
+    }
+}
+
+/// The octree's k: a cube holding more objects than this is subdivided.
+pub const OCTREE_K: usize = 4;
+
+#[derive(Clone, Debug)]
+enum Index {
+    /// Test the candidates one by one (none, boxes, extents).
+    List,
+    Octree(Octree),
+    Bvh(Bvh),
+}
+
+/// An acceleration structure built for one scene, camera and [`Accel`].
+#[derive(Clone, Debug)]
+pub struct Accelerator {
+    kind: Accel,
+    /// Object index of each bounded candidate, in the order the structure walks them (BVH:
+    /// leaf order; otherwise increasing).
+    bounded: Vec<u32>,
+    /// The world box of each bounded candidate, same order.
+    boxes: Vec<Aabb>,
+    /// What intersecting each bounded candidate needs, same order: a walk reads memory in
+    /// sequence, and a third of what a whole [`Object`] would take.
+    local: Vec<Local>,
+    /// Objects without a box, increasing: tested against every ray.
+    unbounded: Vec<u32>,
+    index: Index,
+    extents: Option<Extents>,
+    /// Seconds spent building.
+    pub build_seconds: f64,
+}
+
+/// The part of an object a ray test needs: the columns of M⁻¹ (without its last row) and
+/// the generic shape.
+#[derive(Clone, Debug)]
+struct Local {
+    inv: [Vec3; 4],
+    shape: crate::shapes::Shape,
+}
+
+impl Local {
+    fn new(o: &Object) -> Self {
+        let m = &o.placement.inv;
+        Self {
+            inv: [
+                m.x_axis.truncate(),
+                m.y_axis.truncate(),
+                m.z_axis.truncate(),
+                m.w_axis.truncate(),
+            ],
+            shape: o.shape.clone(),
+        }
+    }
+
+    /// The same as [`Object::intersect_object_space`], bit for bit: M⁻¹e and M⁻¹d summed in
+    /// the order `Mat4::transform_point3` sums them.
+    #[inline]
+    fn intersect_object_space(&self, ray: &Ray, formula: Formula) -> crate::shapes::Hits {
+        let [c0, c1, c2, c3] = self.inv;
+        let (e, d) = (ray.origin, ray.dir);
+        let dir = c2 * d.z + (c1 * d.y + c0 * d.x);
+        let origin = c3 + (c2 * e.z + (c1 * e.y + c0 * e.x));
+        self.shape.intersect_local(&Ray::new(origin, dir), formula)
+    }
+}
+
+/// Anything a ray can be tested against in object space.
+trait ObjectSpace {
+    fn hits(&self, ray: &Ray, formula: Formula) -> crate::shapes::Hits;
+}
+
+impl ObjectSpace for Object {
+    #[inline]
+    fn hits(&self, ray: &Ray, formula: Formula) -> crate::shapes::Hits {
+        self.intersect_object_space(ray, formula)
+    }
+}
+
+impl ObjectSpace for Local {
+    #[inline]
+    fn hits(&self, ray: &Ray, formula: Formula) -> crate::shapes::Hits {
+        self.intersect_object_space(ray, formula)
+    }
+}
+
+/// The nearest hit so far: (t, object), with the hit in object space.
+struct Best {
+    t: Real,
+    object: usize,
+    hit: Option<Hit>,
+}
+
+impl Best {
+    /// Tests object `i` and keeps its first hit after `t_min` if it comes before the best so
+    /// far (equal t: the lower index wins, as in a scan in scene order).
+    #[inline]
+    fn consider(
+        &mut self,
+        object: &impl ObjectSpace,
+        i: usize,
+        ray: &Ray,
+        t_min: Real,
+        formula: Formula,
+    ) {
+        if let Some(h) = object.hits(ray, formula).first_after(t_min)
+            && (h.t < self.t || (h.t == self.t && i < self.object))
+        {
+            self.t = h.t;
+            self.object = i;
+            self.hit = Some(h);
+        }
+    }
+}
+
+/// Translucent objects met by a feeler, kept to multiply their transmissions in scene order.
+struct Blockers {
+    inline: [u32; 8],
+    len: usize,
+    spill: Vec<u32>,
+}
+
+impl Blockers {
+    fn new() -> Self {
+        Self {
+            inline: [0; 8],
+            len: 0,
+            spill: Vec::new(),
+        }
+    }
+
+    fn push(&mut self, i: u32) {
+        if self.len < self.inline.len() {
+            self.inline[self.len] = i;
+            self.len += 1;
+        } else {
+            if self.spill.is_empty() {
+                self.spill.extend_from_slice(&self.inline);
+            }
+            self.spill.push(i);
+        }
+    }
+
+    /// The product of the transmissions, in increasing object index, each object once.
+    fn share(mut self, objects: &[Object], materials: &[Material]) -> Real {
+        let list: &mut [u32] = if self.spill.is_empty() {
+            &mut self.inline[..self.len]
+        } else {
+            &mut self.spill
+        };
+        list.sort_unstable();
+        let mut share: Real = 1.0;
+        let mut last = None;
+        for &i in list.iter() {
+            if last == Some(i) {
+                continue;
+            }
+            last = Some(i);
+            share *= materials[objects[i as usize].material].transmission;
+            if share == 0.0 {
+                break;
+            }
+        }
+        share
+    }
+}
+
+impl Accelerator {
+    /// Builds the structure `kind` over the scene's objects; `camera` gives the image size and
+    /// the viewpoint for projection extents, tiles of `tile` pixels.
+    #[must_use]
+    pub fn build(objects: &[Object], camera: &Camera, kind: Accel, tile: u32) -> Self {
+        let start = Instant::now();
+        let mut bounded = Vec::new();
+        let mut boxes = Vec::new();
+        let mut unbounded = Vec::new();
+        for (i, o) in objects.iter().enumerate() {
+            match aabb::world_bounds(o) {
+                Some(b) if kind != Accel::None => {
+                    bounded.push(i as u32);
+                    boxes.push(b);
+                }
+                _ => unbounded.push(i as u32),
+            }
+        }
+        let index = match kind {
+            Accel::Octree => Index::Octree(Octree::build(&boxes, OCTREE_K)),
+            Accel::Bvh => {
+                let bvh = Bvh::build(&boxes);
+                // store the candidates in leaf order
+                bounded = bvh.order().iter().map(|&k| bounded[k as usize]).collect();
+                boxes = bvh.order().iter().map(|&k| boxes[k as usize]).collect();
+                Index::Bvh(bvh)
+            }
+            _ => Index::List,
+        };
+        let extents = (kind == Accel::Extents).then(|| Extents::build(&boxes, camera, tile));
+        let local = bounded
+            .iter()
+            .map(|&i| Local::new(&objects[i as usize]))
+            .collect();
+        Self {
+            kind,
+            bounded,
+            boxes,
+            local,
+            unbounded,
+            index,
+            extents,
+            build_seconds: start.elapsed().as_secs_f64(),
+        }
+    }
+
+    /// The technique in use.
+    #[must_use]
+    pub fn kind(&self) -> Accel {
+        self.kind
+    }
+
+    /// A one-line description of the structure (objects in and out of it, nodes).
+    #[must_use]
+    pub fn describe(&self) -> String {
+        let detail = match &self.index {
+            Index::Octree(o) => format!(", {} cells (k = {OCTREE_K})", o.cell_count()),
+            Index::Bvh(b) => format!(", {} nodes", b.node_count()),
+            Index::List => String::new(),
+        };
+        format!(
+            "accel {}: {} bounded, {} unbounded objects{detail}, built in {:.3} s",
+            self.kind.name(),
+            self.bounded.len(),
+            self.unbounded.len(),
+            self.build_seconds
+        )
+    }
+
+    /// The nearest hit with t > `t_min` (world normal), exactly as a scan over every object
+    /// finds it. `pixel` names the image pixel of a camera ray, which lets projection extents
+    /// narrow the candidates; pass `None` for any other ray.
+    #[must_use]
+    pub fn nearest(
+        &self,
+        objects: &[Object],
+        ray: &Ray,
+        t_min: Real,
+        formula: Formula,
+        pixel: Option<(u32, u32)>,
+    ) -> Option<Nearest> {
+        let mut best = Best {
+            t: Real::INFINITY,
+            object: usize::MAX,
+            hit: None,
+        };
+        for &i in &self.unbounded {
+            best.consider(&objects[i as usize], i as usize, ray, t_min, formula);
+        }
+        if !self.bounded.is_empty() {
+            let rb = RayBox::new(ray);
+            let test = |c: u32, best: &mut Best| {
+                let c = c as usize;
+                if self.boxes[c].hit_between(&rb, t_min, best.t) {
+                    best.consider(
+                        &self.local[c],
+                        self.bounded[c] as usize,
+                        ray,
+                        t_min,
+                        formula,
+                    );
+                }
+            };
+            match &self.index {
+                Index::List => match (&self.extents, pixel) {
+                    (Some(e), Some((x, y))) => {
+                        let (here, everywhere) = e.candidates(x, y);
+                        for &c in here.iter().chain(everywhere) {
+                            test(c, &mut best);
+                        }
+                    }
+                    _ => {
+                        for c in 0..self.bounded.len() as u32 {
+                            test(c, &mut best);
+                        }
+                    }
+                },
+                Index::Bvh(bvh) => {
+                    let mut limit = best.t;
+                    bvh.walk(&rb, t_min, &mut limit, |c, limit| {
+                        test(c, &mut best);
+                        *limit = best.t;
+                        true
+                    });
+                }
+                Index::Octree(tree) => {
+                    let mut limit = best.t;
+                    tree.walk(&rb, t_min, &mut limit, |c, limit| {
+                        test(c, &mut best);
+                        *limit = best.t;
+                        true
+                    });
+                }
+            }
+        }
+        best.hit.map(|mut hit| {
+            hit.normal = objects[best.object].placement.normal_to_world(hit.normal);
+            Nearest {
+                hit,
+                object: best.object,
+            }
+        })
+    }
+
+    /// The share of a light reaching `origin` along the feeler S(u) = origin + (L − origin)·u,
+    /// exactly as [`crate::shadow::transmittance`] computes it: the product, in scene order, of
+    /// the transmissions of the objects met with u ∈ ]u_min, 1].
+    #[must_use]
+    pub fn transmittance(
+        &self,
+        objects: &[Object],
+        materials: &[Material],
+        origin: Vec3,
+        light: Vec3,
+        u_min: Real,
+        formula: Formula,
+    ) -> Real {
+        let feeler = Ray::new(origin, light - origin);
+        let mut blockers = Blockers::new();
+        // false: an opaque object blocks the light, nothing more to learn
+        let meet = |hits: crate::shapes::Hits, i: u32, blockers: &mut Blockers| -> bool {
+            if hits.as_slice().iter().any(|h| h.t > u_min && h.t <= 1.0) {
+                if materials[objects[i as usize].material].transmission == 0.0 {
+                    return false;
+                }
+                blockers.push(i);
+            }
+            true
+        };
+        for &i in &self.unbounded {
+            if !meet(objects[i as usize].hits(&feeler, formula), i, &mut blockers) {
+                return 0.0;
+            }
+        }
+        if !self.bounded.is_empty() {
+            let rb = RayBox::new(&feeler);
+            let mut blocked = false;
+            let mut test = |c: u32, blockers: &mut Blockers| -> bool {
+                let c = c as usize;
+                if self.boxes[c].hit_between(&rb, u_min, 1.0)
+                    && !meet(
+                        self.local[c].hits(&feeler, formula),
+                        self.bounded[c],
+                        blockers,
+                    )
+                {
+                    blocked = true;
+                    return false;
+                }
+                true
+            };
+            match &self.index {
+                Index::List => {
+                    for c in 0..self.bounded.len() as u32 {
+                        if !test(c, &mut blockers) {
+                            break;
+                        }
+                    }
+                }
+                Index::Bvh(bvh) => {
+                    let mut limit = 1.0;
+                    bvh.walk(&rb, u_min, &mut limit, |c, _| test(c, &mut blockers));
+                }
+                Index::Octree(tree) => {
+                    let mut limit = 1.0;
+                    tree.walk(&rb, u_min, &mut limit, |c, _| test(c, &mut blockers));
+                }
+            }
+            if blocked {
+                return 0.0;
+            }
+        }
+        blockers.share(objects, materials)
+    }
+}

@@ -1,0 +1,229 @@
+//! Space subdivision by an octree (notes: "Computational Aspects", item 2).
+//!
+//! The notes: enclose the scene in a cube, and subdivide the cube into smaller ones until each
+//! holds at most a preset number k of surfaces, eliminating the cubes void of surfaces. Here a
+//! cell is split into its eight octants while it holds more than k objects (an object belongs
+//! to every cell its box overlaps), down to a maximum depth; a split that would leave every
+//! octant as crowded as its parent, or copy the objects into more than three octants on
+//! average (objects as large as the cell), is not made. Empty octants are not stored.
+//!
+//! Each cell also keeps the box of what it holds (its objects' boxes, clipped to the cube): a
+//! ray opens a cell only if it meets that box, so the emptier corners of a cube cost nothing.
+//! A ray walks the cells front to back (along the ray, each axis goes from the near half of a
+//! cube to the far half, so the octants come in a fixed order given by the signs of the
+//! direction), and skips every cell whose contents start beyond the nearest hit found.
+
+use super::aabb::{Aabb, RayBox, widen};
+use crate::real::{Real, Vec3};
+
+/// No child in this octant.
+const NONE: u32 = u32::MAX;
+
+#[derive(Clone, Debug)]
+enum Cell {
+    /// Eight octants (index of a cell, or [`NONE`]); octant bit 0 = upper x, bit 1 = upper y,
+    /// bit 2 = upper z.
+    Inner([u32; 8]),
+    /// A range of [`Octree::items`].
+    Leaf { first: u32, count: u32 },
+}
+
+/// An octree over boxes; its leaves name the boxes' indices.
+#[derive(Clone, Debug)]
+pub struct Octree {
+    cells: Vec<Cell>,
+    /// Per cell, what it holds: the union of its objects' boxes, clipped to the cube.
+    content: Vec<Aabb>,
+    items: Vec<u32>,
+}
+
+/// The cube's octant `k`.
+fn octant(b: &Aabb, k: usize) -> Aabb {
+    let c = b.centre();
+    let pick = |bit: usize, lo: Real, mid: Real, hi: Real| {
+        if k & bit == 0 { (lo, mid) } else { (mid, hi) }
+    };
+    let (x0, x1) = pick(1, b.min.x, c.x, b.max.x);
+    let (y0, y1) = pick(2, b.min.y, c.y, b.max.y);
+    let (z0, z1) = pick(4, b.min.z, c.z, b.max.z);
+    Aabb {
+        min: Vec3::new(x0, y0, z0),
+        max: Vec3::new(x1, y1, z1),
+    }
+}
+
+impl Octree {
+    /// The deepest subdivision.
+    pub const MAX_DEPTH: u32 = 12;
+
+    /// Builds the octree over `boxes`, splitting cells holding more than `k` of them.
+    #[must_use]
+    pub fn build(boxes: &[Aabb], k: usize) -> Self {
+        let all = boxes.iter().fold(Aabb::EMPTY, |b, x| b.union(x));
+        // the enclosing cube, a little larger than the scene
+        let root = if boxes.is_empty() {
+            Aabb::EMPTY
+        } else {
+            let half = (all.max - all.min).max_element() * 0.5 * 1.001;
+            let c = all.centre();
+            Aabb {
+                min: c - Vec3::splat(half),
+                max: c + Vec3::splat(half),
+            }
+            .union(&all)
+        };
+        let mut tree = Self {
+            cells: Vec::new(),
+            content: Vec::new(),
+            items: Vec::new(),
+        };
+        if !boxes.is_empty() {
+            let list: Vec<u32> = (0..boxes.len() as u32).collect();
+            tree.cells.push(Cell::Leaf { first: 0, count: 0 });
+            tree.content.push(Aabb::EMPTY);
+            tree.fill(0, root, list, boxes, k.max(1), 0);
+        }
+        tree
+    }
+
+    fn fill(
+        &mut self,
+        cell: usize,
+        bounds: Aabb,
+        list: Vec<u32>,
+        boxes: &[Aabb],
+        k: usize,
+        depth: u32,
+    ) {
+        let held = list
+            .iter()
+            .fold(Aabb::EMPTY, |b, &i| b.union(&boxes[i as usize]));
+        self.content[cell] = Aabb {
+            min: held.min.max(bounds.min),
+            max: held.max.min(bounds.max),
+        };
+        if list.len() > k && depth < Self::MAX_DEPTH {
+            let parts: Vec<Vec<u32>> = (0..8)
+                .map(|o| {
+                    let ob = octant(&bounds, o);
+                    list.iter()
+                        .copied()
+                        .filter(|&i| boxes[i as usize].overlaps(&ob))
+                        .collect()
+                })
+                .collect();
+            // split only if some octant is less crowded than its parent, and the objects are
+            // small enough for the octants to separate them (not every object copied into
+            // most octants)
+            let copies: usize = parts.iter().map(Vec::len).sum();
+            if parts.iter().any(|p| p.len() < list.len()) && copies <= 3 * list.len() {
+                let mut children = [NONE; 8];
+                for (o, part) in parts.into_iter().enumerate() {
+                    if part.is_empty() {
+                        continue; // a cube void of surfaces is eliminated
+                    }
+                    let id = self.cells.len();
+                    self.cells.push(Cell::Leaf { first: 0, count: 0 });
+                    self.content.push(Aabb::EMPTY);
+                    children[o] = id as u32;
+                    self.fill(id, octant(&bounds, o), part, boxes, k, depth + 1);
+                }
+                self.cells[cell] = Cell::Inner(children);
+                return;
+            }
+        }
+        let first = self.items.len() as u32;
+        self.items.extend_from_slice(&list);
+        self.cells[cell] = Cell::Leaf {
+            first,
+            count: list.len() as u32,
+        };
+    }
+
+    /// The number of objects in the fullest leaf, and the number of (object, leaf) pairs.
+    #[must_use]
+    pub fn leaf_load(&self) -> (usize, usize) {
+        let max = self
+            .cells
+            .iter()
+            .map(|c| match c {
+                Cell::Leaf { count, .. } => *count as usize,
+                Cell::Inner(_) => 0,
+            })
+            .max()
+            .unwrap_or(0);
+        (max, self.items.len())
+    }
+
+    /// Number of cells (for reports).
+    #[must_use]
+    pub fn cell_count(&self) -> usize {
+        self.cells.len()
+    }
+
+    /// Calls `visit(i, limit)` for every box index i in the leaves the ray crosses with an
+    /// entry not beyond `*limit`, front to back; `visit` returns false to stop. An index held by
+    /// several leaves may be visited more than once.
+    pub fn walk(
+        &self,
+        ray: &RayBox,
+        t_min: Real,
+        limit: &mut Real,
+        mut visit: impl FnMut(u32, &mut Real) -> bool,
+    ) {
+        if self.cells.is_empty() {
+            return;
+        }
+        // bit k set where the ray moves down axis k: there the upper octants come first
+        let flip = usize::from(ray.inv_dir.x < 0.0)
+            | usize::from(ray.inv_dir.y < 0.0) << 1
+            | usize::from(ray.inv_dir.z < 0.0) << 2;
+        if self.crosses(0, ray, t_min, *limit) {
+            self.visit_cell(0, flip, ray, t_min, limit, &mut visit);
+        }
+    }
+
+    /// Whether the ray meets what cell `cell` holds, between t_min and the limit.
+    #[inline]
+    fn crosses(&self, cell: usize, ray: &RayBox, t_min: Real, limit: Real) -> bool {
+        let (e, x) = self.content[cell].slabs(ray);
+        e <= x && x >= t_min && e <= widen(limit)
+    }
+
+    fn visit_cell(
+        &self,
+        cell: usize,
+        flip: usize,
+        ray: &RayBox,
+        t_min: Real,
+        limit: &mut Real,
+        visit: &mut impl FnMut(u32, &mut Real) -> bool,
+    ) -> bool {
+        match &self.cells[cell] {
+            Cell::Leaf { first, count } => {
+                let first = *first as usize;
+                for &i in &self.items[first..first + *count as usize] {
+                    if !visit(i, limit) {
+                        return false;
+                    }
+                }
+                true
+            }
+            Cell::Inner(children) => {
+                // Along the ray each axis passes from its near half of the cube to its far half
+                // only, so the octants come in increasing order of (octant XOR flip): front to
+                // back. Each is opened only if the ray meets what it holds before the limit.
+                for j in 0..8 {
+                    let child = children[j ^ flip];
+                    if child != NONE
+                        && self.crosses(child as usize, ray, t_min, *limit)
+                        && !self.visit_cell(child as usize, flip, ray, t_min, limit, visit)
+                    {
+                        return false;
+                    }
+                }
+                true
+            }
+        }
+    }
+}

@@ -1,0 +1,101 @@
+//! Scaling scenes: N random spheres over a plane, for measuring how each [`super::Accel`]
+//! grows with the number of objects. Two layouts:
+//!
+//! - [`Layout::Field`] (the default): spheres of radius 0.35 at a constant density, one per
+//!   4 square units, over a square of side 2√N centred under the camera, centres at heights
+//!   between r and r + 1.5. The scene grows as N does while what lies near the camera stays
+//!   alike: the classic test that a structure's cost grows like log N.
+//! - [`Layout::Fog`]: spheres crowded into the fixed square [−10, 10]², their radius shrinking
+//!   as r = √(120/(πN)) so they cover the same share of the floor at every N. At N = 100 000
+//!   they are a fog of specks 0.02 wide that every ray crosses for units on end: a harder
+//!   test, where the number of boxes a ray must open grows with N as well.
+//!
+//! One sphere in ten is a mirror, so the scene has every kind of ray. The positions come from
+//! a seeded generator (SplitMix64): the same N, layout and seed give the same scene.
+
+use std::fmt::Write;
+
+/// SplitMix64: a tiny seeded generator of well-mixed 64-bit numbers.
+#[derive(Clone, Debug)]
+pub struct SplitMix64(u64);
+
+impl SplitMix64 {
+    /// A generator started from `seed`.
+    #[must_use]
+    pub fn new(seed: u64) -> Self {
+        Self(seed)
+    }
+
+    /// The next 64-bit number.
+    pub fn next_u64(&mut self) -> u64 {
+        self.0 = self.0.wrapping_add(0x9e37_79b9_7f4a_7c15);
+        let mut z = self.0;
+        z = (z ^ (z >> 30)).wrapping_mul(0xbf58_476d_1ce4_e5b9);
+        z = (z ^ (z >> 27)).wrapping_mul(0x94d0_49bb_1331_11eb);
+        z ^ (z >> 31)
+    }
+
+    /// A number in [lo, hi).
+    pub fn range(&mut self, lo: f64, hi: f64) -> f64 {
+        let u = (self.next_u64() >> 11) as f64 / (1u64 << 53) as f64;
+        lo + (hi - lo) * u
+    }
+}
+
+/// How the spheres are spread (see the module docs).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, clap::ValueEnum)]
+pub enum Layout {
+    /// Constant size and density over a square of side 2√N.
+    #[default]
+    Field,
+    /// A fixed square; the radius shrinks as 1/√N.
+    Fog,
+}
+
+/// The radius of each of N spheres in the fog layout: r = √(120/(πN)).
+#[must_use]
+pub fn radius(n: usize) -> f64 {
+    (120.0 / (std::f64::consts::PI * n.max(1) as f64)).sqrt()
+}
+
+/// The scene file (TOML) of `n` random spheres over a plane in the default layout.
+#[must_use]
+pub fn scene_toml(n: usize, seed: u64, width: u32, height: u32) -> String {
+    scene_toml_with(n, seed, width, height, Layout::Field)
+}
+
+/// The scene file (TOML) of `n` random spheres over a plane, drawn from `seed`, at
+/// `width` × `height` pixels, in `layout`.
+#[must_use]
+pub fn scene_toml_with(n: usize, seed: u64, width: u32, height: u32, layout: Layout) -> String {
+    let mut s = String::with_capacity(200 + n * 110);
+    let (r, half, top) = match layout {
+        Layout::Field => (0.35, (n.max(1) as f64).sqrt(), 1.85),
+        Layout::Fog => (radius(n), 10.0, radius(n).max(2.5)),
+    };
+    let _ = write!(
+        s,
+        "# {n} random spheres over a plane ({layout:?} layout, seed {seed}), written by `scatter`.\n\
+         [camera]\neye = [0.0, 9.0, 17.0]\nlook_at = [0.0, 0.0, 0.0]\nup = [0.0, 1.0, 0.0]\nfov = 50.0\nnear = 1.0\n\n\
+         [image]\nwidth = {width}\nheight = {height}\nbackground = [0.1, 0.12, 0.2]\n\n\
+         [render]\nmax_depth = 3\n\n\
+         [ambient]\nintensity = [1.0, 1.0, 1.0]\n\n\
+         [[lights]]\nposition = [-8.0, 14.0, 10.0]\nintensity = [0.8, 0.78, 0.7]\n\n\
+         [materials.floor]\nambient = 0.1\ndiffuse = 0.6\nspecular = 0.0\nshininess = 1\n\n\
+         [materials.matte]\nambient = [0.08, 0.06, 0.04]\ndiffuse = [0.6, 0.45, 0.3]\nspecular = 0.2\nshininess = 30\n\n\
+         [materials.mirror]\nambient = 0.02\ndiffuse = 0.1\nspecular = 0.4\nshininess = 80\nreflection = 0.6\n\n\
+         [[objects]]\nplane = {{ point = [0.0, 0.0, 0.0], normal = [0.0, 1.0, 0.0] }}\nmaterial = \"floor\"\n"
+    );
+    let mut rng = SplitMix64::new(seed);
+    for i in 0..n {
+        let x = rng.range(-half, half);
+        let z = rng.range(-half, half);
+        let y = rng.range(r, top);
+        let material = if i % 10 == 0 { "mirror" } else { "matte" };
+        let _ = write!(
+            s,
+            "\n[[objects]]\nsphere = {{ center = [{x:.6}, {y:.6}, {z:.6}], radius = {r:.6} }}\nmaterial = \"{material}\"\n"
+        );
+    }
+    s
+}

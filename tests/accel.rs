@@ -1,0 +1,413 @@
+//! Speed without changing a pixel (notes: "Computational Aspects"): every acceleration
+//! technique gives exactly the brute-force image, whatever the number of threads.
+
+use whitted::accel::aabb::{RayBox, polyhedron_bounds, world_bounds};
+use whitted::accel::extents::{Footprint, footprint};
+use whitted::accel::{Aabb, Accel, Accelerator, Bvh, scatter};
+use whitted::ray::Ray;
+use whitted::real::{Real, Vec3, vec3};
+use whitted::render::{self, Framebuffer, Options, Stage, Stats, TILE, View};
+use whitted::scene::{Scene, parse};
+use whitted::shapes::{Facet, Polyhedron};
+
+fn showcase() -> Scene {
+    whitted::cli::read_scene(None).expect("the showcase parses")
+}
+
+fn render_with(
+    scene: &Scene,
+    stage: Stage,
+    w: u32,
+    h: u32,
+    f: impl Fn(&mut Options),
+) -> Vec<(Accel, Framebuffer, Stats)> {
+    Accel::ALL
+        .iter()
+        .map(|&accel| {
+            let mut o = Options::for_scene(scene, stage);
+            o.width = w;
+            o.height = h;
+            o.accel = accel;
+            f(&mut o);
+            let (fb, stats) = render::render(scene, &o);
+            (accel, fb, stats)
+        })
+        .collect()
+}
+
+/// Asserts that every option rendered the `none` image bit for bit, and cast the same rays.
+fn assert_all_equal(renders: &[(Accel, Framebuffer, Stats)]) {
+    let (_, reference, ref_stats) = &renders[0];
+    assert!(
+        reference.pixels.iter().any(|p| *p != reference.pixels[0]),
+        "a blank image proves nothing"
+    );
+    for (accel, fb, stats) in &renders[1..] {
+        let differing = fb
+            .pixels
+            .iter()
+            .zip(&reference.pixels)
+            .filter(|(a, b)| a != b)
+            .count();
+        assert_eq!(
+            differing,
+            0,
+            "--accel {} differs from none in {differing} pixels",
+            accel.name()
+        );
+        assert_eq!(stats, ref_stats, "--accel {} cast other rays", accel.name());
+    }
+}
+
+/// A scene with what strains the structures: a camera inside a sphere's box and objects
+/// behind the eye (projection extents must give up there), overlapping glass spheres that a
+/// feeler crosses in turn (transmissions multiplied in scene order), a custom polyhedron
+/// larger than [−1, 1]³, a tilted cone and cylinder, and two planes.
+const STRAIN: &str = r#"
+[camera]
+eye = [0.0, 1.0, 4.0]
+look_at = [0.0, 0.8, 0.0]
+up = [0.0, 1.0, 0.0]
+fov = 70.0
+
+[image]
+width = 96
+height = 72
+
+[render]
+max_depth = 4
+
+[[lights]]
+position = [2.0, 6.0, 3.0]
+intensity = 0.8
+
+[[lights]]
+position = [-3.0, 2.0, -4.0]
+intensity = 0.4
+
+[materials.glass]
+diffuse = 0.05
+specular = 0.5
+shininess = 80
+reflection = 0.1
+transmission = 0.8
+ior = 1.4
+
+[materials.haze]
+diffuse = 0.2
+transmission = 0.5
+ior = 1.0
+
+[materials.mirror]
+diffuse = 0.2
+reflection = 0.7
+
+[materials.red]
+diffuse = [0.7, 0.1, 0.1]
+specular = 0.3
+shininess = 20
+
+[[objects]]
+plane = { point = [0.0, 0.0, 0.0], normal = [0.0, 1.0, 0.0] }
+
+[[objects]]
+plane = { point = [0.0, 0.0, -6.0], normal = [0.0, 0.0, 1.0] }
+material = "mirror"
+
+[[objects]]
+sphere = { center = [0.0, 1.0, 4.2], radius = 0.6 }
+material = "haze"
+
+[[objects]]
+sphere = { center = [0.0, 1.0, 7.0], radius = 1.0 }
+material = "red"
+
+[[objects]]
+sphere = { center = [-0.4, 1.0, 0.0], radius = 0.8 }
+material = "glass"
+
+[[objects]]
+sphere = { center = [0.3, 1.2, 0.2], radius = 0.7 }
+material = "glass"
+
+[[objects]]
+sphere = { center = [0.8, 2.5, 1.0], radius = 0.4 }
+material = "haze"
+
+[[objects]]
+polyhedron = { facets = [[1, 0, 0, 3], [-1, 0, 0, 3], [0, 1, 0, 1], [0, -1, 0, 1], [0, 0, 1, 0.5], [0, 0, -1, 0.5]] }
+transform = [ { scale = 0.3 }, { rotate_y = 25.0 }, { translate = [1.5, 0.4, -1.0] } ]
+material = "red"
+
+[[objects]]
+cone = { base = [-2.0, 0.0, -1.5], apex = [-1.2, 2.0, -1.8], radius = 0.6 }
+material = "mirror"
+
+[[objects]]
+cylinder = { base = [1.8, 0.0, 1.0], top = [2.4, 1.2, 0.2], radius = 0.3 }
+material = "red"
+
+[[objects]]
+shape = "tetrahedron"
+transform = [ { scale = 0.5 }, { translate = [-1.5, 0.5, 1.5] } ]
+material = "glass"
+"#;
+
+/// Notes, "Computational Aspects": bounding boxes and extents only skip work. The showcase
+/// renders identically with every `--accel`.
+#[test]
+fn every_accel_renders_the_showcase_exactly_as_brute_force() {
+    let scene = showcase();
+    assert_all_equal(&render_with(
+        &scene,
+        Stage::ReflectionRefraction,
+        128,
+        96,
+        |_| {},
+    ));
+}
+
+/// The chapter-2 views go through the same nearest-hit query: identical normals and depths.
+#[test]
+fn every_accel_gives_the_same_normals_and_depths() {
+    let scene = showcase();
+    for view in [View::Normals, View::Depth, View::Color] {
+        assert_all_equal(&render_with(&scene, Stage::GenericObjects, 80, 60, |o| {
+            o.view = view
+        }));
+    }
+}
+
+/// Translucent objects in a row, a camera inside a box, objects behind the eye, custom
+/// facets, supersampling: still the brute-force image.
+#[test]
+fn every_accel_renders_a_demanding_scene_exactly_as_brute_force() {
+    let scene = parse(STRAIN, "strain.toml").expect("the strain scene parses");
+    assert_all_equal(&render_with(
+        &scene,
+        Stage::ReflectionRefraction,
+        96,
+        72,
+        |_| {},
+    ));
+    assert_all_equal(&render_with(&scene, Stage::Shadows, 48, 36, |o| {
+        o.samples = 4
+    }));
+}
+
+/// Many small random spheres, the scaling scene: still the brute-force image.
+#[test]
+fn every_accel_renders_many_spheres_exactly_as_brute_force() {
+    for layout in [scatter::Layout::Field, scatter::Layout::Fog] {
+        let text = scatter::scene_toml_with(300, 7, 96, 54, layout);
+        let scene = parse(&text, "scatter.toml").expect("parses");
+        assert_eq!(scene.objects.len(), 301);
+        assert_all_equal(&render_with(
+            &scene,
+            Stage::ReflectionRefraction,
+            96,
+            54,
+            |_| {},
+        ));
+    }
+}
+
+/// Tiles are rendered in parallel, and each pixel depends only on its coordinates: one
+/// thread and four give the same bytes.
+#[test]
+fn one_thread_and_four_render_the_same_image() {
+    let scene = parse(STRAIN, "strain.toml").unwrap();
+    let mut o = Options::for_scene(&scene, Stage::ReflectionRefraction);
+    o.width = 70; // not a multiple of the tile size
+    o.height = 45;
+    o.samples = 2;
+    let run = |threads: usize| {
+        let pool = rayon::ThreadPoolBuilder::new()
+            .num_threads(threads)
+            .build()
+            .unwrap();
+        pool.install(|| render::render(&scene, &o))
+    };
+    let (one, s1) = run(1);
+    let (four, s4) = run(4);
+    assert_eq!(
+        whitted::output::to_rgb8(&one),
+        whitted::output::to_rgb8(&four)
+    );
+    assert_eq!(one, four);
+    assert_eq!(s1, s4);
+}
+
+/// The world box of a placed object holds every hit the object reports.
+#[test]
+fn world_boxes_hold_every_hit() {
+    let scene = parse(STRAIN, "strain.toml").unwrap();
+    let mut rng = scatter::SplitMix64::new(3);
+    let mut checked = 0;
+    for o in &scene.objects {
+        let Some(b) = world_bounds(o) else {
+            assert_eq!(o.shape.name(), "plane");
+            continue;
+        };
+        for _ in 0..2000 {
+            let origin = vec3(
+                rng.range(-8.0, 8.0),
+                rng.range(-8.0, 8.0),
+                rng.range(-8.0, 8.0),
+            );
+            let target = b.centre()
+                + vec3(
+                    rng.range(-1.0, 1.0),
+                    rng.range(-1.0, 1.0),
+                    rng.range(-1.0, 1.0),
+                ) * (b.max - b.min) as Vec3;
+            let ray = Ray::new(origin, target - origin);
+            let hits = o.intersect(&ray, Default::default());
+            for h in hits.as_slice() {
+                let p = ray.at(h.t);
+                assert!(
+                    p.cmpge(b.min).all() && p.cmple(b.max).all(),
+                    "{} hit at {p:?} outside its box {b:?}",
+                    o.shape.name()
+                );
+                let (enter, exit) = b.slabs(&RayBox::new(&ray));
+                assert!(enter <= h.t && h.t <= exit);
+                checked += 1;
+            }
+        }
+    }
+    assert!(checked > 1000, "only {checked} hits checked");
+}
+
+/// A polyhedron's box comes from its vertices: the cube's is [−1, 1]³; a slab open on one
+/// side has none (it lives outside the hierarchy).
+#[test]
+fn polyhedron_boxes_come_from_vertices_and_open_ones_have_none() {
+    let b = polyhedron_bounds(&Polyhedron::cube()).expect("the cube is bounded");
+    assert!((b.min - Vec3::splat(-1.0)).length() < 1e-6 && (b.max - Vec3::ONE).length() < 1e-6);
+    let f = |n: [f64; 3], d: f64| Facet::new(vec3(n[0], n[1], n[2]), d as Real).unwrap();
+    let long = Polyhedron {
+        facets: vec![
+            f([1., 0., 0.], 3.),
+            f([-1., 0., 0.], 3.),
+            f([0., 1., 0.], 1.),
+            f([0., -1., 0.], 1.),
+            f([0., 0., 1.], 0.5),
+            f([0., 0., -1.], 0.5),
+        ],
+    };
+    let b = polyhedron_bounds(&long).expect("bounded");
+    assert!((b.max - vec3(3.0, 1.0, 0.5)).length() < 1e-6);
+    let open = Polyhedron {
+        facets: vec![
+            f([1., 0., 0.], 1.),
+            f([-1., 0., 0.], 1.),
+            f([0., 1., 0.], 1.),
+            f([0., -1., 0.], 1.),
+            f([0., 0., 1.], 1.), // nothing closes −z
+        ],
+    };
+    assert_eq!(polyhedron_bounds(&open), None);
+}
+
+/// Infinite planes live outside every hierarchy; everything else inside.
+#[test]
+fn planes_stay_outside_the_hierarchy() {
+    let scene = showcase();
+    let cam = scene.camera();
+    for accel in [Accel::Boxes, Accel::Extents, Accel::Octree, Accel::Bvh] {
+        let a = Accelerator::build(&scene.objects, &cam, accel, TILE);
+        assert!(
+            a.describe().contains("6 bounded, 1 unbounded"),
+            "{}",
+            a.describe()
+        );
+    }
+    let a = Accelerator::build(&scene.objects, &cam, Accel::None, TILE);
+    assert!(
+        a.describe().contains("0 bounded, 7 unbounded"),
+        "{}",
+        a.describe()
+    );
+}
+
+/// The framebuffer limit: 8192 × 8192 is allowed, 65535 × 65535 is refused with one line.
+#[test]
+fn framebuffer_limit_allows_8192_squared_and_refuses_65535_squared() {
+    assert!(render::check_size(8192, 8192).is_ok());
+    let e = render::check_size(65_535, 65_535).unwrap_err().to_string();
+    assert!(e.contains("too large") && !e.contains('\n'), "{e}");
+}
+
+/// The scaling scene is reproducible: same N and seed, same text; another seed, another scene.
+#[test]
+fn scatter_scenes_are_seeded() {
+    assert_eq!(
+        scatter::scene_toml(50, 1, 64, 36),
+        scatter::scene_toml(50, 1, 64, 36)
+    );
+    assert_ne!(
+        scatter::scene_toml(50, 1, 64, 36),
+        scatter::scene_toml(50, 2, 64, 36)
+    );
+    let s = parse(&scatter::scene_toml(1000, 1, 64, 36), "s.toml").unwrap();
+    assert_eq!(s.objects.len(), 1001);
+    assert!((scatter::radius(10) / scatter::radius(1000) - 10.0).abs() < 1e-9);
+}
+
+/// Projection extents: a box in front of the eye covers the rectangle of its projected
+/// corners, one straddling the eye plane may cover any pixel, one wholly behind it none.
+#[test]
+fn projection_extents_follow_the_box_around_the_eye() {
+    let cam = showcase().camera.camera(64, 48); // eye (0, 2.4, 8.5) looking towards −z
+    let boxed = |lo: [f64; 3], hi: [f64; 3]| Aabb {
+        min: vec3(lo[0], lo[1], lo[2]),
+        max: vec3(hi[0], hi[1], hi[2]),
+    };
+    match footprint(&boxed([-0.1, 0.8, -0.1], [0.1, 1.0, 0.1]), &cam) {
+        Footprint::Rectangle([x0, x1, y0, y1]) => {
+            // a small box at the point looked at: a few pixels around the image centre
+            assert!(
+                x0 > 20 && x1 < 44 && y0 > 14 && y1 < 34,
+                "{x0} {x1} {y0} {y1}"
+            );
+            assert!(x0 < 32 && 32 < x1);
+        }
+        other => panic!("expected a rectangle, found {other:?}"),
+    }
+    assert_eq!(
+        footprint(&boxed([-1.0, 2.0, 8.0], [1.0, 3.0, 9.0]), &cam),
+        Footprint::Anywhere
+    );
+    assert_eq!(
+        footprint(&boxed([-1.0, 2.0, 10.0], [1.0, 3.0, 12.0]), &cam),
+        Footprint::Nowhere
+    );
+}
+
+/// A distribution the SAH bins would peel one object at a time (centres in a geometric
+/// progression) still gives a tree shallow enough to walk, which finds every box.
+#[test]
+fn a_bvh_over_a_geometric_progression_stays_walkable() {
+    let boxes: Vec<Aabb> = (0..3000)
+        .map(|i| {
+            let x = (1.01 as Real).powi(i);
+            Aabb {
+                min: vec3(0.0, 0.0, 0.0) + Vec3::X * x,
+                max: Vec3::new(x + 0.5, 1.0, 1.0),
+            }
+        })
+        .collect();
+    let bvh = Bvh::build(&boxes);
+    let ray = Ray::new(vec3(-1.0, 0.5, 0.5), vec3(1.0, 0.0, 0.0));
+    let mut limit = Real::INFINITY;
+    let mut seen = vec![false; boxes.len()];
+    bvh.walk(&RayBox::new(&ray), 0.0, &mut limit, |k, _| {
+        seen[bvh.order()[k as usize] as usize] = true;
+        true
+    });
+    assert!(
+        seen.iter().all(|&s| s),
+        "the walk along the row must meet every box"
+    );
+}
