@@ -26,7 +26,13 @@
 use crate::material::Material;
 use crate::ray::Ray;
 use crate::real::{Real, Vec3};
-use crate::shapes::{Formula, Object};
+use crate::shapes::{Formula, Hits, Object};
+
+/// True when one of a feeler's hits lies between its start and the light: u ∈ ]u_min, 1].
+#[must_use]
+pub fn blocks(hits: &Hits, u_min: Real) -> bool {
+    hits.as_slice().iter().any(|h| h.t > u_min && h.t <= 1.0)
+}
 
 /// The share of a light that reaches the start of the feeler `S(u) = origin + (L − origin)·u`:
 /// 1 when nothing lies between, 0 behind an opaque object, and the product of the
@@ -43,9 +49,7 @@ pub fn transmittance(
     let feeler = Ray::new(origin, light - origin); // S(u) = P + (L − P)u
     let mut share = 1.0;
     for object in objects {
-        let hits = object.intersect(&feeler, formula);
-        let between = hits.as_slice().iter().any(|h| h.t > u_min && h.t <= 1.0);
-        if between {
+        if blocks(&object.intersect(&feeler, formula), u_min) {
             share *= materials[object.material].transmission;
             if share == 0.0 {
                 break;

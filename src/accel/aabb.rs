@@ -222,54 +222,12 @@ pub fn world_bounds(object: &Object) -> Option<Aabb> {
     b.is_finite_nonempty().then_some(b)
 }
 
-/// The box of a convex polyhedron's vertices. The vertices are the points where three facets
-/// with independent normals meet and that lie inside every other facet. Returns `None` when
-/// the facets do not close a bounded solid (some direction v has n·v ≤ 0 for every facet),
-/// or when no vertex is found: such a polyhedron is treated as unbounded, which is always safe.
+/// The box of a convex polyhedron's vertices ([`Polyhedron::vertices`]). Returns `None` when
+/// the facets do not close a bounded solid with an inside ([`Polyhedron::check`]): such a
+/// polyhedron is treated as unbounded, which is always safe.
 #[must_use]
 pub fn polyhedron_bounds(p: &Polyhedron) -> Option<Aabb> {
-    let f = &p.facets;
-    let tol = 1e-6 as Real;
-    // Unbounded if the recession cone {v : n_i·v ≤ 0 ∀i} holds a non-zero v: its extreme
-    // rays lie along n_i × n_j. Normals spanning fewer than 3 dimensions leave a line free.
-    let mut rank3 = false;
-    for i in 0..f.len() {
-        for j in i + 1..f.len() {
-            let Some(v) = f[i].normal.cross(f[j].normal).try_normalize() else {
-                continue;
-            };
-            for v in [v, -v] {
-                if f.iter().all(|k| k.normal.dot(v) <= tol) {
-                    return None;
-                }
-            }
-            if f.iter().any(|k| k.normal.dot(v).abs() > tol) {
-                rank3 = true;
-            }
-        }
-    }
-    if !rank3 {
-        return None;
-    }
-    let mut b = Aabb::EMPTY;
-    let mut found = false;
-    for i in 0..f.len() {
-        for j in i + 1..f.len() {
-            for k in j + 1..f.len() {
-                let (a, bb, c) = (f[i].normal, f[j].normal, f[k].normal);
-                let det = a.dot(bb.cross(c));
-                if det.abs() < 1e-9 {
-                    continue;
-                }
-                // Cramer's rule for n_a·P = d_a, n_b·P = d_b, n_c·P = d_c
-                let pt = (bb.cross(c) * f[i].d + c.cross(a) * f[j].d + a.cross(bb) * f[k].d) / det;
-                let scale = pt.abs().max_element().max(1.0);
-                if pt.is_finite() && f.iter().all(|q| q.normal.dot(pt) <= q.d + tol * scale) {
-                    b = b.with_point(pt);
-                    found = true;
-                }
-            }
-        }
-    }
-    (found && b.is_finite_nonempty()).then_some(b)
+    p.check().ok()?;
+    let b = p.vertices().into_iter().fold(Aabb::EMPTY, |b, v| b.with_point(v));
+    b.is_finite_nonempty().then_some(b)
 }

@@ -411,7 +411,7 @@ impl Accelerator {
         let mut blockers = Blockers::new();
         // false: an opaque object blocks the light, nothing more to learn
         let meet = |hits: crate::shapes::Hits, i: u32, blockers: &mut Blockers| -> bool {
-            if hits.as_slice().iter().any(|h| h.t > u_min && h.t <= 1.0) {
+            if crate::shadow::blocks(&hits, u_min) {
                 if materials[objects[i as usize].material].transmission == 0.0 {
                     return false;
                 }

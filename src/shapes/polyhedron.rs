@@ -189,8 +189,8 @@ impl Polyhedron {
             for j in i + 1..f.len() {
                 for k in j + 1..f.len() {
                     let m = Mat3::from_cols(f[i].normal, f[j].normal, f[k].normal).transpose();
-                    let det = m.determinant();
-                    if det.abs() <= tol {
+                    let det = m.determinant(); // of unit normals: in [−1, 1]
+                    if det.abs() <= Real::EPSILON {
                         continue; // two of the planes are parallel, or all three share a line
                     }
                     let p = m.inverse() * Vec3::new(f[i].d, f[j].d, f[k].d);
