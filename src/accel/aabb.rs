@@ -228,6 +228,9 @@ pub fn world_bounds(object: &Object) -> Option<Aabb> {
 #[must_use]
 pub fn polyhedron_bounds(p: &Polyhedron) -> Option<Aabb> {
     p.check().ok()?;
-    let b = p.vertices().into_iter().fold(Aabb::EMPTY, |b, v| b.with_point(v));
+    let b = p
+        .vertices()
+        .into_iter()
+        .fold(Aabb::EMPTY, |b, v| b.with_point(v));
     b.is_finite_nonempty().then_some(b)
 }
