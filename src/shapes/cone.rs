@@ -23,8 +23,8 @@
 //! which keeps small cones far away from losing their discriminant to cancellation, and takes
 //! the roots in the stable form q/a, c/q.
 
-use super::cylinder::nearest_and_farthest;
-use super::quadratic::{Formula, Roots, solve, stable_pair};
+use super::cylinder::Extremes;
+use super::quadratic::{Formula, solve, stable_pair};
 use super::{Hit, Hits, Part, Span};
 use crate::ray::Ray;
 use crate::real::{Real, Vec3};
@@ -128,16 +128,11 @@ fn intersect_robust(ray: &Ray) -> Hits {
 /// lies inside the base circle (radius 2, not the notes' 1).
 fn intersect_textbook(ray: &Ray) -> Hits {
     let (a, b, c) = coefficients(ray);
-    let mut found: Vec<Hit> = Vec::with_capacity(3);
-    let roots = match solve(a, b, c, Formula::Textbook) {
-        Roots::None => vec![],
-        Roots::One(t) => vec![t],
-        Roots::Two(t1, t2) => vec![t1, t2],
-    };
-    for t in roots {
+    let mut found = Extremes::default();
+    for t in solve(a, b, c, Formula::Textbook).iter() {
         let p = ray.at(t);
         if (-1.0..=1.0).contains(&p.z) {
-            found.push(Hit {
+            found.add(Hit {
                 t,
                 normal: normal(Part::Wall, p),
                 part: Part::Wall,
@@ -150,7 +145,7 @@ fn intersect_textbook(ray: &Ray) -> Hits {
         let p = ray.at(t);
         if t.is_finite() && p.x * p.x + p.y * p.y <= 4.0 {
             // the base disc at z = −1 has radius 1 − (−1) = 2 (the notes say 1: an erratum)
-            found.push(Hit {
+            found.add(Hit {
                 t,
                 normal: Vec3::NEG_Z,
                 part: Part::Base,
@@ -158,5 +153,5 @@ fn intersect_textbook(ray: &Ray) -> Hits {
             });
         }
     }
-    nearest_and_farthest(&found)
+    found.hits()
 }

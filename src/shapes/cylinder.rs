@@ -12,7 +12,7 @@
 //! answer is their common part, so a ray through a rim can never slip between a wall test and
 //! a cap test, and a = 0 needs no special case.
 
-use super::quadratic::{Formula, Roots, solve, stable_pair};
+use super::quadratic::{Formula, solve, stable_pair};
 use super::{Hit, Hits, Part, Span, entering_leaving};
 use crate::ray::Ray;
 use crate::real::{Real, Vec3};
@@ -88,22 +88,17 @@ fn intersect_robust(ray: &Ray) -> Hits {
 /// planes kept when the point lies inside the unit circle.
 fn intersect_textbook(ray: &Ray) -> Hits {
     let (a, b, c) = coefficients(ray);
-    let mut found: Vec<Hit> = Vec::with_capacity(4);
+    let mut found = Extremes::default();
     let mut keep = |t: Real, part: Part| {
         let p = ray.at(t);
-        found.push(Hit {
+        found.add(Hit {
             t,
             normal: normal(part, p),
             part,
             entering: true,
         });
     };
-    let wall_roots = match solve(a, b, c, Formula::Textbook) {
-        Roots::None => vec![],
-        Roots::One(t) => vec![t],
-        Roots::Two(t1, t2) => vec![t1, t2],
-    };
-    for t in wall_roots {
+    for t in solve(a, b, c, Formula::Textbook).iter() {
         let z = ray.origin.z + ray.dir.z * t;
         if (-1.0..=1.0).contains(&z) {
             keep(t, Part::Wall);
@@ -118,15 +113,34 @@ fn intersect_textbook(ray: &Ray) -> Hits {
             }
         }
     }
-    nearest_and_farthest(&found)
+    found.hits()
 }
 
-/// For a convex shape: the first and last of the candidate hits (duplicates at rims collapse).
-pub(crate) fn nearest_and_farthest(found: &[Hit]) -> Hits {
-    let near = found.iter().copied().min_by(|p, q| p.t.total_cmp(&q.t));
-    let far = found.iter().copied().max_by(|p, q| p.t.total_cmp(&q.t));
-    match (near, far) {
-        (Some(n), Some(f)) => entering_leaving(n, f),
-        _ => Hits::none(),
+/// For a convex shape: the first and last of the candidate hits, kept as they come (no
+/// allocation); duplicates at rims collapse. At equal t the first candidate stays nearest and
+/// the last one farthest.
+#[derive(Default)]
+pub(crate) struct Extremes {
+    near: Option<Hit>,
+    far: Option<Hit>,
+}
+
+impl Extremes {
+    /// Takes one candidate hit.
+    pub(crate) fn add(&mut self, hit: Hit) {
+        if self.near.is_none_or(|n| hit.t < n.t) {
+            self.near = Some(hit);
+        }
+        if self.far.is_none_or(|f| hit.t >= f.t) {
+            self.far = Some(hit);
+        }
+    }
+
+    /// The entering and leaving hits (one if they coincide, none without candidates).
+    pub(crate) fn hits(self) -> Hits {
+        match (self.near, self.far) {
+            (Some(n), Some(f)) => entering_leaving(n, f),
+            _ => Hits::none(),
+        }
     }
 }

@@ -42,6 +42,16 @@ pub enum Roots {
 }
 
 impl Roots {
+    /// The roots in increasing order.
+    pub fn iter(self) -> impl Iterator<Item = Real> {
+        let (roots, n) = match self {
+            Roots::None => ([0.0; 2], 0),
+            Roots::One(t) => ([t, t], 1),
+            Roots::Two(t1, t2) => ([t1, t2], 2),
+        };
+        roots.into_iter().take(n)
+    }
+
     fn from_pair(t1: Real, t2: Real) -> Self {
         match (t1.is_finite(), t2.is_finite()) {
             (true, true) if t1 == t2 => Roots::One(t1),
