@@ -291,6 +291,17 @@ fn other_scene_mistakes_are_refused() {
     );
 }
 
+/// Two keys in one transform step are refused with a message that says what a step is.
+#[test]
+fn two_keys_in_one_transform_step_are_refused() {
+    assert_scene_error(
+        "[[objects]]\nshape = \"cone\"\ntransform = [ { scale = 2, translate = [0, 1, 0] } ]\n",
+        3,
+        None,
+        "a transform step has exactly one key",
+    );
+}
+
 /// Bad flags and paths: one line, exit status 2, nothing written.
 #[test]
 fn bad_flags_and_paths_exit_with_status_2() {

@@ -86,7 +86,14 @@ pub fn parse(text: &str, file: &str) -> Result<Scene, Error> {
 
     let raw: SceneFile = toml::from_str(text).map_err(|e| {
         let span = e.span().unwrap_or(0..0);
-        err(span, e.message().trim().replace('\n', " "))
+        let message = e.message().trim().replace('\n', " ");
+        // serde's words for a one-key table (a `transform` step) with several keys
+        let message = if message.starts_with("wanted exactly 1 element") {
+            "a transform step has exactly one key: scale, rotate_x, rotate_y, rotate_z, rotate or translate (write one { … } per step)".to_string()
+        } else {
+            message
+        };
+        err(span, message)
     })?;
 
     // camera
