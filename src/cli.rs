@@ -142,20 +142,9 @@ pub fn image_size(scene: &Scene, width: Option<u32>, height: Option<u32>) -> (u3
     }
 }
 
-/// Runs a chapter: read, render, write. Returns the exit status (0, or 2 after printing the
-/// error).
+/// Runs a chapter: read, render, write. Each chapter passes the argument groups it has
+/// (`None` for the others). Returns the exit status (0, or 2 after printing the error).
 pub fn run(
-    binary: &str,
-    stage: Stage,
-    common: &Common,
-    view: Option<&ViewArg>,
-    tracing: Option<&Tracing>,
-) -> ExitCode {
-    run_with_accuracy(binary, stage, common, view, tracing, None)
-}
-
-/// [`run`] with the accuracy switches of chapters 4 and 5.
-pub fn run_with_accuracy(
     binary: &str,
     stage: Stage,
     common: &Common,

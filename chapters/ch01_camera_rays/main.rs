@@ -25,5 +25,6 @@ fn main() -> ExitCode {
         &args.common,
         None,
         None,
+        None,
     )
 }

@@ -27,5 +27,6 @@ fn main() -> ExitCode {
         &args.common,
         Some(&args.view),
         None,
+        None,
     )
 }

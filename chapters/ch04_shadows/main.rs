@@ -4,7 +4,7 @@
 use std::process::ExitCode;
 
 use clap::Parser;
-use whitted::cli::{Accuracy, Common, ViewArg, run_with_accuracy};
+use whitted::cli::{Accuracy, Common, ViewArg, run};
 use whitted::render::Stage;
 
 /// Chapter 4 of whitted: chapter 3's shading, where each light first sends a feeler ray
@@ -23,7 +23,7 @@ struct Args {
 
 fn main() -> ExitCode {
     let args: Args = whitted::cli::parse_args();
-    run_with_accuracy(
+    run(
         "ch04_shadows",
         Stage::Shadows,
         &args.common,

@@ -4,7 +4,7 @@
 use std::process::ExitCode;
 
 use clap::Parser;
-use whitted::cli::{Accuracy, Common, Tracing, ViewArg, run_with_accuracy};
+use whitted::cli::{Accuracy, Common, Tracing, ViewArg, run};
 use whitted::render::Stage;
 
 /// Chapter 5 of whitted, the complete renderer: I = I_a + I_d + I_s + I_l + I_r. Mirror
@@ -25,7 +25,7 @@ struct Args {
 
 fn main() -> ExitCode {
     let args: Args = whitted::cli::parse_args();
-    run_with_accuracy(
+    run(
         "ch05_reflection_refraction",
         Stage::ReflectionRefraction,
         &args.common,
