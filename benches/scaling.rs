@@ -5,7 +5,13 @@
 //! cargo bench --bench scaling                               # N = 10 … 100 000, 3 runs each
 //! cargo bench --bench scaling -- --sizes 10,1000 --runs 5 --budget 30
 //! cargo bench --bench scaling -- --fog                      # the fog layout
+//! cargo bench --bench scaling -- --eye 0,6,4                # a close-up (see below)
 //! ```
+//!
+//! `--eye X,Y,Z` moves the camera (the scenes put it at 0,9,17, looking at the origin over the
+//! whole field). From 0,6,4 it looks down on a patch about the size of the N = 10 field, so
+//! the picture stays alike as the field grows around it: what is left of the growth is the
+//! structures' own.
 //!
 //! A combination whose render is predicted (linearly from the previous size) to take longer
 //! than `--budget` seconds is skipped and shown with its estimate.
@@ -24,6 +30,7 @@ struct Config {
     height: u32,
     accels: Vec<Accel>,
     layout: scatter::Layout,
+    eye: Option<[f64; 3]>,
 }
 
 fn parse_args() -> Result<Config, String> {
@@ -35,6 +42,7 @@ fn parse_args() -> Result<Config, String> {
         height: 720,
         accels: Accel::ALL.to_vec(),
         layout: scatter::Layout::Field,
+        eye: None,
     };
     let mut args = std::env::args().skip(1);
     while let Some(a) = args.next() {
@@ -48,6 +56,20 @@ fn parse_args() -> Result<Config, String> {
                     .collect::<Result<_, _>>()?;
             }
             "--fog" => c.layout = scatter::Layout::Fog,
+            "--eye" => {
+                let v: Vec<f64> = value("--eye")?
+                    .split(',')
+                    .map(|s| {
+                        s.trim()
+                            .parse()
+                            .map_err(|_| format!("bad coordinate `{s}`"))
+                    })
+                    .collect::<Result<_, _>>()?;
+                let [x, y, z] = v[..] else {
+                    return Err("--eye needs three coordinates: X,Y,Z".into());
+                };
+                c.eye = Some([x, y, z]);
+            }
             "--runs" => c.runs = value("--runs")?.parse().map_err(|_| "bad --runs")?,
             "--budget" => c.budget = value("--budget")?.parse().map_err(|_| "bad --budget")?,
             "--width" => c.width = value("--width")?.parse().map_err(|_| "bad --width")?,
@@ -88,8 +110,11 @@ fn main() {
         }
     };
     println!(
-        "scaling ({:?} layout): {}×{}, {} run(s) each, {} thread(s), {}; median seconds, render (build)",
+        "scaling ({:?} layout{}): {}×{}, {} run(s) each, {} thread(s), {}; median seconds, render (build)",
         c.layout,
+        c.eye
+            .map(|[x, y, z]| format!(", eye {x},{y},{z}"))
+            .unwrap_or_default(),
         c.width,
         c.height,
         c.runs,
@@ -108,11 +133,14 @@ fn main() {
     println!("---:|");
     let mut last: Vec<Option<(usize, f64)>> = vec![None; c.accels.len()];
     for &n in &c.sizes {
-        let scene = parse(
+        let mut scene = parse(
             &scatter::scene_toml_with(n, 1, c.width, c.height, c.layout),
             "scatter.toml",
         )
         .expect("the scatter scene parses");
+        if let Some([x, y, z]) = c.eye {
+            scene.camera.eye = whitted::real::vec3(x, y, z);
+        }
         print!("| {n} |");
         let mut rays = 0;
         for (k, &accel) in c.accels.iter().enumerate() {

@@ -76,30 +76,32 @@ fn parent_dir(path: &Path) -> &Path {
     }
 }
 
-/// Encodes RGB bytes as PNG into `path`, through a temporary file renamed into place.
-pub fn write_png(path: &Path, width: u32, height: u32, rgb: &[u8]) -> Result<(), Error> {
+/// Writes `path` through a temporary file in the same directory (named `.whitted-*` and
+/// ending in `suffix`), flushed to disk and then renamed into place: a reader sees the old
+/// file or the whole new one, and a failure leaves the old one untouched.
+fn write_atomically(
+    path: &Path,
+    suffix: &str,
+    fill: impl FnOnce(&mut BufWriter<&std::fs::File>) -> Result<(), String>,
+) -> Result<(), Error> {
     let fail = |message: String| Error::Write {
         path: path.to_path_buf(),
         message,
     };
-    let dir = parent_dir(path);
     let tmp = tempfile::Builder::new()
         .prefix(".whitted-")
-        .suffix(".png.part")
-        .tempfile_in(dir)
+        .suffix(suffix)
+        .tempfile_in(parent_dir(path))
         .map_err(|e| fail(e.to_string()))?;
     {
         let mut out = BufWriter::new(tmp.as_file());
-        // fast deflate: the file is a little larger, the (serial) encoding several times quicker
-        PngEncoder::new_with_quality(&mut out, CompressionType::Fast, FilterType::Adaptive)
-            .write_image(rgb, width, height, image::ExtendedColorType::Rgb8)
-            .map_err(|e| fail(e.to_string()))?;
+        fill(&mut out).map_err(fail)?;
         out.flush().map_err(|e| fail(e.to_string()))?;
     }
     tmp.as_file().sync_all().map_err(|e| fail(e.to_string()))?;
     #[cfg(unix)]
     {
-        // a temporary file is private (0600); the image should be as readable as any new file
+        // a temporary file is private (0600); the output should be as readable as any new file
         use std::os::unix::fs::PermissionsExt;
         let perms = std::fs::Permissions::from_mode(0o644);
         tmp.as_file()
@@ -108,6 +110,34 @@ pub fn write_png(path: &Path, width: u32, height: u32, rgb: &[u8]) -> Result<(),
     }
     tmp.persist(path).map_err(|e| fail(e.error.to_string()))?;
     Ok(())
+}
+
+/// Encodes RGB bytes as PNG into `path`, through a temporary file renamed into place.
+pub fn write_png(path: &Path, width: u32, height: u32, rgb: &[u8]) -> Result<(), Error> {
+    write_atomically(path, ".png.part", |out| {
+        // fast deflate: the file is a little larger, the (serial) encoding several times quicker
+        PngEncoder::new_with_quality(out, CompressionType::Fast, FilterType::Adaptive)
+            .write_image(rgb, width, height, image::ExtendedColorType::Rgb8)
+            .map_err(|e| e.to_string())
+    })
+}
+
+/// Writes `bytes` (a scene file, a report) into `path`, through a temporary file renamed
+/// into place.
+pub fn write_file(path: &Path, bytes: &[u8]) -> Result<(), Error> {
+    let fail = |message: &str| Error::Write {
+        path: path.to_path_buf(),
+        message: message.into(),
+    };
+    if path.is_dir() {
+        return Err(fail("it is a directory"));
+    }
+    if !parent_dir(path).is_dir() {
+        return Err(fail("its directory does not exist"));
+    }
+    write_atomically(path, ".part", |out| {
+        out.write_all(bytes).map_err(|e| e.to_string())
+    })
 }
 
 /// Writes the framebuffer as a PNG, atomically.

@@ -126,3 +126,42 @@ fn scatter_writes_a_scene_of_n_spheres() {
     let (code, _, _) = run(SCATTER, &["0"]);
     assert_eq!(code, 2);
 }
+
+/// `scatter --pov` writes the scene for POV-Ray; a bad destination or count is one line with
+/// status 2, and leaves an existing file as it was.
+#[test]
+fn scatter_writes_povray_scenes_and_refuses_bad_destinations_in_one_line() {
+    let dir = tempfile::tempdir().unwrap();
+    let pov = dir.path().join("s.pov");
+    let (code, _, err) = run(SCATTER, &["12", "--pov", "-o", pov.to_str().unwrap()]);
+    assert_eq!(code, 0, "{err}");
+    let text = std::fs::read_to_string(&pov).unwrap();
+    assert_eq!(
+        text.lines().filter(|l| l.starts_with("sphere {")).count(),
+        12
+    );
+    assert_eq!(text.matches("plane { y, 0").count(), 1);
+
+    let missing = dir.path().join("no-such-dir").join("s.toml");
+    for (args, what) in [
+        (
+            vec!["5", "-o", missing.to_str().unwrap()],
+            "directory does not exist",
+        ),
+        (
+            vec!["5", "-o", dir.path().to_str().unwrap()],
+            "it is a directory",
+        ),
+        (vec!["0", "-o", pov.to_str().unwrap()], "0 is not in"),
+        (vec!["5", "--layout", "grid"], "invalid value"),
+    ] {
+        let (code, _, err) = run(SCATTER, &args);
+        assert_eq!(code, 2, "{args:?}");
+        assert_eq!(err.lines().count(), 1, "{err}");
+        assert!(err.starts_with("error:") && err.contains(what), "{err}");
+    }
+    // the earlier file is untouched by a failed run, and nothing is left behind
+    assert_eq!(std::fs::read_to_string(&pov).unwrap(), text);
+    let names: Vec<_> = std::fs::read_dir(dir.path()).unwrap().collect();
+    assert_eq!(names.len(), 1, "{names:?}");
+}

@@ -3,12 +3,11 @@
 
 use std::process::ExitCode;
 
-use clap::Parser;
 use whitted::accel::scatter;
 
 /// Writes a scene of N random spheres over a plane, for measuring how rendering time grows
 /// with the number of objects under each `--accel`.
-#[derive(Parser)]
+#[derive(clap::Parser)]
 #[command(name = "scatter", version)]
 struct Args {
     /// Number of spheres.
@@ -26,19 +25,27 @@ struct Args {
     /// How the spheres are spread: a field growing with N, or a fog of shrinking spheres.
     #[arg(long, value_enum, default_value_t = scatter::Layout::Field)]
     layout: scatter::Layout,
+    /// Write the scene for POV-Ray 3.7 instead of whitted (for `benches/povray/scaling.sh`);
+    /// `--width` and `--height` then go on POV-Ray's command line (+W, +H).
+    #[arg(long)]
+    pov: bool,
     /// Where to write the scene [default: stdout].
     #[arg(short, long, value_name = "SCENE.toml")]
     output: Option<std::path::PathBuf>,
 }
 
 fn main() -> ExitCode {
-    let a = Args::parse();
-    let text = scatter::scene_toml_with(a.n as usize, a.seed, a.width, a.height, a.layout);
+    let a: Args = whitted::cli::parse_args();
+    let text = if a.pov {
+        scatter::scene_pov(a.n as usize, a.seed, a.layout)
+    } else {
+        scatter::scene_toml_with(a.n as usize, a.seed, a.width, a.height, a.layout)
+    };
     match &a.output {
-        Some(path) => match std::fs::write(path, text) {
+        Some(path) => match whitted::output::write_file(path, text.as_bytes()) {
             Ok(()) => ExitCode::SUCCESS,
             Err(e) => {
-                eprintln!("error: cannot write {}: {e}", path.display());
+                eprintln!("error: {e}");
                 ExitCode::from(2)
             }
         },

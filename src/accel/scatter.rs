@@ -64,15 +64,33 @@ pub fn scene_toml(n: usize, seed: u64, width: u32, height: u32) -> String {
     scene_toml_with(n, seed, width, height, Layout::Field)
 }
 
+/// The spheres of a scene: their common radius, and each centre (x, y, z) with its
+/// material, drawn from `seed`.
+fn spheres(
+    n: usize,
+    seed: u64,
+    layout: Layout,
+) -> (f64, impl Iterator<Item = ([f64; 3], &'static str)>) {
+    let (r, half, top) = match layout {
+        Layout::Field => (0.35, (n.max(1) as f64).sqrt(), 1.85),
+        Layout::Fog => (radius(n), 10.0, radius(n).max(2.5)),
+    };
+    let mut rng = SplitMix64::new(seed);
+    let centres = (0..n).map(move |i| {
+        let x = rng.range(-half, half);
+        let z = rng.range(-half, half);
+        let y = rng.range(r, top);
+        let material = if i % 10 == 0 { "mirror" } else { "matte" };
+        ([x, y, z], material)
+    });
+    (r, centres)
+}
+
 /// The scene file (TOML) of `n` random spheres over a plane, drawn from `seed`, at
 /// `width` × `height` pixels, in `layout`.
 #[must_use]
 pub fn scene_toml_with(n: usize, seed: u64, width: u32, height: u32, layout: Layout) -> String {
     let mut s = String::with_capacity(200 + n * 110);
-    let (r, half, top) = match layout {
-        Layout::Field => (0.35, (n.max(1) as f64).sqrt(), 1.85),
-        Layout::Fog => (radius(n), 10.0, radius(n).max(2.5)),
-    };
     let _ = write!(
         s,
         "# {n} random spheres over a plane ({layout:?} layout, seed {seed}), written by `scatter`.\n\
@@ -86,15 +104,49 @@ pub fn scene_toml_with(n: usize, seed: u64, width: u32, height: u32, layout: Lay
          [materials.mirror]\nambient = 0.02\ndiffuse = 0.1\nspecular = 0.4\nshininess = 80\nreflection = 0.6\n\n\
          [[objects]]\nplane = {{ point = [0.0, 0.0, 0.0], normal = [0.0, 1.0, 0.0] }}\nmaterial = \"floor\"\n"
     );
-    let mut rng = SplitMix64::new(seed);
-    for i in 0..n {
-        let x = rng.range(-half, half);
-        let z = rng.range(-half, half);
-        let y = rng.range(r, top);
-        let material = if i % 10 == 0 { "mirror" } else { "matte" };
+    let (r, centres) = spheres(n, seed, layout);
+    for ([x, y, z], material) in centres {
         let _ = write!(
             s,
             "\n[[objects]]\nsphere = {{ center = [{x:.6}, {y:.6}, {z:.6}], radius = {r:.6} }}\nmaterial = \"{material}\"\n"
+        );
+    }
+    s
+}
+
+/// The same scene for POV-Ray 3.7 (see `benches/povray/showcase.pov` for how whitted's
+/// camera, shading and handedness are carried over): z negated, the vertical field of view
+/// turned into POV-Ray's horizontal angle, each material's ambient divided by its diffuse
+/// colour (POV-Ray multiplies them), Phong's highlight, and `max_trace_level` = max_depth + 1.
+/// For timing the classic renderer on the scaling scenes (`benches/povray/scaling.sh`).
+#[must_use]
+pub fn scene_pov(n: usize, seed: u64, layout: Layout) -> String {
+    let mut s = String::with_capacity(1000 + n * 80);
+    let _ = write!(
+        s,
+        "// {n} random spheres over a plane ({layout:?} layout, seed {seed}), written by `scatter --pov`.\n\
+         global_settings {{ assumed_gamma 1.0 max_trace_level 4 adc_bailout 0.001 ambient_light rgb 1 }}\n\
+         #declare Aspect = image_width / image_height;\n\
+         camera {{ perspective location <0, 9, -17> look_at <0, 0, 0> up y right x * Aspect\n  \
+         angle 2 * degrees(atan(tan(radians(50 / 2)) * Aspect)) }}\n\
+         background {{ rgb <0.1, 0.12, 0.2> }}\n\
+         light_source {{ <-8, 14, -10> color rgb <0.8, 0.78, 0.7> }}\n\
+         #declare Floor = texture {{ pigment {{ rgb 0.6 }} finish {{ ambient 0.1 / 0.6 diffuse 1 }} }}\n\
+         #declare Matte = texture {{ pigment {{ rgb <0.6, 0.45, 0.3> }} finish {{ ambient rgb <0.08 / 0.6, 0.06 / 0.45, 0.04 / 0.3> diffuse 1 phong 0.2 phong_size 30 }} }}\n\
+         #declare Mirror = texture {{ pigment {{ rgb 0.1 }} finish {{ ambient 0.02 / 0.1 diffuse 1 phong 0.4 phong_size 80 reflection 0.6 }} }}\n\
+         plane {{ y, 0 texture {{ Floor }} }}\n"
+    );
+    let (r, centres) = spheres(n, seed, layout);
+    for ([x, y, z], material) in centres {
+        let texture = if material == "mirror" {
+            "Mirror"
+        } else {
+            "Matte"
+        };
+        let z = -z;
+        let _ = writeln!(
+            s,
+            "sphere {{ <{x:.6}, {y:.6}, {z:.6}>, {r:.6} texture {{ {texture} }} }}"
         );
     }
     s
