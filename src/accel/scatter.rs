@@ -3,15 +3,18 @@
 //!
 //! - [`Layout::Field`] (the default): spheres of radius 0.35 at a constant density, one per
 //!   4 square units, over a square of side 2√N centred under the camera, centres at heights
-//!   between r and r + 1.5. The scene grows as N does while what lies near the camera stays
-//!   alike: the classic test that a structure's cost grows like log N.
+//!   between r and r + 1.5. The scene grows as N does, at the same density everywhere. The
+//!   camera looks over the field to its horizon, so the picture itself fills with spheres as
+//!   N grows; seen from above a small patch (the scaling benchmark's `--eye 0,6,4`), the
+//!   picture stays alike and only the structure's own growth with N is left.
 //! - [`Layout::Fog`]: spheres crowded into the fixed square [−10, 10]², their radius shrinking
 //!   as r = √(120/(πN)) so they cover the same share of the floor at every N. At N = 100 000
-//!   they are a fog of specks 0.02 wide that every ray crosses for units on end: a harder
+//!   they are a fog of specks of radius 0.02 that every ray crosses for units on end: a harder
 //!   test, where the number of boxes a ray must open grows with N as well.
 //!
 //! One sphere in ten is a mirror, so the scene has every kind of ray. The positions come from
 //! a seeded generator (SplitMix64): the same N, layout and seed give the same scene.
+//! [`scene_pov`] writes the same scene for POV-Ray 3.7, to time the classic renderer on it.
 
 use std::fmt::Write;
 
