@@ -82,7 +82,8 @@ pub struct Tracing {
     /// Maximum recursion depth of mirror and transmitted rays [default: the scene's, else 5].
     #[arg(long, value_name = "N", value_parser = clap::value_parser!(u32).range(0..=MAX_DEPTH as i64))]
     pub max_depth: Option<u32>,
-    /// Also print the samples, depth, threads and the acceleration structure built.
+    /// Also print the samples, depth, threads and the acceleration structure built (and, in a
+    /// build with `--features counters`, the node visits, box tests and object tests).
     #[arg(long)]
     pub stats: bool,
 }
@@ -214,10 +215,30 @@ fn run_inner(
                 stats.total_internal,
                 accel.describe()
             );
+            if crate::accel::counters::ENABLED {
+                eprintln!("{}", work_line(&stats.work));
+            }
         }
         eprintln!("{}", summary(fb.width, fb.height, &stats, seconds));
     }
     Ok(())
+}
+
+/// The line `--stats` adds in a build with the `counters` feature: what the queries tested, in
+/// all and per query.
+#[must_use]
+pub fn work_line(w: &crate::accel::counters::Counts) -> String {
+    let per = |n: u64| n as f64 / w.queries.max(1) as f64;
+    format!(
+        "work: {} queries; {} node visits ({:.2} a query), {} box tests ({:.2}), {} object tests ({:.2})",
+        w.queries,
+        w.nodes,
+        per(w.nodes),
+        w.boxes,
+        per(w.boxes),
+        w.objects,
+        per(w.objects)
+    )
 }
 
 /// The final line: resolution, rays by kind, time (structure build and render) and M rays/s.

@@ -143,6 +143,8 @@ pub struct Stats {
     pub refracted: u64,
     /// Mirror rays spawned by total internal reflection (counted in `reflected` too).
     pub total_internal: u64,
+    /// What the ray queries tested (all zero unless built with the `counters` feature).
+    pub work: crate::accel::counters::Counts,
 }
 
 impl Stats {
@@ -158,6 +160,7 @@ impl Stats {
         self.reflected += o.reflected;
         self.refracted += o.refracted;
         self.total_internal += o.total_internal;
+        self.work.add(&o.work);
     }
 }
 
@@ -267,6 +270,8 @@ pub fn render_with(
         .enumerate()
         .map(|(ty, rows)| {
             let mut stats = Stats::default();
+            // start this thread's counts afresh: they are this band's when it ends
+            let _ = crate::accel::counters::take();
             let y0 = ty as u32 * TILE;
             let y1 = (y0 + TILE).min(h);
             for x0 in (0..w).step_by(TILE as usize) {
@@ -279,6 +284,7 @@ pub fn render_with(
                 }
                 progress(u64::from((x1 - x0) * (y1 - y0)));
             }
+            stats.work = crate::accel::counters::take();
             stats
         })
         .reduce(Stats::default, |mut a, b| {

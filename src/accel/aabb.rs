@@ -160,6 +160,7 @@ impl Aabb {
     #[inline]
     #[must_use]
     pub fn slabs(&self, ray: &RayBox) -> (Real, Real) {
+        super::counters::box_test();
         let t0 = (self.min - ray.origin) * ray.inv_dir;
         let t1 = (self.max - ray.origin) * ray.inv_dir;
         // f64::min/max ignore a NaN (0·∞ for a ray lying in a slab's plane)

@@ -115,6 +115,7 @@ impl Bvh {
         }
         loop {
             let n = &self.nodes[node as usize];
+            super::counters::node();
             if n.count > 0 {
                 let first = n.index as usize;
                 for k in first..first + n.count as usize {
@@ -179,6 +180,7 @@ impl Bvh {
         visit: &mut impl FnMut(u32, &mut crate::real::Real) -> bool,
     ) -> bool {
         let n = &self.nodes[node as usize];
+        super::counters::node();
         let (e, x) = n.bounds.slabs(ray);
         if !(e <= x && x >= t_min && e <= widen(*limit)) {
             return true;

@@ -27,6 +27,7 @@
 
 pub mod aabb;
 pub mod bvh;
+pub mod counters;
 pub mod extents;
 pub mod octree;
 pub mod scatter;
@@ -158,6 +159,7 @@ trait ObjectSpace {
 impl ObjectSpace for Object {
     #[inline]
     fn hits(&self, ray: &Ray, formula: Formula) -> crate::shapes::Hits {
+        counters::object();
         self.intersect_object_space(ray, formula)
     }
 }
@@ -165,6 +167,7 @@ impl ObjectSpace for Object {
 impl ObjectSpace for Local {
     #[inline]
     fn hits(&self, ray: &Ray, formula: Formula) -> crate::shapes::Hits {
+        counters::object();
         self.intersect_object_space(ray, formula)
     }
 }
@@ -331,6 +334,7 @@ impl Accelerator {
         formula: Formula,
         pixel: Option<(u32, u32)>,
     ) -> Option<Nearest> {
+        counters::query();
         let mut best = Best {
             t: Real::INFINITY,
             object: usize::MAX,
@@ -407,6 +411,7 @@ impl Accelerator {
         u_min: Real,
         formula: Formula,
     ) -> Real {
+        counters::query();
         let feeler = Ray::new(origin, light - origin);
         let mut blockers = Blockers::new();
         // false: an opaque object blocks the light, nothing more to learn

@@ -199,6 +199,7 @@ impl Octree {
         limit: &mut Real,
         visit: &mut impl FnMut(u32, &mut Real) -> bool,
     ) -> bool {
+        super::counters::node();
         match &self.cells[cell] {
             Cell::Leaf { first, count } => {
                 let first = *first as usize;
