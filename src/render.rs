@@ -130,7 +130,7 @@ impl Options {
     pub const MIN_WEIGHT: Real = 1e-3;
 }
 
-/// Rays cast, by kind.
+/// Rays cast, by kind, and (built with the `counters` feature) the work behind their queries.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct Stats {
     /// Camera rays.
