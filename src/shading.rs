@@ -56,7 +56,11 @@ pub fn highlight(n: Vec3, s: Vec3, v: Vec3, shininess: Real) -> Real {
     if n.dot(s) <= 0.0 {
         return 0.0;
     }
-    mirror(s, n).dot(v).max(0.0).powf(shininess)
+    let cos = mirror(s, n).dot(v).max(0.0);
+    if cos == 0.0 && shininess > 0.0 {
+        return 0.0; // 0^f for f > 0, without the cost of a powf (half the lit points)
+    }
+    cos.powf(shininess)
 }
 
 /// One light's diffuse and specular contribution, per channel, before shadowing:
@@ -71,6 +75,11 @@ pub fn direct(material: &Material, light: &Light, p: Vec3, n: Vec3, v: Vec3) -> 
     }
     let s = to_light / d;
     let diffuse = material.diffuse * lambert(n, s);
-    let specular = material.specular * highlight(n, s, v, material.shininess);
+    // a matte material (ρs = 0) needs no highlight: ρs·h is 0 for any h in [0, 1]
+    let specular = if material.specular == Vec3::ZERO {
+        Vec3::ZERO
+    } else {
+        material.specular * highlight(n, s, v, material.shininess)
+    };
     light.intensity * light.attenuation_at(d) * (diffuse + specular)
 }

@@ -104,6 +104,37 @@ fn diffuse_follows_the_cosine_law() {
     );
 }
 
+/// The shortcuts that skip `powf` leave the numbers as they were: a viewer beyond 90° of r
+/// gets exactly 0 (0^f, f > 0), f = 0 still gives 0^0 = 1, and a matte material (ρs = 0)
+/// gets exactly its diffuse term, bit for bit, whatever the highlight would have been.
+#[test]
+fn skipping_the_highlight_changes_no_number() {
+    let k = 1.0 / (2.0 as Real).sqrt();
+    let s = vec3(1.0, 0.0, 1.0) * k; // r = (−1, 0, 1)/√2
+    let beyond = vec3(1.0, 0.0, 0.0); // r·v = −1/√2 < 0
+    let at_90 = vec3(1.0, 0.0, 1.0) * k; // r·v = 0
+    assert_eq!(highlight(Vec3::Z, s, beyond, 3.0), 0.0);
+    assert_eq!(highlight(Vec3::Z, s, at_90, 30.0), 0.0);
+    assert_eq!(highlight(Vec3::Z, s, at_90, 0.0), 1.0);
+    assert_eq!(highlight(Vec3::Z, s, beyond, 0.0), 1.0);
+    let matte = Material {
+        ambient: Vec3::ZERO,
+        diffuse: vec3(0.7, 0.4, 0.2),
+        specular: Vec3::ZERO,
+        shininess: 7.0,
+        ..Material::default()
+    };
+    let light = Light::white(vec3(0.3, 2.0, 0.1));
+    let (p, n) = (Vec3::ZERO, Vec3::Y);
+    // v on the mirror direction: the highlight alone would be 1
+    let to_light = light.position - p;
+    let v = (2.0 * n.dot(to_light) * n - to_light).normalize();
+    let d = to_light.length();
+    let expected =
+        light.intensity * light.attenuation_at(d) * (matte.diffuse * lambert(n, to_light / d));
+    assert_eq!(direct(&matte, &light, p, n, v), expected);
+}
+
 /// "Shading": I_p/(a0 + a1·d + a2·d²): at d = 2 with (1, 0.5, 0.25), the light is divided by 3.
 #[test]
 fn attenuation_divides_by_a0_plus_a1_d_plus_a2_d_squared() {
