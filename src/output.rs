@@ -59,11 +59,19 @@ pub fn check_destination(path: &Path) -> Result<(), Error> {
             "only PNG output is supported: the name must end in .png",
         ));
     }
+    check_place(path)
+}
+
+/// Checks that `path` can be a new file: it is not a directory and its directory exists.
+fn check_place(path: &Path) -> Result<(), Error> {
+    let fail = |message: &str| Error::Write {
+        path: path.to_path_buf(),
+        message: message.into(),
+    };
     if path.is_dir() {
         return Err(fail("it is a directory"));
     }
-    let dir = parent_dir(path);
-    if !dir.is_dir() {
+    if !parent_dir(path).is_dir() {
         return Err(fail("its directory does not exist"));
     }
     Ok(())
@@ -125,16 +133,7 @@ pub fn write_png(path: &Path, width: u32, height: u32, rgb: &[u8]) -> Result<(),
 /// Writes `bytes` (a scene file, a report) into `path`, through a temporary file renamed
 /// into place.
 pub fn write_file(path: &Path, bytes: &[u8]) -> Result<(), Error> {
-    let fail = |message: &str| Error::Write {
-        path: path.to_path_buf(),
-        message: message.into(),
-    };
-    if path.is_dir() {
-        return Err(fail("it is a directory"));
-    }
-    if !parent_dir(path).is_dir() {
-        return Err(fail("its directory does not exist"));
-    }
+    check_place(path)?;
     write_atomically(path, ".part", |out| {
         out.write_all(bytes).map_err(|e| e.to_string())
     })
