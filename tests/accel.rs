@@ -492,3 +492,64 @@ fn counters_show_the_work_each_structure_saves() {
     // gathered band by band on whatever thread ran them, the counts are the same every time
     assert_eq!(work(Accel::Bvh), bvh);
 }
+
+/// Rays with a zero direction component: 1/d is held at ±Real::MAX instead of ±∞, so the
+/// slab test never computes 0·∞ (NaN), and its plain comparisons stay right. A ray parallel
+/// to a slab, inside it, crosses the box; outside it, misses; lying in a face plane, either
+/// answer is safe (the padded boxes keep every object off their faces), but never NaN.
+#[test]
+fn slab_test_handles_rays_parallel_to_an_axis() {
+    let b = Aabb {
+        min: vec3(-1.0, -1.0, -1.0),
+        max: vec3(1.0, 1.0, 1.0),
+    };
+    for zero in [0.0, -0.0] {
+        let rb = RayBox::new(&Ray::new(vec3(0.5, 0.5, -5.0), vec3(zero, zero, 1.0)));
+        assert!(rb.inv_dir.is_finite(), "{:?}", rb.inv_dir);
+        assert_eq!(rb.inv_dir.x.is_sign_negative(), zero.is_sign_negative());
+        // inside the x and y slabs: enters at z = −1 (t = 4) and leaves at z = 1 (t = 6)
+        let (enter, exit) = b.slabs(&rb);
+        assert!((enter - 4.0).abs() < 1e-4 && (exit - 6.0).abs() < 1e-4);
+        assert!(b.hit_between(&rb, 0.0, Real::INFINITY));
+        // beside the box, in either direction along the axis
+        for (x, dz) in [(1.5, 1.0), (-1.5, 1.0), (1.5, -1.0)] {
+            let rb = RayBox::new(&Ray::new(vec3(x, 0.5, -5.0 * dz), vec3(zero, zero, dz)));
+            assert!(
+                !b.hit_between(&rb, 0.0, Real::INFINITY),
+                "x = {x}, dz = {dz}"
+            );
+        }
+        // in a face plane: no NaN, whichever answer
+        for x in [-1.0, 1.0] {
+            for dz in [1.0, -1.0] {
+                let rb = RayBox::new(&Ray::new(vec3(x, 0.5, -5.0 * dz), vec3(zero, zero, dz)));
+                let (enter, exit) = b.slabs(&rb);
+                assert!(!enter.is_nan() && !exit.is_nan(), "x = {x}, dz = {dz}");
+            }
+        }
+    }
+    // what the clamp prevents: with 1/0 = ∞, a bound on the origin gives 0·∞
+    let inf: Real = 1.0 / 0.0;
+    assert!(((1.0 as Real - 1.0) * inf).is_nan());
+    // a sphere seen along an axis is still found through every structure
+    let text = r#"
+[camera]
+eye = [0.0, 0.0, 5.0]
+look_at = [0.0, 0.0, 0.0]
+up = [0.0, 1.0, 0.0]
+fov = 40.0
+[image]
+width = 9
+height = 9
+[materials.m]
+diffuse = 0.5
+[[objects]]
+shape = "sphere"
+material = "m"
+[[lights]]
+position = [0.0, 0.0, 5.0]
+intensity = 1.0
+"#;
+    let scene = parse(text, "axis.toml").expect("parses");
+    assert_all_equal(&render_with(&scene, Stage::Shadows, 9, 9, |_| {}));
+}

@@ -42,7 +42,8 @@ pub(crate) const SLACK: Real = 16.0 * Real::EPSILON;
 pub struct RayBox {
     /// The origin e.
     pub origin: Vec3,
-    /// 1/d, componentwise (±∞ where d has a zero component).
+    /// 1/d, componentwise, held within ±[`Real::MAX`]: where d has a zero component it is
+    /// ±MAX (the sign of the zero) instead of ±∞, so that (bound − e)·(1/d) is never 0·∞.
     pub inv_dir: Vec3,
 }
 
@@ -51,11 +52,26 @@ impl RayBox {
     #[inline]
     #[must_use]
     pub fn new(ray: &Ray) -> Self {
+        let r = ray.dir.recip();
+        let big = Vec3::splat(Real::MAX);
         Self {
             origin: ray.origin,
-            inv_dir: ray.dir.recip(),
+            inv_dir: r.max(-big).min(big),
         }
     }
+}
+
+/// The smaller of two numbers that are never NaN: one `minsd`, where `Real::min` also has
+/// to look for a NaN.
+#[inline(always)]
+pub(crate) fn lesser(a: Real, b: Real) -> Real {
+    if a < b { a } else { b }
+}
+
+/// The larger of two numbers that are never NaN.
+#[inline(always)]
+pub(crate) fn greater(a: Real, b: Real) -> Real {
+    if a > b { a } else { b }
 }
 
 /// Widens t a little towards +∞: the bound used when comparing an entry parameter with the
@@ -161,13 +177,14 @@ impl Aabb {
     #[must_use]
     pub fn slabs(&self, ray: &RayBox) -> (Real, Real) {
         super::counters::box_test();
-        let t0 = (self.min - ray.origin) * ray.inv_dir;
-        let t1 = (self.max - ray.origin) * ray.inv_dir;
-        // f64::min/max ignore a NaN (0·∞ for a ray lying in a slab's plane)
-        let near = t0.min(t1);
-        let far = t0.max(t1);
-        let enter = near.x.max(near.y).max(near.z);
-        let exit = far.x.min(far.y).min(far.z);
+        // No NaN can arise: 1/d is finite (see [`RayBox`]) and the bounds are finite, so a
+        // product is 0·finite or finite·finite (at worst ±∞ by overflow, never 0·∞).
+        let (o, inv) = (ray.origin, ray.inv_dir);
+        let (x0, x1) = ((self.min.x - o.x) * inv.x, (self.max.x - o.x) * inv.x);
+        let (y0, y1) = ((self.min.y - o.y) * inv.y, (self.max.y - o.y) * inv.y);
+        let (z0, z1) = ((self.min.z - o.z) * inv.z, (self.max.z - o.z) * inv.z);
+        let enter = greater(greater(lesser(x0, x1), lesser(y0, y1)), lesser(z0, z1));
+        let exit = lesser(lesser(greater(x0, x1), greater(y0, y1)), greater(z0, z1));
         (enter - enter.abs() * SLACK, exit + exit.abs() * SLACK)
     }
 

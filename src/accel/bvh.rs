@@ -106,7 +106,8 @@ impl Bvh {
         if self.nodes.is_empty() {
             return;
         }
-        let mut stack = [0u32; 64];
+        // the far children put aside, with the ray's entry into their boxes
+        let mut stack = [(0u32, 0.0); 64];
         let mut top = 0usize;
         let mut node = 0u32;
         let (e, x) = self.nodes[0].bounds.slabs(ray);
@@ -132,15 +133,17 @@ impl Bvh {
                 let hit_r = re <= rx && rx >= t_min && re <= lim;
                 match (hit_l, hit_r) {
                     (true, true) => {
-                        let (near, far) = if le <= re { (l, r) } else { (r, l) };
+                        let (near, far, far_enter) = if le <= re { (l, r, re) } else { (r, l, le) };
                         if top < stack.len() {
-                            stack[top] = far;
+                            stack[top] = (far, far_enter);
                             top += 1;
                             node = near;
                             continue;
                         }
                         // a degenerate, very deep tree: visit the far side without the stack
-                        self.walk_from(far, ray, t_min, limit, &mut visit);
+                        if !self.walk_from(far, ray, t_min, limit, &mut visit) {
+                            return;
+                        }
                         node = near;
                         continue;
                     }
@@ -155,15 +158,16 @@ impl Bvh {
                     (false, false) => {}
                 }
             }
-            // pop the next subtree that is still worth visiting
+            // pop the next subtree that is still worth visiting: its box was met, and the
+            // nearest hit found since may now lie before the entry
             loop {
                 if top == 0 {
                     return;
                 }
                 top -= 1;
-                node = stack[top];
-                let (e, x) = self.nodes[node as usize].bounds.slabs(ray);
-                if e <= x && x >= t_min && e <= widen(*limit) {
+                let enter;
+                (node, enter) = stack[top];
+                if enter <= widen(*limit) {
                     break;
                 }
             }
