@@ -13,7 +13,10 @@
 //! candidate planes are the borders of 12 bins along each axis, over the objects' centres.
 //! A node becomes a leaf when no split beats testing its objects one by one.
 
+use arrayvec::ArrayVec;
+
 use super::aabb::{Aabb, RayBox, widen};
+use crate::real::Real;
 
 /// One node of the flattened tree: an inner node's left child follows it, its right child is
 /// at `right`; a leaf lists `count` objects from `first` in [`Bvh::items`].
@@ -106,14 +109,14 @@ impl Bvh {
         if self.nodes.is_empty() {
             return;
         }
-        // the far children put aside, with the ray's entry into their boxes
-        let mut stack = [(0u32, 0.0); 64];
-        let mut top = 0usize;
         let mut node = 0u32;
         let (e, x) = self.nodes[0].bounds.slabs(ray);
         if !(e <= x && x >= t_min && e <= widen(*limit)) {
             return;
         }
+        // the far children put aside, with the ray's entry into their boxes (an `ArrayVec`
+        // costs nothing to set up, which matters when most walks are a few nodes long)
+        let mut stack = ArrayVec::<(u32, Real), 64>::new();
         loop {
             let n = &self.nodes[node as usize];
             super::counters::node();
@@ -134,9 +137,7 @@ impl Bvh {
                 match (hit_l, hit_r) {
                     (true, true) => {
                         let (near, far, far_enter) = if le <= re { (l, r, re) } else { (r, l, le) };
-                        if top < stack.len() {
-                            stack[top] = (far, far_enter);
-                            top += 1;
+                        if stack.try_push((far, far_enter)).is_ok() {
                             node = near;
                             continue;
                         }
@@ -161,13 +162,11 @@ impl Bvh {
             // pop the next subtree that is still worth visiting: its box was met, and the
             // nearest hit found since may now lie before the entry
             loop {
-                if top == 0 {
+                let Some((next, enter)) = stack.pop() else {
                     return;
-                }
-                top -= 1;
-                let enter;
-                (node, enter) = stack[top];
+                };
                 if enter <= widen(*limit) {
+                    node = next;
                     break;
                 }
             }
