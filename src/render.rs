@@ -29,12 +29,15 @@
 
 use std::borrow::Cow;
 
+use arrayvec::ArrayVec;
 use rayon::prelude::*;
 
 use crate::accel::{Accel, Accelerator};
 
 use crate::camera::Camera;
 use crate::error::Error;
+use crate::light::Light;
+use crate::material::Material;
 use crate::offset::{Offset, SpawnPoint};
 use crate::optics;
 use crate::ray::Ray;
@@ -192,6 +195,22 @@ pub struct Nearest {
     pub object: usize,
 }
 
+/// A hit as shading sees it.
+struct Surface<'s> {
+    /// The hit (object space t, world normal).
+    hit: Hit,
+    /// The material hit.
+    material: &'s Material,
+    /// The hit point.
+    p: Vec3,
+    /// The ray's unit direction.
+    d: Vec3,
+    /// The shading normal, turned towards the viewer.
+    n: Vec3,
+    /// Where rays leaving the hit start.
+    spawn: SpawnPoint,
+}
+
 /// Traces rays through one scene with one set of options.
 pub struct Tracer<'a> {
     /// The scene.
@@ -206,6 +225,10 @@ pub struct Tracer<'a> {
 
 /// Side of the square tiles the image is rendered in.
 pub const TILE: u32 = 16;
+
+/// Side of the square blocks of pixels whose camera rays are traced as one packet
+/// (BLOCK² ≤ [`crate::accel::PACKET`]).
+pub const BLOCK: u32 = 4;
 
 /// The largest framebuffer a render may allocate: 4 GiB, that is width × height × 3 ×
 /// `size_of::<Real>()` bytes (f64: 178 956 970 pixels, e.g. 13 377 × 13 377; f32: twice as
@@ -276,10 +299,19 @@ pub fn render_with(
             let y1 = (y0 + TILE).min(h);
             for x0 in (0..w).step_by(TILE as usize) {
                 let x1 = (x0 + TILE).min(w);
-                for y in y0..y1 {
-                    let row = (y - y0) as usize * w as usize;
-                    for x in x0..x1 {
-                        rows[row + x as usize] = tracer.pixel(x, y, &mut stats);
+                // blocks of BLOCK × BLOCK pixels, whose camera rays go through the tree together
+                for by in (y0..y1).step_by(BLOCK as usize) {
+                    let by1 = (by + BLOCK).min(y1);
+                    for bx in (x0..x1).step_by(BLOCK as usize) {
+                        let bx1 = (bx + BLOCK).min(x1);
+                        let colours = tracer.block((bx, bx1), (by, by1), &mut stats);
+                        let mut c = colours.iter();
+                        for y in by..by1 {
+                            let row = (y - y0) as usize * w as usize;
+                            for x in bx..bx1 {
+                                rows[row + x as usize] = *c.next().expect("one colour a pixel");
+                            }
+                        }
                     }
                 }
                 progress(u64::from((x1 - x0) * (y1 - y0)));
@@ -392,31 +424,147 @@ impl<'a> Tracer<'a> {
     }
 
     fn primary(&self, ray: &Ray, pixel: (u32, u32), stats: &mut Stats) -> Vec3 {
-        let at = Some(pixel);
-        let o = self.options;
-        if o.stage == Stage::CameraRays {
+        if self.options.stage == Stage::CameraRays {
             return (crate::numeric::normalize(ray.dir) + Vec3::ONE) * 0.5;
         }
+        let nearest = self.nearest_from(ray, 0.0, Some(pixel));
+        self.seen(ray, nearest, stats)
+    }
+
+    /// The colour of a camera ray (from stage 2 on) whose nearest hit is `nearest`.
+    fn seen(&self, ray: &Ray, nearest: Option<Nearest>, stats: &mut Stats) -> Vec3 {
+        let o = self.options;
         match o.view {
-            View::Color if o.stage == Stage::GenericObjects => self.flat(ray, at),
-            View::Color => self.trace_from(ray, 0.0, 0, 1.0, stats, at),
-            View::Flat => self.flat(ray, at),
-            View::Normals => match self.nearest_from(ray, 0.0, at) {
+            View::Color if o.stage == Stage::GenericObjects => self.flat(nearest),
+            View::Color => self.shade(ray, nearest, 0, 1.0, stats),
+            View::Flat => self.flat(nearest),
+            View::Normals => match nearest {
                 Some(n) => (self.facing(n.hit.normal, ray.dir) + Vec3::ONE) * 0.5,
                 None => self.scene.background,
             },
-            View::Depth => match self.nearest_from(ray, 0.0, at) {
+            View::Depth => match nearest {
                 Some(n) => Vec3::splat(n.hit.t * ray.dir.length()),
                 None => Vec3::splat(Real::INFINITY),
             },
         }
     }
 
-    fn flat(&self, ray: &Ray, at: Option<(u32, u32)>) -> Vec3 {
-        match self.nearest_from(ray, 0.0, at) {
+    fn flat(&self, nearest: Option<Nearest>) -> Vec3 {
+        match nearest {
             Some(n) => self.scene.materials[self.scene.objects[n.object].material].diffuse,
             None => self.scene.background,
         }
+    }
+
+    /// Whether [`Tracer::block`] may trace the camera rays of a block of pixels together:
+    /// one ray a pixel, from stage 2 on, through a BVH.
+    fn packets(&self) -> bool {
+        let o = self.options;
+        (o.samples <= 1 || o.view == View::Depth)
+            && o.stage >= Stage::GenericObjects
+            && self.accel.kind() == crate::accel::Accel::Bvh
+    }
+
+    /// The colours of the pixels x0..x1 of row y0..y1 (at most [`crate::accel::PACKET`] of
+    /// them), written to `out` row after row: the same colours as [`Tracer::pixel`] gives,
+    /// with the camera rays walked through the BVH as one packet when [`Tracer::packets`].
+    fn block(
+        &self,
+        (x0, x1): (u32, u32),
+        (y0, y1): (u32, u32),
+        stats: &mut Stats,
+    ) -> ArrayVec<Vec3, { crate::accel::PACKET }> {
+        let mut out = ArrayVec::new();
+        if !self.packets() {
+            for y in y0..y1 {
+                for x in x0..x1 {
+                    out.push(self.pixel(x, y, stats));
+                }
+            }
+            return out;
+        }
+        let rays: ArrayVec<Ray, { crate::accel::PACKET }> = (y0..y1)
+            .flat_map(|y| (x0..x1).map(move |x| (x, y)))
+            .map(|(x, y)| self.camera.pixel_ray(x, y, 0.5, 0.5))
+            .collect();
+        let mut nearest = [None; crate::accel::PACKET];
+        let nearest = &mut nearest[..rays.len()];
+        self.accel.nearest_packet(
+            &self.scene.objects,
+            &rays,
+            0.0,
+            self.options.formula,
+            nearest,
+        );
+        stats.primary += rays.len() as u64;
+        let o = self.options;
+        if o.view != View::Color || o.stage < Stage::Shading {
+            for (ray, n) in rays.iter().zip(nearest.iter()) {
+                out.push(self.seen(ray, *n, stats));
+            }
+            return out;
+        }
+        // Tracer::shade for the whole block, with the feelers towards each light traced as
+        // one packet: the same sums, in the same order, pixel by pixel
+        let surfaces: ArrayVec<Option<Surface>, { crate::accel::PACKET }> = rays
+            .iter()
+            .zip(nearest.iter())
+            .map(|(ray, n)| n.as_ref().map(|n| self.surface(ray, n)))
+            .collect();
+        let mut color: ArrayVec<Vec3, { crate::accel::PACKET }> = surfaces
+            .iter()
+            .map(|s| match s {
+                Some(s) => shading::ambient(s.material, self.scene.ambient),
+                None => self.scene.background,
+            })
+            .collect();
+        for light in &self.scene.lights {
+            let mut local = [None; crate::accel::PACKET];
+            let (mut who, mut origins, mut u_min) = (
+                ArrayVec::<usize, { crate::accel::PACKET }>::new(),
+                ArrayVec::<Vec3, { crate::accel::PACKET }>::new(),
+                ArrayVec::<Real, { crate::accel::PACKET }>::new(),
+            );
+            for (i, s) in surfaces.iter().enumerate() {
+                let Some((l, feeler)) = s.as_ref().and_then(|s| self.direct(s, light, stats))
+                else {
+                    continue;
+                };
+                local[i] = Some(l);
+                if let Some((origin, u)) = feeler {
+                    who.push(i);
+                    origins.push(origin);
+                    u_min.push(u);
+                }
+            }
+            let mut share = [1.0; crate::accel::PACKET];
+            self.accel.transmittance_packet(
+                &self.scene.objects,
+                &self.scene.materials,
+                &origins,
+                light.position,
+                &u_min,
+                o.formula,
+                &mut share[..who.len()],
+            );
+            for (k, &i) in who.iter().enumerate() {
+                if let Some(l) = &mut local[i] {
+                    *l *= share[k];
+                }
+            }
+            for (c, l) in color.iter_mut().zip(local) {
+                if let Some(l) = l {
+                    *c += l;
+                }
+            }
+        }
+        for (s, c) in surfaces.iter().zip(color) {
+            out.push(match s {
+                Some(s) => self.bounce(s, c, 0, 1.0, stats),
+                None => c,
+            });
+        }
+        out
     }
 
     /// The nearest hit with t > `t_min` over all objects (the notes' step 5: smallest t; among
@@ -461,33 +609,41 @@ impl<'a> Tracer<'a> {
         stats: &mut Stats,
         pixel: Option<(u32, u32)>,
     ) -> Vec3 {
-        let Some(nearest) = self.nearest_from(ray, t_min, pixel) else {
+        self.shade(
+            ray,
+            self.nearest_from(ray, t_min, pixel),
+            depth,
+            weight,
+            stats,
+        )
+    }
+
+    /// The light coming back along `ray` whose nearest hit is `nearest` (see
+    /// [`Tracer::trace`]).
+    fn shade(
+        &self,
+        ray: &Ray,
+        nearest: Option<Nearest>,
+        depth: u32,
+        weight: Real,
+        stats: &mut Stats,
+    ) -> Vec3 {
+        let Some(nearest) = nearest else {
             return self.scene.background;
         };
-        let scene = self.scene;
+        let s = self.surface(ray, &nearest);
         let o = self.options;
-        let hit = nearest.hit;
-        let object = &scene.objects[nearest.object];
-        let material = &scene.materials[object.material];
-        let p = ray.at(hit.t);
-        let d = crate::numeric::normalize(ray.dir);
-        let n = self.facing(hit.normal, d); // shading normal, towards the viewer
-        let v = -d;
-        let spawn = SpawnPoint::new(object, ray, &hit);
 
         // I_a + Σ (I_d + I_s), with feelers from stage 4
-        let mut color = shading::ambient(material, scene.ambient);
-        for light in &scene.lights {
-            let mut local = shading::direct(material, light, p, n, v);
-            if local == Vec3::ZERO {
+        let mut color = shading::ambient(s.material, self.scene.ambient);
+        for light in &self.scene.lights {
+            let Some((mut local, feeler)) = self.direct(&s, light, stats) else {
                 continue; // light behind the surface: no feeler needed
-            }
-            if o.stage >= Stage::Shadows && light.shadows {
-                stats.shadow += 1;
-                let (origin, u_min) = o.offset.spawn(&spawn, light.position - p);
+            };
+            if let Some((origin, u_min)) = feeler {
                 local *= self.accel.transmittance(
-                    &scene.objects,
-                    &scene.materials,
+                    &self.scene.objects,
+                    &self.scene.materials,
                     origin,
                     light.position,
                     u_min,
@@ -496,10 +652,60 @@ impl<'a> Tracer<'a> {
             }
             color += local;
         }
+        self.bounce(&s, color, depth, weight, stats)
+    }
 
+    /// What shading needs to know of a hit.
+    fn surface<'s>(&'s self, ray: &Ray, nearest: &Nearest) -> Surface<'s> {
+        let hit = nearest.hit;
+        let object = &self.scene.objects[nearest.object];
+        let d = crate::numeric::normalize(ray.dir);
+        Surface {
+            hit,
+            material: &self.scene.materials[object.material],
+            p: ray.at(hit.t),
+            d,
+            n: self.facing(hit.normal, d), // shading normal, towards the viewer
+            spawn: SpawnPoint::new(object, ray, &hit),
+        }
+    }
+
+    /// I_d + I_s of one light at the surface, unshadowed, and from stage 4 the feeler that
+    /// will say how much of it arrives (origin, u_min); `None` when the light is behind the
+    /// surface.
+    fn direct(
+        &self,
+        s: &Surface,
+        light: &Light,
+        stats: &mut Stats,
+    ) -> Option<(Vec3, Option<(Vec3, Real)>)> {
+        let local = shading::direct(s.material, light, s.p, s.n, -s.d);
+        if local == Vec3::ZERO {
+            return None;
+        }
+        let o = self.options;
+        let feeler = (o.stage >= Stage::Shadows && light.shadows).then(|| {
+            stats.shadow += 1;
+            o.offset.spawn(&s.spawn, light.position - s.p)
+        });
+        Some((local, feeler))
+    }
+
+    /// `color` plus, from stage 5 and while `depth < max_depth`, the light of the mirror and
+    /// transmitted rays (I_l + I_r).
+    fn bounce(
+        &self,
+        s: &Surface,
+        mut color: Vec3,
+        depth: u32,
+        weight: Real,
+        stats: &mut Stats,
+    ) -> Vec3 {
+        let o = self.options;
         if o.stage < Stage::ReflectionRefraction || depth >= o.max_depth {
             return color;
         }
+        let (hit, material, d, n, spawn) = (s.hit, s.material, s.d, s.n, &s.spawn);
 
         // I_l + I_r
         let mut kr = material.reflection;
@@ -511,7 +717,7 @@ impl<'a> Tracer<'a> {
                     let w = weight * material.transmission;
                     if w >= o.min_weight {
                         stats.refracted += 1;
-                        let (origin, t0) = o.offset.spawn(&spawn, t_dir);
+                        let (origin, t0) = o.offset.spawn(spawn, t_dir);
                         let r = Ray::new(origin, t_dir);
                         color += material.transmission * self.trace(&r, t0, depth + 1, w, stats);
                     }
@@ -525,7 +731,7 @@ impl<'a> Tracer<'a> {
         if kr > 0.0 && weight * kr >= o.min_weight {
             stats.reflected += 1;
             let l = optics::reflect(d, n);
-            let (origin, t0) = o.offset.spawn(&spawn, l);
+            let (origin, t0) = o.offset.spawn(spawn, l);
             let r = Ray::new(origin, l);
             color += kr * self.trace(&r, t0, depth + 1, weight * kr, stats);
         }

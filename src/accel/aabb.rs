@@ -34,7 +34,8 @@ const PAD_SIZE: Real = 64.0
     };
 /// Padding in units of the coordinates' magnitude: covers rounding in M⁻¹ and in r(t).
 const PAD_MAGNITUDE: Real = 1024.0 * Real::EPSILON;
-/// Relative slack of a slab test's interval (pbrt's 1 + 2γ₃, generously).
+/// Relative slack of a slab test's interval (pbrt's 1 + 2γ₃, generously): a computed
+/// crossing (bound − e)·(1/d) is within three roundings, 3ε relative, of the exact one.
 pub(crate) const SLACK: Real = 16.0 * Real::EPSILON;
 
 /// A ray prepared for slab tests: origin and reciprocal direction.
@@ -45,6 +46,8 @@ pub struct RayBox {
     /// 1/d, componentwise, held within ±[`Real::MAX`]: where d has a zero component it is
     /// ±MAX (the sign of the zero) instead of ±∞, so that (bound − e)·(1/d) is never 0·∞.
     pub inv_dir: Vec3,
+    /// Per axis: the ray moves down it (1/d < 0), so it meets a box's upper side first.
+    pub down: [bool; 3],
 }
 
 impl RayBox {
@@ -54,9 +57,11 @@ impl RayBox {
     pub fn new(ray: &Ray) -> Self {
         let r = ray.dir.recip();
         let big = Vec3::splat(Real::MAX);
+        let inv_dir = r.max(-big).min(big);
         Self {
             origin: ray.origin,
-            inv_dir: r.max(-big).min(big),
+            inv_dir,
+            down: [inv_dir.x < 0.0, inv_dir.y < 0.0, inv_dir.z < 0.0],
         }
     }
 }
@@ -171,8 +176,13 @@ impl Aabb {
 
     /// The parameters (t_enter, t_exit) where the ray crosses the box, by the slab method:
     /// on each axis t = (bound − e)/d, the entry is the largest near crossing and the exit the
-    /// smallest far one. The interval is widened by a relative slack; it is empty
-    /// (t_enter > t_exit) when the ray misses.
+    /// smallest far one; the interval is empty (t_enter > t_exit) when the ray misses.
+    ///
+    /// Rounding is allowed for on the exit only, which is enlarged by a relative [`SLACK`]
+    /// (a positive exit grows; a negative one lies behind the origin and is a miss either
+    /// way). The entry is left as computed, up to 3ε above the exact one: a caller compares it
+    /// with a *widened* limit ([`widen`]), and t_enter ≤ t_exit·(1 + SLACK) holds whenever the
+    /// exact entry is at most the exact exit. So a box the exact ray meets is always met.
     #[inline]
     #[must_use]
     pub fn slabs(&self, ray: &RayBox) -> (Real, Real) {
@@ -180,20 +190,28 @@ impl Aabb {
         // No NaN can arise: 1/d is finite (see [`RayBox`]) and the bounds are finite, so a
         // product is 0·finite or finite·finite (at worst ±∞ by overflow, never 0·∞).
         let (o, inv) = (ray.origin, ray.inv_dir);
-        let (x0, x1) = ((self.min.x - o.x) * inv.x, (self.max.x - o.x) * inv.x);
-        let (y0, y1) = ((self.min.y - o.y) * inv.y, (self.max.y - o.y) * inv.y);
-        let (z0, z1) = ((self.min.z - o.z) * inv.z, (self.max.z - o.z) * inv.z);
-        let enter = greater(greater(lesser(x0, x1), lesser(y0, y1)), lesser(z0, z1));
-        let exit = lesser(lesser(greater(x0, x1), greater(y0, y1)), greater(z0, z1));
-        (enter - enter.abs() * SLACK, exit + exit.abs() * SLACK)
+        // the side met first on each axis: the lower one, or the upper one going down
+        let sides = |down: bool, lo: Real, hi: Real| if down { (hi, lo) } else { (lo, hi) };
+        let (nx, fx) = sides(ray.down[0], self.min.x, self.max.x);
+        let (ny, fy) = sides(ray.down[1], self.min.y, self.max.y);
+        let (nz, fz) = sides(ray.down[2], self.min.z, self.max.z);
+        let enter = greater(
+            greater((nx - o.x) * inv.x, (ny - o.y) * inv.y),
+            (nz - o.z) * inv.z,
+        );
+        let exit = lesser(
+            lesser((fx - o.x) * inv.x, (fy - o.y) * inv.y),
+            (fz - o.z) * inv.z,
+        );
+        (enter, exit * (1.0 + SLACK))
     }
 
-    /// True when the ray meets the box somewhere in [lo, hi].
+    /// True when the ray meets the box somewhere in [lo, hi] (hi widened by [`widen`]).
     #[inline]
     #[must_use]
     pub fn hit_between(&self, ray: &RayBox, lo: Real, hi: Real) -> bool {
         let (enter, exit) = self.slabs(ray);
-        enter <= exit && exit >= lo && enter <= hi
+        enter <= exit && exit >= lo && enter <= widen(hi)
     }
 }
 

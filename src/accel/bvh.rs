@@ -15,7 +15,7 @@
 
 use arrayvec::ArrayVec;
 
-use super::aabb::{Aabb, RayBox, widen};
+use super::aabb::{Aabb, RayBox, SLACK, greater, lesser, widen};
 use crate::real::Real;
 
 /// One node of the flattened tree: an inner node's left child follows it, its right child is
@@ -56,6 +56,97 @@ struct Builder<'a> {
     boxes: &'a [Aabb],
     centres: Vec<[f64; 3]>,
     nodes: Vec<Node>,
+}
+
+/// The rays of a packet taken together (Wald, Boulos and Shirley's interval test): per
+/// axis, the range of their origins and of their 1/d, when all go the same way along it.
+/// A box that no ray of these ranges could meet is missed by every ray of the packet, and
+/// one test says so instead of one a ray.
+struct Span {
+    origin: [(Real, Real); 3],
+    inv_dir: [(Real, Real); 3],
+    down: [bool; 3],
+    /// The smallest t_min and the largest widened limit of the packet.
+    t_min: Real,
+    limit: Real,
+}
+
+impl Span {
+    /// The span of `rays`, or `None` if they do not all go the same way along every axis.
+    fn of(rays: &[RayBox], t_min: &[Real], limits: &[Real]) -> Option<Self> {
+        let first = rays.first()?;
+        let mut span = Span {
+            origin: [(Real::INFINITY, Real::NEG_INFINITY); 3],
+            inv_dir: [(Real::INFINITY, Real::NEG_INFINITY); 3],
+            down: first.down,
+            t_min: Real::INFINITY,
+            limit: Real::NEG_INFINITY,
+        };
+        for (r, ray) in rays.iter().enumerate() {
+            if ray.down != span.down {
+                return None;
+            }
+            let o = [ray.origin.x, ray.origin.y, ray.origin.z];
+            let i = [ray.inv_dir.x, ray.inv_dir.y, ray.inv_dir.z];
+            for a in 0..3 {
+                span.origin[a] = (
+                    lesser(span.origin[a].0, o[a]),
+                    greater(span.origin[a].1, o[a]),
+                );
+                span.inv_dir[a] = (
+                    lesser(span.inv_dir[a].0, i[a]),
+                    greater(span.inv_dir[a].1, i[a]),
+                );
+            }
+            span.t_min = lesser(span.t_min, t_min[r]);
+            // a NaN limit (a finished ray) meets nothing: it leaves the span's limit as it is
+            if limits[r] >= Real::NEG_INFINITY {
+                span.limit = greater(span.limit, widen(limits[r]));
+            }
+        }
+        Some(span)
+    }
+
+    /// True when no ray of the span can meet `b` between t_min and the limit. Each bound is
+    /// computed as [`Aabb::slabs`] computes a crossing, then moved outwards by the slack, so
+    /// the test errs only towards opening the box.
+    fn misses(&self, b: &Aabb) -> bool {
+        let (lo, hi) = ([b.min.x, b.min.y, b.min.z], [b.max.x, b.max.y, b.max.z]);
+        let mut enter = Real::NEG_INFINITY;
+        let mut exit = Real::INFINITY;
+        for a in 0..3 {
+            let (near, far) = if self.down[a] {
+                (hi[a], lo[a])
+            } else {
+                (lo[a], hi[a])
+            };
+            let (olo, ohi) = self.origin[a];
+            // (bound − e)·(1/d) over e and 1/d in their ranges: the smallest near crossing
+            // and the largest far one (1/d has one sign along the axis)
+            let (ilo, ihi) = self.inv_dir[a];
+            let (n, f) = if self.down[a] {
+                // 1/d < 0: the product falls as (bound − e) grows
+                let dn = near - olo;
+                let df = far - ohi;
+                (
+                    dn * if dn >= 0.0 { ilo } else { ihi },
+                    df * if df >= 0.0 { ihi } else { ilo },
+                )
+            } else {
+                let dn = near - ohi;
+                let df = far - olo;
+                (
+                    dn * if dn >= 0.0 { ilo } else { ihi },
+                    df * if df >= 0.0 { ihi } else { ilo },
+                )
+            };
+            enter = greater(enter, n);
+            exit = lesser(exit, f);
+        }
+        let enter = enter - enter.abs() * SLACK;
+        let exit = exit + exit.abs() * SLACK;
+        enter > exit || exit < self.t_min || enter > self.limit
+    }
 }
 
 impl Bvh {
@@ -171,6 +262,116 @@ impl Bvh {
                 }
             }
         }
+    }
+
+    /// The walk of [`Bvh::walk`] for a packet of rays at once (Wald's "first active ray"):
+    /// a node is opened when any ray of the packet meets its box, and the rays before the
+    /// first one that does are dropped for its whole subtree. `visit(k, from, limits)` is
+    /// called for every position k of a leaf some ray from index `from` on may meet (rays
+    /// before `from` miss it); ray r looks for hits after `t_min[r]` up to `limits[r]`, which
+    /// `visit` may shrink, or set to NaN when the ray needs nothing more (a NaN limit is met
+    /// by no box).
+    pub fn walk_packet(
+        &self,
+        rays: &[RayBox],
+        t_min: &[Real],
+        limits: &mut [Real],
+        mut visit: impl FnMut(u32, usize, &mut [Real]),
+    ) {
+        if self.nodes.is_empty() {
+            return;
+        }
+        let all = Span::of(rays, t_min, limits);
+        // the first ray from `from` on that meets node's box before its limit
+        let first = |node: u32, from: usize, limits: &[Real]| -> Option<usize> {
+            let b = &self.nodes[node as usize].bounds;
+            if all.as_ref().is_some_and(|all| all.misses(b)) {
+                return None;
+            }
+            (from..rays.len()).find(|&r| {
+                let (e, x) = b.slabs(&rays[r]);
+                e <= x && x >= t_min[r] && e <= widen(limits[r])
+            })
+        };
+        let Some(from) = first(0, 0, limits) else {
+            return;
+        };
+        let mut stack = ArrayVec::<(u32, usize), 64>::new();
+        let (mut node, mut from) = (0u32, from);
+        loop {
+            let n = &self.nodes[node as usize];
+            super::counters::node();
+            if n.count > 0 {
+                let start = n.index;
+                for k in start..start + n.count {
+                    visit(k, from, limits);
+                }
+            } else {
+                let (l, r) = (node + 1, n.index);
+                match (first(l, from, limits), first(r, from, limits)) {
+                    (Some(fl), Some(fr)) => {
+                        // the side an earlier ray already needs goes first
+                        let (near, far) = if fl <= fr {
+                            ((l, fl), (r, fr))
+                        } else {
+                            ((r, fr), (l, fl))
+                        };
+                        if stack.try_push(far).is_err() {
+                            self.walk_packet_from(far, rays, t_min, limits, &mut visit);
+                        }
+                        (node, from) = near;
+                        continue;
+                    }
+                    (Some(fl), None) => {
+                        (node, from) = (l, fl);
+                        continue;
+                    }
+                    (None, Some(fr)) => {
+                        (node, from) = (r, fr);
+                        continue;
+                    }
+                    (None, None) => {}
+                }
+            }
+            // pop the next subtree some ray still needs (the limits may have shrunk)
+            loop {
+                let Some((next, f)) = stack.pop() else {
+                    return;
+                };
+                if let Some(f) = first(next, f, limits) {
+                    (node, from) = (next, f);
+                    break;
+                }
+            }
+        }
+    }
+
+    /// The recursive packet walk of one subtree (used only past the stack's depth).
+    fn walk_packet_from(
+        &self,
+        (node, from): (u32, usize),
+        rays: &[RayBox],
+        t_min: &[Real],
+        limits: &mut [Real],
+        visit: &mut impl FnMut(u32, usize, &mut [Real]),
+    ) {
+        let n = &self.nodes[node as usize];
+        super::counters::node();
+        let b = &n.bounds;
+        let Some(from) = (from..rays.len()).find(|&r| {
+            let (e, x) = b.slabs(&rays[r]);
+            e <= x && x >= t_min[r] && e <= widen(limits[r])
+        }) else {
+            return;
+        };
+        if n.count > 0 {
+            for k in n.index..n.index + n.count {
+                visit(k, from, limits);
+            }
+            return;
+        }
+        self.walk_packet_from((node + 1, from), rays, t_min, limits, visit);
+        self.walk_packet_from((n.index, from), rays, t_min, limits, visit);
     }
 
     /// The recursive walk of one subtree (used only past the stack's depth).

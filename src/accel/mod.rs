@@ -37,6 +37,8 @@ pub mod scatter;
 
 use std::time::Instant;
 
+use arrayvec::ArrayVec;
+
 pub use aabb::Aabb;
 use aabb::RayBox;
 pub use bvh::Bvh;
@@ -88,6 +90,9 @@ impl Accel {
         }
     }
 }
+
+/// The most rays [`Accelerator::nearest_packet`] takes at once.
+pub const PACKET: usize = 16;
 
 /// The octree's k: a cube holding more objects than this is subdivided.
 pub const OCTREE_K: usize = 4;
@@ -399,6 +404,145 @@ impl Accelerator {
                 object: best.object,
             }
         })
+    }
+
+    /// [`Accelerator::nearest`] for a packet of at most [`PACKET`] rays with the same
+    /// `t_min` (camera rays of neighbouring pixels): the same answers, ray by ray, with the
+    /// BVH walked once for all of them. Other structures answer ray by ray.
+    pub fn nearest_packet(
+        &self,
+        objects: &[Object],
+        rays: &[Ray],
+        t_min: Real,
+        formula: Formula,
+        out: &mut [Option<Nearest>],
+    ) {
+        assert!(rays.len() <= PACKET && out.len() == rays.len());
+        let Index::Bvh(bvh) = &self.index else {
+            for (ray, out) in rays.iter().zip(out.iter_mut()) {
+                *out = self.nearest(objects, ray, t_min, formula, None);
+            }
+            return;
+        };
+        let n = rays.len();
+        let mut best: [Best; PACKET] = std::array::from_fn(|_| Best {
+            t: Real::INFINITY,
+            object: usize::MAX,
+            hit: None,
+        });
+        for (ray, best) in rays.iter().zip(best.iter_mut()) {
+            counters::query();
+            for &i in &self.unbounded {
+                best.consider(&objects[i as usize], i as usize, ray, t_min, formula);
+            }
+        }
+        if !self.bounded.is_empty() {
+            let boxes: ArrayVec<RayBox, PACKET> = rays.iter().map(RayBox::new).collect();
+            let mut limits = [Real::INFINITY; PACKET];
+            for r in 0..n {
+                limits[r] = best[r].t;
+            }
+            let t_mins = [t_min; PACKET];
+            bvh.walk_packet(&boxes, &t_mins[..n], &mut limits[..n], |c, from, limits| {
+                let c = c as usize;
+                for r in from..n {
+                    if self.boxes[c].hit_between(&boxes[r], t_min, best[r].t) {
+                        best[r].consider(
+                            &self.local[c],
+                            self.bounded[c] as usize,
+                            &rays[r],
+                            t_min,
+                            formula,
+                        );
+                        limits[r] = best[r].t;
+                    }
+                }
+            });
+        }
+        for r in 0..n {
+            out[r] = best[r].hit.map(|mut hit| {
+                hit.normal = objects[best[r].object]
+                    .placement
+                    .normal_to_world(hit.normal);
+                Nearest {
+                    hit,
+                    object: best[r].object,
+                }
+            });
+        }
+    }
+
+    /// [`Accelerator::transmittance`] for a packet of at most [`PACKET`] feelers towards
+    /// one light (from the hits of neighbouring pixels): `out[r]` is the share reaching
+    /// `origins[r]`, the same as that function gives, with the BVH walked once for all of
+    /// them. Other structures answer feeler by feeler.
+    #[allow(clippy::too_many_arguments)] // the arguments of `transmittance`, and `out`
+    pub fn transmittance_packet(
+        &self,
+        objects: &[Object],
+        materials: &[Material],
+        origins: &[Vec3],
+        light: Vec3,
+        u_min: &[Real],
+        formula: Formula,
+        out: &mut [Real],
+    ) {
+        let n = origins.len();
+        assert!(n <= PACKET && u_min.len() == n && out.len() == n);
+        let Index::Bvh(bvh) = &self.index else {
+            for r in 0..n {
+                out[r] =
+                    self.transmittance(objects, materials, origins[r], light, u_min[r], formula);
+            }
+            return;
+        };
+        let feelers: ArrayVec<Ray, PACKET> =
+            origins.iter().map(|&o| Ray::new(o, light - o)).collect();
+        let mut blockers: [Blockers; PACKET] = std::array::from_fn(|_| Blockers::new());
+        // 1 while a feeler is open; NaN once an opaque object blocks it (see `walk_packet`)
+        let mut limits = [1.0; PACKET];
+        let opaque = |i: u32| materials[objects[i as usize].material].transmission == 0.0;
+        for r in 0..n {
+            counters::query();
+            for &i in &self.unbounded {
+                if crate::shadow::blocks(&objects[i as usize].hits(&feelers[r], formula), u_min[r])
+                {
+                    if opaque(i) {
+                        limits[r] = Real::NAN;
+                        break;
+                    }
+                    blockers[r].push(i);
+                }
+            }
+        }
+        if !self.bounded.is_empty() {
+            let boxes: ArrayVec<RayBox, PACKET> = feelers.iter().map(RayBox::new).collect();
+            bvh.walk_packet(&boxes, u_min, &mut limits[..n], |c, from, limits| {
+                let c = c as usize;
+                for r in from..n {
+                    if !limits[r].is_nan()
+                        && self.boxes[c].hit_between(&boxes[r], u_min[r], 1.0)
+                        && crate::shadow::blocks(
+                            &self.local[c].hits(&feelers[r], formula),
+                            u_min[r],
+                        )
+                    {
+                        if opaque(self.bounded[c]) {
+                            limits[r] = Real::NAN;
+                        } else {
+                            blockers[r].push(self.bounded[c]);
+                        }
+                    }
+                }
+            });
+        }
+        for (r, blockers) in blockers.into_iter().take(n).enumerate() {
+            out[r] = if limits[r].is_nan() {
+                0.0
+            } else {
+                blockers.share(objects, materials)
+            };
+        }
     }
 
     /// The share of a light reaching `origin` along the feeler S(u) = origin + (L − origin)·u,
