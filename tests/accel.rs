@@ -553,3 +553,100 @@ intensity = 1.0
     let scene = parse(text, "axis.toml").expect("parses");
     assert_all_equal(&render_with(&scene, Stage::Shadows, 9, 9, |_| {}));
 }
+
+/// Packets of rays walked through the BVH together give, ray by ray, exactly what brute
+/// force gives: nearest hits, and feeler shares (translucent blockers included). Coherent
+/// packets (one origin, a narrow cone, as camera rays), incoherent ones (directions of every
+/// sign, where the interval test stands aside) and axis-parallel rays, of every size.
+#[test]
+fn packets_answer_as_single_rays_do() {
+    use whitted::accel::PACKET;
+    let strain = parse(STRAIN, "strain.toml").unwrap();
+    let field = parse(
+        &scatter::scene_toml_with(300, 5, 96, 54, scatter::Layout::Fog),
+        "fog.toml",
+    )
+    .unwrap();
+    let mut rng = scatter::SplitMix64::new(11);
+    let mut r = |lo: f64, hi: f64| rng.range(lo, hi);
+    let mut checked = (0, 0, 0);
+    for scene in [&strain, &field] {
+        let cam = scene.camera();
+        let bvh = Accelerator::build(&scene.objects, &cam, Accel::Bvh, TILE);
+        let brute = Accelerator::build(&scene.objects, &cam, Accel::None, TILE);
+        for round in 0..300 {
+            let n = 1 + round % PACKET;
+            let centre = vec3(r(-8.0, 8.0), r(-2.0, 8.0), r(-8.0, 8.0));
+            let aim = vec3(r(-1.0, 1.0), r(-1.0, 1.0), r(-1.0, 1.0));
+            let rays: Vec<Ray> = (0..n)
+                .map(|k| match round % 3 {
+                    // one origin, a narrow cone
+                    0 => Ray::new(centre, aim + vec3(r(-0.05, 0.05), r(-0.05, 0.05), 0.0)),
+                    // anything
+                    1 => Ray::new(
+                        vec3(r(-8.0, 8.0), r(-2.0, 8.0), r(-8.0, 8.0)),
+                        vec3(r(-1.0, 1.0), r(-1.0, 1.0), r(-1.0, 1.0)),
+                    ),
+                    // along an axis, from points of a line
+                    _ => {
+                        let mut d = [0.0; 3];
+                        d[(round / 3) % 3] = if k % 2 == 0 { 1.0 } else { -1.0 };
+                        Ray::new(
+                            centre + Vec3::X * real(k as f64 * 0.1),
+                            vec3(d[0], d[1], d[2]),
+                        )
+                    }
+                })
+                .collect();
+            let t_min = if round % 2 == 0 {
+                0.0
+            } else {
+                real(r(0.0, 1.0))
+            };
+            let mut got = vec![None; n];
+            bvh.nearest_packet(&scene.objects, &rays, t_min, Default::default(), &mut got);
+            for (ray, got) in rays.iter().zip(&got) {
+                let want = brute.nearest(&scene.objects, ray, t_min, Default::default(), None);
+                assert_eq!(*got, want, "{ray:?}, t_min {t_min}");
+                checked.0 += usize::from(want.is_some());
+            }
+            // feelers from the rays' origins to one light
+            let light = vec3(r(-6.0, 6.0), r(2.0, 9.0), r(-6.0, 6.0));
+            let origins: Vec<Vec3> = rays.iter().map(|ray| ray.at(real(r(0.0, 4.0)))).collect();
+            let u_min: Vec<Real> = (0..n).map(|_| real(r(1e-9, 1e-3))).collect();
+            let mut share = vec![Real::NAN; n];
+            bvh.transmittance_packet(
+                &scene.objects,
+                &scene.materials,
+                &origins,
+                light,
+                &u_min,
+                Default::default(),
+                &mut share,
+            );
+            for k in 0..n {
+                let want = whitted::shadow::transmittance(
+                    &scene.objects,
+                    &scene.materials,
+                    origins[k],
+                    light,
+                    u_min[k],
+                    Default::default(),
+                );
+                assert_eq!(
+                    share[k].to_bits(),
+                    want.to_bits(),
+                    "feeler from {:?}",
+                    origins[k]
+                );
+                checked.1 += usize::from(want == 0.0);
+                checked.2 += usize::from(want > 0.0 && want < 1.0);
+            }
+        }
+    }
+    // the rays found things, and the feelers met opaque and translucent blockers
+    assert!(
+        checked.0 > 500 && checked.1 > 100 && checked.2 > 5,
+        "{checked:?}"
+    );
+}
