@@ -457,12 +457,12 @@ impl<'a> Tracer<'a> {
     }
 
     /// Whether [`Tracer::block`] may trace the camera rays of a block of pixels together:
-    /// one ray a pixel, from stage 2 on, through a BVH.
+    /// one ray a pixel, from stage 2 on, through a BVH or an octree.
     fn packets(&self) -> bool {
         let o = self.options;
         (o.samples <= 1 || o.view == View::Depth)
             && o.stage >= Stage::GenericObjects
-            && self.accel.kind() == crate::accel::Accel::Bvh
+            && matches!(self.accel.kind(), Accel::Bvh | Accel::Octree)
     }
 
     /// The colours of the pixels x0..x1 of row y0..y1 (at most [`crate::accel::PACKET`] of

@@ -554,7 +554,7 @@ intensity = 1.0
     assert_all_equal(&render_with(&scene, Stage::Shadows, 9, 9, |_| {}));
 }
 
-/// Packets of rays walked through the BVH together give, ray by ray, exactly what brute
+/// Packets of rays walked through the BVH or the octree together give, ray by ray, exactly what brute
 /// force gives: nearest hits, and feeler shares (translucent blockers included). Coherent
 /// packets (one origin, a narrow cone, as camera rays), incoherent ones (directions of every
 /// sign, where the interval test stands aside) and axis-parallel rays, of every size.
@@ -572,9 +572,10 @@ fn packets_answer_as_single_rays_do() {
     let mut checked = (0, 0, 0);
     for scene in [&strain, &field] {
         let cam = scene.camera();
-        let bvh = Accelerator::build(&scene.objects, &cam, Accel::Bvh, TILE);
         let brute = Accelerator::build(&scene.objects, &cam, Accel::None, TILE);
-        for round in 0..300 {
+        for round in 0..600 {
+            let kind = [Accel::Bvh, Accel::Octree][round % 2];
+            let tree = Accelerator::build(&scene.objects, &cam, kind, TILE);
             let n = 1 + round % PACKET;
             let centre = vec3(r(-8.0, 8.0), r(-2.0, 8.0), r(-8.0, 8.0));
             let aim = vec3(r(-1.0, 1.0), r(-1.0, 1.0), r(-1.0, 1.0));
@@ -604,10 +605,10 @@ fn packets_answer_as_single_rays_do() {
                 real(r(0.0, 1.0))
             };
             let mut got = vec![None; n];
-            bvh.nearest_packet(&scene.objects, &rays, t_min, Default::default(), &mut got);
+            tree.nearest_packet(&scene.objects, &rays, t_min, Default::default(), &mut got);
             for (ray, got) in rays.iter().zip(&got) {
                 let want = brute.nearest(&scene.objects, ray, t_min, Default::default(), None);
-                assert_eq!(*got, want, "{ray:?}, t_min {t_min}");
+                assert_eq!(*got, want, "{kind:?}: {ray:?}, t_min {t_min}");
                 checked.0 += usize::from(want.is_some());
             }
             // feelers from the rays' origins to one light
@@ -615,7 +616,7 @@ fn packets_answer_as_single_rays_do() {
             let origins: Vec<Vec3> = rays.iter().map(|ray| ray.at(real(r(0.0, 4.0)))).collect();
             let u_min: Vec<Real> = (0..n).map(|_| real(r(1e-9, 1e-3))).collect();
             let mut share = vec![Real::NAN; n];
-            bvh.transmittance_packet(
+            tree.transmittance_packet(
                 &scene.objects,
                 &scene.materials,
                 &origins,
@@ -636,7 +637,7 @@ fn packets_answer_as_single_rays_do() {
                 assert_eq!(
                     share[k].to_bits(),
                     want.to_bits(),
-                    "feeler from {:?}",
+                    "{kind:?}: feeler from {:?}",
                     origins[k]
                 );
                 checked.1 += usize::from(want == 0.0);

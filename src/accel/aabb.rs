@@ -215,6 +215,97 @@ impl Aabb {
     }
 }
 
+/// The rays of a packet taken together (Wald, Boulos and Shirley's interval test): per
+/// axis, the range of their origins and of their 1/d, when all go the same way along it.
+/// A box that no ray of these ranges could meet is missed by every ray of the packet, and
+/// one test says so instead of one a ray.
+pub(crate) struct Span {
+    origin: [(Real, Real); 3],
+    inv_dir: [(Real, Real); 3],
+    down: [bool; 3],
+    /// The smallest t_min and the largest widened limit of the packet.
+    t_min: Real,
+    limit: Real,
+}
+
+impl Span {
+    /// The span of `rays`, or `None` if they do not all go the same way along every axis.
+    pub(crate) fn of(rays: &[RayBox], t_min: &[Real], limits: &[Real]) -> Option<Self> {
+        let first = rays.first()?;
+        let mut span = Span {
+            origin: [(Real::INFINITY, Real::NEG_INFINITY); 3],
+            inv_dir: [(Real::INFINITY, Real::NEG_INFINITY); 3],
+            down: first.down,
+            t_min: Real::INFINITY,
+            limit: Real::NEG_INFINITY,
+        };
+        for (r, ray) in rays.iter().enumerate() {
+            if ray.down != span.down {
+                return None;
+            }
+            let o = [ray.origin.x, ray.origin.y, ray.origin.z];
+            let i = [ray.inv_dir.x, ray.inv_dir.y, ray.inv_dir.z];
+            for a in 0..3 {
+                span.origin[a] = (
+                    lesser(span.origin[a].0, o[a]),
+                    greater(span.origin[a].1, o[a]),
+                );
+                span.inv_dir[a] = (
+                    lesser(span.inv_dir[a].0, i[a]),
+                    greater(span.inv_dir[a].1, i[a]),
+                );
+            }
+            span.t_min = lesser(span.t_min, t_min[r]);
+            // a NaN limit (a finished ray) meets nothing: it leaves the span's limit as it is
+            if limits[r] >= Real::NEG_INFINITY {
+                span.limit = greater(span.limit, widen(limits[r]));
+            }
+        }
+        Some(span)
+    }
+
+    /// True when no ray of the span can meet `b` between t_min and the limit. Each bound is
+    /// computed as [`Aabb::slabs`] computes a crossing, then moved outwards by the slack, so
+    /// the test errs only towards opening the box.
+    pub(crate) fn misses(&self, b: &Aabb) -> bool {
+        let (lo, hi) = ([b.min.x, b.min.y, b.min.z], [b.max.x, b.max.y, b.max.z]);
+        let mut enter = Real::NEG_INFINITY;
+        let mut exit = Real::INFINITY;
+        for a in 0..3 {
+            let (near, far) = if self.down[a] {
+                (hi[a], lo[a])
+            } else {
+                (lo[a], hi[a])
+            };
+            let (olo, ohi) = self.origin[a];
+            // (bound − e)·(1/d) over e and 1/d in their ranges: the smallest near crossing
+            // and the largest far one (1/d has one sign along the axis)
+            let (ilo, ihi) = self.inv_dir[a];
+            let (n, f) = if self.down[a] {
+                // 1/d < 0: the product falls as (bound − e) grows
+                let dn = near - olo;
+                let df = far - ohi;
+                (
+                    dn * if dn >= 0.0 { ilo } else { ihi },
+                    df * if df >= 0.0 { ihi } else { ilo },
+                )
+            } else {
+                let dn = near - ohi;
+                let df = far - olo;
+                (
+                    dn * if dn >= 0.0 { ilo } else { ihi },
+                    df * if df >= 0.0 { ihi } else { ilo },
+                )
+            };
+            enter = greater(enter, n);
+            exit = lesser(exit, f);
+        }
+        let enter = enter - enter.abs() * SLACK;
+        let exit = exit + exit.abs() * SLACK;
+        enter > exit || exit < self.t_min || enter > self.limit
+    }
+}
+
 /// The generic (object-space) bounds of a shape, or `None` for a shape without finite bounds
 /// (the plane, or a polyhedron whose facets leave it open).
 #[must_use]

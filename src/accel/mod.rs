@@ -406,9 +406,24 @@ impl Accelerator {
         })
     }
 
+    /// The packet walk of the hierarchy (see [`Bvh::walk_packet`]); nothing for a list.
+    fn walk_packet(
+        &self,
+        rays: &[RayBox],
+        t_min: &[Real],
+        limits: &mut [Real],
+        visit: impl FnMut(u32, usize, &mut [Real]),
+    ) {
+        match &self.index {
+            Index::Bvh(bvh) => bvh.walk_packet(rays, t_min, limits, visit),
+            Index::Octree(tree) => tree.walk_packet(rays, t_min, limits, visit),
+            Index::List => {}
+        }
+    }
+
     /// [`Accelerator::nearest`] for a packet of at most [`PACKET`] rays with the same
     /// `t_min` (camera rays of neighbouring pixels): the same answers, ray by ray, with the
-    /// BVH walked once for all of them. Other structures answer ray by ray.
+    /// BVH or the octree walked once for all of them. Lists answer ray by ray.
     pub fn nearest_packet(
         &self,
         objects: &[Object],
@@ -418,12 +433,12 @@ impl Accelerator {
         out: &mut [Option<Nearest>],
     ) {
         assert!(rays.len() <= PACKET && out.len() == rays.len());
-        let Index::Bvh(bvh) = &self.index else {
+        if matches!(self.index, Index::List) {
             for (ray, out) in rays.iter().zip(out.iter_mut()) {
                 *out = self.nearest(objects, ray, t_min, formula, None);
             }
             return;
-        };
+        }
         let n = rays.len();
         let mut best: [Best; PACKET] = std::array::from_fn(|_| Best {
             t: Real::INFINITY,
@@ -443,7 +458,7 @@ impl Accelerator {
                 limits[r] = best[r].t;
             }
             let t_mins = [t_min; PACKET];
-            bvh.walk_packet(&boxes, &t_mins[..n], &mut limits[..n], |c, from, limits| {
+            self.walk_packet(&boxes, &t_mins[..n], &mut limits[..n], |c, from, limits| {
                 let c = c as usize;
                 for r in from..n {
                     if self.boxes[c].hit_between(&boxes[r], t_min, best[r].t) {
@@ -474,8 +489,8 @@ impl Accelerator {
 
     /// [`Accelerator::transmittance`] for a packet of at most [`PACKET`] feelers towards
     /// one light (from the hits of neighbouring pixels): `out[r]` is the share reaching
-    /// `origins[r]`, the same as that function gives, with the BVH walked once for all of
-    /// them. Other structures answer feeler by feeler.
+    /// `origins[r]`, the same as that function gives, with the BVH or the octree walked once
+    /// for all of them. Lists answer feeler by feeler.
     #[allow(clippy::too_many_arguments)] // the arguments of `transmittance`, and `out`
     pub fn transmittance_packet(
         &self,
@@ -489,13 +504,13 @@ impl Accelerator {
     ) {
         let n = origins.len();
         assert!(n <= PACKET && u_min.len() == n && out.len() == n);
-        let Index::Bvh(bvh) = &self.index else {
+        if matches!(self.index, Index::List) {
             for r in 0..n {
                 out[r] =
                     self.transmittance(objects, materials, origins[r], light, u_min[r], formula);
             }
             return;
-        };
+        }
         let feelers: ArrayVec<Ray, PACKET> =
             origins.iter().map(|&o| Ray::new(o, light - o)).collect();
         let mut blockers: [Blockers; PACKET] = std::array::from_fn(|_| Blockers::new());
@@ -517,7 +532,7 @@ impl Accelerator {
         }
         if !self.bounded.is_empty() {
             let boxes: ArrayVec<RayBox, PACKET> = feelers.iter().map(RayBox::new).collect();
-            bvh.walk_packet(&boxes, u_min, &mut limits[..n], |c, from, limits| {
+            self.walk_packet(&boxes, u_min, &mut limits[..n], |c, from, limits| {
                 let c = c as usize;
                 for r in from..n {
                     if !limits[r].is_nan()

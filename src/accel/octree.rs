@@ -13,8 +13,17 @@
 //! cube to the far half, so the octants come in a fixed order given by the signs of the
 //! direction), and skips every cell whose contents start beyond the nearest hit found.
 
-use super::aabb::{Aabb, RayBox, widen};
+use super::aabb::{Aabb, RayBox, Span, widen};
 use crate::real::{Real, Vec3};
+
+/// A packet of rays on its walk through the octree.
+struct Packet<'a> {
+    rays: &'a [RayBox],
+    t_min: &'a [Real],
+    all: Option<&'a Span>,
+    /// Octant order: bit k set where the first ray moves down axis k.
+    flip: usize,
+}
 
 /// No child in this octant.
 const NONE: u32 = u32::MAX;
@@ -180,6 +189,82 @@ impl Octree {
             | usize::from(ray.inv_dir.z < 0.0) << 2;
         if self.crosses(0, ray, t_min, *limit) {
             self.visit_cell(0, flip, ray, t_min, limit, &mut visit);
+        }
+    }
+
+    /// The walk of [`Octree::walk`] for a packet of rays at once, as
+    /// [`super::Bvh::walk_packet`] does it: a cell is opened when some ray of the packet meets
+    /// what it holds, and the rays before the first one that does are dropped for all of it.
+    /// `visit(i, from, limits)` is called for the items of every leaf some ray from `from`
+    /// on may meet; a NaN limit is met by no box.
+    pub fn walk_packet(
+        &self,
+        rays: &[RayBox],
+        t_min: &[Real],
+        limits: &mut [Real],
+        mut visit: impl FnMut(u32, usize, &mut [Real]),
+    ) {
+        let Some(ray) = rays.first() else {
+            return;
+        };
+        if self.cells.is_empty() {
+            return;
+        }
+        // the octants' order from the first ray's directions (any order gives the same answers)
+        let flip = usize::from(ray.down[0])
+            | usize::from(ray.down[1]) << 1
+            | usize::from(ray.down[2]) << 2;
+        let all = Span::of(rays, t_min, limits);
+        let packet = Packet {
+            rays,
+            t_min,
+            all: all.as_ref(),
+            flip,
+        };
+        if let Some(from) = self.first(&packet, 0, 0, limits) {
+            self.visit_cell_packet(&packet, 0, from, limits, &mut visit);
+        }
+    }
+
+    /// The first ray of the packet from `from` on that meets what `cell` holds before its
+    /// limit.
+    fn first(&self, p: &Packet, cell: usize, from: usize, limits: &[Real]) -> Option<usize> {
+        let b = &self.content[cell];
+        if p.all.is_some_and(|all| all.misses(b)) {
+            return None;
+        }
+        (from..p.rays.len()).find(|&r| {
+            let (e, x) = b.slabs(&p.rays[r]);
+            e <= x && x >= p.t_min[r] && e <= widen(limits[r])
+        })
+    }
+
+    fn visit_cell_packet(
+        &self,
+        p: &Packet,
+        cell: usize,
+        from: usize,
+        limits: &mut [Real],
+        visit: &mut impl FnMut(u32, usize, &mut [Real]),
+    ) {
+        super::counters::node();
+        match &self.cells[cell] {
+            Cell::Leaf { first, count } => {
+                let first = *first as usize;
+                for &i in &self.items[first..first + *count as usize] {
+                    visit(i, from, limits);
+                }
+            }
+            Cell::Inner(children) => {
+                for j in 0..8 {
+                    let child = children[j ^ p.flip];
+                    if child != NONE
+                        && let Some(f) = self.first(p, child as usize, from, limits)
+                    {
+                        self.visit_cell_packet(p, child as usize, f, limits, visit);
+                    }
+                }
+            }
         }
     }
 
