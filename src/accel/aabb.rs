@@ -267,7 +267,9 @@ impl Span {
     /// True when no ray of the span can meet `b` between t_min and the limit. Each bound is
     /// computed as [`Aabb::slabs`] computes a crossing, then moved outwards by the slack, so
     /// the test errs only towards opening the box.
+    #[inline]
     pub(crate) fn misses(&self, b: &Aabb) -> bool {
+        super::counters::box_test();
         let (lo, hi) = ([b.min.x, b.min.y, b.min.z], [b.max.x, b.max.y, b.max.z]);
         let mut enter = Real::NEG_INFINITY;
         let mut exit = Real::INFINITY;
@@ -304,6 +306,38 @@ impl Span {
         let exit = exit + exit.abs() * SLACK;
         enter > exit || exit < self.t_min || enter > self.limit
     }
+}
+
+/// Whether ray r of a packet meets `b` after `t_min[r]` and not beyond `limits[r]`.
+#[inline]
+fn meets(b: &Aabb, rays: &[RayBox], t_min: &[Real], limits: &[Real], r: usize) -> bool {
+    let (e, x) = b.slabs(&rays[r]);
+    e <= x && x >= t_min[r] && e <= widen(limits[r])
+}
+
+/// The first ray of a packet, from index `from` on, that meets `b` after its t_min and not
+/// beyond its limit. Ray `from` is tried alone first (it met the parent box, and in a
+/// coherent packet it usually meets this one too); if it misses, the packet's [`Span`] may
+/// turn the box down for every ray at once; only then are the others tried one by one.
+#[inline]
+pub(crate) fn first_meeting(
+    b: &Aabb,
+    rays: &[RayBox],
+    t_min: &[Real],
+    limits: &[Real],
+    span: Option<&Span>,
+    from: usize,
+) -> Option<usize> {
+    if from >= rays.len() {
+        return None;
+    }
+    if meets(b, rays, t_min, limits, from) {
+        return Some(from);
+    }
+    if span.is_some_and(|s| s.misses(b)) {
+        return None;
+    }
+    (from + 1..rays.len()).find(|&r| meets(b, rays, t_min, limits, r))
 }
 
 /// The generic (object-space) bounds of a shape, or `None` for a shape without finite bounds

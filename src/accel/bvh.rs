@@ -15,7 +15,7 @@
 
 use arrayvec::ArrayVec;
 
-use super::aabb::{Aabb, RayBox, Span, widen};
+use super::aabb::{Aabb, RayBox, Span, first_meeting, widen};
 use crate::real::Real;
 
 /// One node of the flattened tree: an inner node's left child follows it, its right child is
@@ -192,15 +192,9 @@ impl Bvh {
         }
         let all = Span::of(rays, t_min, limits);
         // the first ray from `from` on that meets node's box before its limit
-        let first = |node: u32, from: usize, limits: &[Real]| -> Option<usize> {
+        let first = |node: u32, from: usize, limits: &[Real]| {
             let b = &self.nodes[node as usize].bounds;
-            if all.as_ref().is_some_and(|all| all.misses(b)) {
-                return None;
-            }
-            (from..rays.len()).find(|&r| {
-                let (e, x) = b.slabs(&rays[r]);
-                e <= x && x >= t_min[r] && e <= widen(limits[r])
-            })
+            first_meeting(b, rays, t_min, limits, all.as_ref(), from)
         };
         let Some(from) = first(0, 0, limits) else {
             return;
@@ -266,11 +260,7 @@ impl Bvh {
     ) {
         let n = &self.nodes[node as usize];
         super::counters::node();
-        let b = &n.bounds;
-        let Some(from) = (from..rays.len()).find(|&r| {
-            let (e, x) = b.slabs(&rays[r]);
-            e <= x && x >= t_min[r] && e <= widen(limits[r])
-        }) else {
+        let Some(from) = first_meeting(&n.bounds, rays, t_min, limits, None, from) else {
             return;
         };
         if n.count > 0 {

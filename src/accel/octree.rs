@@ -13,7 +13,7 @@
 //! cube to the far half, so the octants come in a fixed order given by the signs of the
 //! direction), and skips every cell whose contents start beyond the nearest hit found.
 
-use super::aabb::{Aabb, RayBox, Span, widen};
+use super::aabb::{Aabb, RayBox, Span, first_meeting, widen};
 use crate::real::{Real, Vec3};
 
 /// A packet of rays on its walk through the octree.
@@ -228,15 +228,9 @@ impl Octree {
 
     /// The first ray of the packet from `from` on that meets what `cell` holds before its
     /// limit.
+    #[inline]
     fn first(&self, p: &Packet, cell: usize, from: usize, limits: &[Real]) -> Option<usize> {
-        let b = &self.content[cell];
-        if p.all.is_some_and(|all| all.misses(b)) {
-            return None;
-        }
-        (from..p.rays.len()).find(|&r| {
-            let (e, x) = b.slabs(&p.rays[r]);
-            e <= x && x >= p.t_min[r] && e <= widen(limits[r])
-        })
+        first_meeting(&self.content[cell], p.rays, p.t_min, limits, p.all, from)
     }
 
     fn visit_cell_packet(
