@@ -26,6 +26,14 @@
 //! Nearest-hit and feeler queries go through the acceleration structure chosen by
 //! [`Options::accel`] (notes: "Computational Aspects"; see [`crate::accel`]); every choice
 //! gives the same image.
+//!
+//! With a BVH or an octree and one ray a pixel, a tile is traced in blocks of [`BLOCK`] ×
+//! [`BLOCK`] pixels: their camera rays go through the structure as one packet, and so do
+//! their feelers towards each light ([`crate::accel::Accelerator::nearest_packet`],
+//! [`crate::accel::Accelerator::transmittance_packet`]). Each pixel is then shaded as
+//! [`Tracer::trace`] shades it, with the same sums in the same order, and its mirror and
+//! transmitted rays are traced one by one: the packets change the time, not a bit of the
+//! image.
 
 use std::borrow::Cow;
 

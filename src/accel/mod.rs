@@ -25,6 +25,14 @@
 //! ch05_reflection_refraction scene.toml --accel octree
 //! ```
 //!
+//! The BVH and the octree also answer *packets* of up to [`PACKET`] rays at once (the camera
+//! rays of a 4 × 4 block of pixels, or their feelers towards one light): the structure is
+//! walked once for all of them, a node opened when some ray of the packet meets its box.
+//! Two classic devices keep that cheap: the rays before the first one that meets a box are
+//! dropped for all of its subtree (Wald's "first active ray"), and a box that the span of the
+//! packet's origins and directions cannot meet is turned down with one interval test
+//! (`Span` in [`aabb`]). Each ray still gets exactly its own answer.
+//!
 //! How much each one saves can be counted: a build with the `counters` feature ([`counters`])
 //! adds the queries, node visits, box tests and object tests to `--stats`.
 
