@@ -203,6 +203,9 @@ pub struct Nearest {
     pub object: usize,
 }
 
+/// Up to one value per pixel of a block (see [`Tracer::block`]).
+type Block<T> = ArrayVec<T, { crate::accel::PACKET }>;
+
 /// A hit as shading sees it.
 struct Surface<'s> {
     /// The hit (object space t, world normal).
@@ -473,15 +476,11 @@ impl<'a> Tracer<'a> {
             && matches!(self.accel.kind(), Accel::Bvh | Accel::Octree)
     }
 
-    /// The colours of the pixels x0..x1 of row y0..y1 (at most [`crate::accel::PACKET`] of
-    /// them), written to `out` row after row: the same colours as [`Tracer::pixel`] gives,
-    /// with the camera rays walked through the BVH as one packet when [`Tracer::packets`].
-    fn block(
-        &self,
-        (x0, x1): (u32, u32),
-        (y0, y1): (u32, u32),
-        stats: &mut Stats,
-    ) -> ArrayVec<Vec3, { crate::accel::PACKET }> {
+    /// The colours of the pixels x0..x1 of rows y0..y1 (at most [`crate::accel::PACKET`] of
+    /// them), row after row: the same colours as [`Tracer::pixel`] gives, with the camera
+    /// rays, and then the feelers towards each light, walked through the structure as
+    /// packets when [`Tracer::packets`].
+    fn block(&self, (x0, x1): (u32, u32), (y0, y1): (u32, u32), stats: &mut Stats) -> Block<Vec3> {
         let mut out = ArrayVec::new();
         if !self.packets() {
             for y in y0..y1 {
@@ -491,7 +490,7 @@ impl<'a> Tracer<'a> {
             }
             return out;
         }
-        let rays: ArrayVec<Ray, { crate::accel::PACKET }> = (y0..y1)
+        let rays: Block<Ray> = (y0..y1)
             .flat_map(|y| (x0..x1).map(move |x| (x, y)))
             .map(|(x, y)| self.camera.pixel_ray(x, y, 0.5, 0.5))
             .collect();
@@ -514,12 +513,12 @@ impl<'a> Tracer<'a> {
         }
         // Tracer::shade for the whole block, with the feelers towards each light traced as
         // one packet: the same sums, in the same order, pixel by pixel
-        let surfaces: ArrayVec<Option<Surface>, { crate::accel::PACKET }> = rays
+        let surfaces: Block<Option<Surface>> = rays
             .iter()
             .zip(nearest.iter())
             .map(|(ray, n)| n.as_ref().map(|n| self.surface(ray, n)))
             .collect();
-        let mut color: ArrayVec<Vec3, { crate::accel::PACKET }> = surfaces
+        let mut color: Block<Vec3> = surfaces
             .iter()
             .map(|s| match s {
                 Some(s) => shading::ambient(s.material, self.scene.ambient),
@@ -528,10 +527,11 @@ impl<'a> Tracer<'a> {
             .collect();
         for light in &self.scene.lights {
             let mut local = [None; crate::accel::PACKET];
+            // the pixels that send a feeler, with its origin and u_min
             let (mut who, mut origins, mut u_min) = (
-                ArrayVec::<usize, { crate::accel::PACKET }>::new(),
-                ArrayVec::<Vec3, { crate::accel::PACKET }>::new(),
-                ArrayVec::<Real, { crate::accel::PACKET }>::new(),
+                Block::<usize>::new(),
+                Block::<Vec3>::new(),
+                Block::<Real>::new(),
             );
             for (i, s) in surfaces.iter().enumerate() {
                 let Some((l, feeler)) = s.as_ref().and_then(|s| self.direct(s, light, stats))
@@ -546,15 +546,17 @@ impl<'a> Tracer<'a> {
                 }
             }
             let mut share = [1.0; crate::accel::PACKET];
-            self.accel.transmittance_packet(
-                &self.scene.objects,
-                &self.scene.materials,
-                &origins,
-                light.position,
-                &u_min,
-                o.formula,
-                &mut share[..who.len()],
-            );
+            if !who.is_empty() {
+                self.accel.transmittance_packet(
+                    &self.scene.objects,
+                    &self.scene.materials,
+                    &origins,
+                    light.position,
+                    &u_min,
+                    o.formula,
+                    &mut share[..who.len()],
+                );
+            }
             for (k, &i) in who.iter().enumerate() {
                 if let Some(l) = &mut local[i] {
                     *l *= share[k];

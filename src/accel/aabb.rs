@@ -178,10 +178,10 @@ impl Aabb {
     /// on each axis t = (bound − e)/d, the entry is the largest near crossing and the exit the
     /// smallest far one; the interval is empty (t_enter > t_exit) when the ray misses.
     ///
-    /// Rounding is allowed for on the exit only, which is enlarged by a relative [`SLACK`]
+    /// Rounding is allowed for on the exit only, which is enlarged by a relative slack (16ε)
     /// (a positive exit grows; a negative one lies behind the origin and is a miss either
     /// way). The entry is left as computed, up to 3ε above the exact one: a caller compares it
-    /// with a *widened* limit ([`widen`]), and t_enter ≤ t_exit·(1 + SLACK) holds whenever the
+    /// with a *widened* limit (`widen`), and t_enter ≤ t_exit·(1 + SLACK) holds whenever the
     /// exact entry is at most the exact exit. So a box the exact ray meets is always met.
     #[inline]
     #[must_use]
@@ -206,7 +206,7 @@ impl Aabb {
         (enter, exit * (1.0 + SLACK))
     }
 
-    /// True when the ray meets the box somewhere in [lo, hi] (hi widened by [`widen`]).
+    /// True when the ray meets the box somewhere in [lo, hi] (hi widened by the slack).
     #[inline]
     #[must_use]
     pub fn hit_between(&self, ray: &RayBox, lo: Real, hi: Real) -> bool {

@@ -432,6 +432,9 @@ impl Accelerator {
     /// [`Accelerator::nearest`] for a packet of at most [`PACKET`] rays with the same
     /// `t_min` (camera rays of neighbouring pixels): the same answers, ray by ray, with the
     /// BVH or the octree walked once for all of them. Lists answer ray by ray.
+    ///
+    /// # Panics
+    /// If there are more than [`PACKET`] rays, or `out` is not as long as `rays`.
     pub fn nearest_packet(
         &self,
         objects: &[Object],
@@ -499,6 +502,10 @@ impl Accelerator {
     /// one light (from the hits of neighbouring pixels): `out[r]` is the share reaching
     /// `origins[r]`, the same as that function gives, with the BVH or the octree walked once
     /// for all of them. Lists answer feeler by feeler.
+    ///
+    /// # Panics
+    /// If there are more than [`PACKET`] feelers, or `u_min` and `out` are not as long as
+    /// `origins`.
     #[allow(clippy::too_many_arguments)] // the arguments of `transmittance`, and `out`
     pub fn transmittance_packet(
         &self,
