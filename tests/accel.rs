@@ -3,7 +3,7 @@
 
 use whitted::accel::aabb::{RayBox, polyhedron_bounds, world_bounds};
 use whitted::accel::extents::{Footprint, footprint};
-use whitted::accel::{Aabb, Accel, Accelerator, Bvh, scatter};
+use whitted::accel::{Aabb, Accel, Accelerator, Bvh, Octree, scatter};
 use whitted::ray::Ray;
 use whitted::real::{Real, Vec3, real, vec3};
 use whitted::render::{self, Framebuffer, Options, Stage, Stats, TILE, View};
@@ -649,5 +649,44 @@ fn packets_answer_as_single_rays_do() {
     assert!(
         checked.0 > 500 && checked.1 > 100 && checked.2 > 5,
         "{checked:?}"
+    );
+}
+
+/// The octree's cube starts at the scene's lower corner: a flat layer of objects (spheres on a
+/// floor) is not cut through its middle by the first split, which would copy every object
+/// into two cells. A cube centred on the layer does exactly that.
+#[test]
+fn a_flat_layer_is_not_copied_into_two_halves() {
+    // 400 small boxes on a 20 × 20 grid, all in the layer 0 ≤ y ≤ 0.7
+    let boxes: Vec<Aabb> = (0..400)
+        .map(|i| {
+            let (x, z) = ((i % 20) as f64 * 10.0, (i / 20) as f64 * 10.0);
+            Aabb {
+                min: vec3(x, 0.0, z),
+                max: vec3(x, 0.0, z) + vec3(0.7, 0.7, 0.7),
+            }
+        })
+        .collect();
+    let tree = Octree::build(&boxes, 4);
+    let (fullest, pairs) = tree.leaf_load();
+    assert!(fullest <= 4, "{fullest}");
+    // a box may still straddle a vertical split now and then, but not every box
+    assert!(
+        pairs < boxes.len() * 5 / 4,
+        "{pairs} (object, leaf) pairs for 400 boxes"
+    );
+    // and wherever the layer lies: moved down by half its height, around y = 0, the same
+    // boxes land in as many cells (the old cube, centred on the scene, gave 800 pairs here)
+    let centred: Vec<Aabb> = boxes
+        .iter()
+        .map(|b| Aabb {
+            min: b.min - vec3(0.0, 0.35, 0.0),
+            max: b.max - vec3(0.0, 0.35, 0.0),
+        })
+        .collect();
+    let (_, centred_pairs) = Octree::build(&centred, 4).leaf_load();
+    assert_eq!(
+        centred_pairs, pairs,
+        "the cube follows the layer wherever it lies"
     );
 }

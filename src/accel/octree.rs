@@ -1,7 +1,9 @@
 //! Space subdivision by an octree (notes: "Computational Aspects", item 2).
 //!
 //! The notes: enclose the scene in a cube, and subdivide the cube into smaller ones until each
-//! holds at most a preset number k of surfaces, eliminating the cubes void of surfaces. Here a
+//! holds at most a preset number k of surfaces, eliminating the cubes void of surfaces. The
+//! cube here starts at the scene's lower corner (centred, its first split would cut a flat
+//! scene, such as objects resting on a floor, through the middle of its layer). Here a
 //! cell is split into its eight octants while it holds more than k objects (an object belongs
 //! to every cell its box overlaps), down to a maximum depth; a split that would leave every
 //! octant as crowded as its parent, or copy the objects into more than three octants on
@@ -69,15 +71,18 @@ impl Octree {
     #[must_use]
     pub fn build(boxes: &[Aabb], k: usize) -> Self {
         let all = boxes.iter().fold(Aabb::EMPTY, |b, x| b.union(x));
-        // the enclosing cube, a little larger than the scene
+        // The enclosing cube, a little larger than the scene, from the scene's lower corner.
+        // (Centred on the scene, its first split would cut a flat scene, such as spheres
+        // resting on a floor, through the middle of its layer, and every object would be
+        // copied into both halves.)
         let root = if boxes.is_empty() {
             Aabb::EMPTY
         } else {
-            let half = (all.max - all.min).max_element() * 0.5 * 1.001;
-            let c = all.centre();
+            let side = (all.max - all.min).max_element() * 1.001;
+            let min = all.min - (all.max - all.min) * 0.0005;
             Aabb {
-                min: c - Vec3::splat(half),
-                max: c + Vec3::splat(half),
+                min,
+                max: min + Vec3::splat(side),
             }
             .union(&all)
         };
