@@ -178,11 +178,11 @@ impl Aabb {
     /// on each axis t = (bound − e)/d, the entry is the largest near crossing and the exit the
     /// smallest far one; the interval is empty (t_enter > t_exit) when the ray misses.
     ///
-    /// Rounding is allowed for on the exit only, which is enlarged by a relative slack (16ε)
-    /// (a positive exit grows; a negative one lies behind the origin and is a miss either
-    /// way). The entry is left as computed, up to 3ε above the exact one: a caller compares it
-    /// with a *widened* limit (`widen`), and t_enter ≤ t_exit·(1 + SLACK) holds whenever the
-    /// exact entry is at most the exact exit. So a box the exact ray meets is always met.
+    /// Rounding is allowed for on the exit only, which is moved towards +∞ by a relative
+    /// slack (16ε). The entry is left as computed, within 3ε of the exact one: a caller
+    /// compares it with a *widened* limit (`widen`), and the widened exit is at least the
+    /// computed entry whenever the exact entry is at most the exact exit. So a box the exact
+    /// ray meets is always met.
     #[inline]
     #[must_use]
     pub fn slabs(&self, ray: &RayBox) -> (Real, Real) {
@@ -203,7 +203,7 @@ impl Aabb {
             lesser((fx - o.x) * inv.x, (fy - o.y) * inv.y),
             (fz - o.z) * inv.z,
         );
-        (enter, exit * (1.0 + SLACK))
+        (enter, exit + exit.abs() * SLACK)
     }
 
     /// True when the ray meets the box somewhere in [lo, hi] (hi widened by the slack).
