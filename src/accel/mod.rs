@@ -196,6 +196,28 @@ struct Best {
 }
 
 impl Best {
+    /// No hit yet.
+    #[inline]
+    fn new() -> Self {
+        Self {
+            t: Real::INFINITY,
+            object: usize::MAX,
+            hit: None,
+        }
+    }
+
+    /// The nearest hit found, its normal carried to the world.
+    #[inline]
+    fn nearest(self, objects: &[Object]) -> Option<Nearest> {
+        self.hit.map(|mut hit| {
+            hit.normal = objects[self.object].placement.normal_to_world(hit.normal);
+            Nearest {
+                hit,
+                object: self.object,
+            }
+        })
+    }
+
     /// Tests object `i` and keeps its first hit after `t_min` if it comes before the best so
     /// far (equal t: the lower index wins, as in a scan in scene order).
     #[inline]
@@ -243,6 +265,26 @@ impl Blockers {
             }
             self.spill.push(i);
         }
+    }
+
+    /// Takes note of object `i`, whose hits with a feeler are `hits`: false when it blocks
+    /// the feeler and is opaque (the share is then 0, nothing more to learn); a translucent
+    /// object that blocks it is kept for [`Blockers::share`].
+    fn meet(
+        &mut self,
+        hits: &crate::shapes::Hits,
+        i: u32,
+        u_min: Real,
+        objects: &[Object],
+        materials: &[Material],
+    ) -> bool {
+        if crate::shadow::blocks(hits, u_min) {
+            if materials[objects[i as usize].material].transmission == 0.0 {
+                return false;
+            }
+            self.push(i);
+        }
+        true
     }
 
     /// The product of the transmissions, in increasing object index, each object once.
@@ -351,27 +393,12 @@ impl Accelerator {
         pixel: Option<(u32, u32)>,
     ) -> Option<Nearest> {
         counters::query();
-        let mut best = Best {
-            t: Real::INFINITY,
-            object: usize::MAX,
-            hit: None,
-        };
-        for &i in &self.unbounded {
-            best.consider(&objects[i as usize], i as usize, ray, t_min, formula);
-        }
+        let mut best = Best::new();
+        self.consider_unbounded(objects, ray, t_min, formula, &mut best);
         if !self.bounded.is_empty() {
             let rb = RayBox::new(ray);
             let test = |c: u32, best: &mut Best| {
-                let c = c as usize;
-                if self.boxes[c].hit_between(&rb, t_min, best.t) {
-                    best.consider(
-                        &self.local[c],
-                        self.bounded[c] as usize,
-                        ray,
-                        t_min,
-                        formula,
-                    );
-                }
+                self.consider_candidate(c as usize, &rb, ray, t_min, formula, best);
             };
             match &self.index {
                 Index::List => match (&self.extents, pixel) {
@@ -405,13 +432,70 @@ impl Accelerator {
                 }
             }
         }
-        best.hit.map(|mut hit| {
-            hit.normal = objects[best.object].placement.normal_to_world(hit.normal);
-            Nearest {
-                hit,
-                object: best.object,
-            }
-        })
+        best.nearest(objects)
+    }
+
+    /// Tests the objects without a box, which every ray is tested against.
+    #[inline]
+    fn consider_unbounded(
+        &self,
+        objects: &[Object],
+        ray: &Ray,
+        t_min: Real,
+        formula: Formula,
+        best: &mut Best,
+    ) {
+        for &i in &self.unbounded {
+            best.consider(&objects[i as usize], i as usize, ray, t_min, formula);
+        }
+    }
+
+    /// Tests bounded candidate `c` (a position in [`Accelerator::local`]) if the ray meets its
+    /// box before the best hit so far.
+    #[inline]
+    fn consider_candidate(
+        &self,
+        c: usize,
+        rb: &RayBox,
+        ray: &Ray,
+        t_min: Real,
+        formula: Formula,
+        best: &mut Best,
+    ) {
+        if self.boxes[c].hit_between(rb, t_min, best.t) {
+            best.consider(
+                &self.local[c],
+                self.bounded[c] as usize,
+                ray,
+                t_min,
+                formula,
+            );
+        }
+    }
+
+    /// Takes note of bounded candidate `c` for a feeler that meets its box: false when it
+    /// blocks the feeler and is opaque (see [`Blockers::meet`]).
+    #[allow(clippy::too_many_arguments)] // the feeler, its box test, and where to take note
+    #[inline]
+    fn meet_candidate(
+        &self,
+        c: usize,
+        rb: &RayBox,
+        feeler: &Ray,
+        u_min: Real,
+        formula: Formula,
+        blockers: &mut Blockers,
+        objects: &[Object],
+        materials: &[Material],
+    ) -> bool {
+        !self.boxes[c].hit_between(rb, u_min, 1.0)
+            || blockers.meet(
+                &self.local[c].hits(feeler, formula),
+                self.bounded[c],
+                u_min,
+                objects,
+                materials,
+            )
     }
 
     /// The packet walk of the hierarchy (see [`Bvh::walk_packet`]); nothing for a list.
@@ -451,16 +535,10 @@ impl Accelerator {
             return;
         }
         let n = rays.len();
-        let mut best: [Best; PACKET] = std::array::from_fn(|_| Best {
-            t: Real::INFINITY,
-            object: usize::MAX,
-            hit: None,
-        });
+        let mut best: [Best; PACKET] = std::array::from_fn(|_| Best::new());
         for (ray, best) in rays.iter().zip(best.iter_mut()) {
             counters::query();
-            for &i in &self.unbounded {
-                best.consider(&objects[i as usize], i as usize, ray, t_min, formula);
-            }
+            self.consider_unbounded(objects, ray, t_min, formula, best);
         }
         if !self.bounded.is_empty() {
             let boxes: ArrayVec<RayBox, PACKET> = rays.iter().map(RayBox::new).collect();
@@ -472,29 +550,13 @@ impl Accelerator {
             self.walk_packet(&boxes, &t_mins[..n], &mut limits[..n], |c, from, limits| {
                 let c = c as usize;
                 for r in from..n {
-                    if self.boxes[c].hit_between(&boxes[r], t_min, best[r].t) {
-                        best[r].consider(
-                            &self.local[c],
-                            self.bounded[c] as usize,
-                            &rays[r],
-                            t_min,
-                            formula,
-                        );
-                        limits[r] = best[r].t;
-                    }
+                    self.consider_candidate(c, &boxes[r], &rays[r], t_min, formula, &mut best[r]);
+                    limits[r] = best[r].t;
                 }
             });
         }
-        for r in 0..n {
-            out[r] = best[r].hit.map(|mut hit| {
-                hit.normal = objects[best[r].object]
-                    .placement
-                    .normal_to_world(hit.normal);
-                Nearest {
-                    hit,
-                    object: best[r].object,
-                }
-            });
+        for (out, best) in out.iter_mut().zip(best) {
+            *out = best.nearest(objects);
         }
     }
 
@@ -531,17 +593,13 @@ impl Accelerator {
         let mut blockers: [Blockers; PACKET] = std::array::from_fn(|_| Blockers::new());
         // 1 while a feeler is open; NaN once an opaque object blocks it (see `walk_packet`)
         let mut limits = [1.0; PACKET];
-        let opaque = |i: u32| materials[objects[i as usize].material].transmission == 0.0;
         for r in 0..n {
             counters::query();
             for &i in &self.unbounded {
-                if crate::shadow::blocks(&objects[i as usize].hits(&feelers[r], formula), u_min[r])
-                {
-                    if opaque(i) {
-                        limits[r] = Real::NAN;
-                        break;
-                    }
-                    blockers[r].push(i);
+                let hits = objects[i as usize].hits(&feelers[r], formula);
+                if !blockers[r].meet(&hits, i, u_min[r], objects, materials) {
+                    limits[r] = Real::NAN;
+                    break;
                 }
             }
         }
@@ -551,17 +609,18 @@ impl Accelerator {
                 let c = c as usize;
                 for r in from..n {
                     if !limits[r].is_nan()
-                        && self.boxes[c].hit_between(&boxes[r], u_min[r], 1.0)
-                        && crate::shadow::blocks(
-                            &self.local[c].hits(&feelers[r], formula),
+                        && !self.meet_candidate(
+                            c,
+                            &boxes[r],
+                            &feelers[r],
                             u_min[r],
+                            formula,
+                            &mut blockers[r],
+                            objects,
+                            materials,
                         )
                     {
-                        if opaque(self.bounded[c]) {
-                            limits[r] = Real::NAN;
-                        } else {
-                            blockers[r].push(self.bounded[c]);
-                        }
+                        limits[r] = Real::NAN;
                     }
                 }
             });
@@ -591,18 +650,9 @@ impl Accelerator {
         counters::query();
         let feeler = Ray::new(origin, light - origin);
         let mut blockers = Blockers::new();
-        // false: an opaque object blocks the light, nothing more to learn
-        let meet = |hits: crate::shapes::Hits, i: u32, blockers: &mut Blockers| -> bool {
-            if crate::shadow::blocks(&hits, u_min) {
-                if materials[objects[i as usize].material].transmission == 0.0 {
-                    return false;
-                }
-                blockers.push(i);
-            }
-            true
-        };
         for &i in &self.unbounded {
-            if !meet(objects[i as usize].hits(&feeler, formula), i, &mut blockers) {
+            let hits = objects[i as usize].hits(&feeler, formula);
+            if !blockers.meet(&hits, i, u_min, objects, materials) {
                 return 0.0;
             }
         }
@@ -610,18 +660,11 @@ impl Accelerator {
             let rb = RayBox::new(&feeler);
             let mut blocked = false;
             let mut test = |c: u32, blockers: &mut Blockers| -> bool {
-                let c = c as usize;
-                if self.boxes[c].hit_between(&rb, u_min, 1.0)
-                    && !meet(
-                        self.local[c].hits(&feeler, formula),
-                        self.bounded[c],
-                        blockers,
-                    )
-                {
-                    blocked = true;
-                    return false;
-                }
-                true
+                let open = self.meet_candidate(
+                    c as usize, &rb, &feeler, u_min, formula, blockers, objects, materials,
+                );
+                blocked |= !open;
+                open
             };
             match &self.index {
                 Index::List => {
