@@ -308,13 +308,6 @@ impl Span {
     }
 }
 
-/// Whether ray r of a packet meets `b` after `t_min[r]` and not beyond `limits[r]`.
-#[inline]
-fn meets(b: &Aabb, rays: &[RayBox], t_min: &[Real], limits: &[Real], r: usize) -> bool {
-    let (e, x) = b.slabs(&rays[r]);
-    e <= x && x >= t_min[r] && e <= widen(limits[r])
-}
-
 /// The first ray of a packet, from index `from` on, that meets `b` after its t_min and not
 /// beyond its limit. The packet's [`Span`] may turn the box down for every ray at once;
 /// otherwise the rays are tried one by one. (Trying ray `from` before the span, since it
@@ -332,7 +325,7 @@ pub(crate) fn first_meeting(
     if span.is_some_and(|s| s.misses(b)) {
         return None;
     }
-    (from..rays.len()).find(|&r| meets(b, rays, t_min, limits, r))
+    (from..rays.len()).find(|&r| b.hit_between(&rays[r], t_min[r], limits[r]))
 }
 
 /// The generic (object-space) bounds of a shape, or `None` for a shape without finite bounds

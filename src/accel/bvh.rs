@@ -110,8 +110,7 @@ impl Bvh {
             return;
         }
         let mut node = 0u32;
-        let (e, x) = self.nodes[0].bounds.slabs(ray);
-        if !(e <= x && x >= t_min && e <= widen(*limit)) {
+        if !self.nodes[0].bounds.hit_between(ray, t_min, *limit) {
             return;
         }
         // the far children put aside, with the ray's entry into their boxes (an `ArrayVec`
@@ -284,8 +283,7 @@ impl Bvh {
     ) -> bool {
         let n = &self.nodes[node as usize];
         super::counters::node();
-        let (e, x) = n.bounds.slabs(ray);
-        if !(e <= x && x >= t_min && e <= widen(*limit)) {
+        if !n.bounds.hit_between(ray, t_min, *limit) {
             return true;
         }
         if n.count > 0 {

@@ -15,7 +15,7 @@
 //! cube to the far half, so the octants come in a fixed order given by the signs of the
 //! direction), and skips every cell whose contents start beyond the nearest hit found.
 
-use super::aabb::{Aabb, RayBox, Span, first_meeting, widen};
+use super::aabb::{Aabb, RayBox, Span, first_meeting};
 use crate::real::{Real, Vec3};
 
 /// A packet of rays on its walk through the octree.
@@ -270,8 +270,7 @@ impl Octree {
     /// Whether the ray meets what cell `cell` holds, between t_min and the limit.
     #[inline]
     fn crosses(&self, cell: usize, ray: &RayBox, t_min: Real, limit: Real) -> bool {
-        let (e, x) = self.content[cell].slabs(ray);
-        e <= x && x >= t_min && e <= widen(limit)
+        self.content[cell].hit_between(ray, t_min, limit)
     }
 
     fn visit_cell(
