@@ -174,26 +174,27 @@ impl Bvh {
 
     /// The walk of [`Bvh::walk`] for a packet of rays at once (Wald's "first active ray"):
     /// a node is opened when any ray of the packet meets its box, and the rays before the
-    /// first one that does are dropped for its whole subtree. `visit(k, from, limits)` is
-    /// called for every position k of a leaf some ray from index `from` on may meet (rays
-    /// before `from` miss it); ray r looks for hits after `t_min[r]` up to `limits[r]`, which
+    /// first one that does are dropped for its whole subtree. `visit(k, from, limits, alone)`
+    /// is called for every position k of a leaf some ray from index `from` on may meet (rays
+    /// before `from` miss it; `alone`: k is the leaf's only position, whose box is the
+    /// leaf's, so ray `from` meets it); ray r looks for hits after `t_min[r]` up to `limits[r]`, which
     /// `visit` may shrink, or set to NaN when the ray needs nothing more (a NaN limit is met
-    /// by no box).
+    /// by no box). `all` is the packet's [`Span`] for these limits, if it has one.
     pub fn walk_packet(
         &self,
         rays: &[RayBox],
         t_min: &[Real],
         limits: &mut [Real],
-        mut visit: impl FnMut(u32, usize, &mut [Real]),
+        all: Option<&Span>,
+        mut visit: impl FnMut(u32, usize, &mut [Real], bool),
     ) {
         if self.nodes.is_empty() {
             return;
         }
-        let all = Span::of(rays, t_min, limits);
         // the first ray from `from` on that meets node's box before its limit
         let first = |node: u32, from: usize, limits: &[Real]| {
             let b = &self.nodes[node as usize].bounds;
-            first_meeting(b, rays, t_min, limits, all.as_ref(), from)
+            first_meeting(b, rays, t_min, limits, all, from)
         };
         let Some(from) = first(0, 0, limits) else {
             return;
@@ -206,7 +207,7 @@ impl Bvh {
             if n.count > 0 {
                 let start = n.index;
                 for k in start..start + n.count {
-                    visit(k, from, limits);
+                    visit(k, from, limits, n.count == 1);
                 }
             } else {
                 let (l, r) = (node + 1, n.index);
@@ -255,7 +256,7 @@ impl Bvh {
         rays: &[RayBox],
         t_min: &[Real],
         limits: &mut [Real],
-        visit: &mut impl FnMut(u32, usize, &mut [Real]),
+        visit: &mut impl FnMut(u32, usize, &mut [Real], bool),
     ) {
         let n = &self.nodes[node as usize];
         super::counters::node();
@@ -264,7 +265,7 @@ impl Bvh {
         };
         if n.count > 0 {
             for k in n.index..n.index + n.count {
-                visit(k, from, limits);
+                visit(k, from, limits, n.count == 1);
             }
             return;
         }

@@ -48,7 +48,7 @@ use std::time::Instant;
 use arrayvec::ArrayVec;
 
 pub use aabb::Aabb;
-use aabb::RayBox;
+use aabb::{RayBox, Span, first_meeting};
 pub use bvh::Bvh;
 pub use extents::Extents;
 pub use octree::Octree;
@@ -330,7 +330,14 @@ impl Accelerator {
             }
         }
         let index = match kind {
-            Accel::Octree => Index::Octree(Octree::build(&boxes, OCTREE_K)),
+            Accel::Octree => {
+                let mut tree = Octree::build(&boxes, OCTREE_K);
+                // store the candidates in the order the leaves name them
+                let order = tree.renumber(boxes.len());
+                bounded = order.iter().map(|&k| bounded[k as usize]).collect();
+                boxes = order.iter().map(|&k| boxes[k as usize]).collect();
+                Index::Octree(tree)
+            }
             Accel::Bvh => {
                 let bvh = Bvh::build(&boxes);
                 // store the candidates in leaf order
@@ -475,40 +482,55 @@ impl Accelerator {
 
     /// Takes note of bounded candidate `c` for a feeler that meets its box: false when it
     /// blocks the feeler and is opaque (see [`Blockers::meet`]).
-    #[allow(clippy::too_many_arguments)] // the feeler, its box test, and where to take note
     #[inline]
     fn meet_candidate(
         &self,
         c: usize,
-        rb: &RayBox,
         feeler: &Ray,
         u_min: Real,
         formula: Formula,
         blockers: &mut Blockers,
-        objects: &[Object],
-        materials: &[Material],
+        (objects, materials): (&[Object], &[Material]),
     ) -> bool {
-        !self.boxes[c].hit_between(rb, u_min, 1.0)
-            || blockers.meet(
-                &self.local[c].hits(feeler, formula),
-                self.bounded[c],
-                u_min,
-                objects,
-                materials,
-            )
+        blockers.meet(
+            &self.local[c].hits(feeler, formula),
+            self.bounded[c],
+            u_min,
+            objects,
+            materials,
+        )
     }
 
     /// The packet walk of the hierarchy (see [`Bvh::walk_packet`]); nothing for a list.
+    /// `visit(c, from, limits)` is called for each candidate c whose box some ray from `from`
+    /// on meets (ray `from` does). Where a leaf holds several candidates, each is screened
+    /// first: the packet's span may turn its box down for every ray in one test, and the
+    /// rays before the first that meets it are dropped (an octree leaf holds candidates
+    /// far from most of the packet's rays).
     fn walk_packet(
         &self,
         rays: &[RayBox],
         t_min: &[Real],
         limits: &mut [Real],
-        visit: impl FnMut(u32, usize, &mut [Real]),
+        mut visit: impl FnMut(u32, usize, &mut [Real]),
     ) {
+        let all = Span::of(rays, t_min, limits);
+        let all = all.as_ref();
+        let screened = |c: u32, from, limits: &mut [Real], alone| {
+            let from = if alone {
+                from
+            } else {
+                let b = &self.boxes[c as usize];
+                match first_meeting(b, rays, t_min, limits, all, from) {
+                    Some(f) => f,
+                    None => return,
+                }
+            };
+            visit(c, from, limits);
+        };
         match &self.index {
-            Index::Bvh(bvh) => bvh.walk_packet(rays, t_min, limits, visit),
-            Index::Octree(tree) => tree.walk_packet(rays, t_min, limits, visit),
+            Index::Bvh(bvh) => bvh.walk_packet(rays, t_min, limits, all, screened),
+            Index::Octree(tree) => tree.walk_packet(rays, t_min, limits, all, screened),
             Index::List => {}
         }
     }
@@ -604,26 +626,44 @@ impl Accelerator {
             }
         }
         if !self.bounded.is_empty() {
-            let boxes: ArrayVec<RayBox, PACKET> = feelers.iter().map(RayBox::new).collect();
-            self.walk_packet(&boxes, u_min, &mut limits[..n], |c, from, limits| {
-                let c = c as usize;
-                for r in from..n {
-                    if !limits[r].is_nan()
-                        && !self.meet_candidate(
-                            c,
-                            &boxes[r],
-                            &feelers[r],
-                            u_min[r],
-                            formula,
-                            &mut blockers[r],
-                            objects,
-                            materials,
-                        )
-                    {
-                        limits[r] = Real::NAN;
-                    }
+            // The structure is walked from the light: the feelers reversed, L + (e − L)·v with
+            // v = 1 − u ∈ [0, 1 − u_min], all start at L, so the packet's span is as narrow
+            // as the camera rays' (the feelers' own origins lie far apart where a block of
+            // pixels sees a distant patch of the scene). Only the box tests use them; each
+            // object is tested with the feeler itself, so the answers do not change.
+            let back: ArrayVec<RayBox, PACKET> = feelers
+                .iter()
+                .map(|f| RayBox::new(&Ray::new(light, -f.dir)))
+                .collect();
+            for r in 0..n {
+                if !limits[r].is_nan() {
+                    limits[r] = 1.0 - u_min[r];
                 }
-            });
+            }
+            let from_light = [0.0; PACKET];
+            let scene = (objects, materials);
+            self.walk_packet(
+                &back,
+                &from_light[..n],
+                &mut limits[..n],
+                |c, from, limits| {
+                    let c = c as usize;
+                    for r in from..n {
+                        if self.boxes[c].hit_between(&back[r], 0.0, limits[r])
+                            && !self.meet_candidate(
+                                c,
+                                &feelers[r],
+                                u_min[r],
+                                formula,
+                                &mut blockers[r],
+                                scene,
+                            )
+                        {
+                            limits[r] = Real::NAN;
+                        }
+                    }
+                },
+            );
         }
         for (r, blockers) in blockers.into_iter().take(n).enumerate() {
             out[r] = if limits[r].is_nan() {
@@ -658,11 +698,12 @@ impl Accelerator {
         }
         if !self.bounded.is_empty() {
             let rb = RayBox::new(&feeler);
+            let scene = (objects, materials);
             let mut blocked = false;
             let mut test = |c: u32, blockers: &mut Blockers| -> bool {
-                let open = self.meet_candidate(
-                    c as usize, &rb, &feeler, u_min, formula, blockers, objects, materials,
-                );
+                let c = c as usize;
+                let open = !self.boxes[c].hit_between(&rb, u_min, 1.0)
+                    || self.meet_candidate(c, &feeler, u_min, formula, blockers, scene);
                 blocked |= !open;
                 open
             };

@@ -131,18 +131,24 @@ impl Octree {
             // most octants)
             let copies: usize = parts.iter().map(Vec::len).sum();
             if parts.iter().any(|p| p.len() < list.len()) && copies <= 3 * list.len() {
+                // the children side by side, so that a ray testing them reads one stretch
+                // of memory
                 let mut children = [NONE; 8];
-                for (o, part) in parts.into_iter().enumerate() {
-                    if part.is_empty() {
-                        continue; // a cube void of surfaces is eliminated
+                for (o, part) in parts.iter().enumerate() {
+                    if !part.is_empty() {
+                        // (a cube void of surfaces is eliminated)
+                        children[o] = self.cells.len() as u32;
+                        self.cells.push(Cell::Leaf { first: 0, count: 0 });
+                        self.content.push(Aabb::EMPTY);
                     }
-                    let id = self.cells.len();
-                    self.cells.push(Cell::Leaf { first: 0, count: 0 });
-                    self.content.push(Aabb::EMPTY);
-                    children[o] = id as u32;
-                    self.fill(id, octant(&bounds, o), part, boxes, k, depth + 1);
                 }
                 self.cells[cell] = Cell::Inner(children);
+                for (o, part) in parts.into_iter().enumerate() {
+                    if children[o] != NONE {
+                        let id = children[o] as usize;
+                        self.fill(id, octant(&bounds, o), part, boxes, k, depth + 1);
+                    }
+                }
                 return;
             }
         }
@@ -152,6 +158,31 @@ impl Octree {
             first,
             count: list.len() as u32,
         };
+    }
+
+    /// Renumbers the `count` boxes the tree was built over in the order its leaves first
+    /// name them, and returns that order: the new number k is the old box `order[k]`. The
+    /// leaves come depth first, octant by octant, so neighbours in space get neighbouring
+    /// numbers, and a caller that stores its objects' data in this order reads the objects
+    /// of a cell from one stretch of memory instead of from all over the scene's list.
+    pub fn renumber(&mut self, count: usize) -> Vec<u32> {
+        let mut new = vec![u32::MAX; count];
+        let mut order = Vec::with_capacity(count);
+        for i in &mut self.items {
+            let old = *i as usize;
+            if new[old] == u32::MAX {
+                new[old] = order.len() as u32;
+                order.push(*i);
+            }
+            *i = new[old];
+        }
+        // boxes in no leaf (none, as every box overlaps the cube) keep a number all the same
+        for (old, n) in new.iter().enumerate() {
+            if *n == u32::MAX {
+                order.push(old as u32);
+            }
+        }
+        order
     }
 
     /// The number of objects in the fullest leaf, and the number of (object, leaf) pairs.
@@ -200,14 +231,17 @@ impl Octree {
     /// The walk of [`Octree::walk`] for a packet of rays at once, as
     /// [`super::Bvh::walk_packet`] does it: a cell is opened when some ray of the packet meets
     /// what it holds, and the rays before the first one that does are dropped for all of it.
-    /// `visit(i, from, limits)` is called for the items of every leaf some ray from `from`
-    /// on may meet; a NaN limit is met by no box.
+    /// `visit(i, from, limits, alone)` is called for the items of every leaf some ray from
+    /// `from` on may meet (`alone`: i is the leaf's only item, so ray `from` meets its box,
+    /// which holds the leaf's); a NaN limit is met by no box. `all` is the packet's [`Span`] for these
+    /// limits, if it has one.
     pub fn walk_packet(
         &self,
         rays: &[RayBox],
         t_min: &[Real],
         limits: &mut [Real],
-        mut visit: impl FnMut(u32, usize, &mut [Real]),
+        all: Option<&Span>,
+        mut visit: impl FnMut(u32, usize, &mut [Real], bool),
     ) {
         let Some(ray) = rays.first() else {
             return;
@@ -219,11 +253,10 @@ impl Octree {
         let flip = usize::from(ray.down[0])
             | usize::from(ray.down[1]) << 1
             | usize::from(ray.down[2]) << 2;
-        let all = Span::of(rays, t_min, limits);
         let packet = Packet {
             rays,
             t_min,
-            all: all.as_ref(),
+            all,
             flip,
         };
         if let Some(from) = self.first(&packet, 0, 0, limits) {
@@ -244,14 +277,14 @@ impl Octree {
         cell: usize,
         from: usize,
         limits: &mut [Real],
-        visit: &mut impl FnMut(u32, usize, &mut [Real]),
+        visit: &mut impl FnMut(u32, usize, &mut [Real], bool),
     ) {
         super::counters::node();
         match &self.cells[cell] {
             Cell::Leaf { first, count } => {
                 let first = *first as usize;
                 for &i in &self.items[first..first + *count as usize] {
-                    visit(i, from, limits);
+                    visit(i, from, limits, *count == 1);
                 }
             }
             Cell::Inner(children) => {
