@@ -31,7 +31,9 @@
 //! Two classic devices keep that cheap: the rays before the first one that meets a box are
 //! dropped for all of its subtree (Wald's "first active ray"), and a box that the span of the
 //! packet's origins and directions cannot meet is turned down with one interval test
-//! (`Span` in [`aabb`]). Each ray still gets exactly its own answer.
+//! (`Span` in [`aabb`]), which also screens each object of a leaf that holds several. A packet
+//! of feelers, which start far apart when a block of pixels sees a distant patch, walks the
+//! structure from the light, where they all start. Each ray still gets exactly its own answer.
 //!
 //! How much each one saves can be counted: a build with the `counters` feature ([`counters`])
 //! adds the queries, node visits, box tests and object tests to `--stats`.
@@ -613,10 +615,12 @@ impl Accelerator {
         let feelers: ArrayVec<Ray, PACKET> =
             origins.iter().map(|&o| Ray::new(o, light - o)).collect();
         let mut blockers: [Blockers; PACKET] = std::array::from_fn(|_| Blockers::new());
-        // 1 while a feeler is open; NaN once an opaque object blocks it (see `walk_packet`)
-        let mut limits = [1.0; PACKET];
+        // while a feeler is open, where the walk from the light ends (1 − u_min, see below);
+        // NaN once an opaque object blocks it (see `walk_packet`)
+        let mut limits = [0.0; PACKET];
         for r in 0..n {
             counters::query();
+            limits[r] = 1.0 - u_min[r];
             for &i in &self.unbounded {
                 let hits = objects[i as usize].hits(&feelers[r], formula);
                 if !blockers[r].meet(&hits, i, u_min[r], objects, materials) {
@@ -635,11 +639,6 @@ impl Accelerator {
                 .iter()
                 .map(|f| RayBox::new(&Ray::new(light, -f.dir)))
                 .collect();
-            for r in 0..n {
-                if !limits[r].is_nan() {
-                    limits[r] = 1.0 - u_min[r];
-                }
-            }
             let from_light = [0.0; PACKET];
             let scene = (objects, materials);
             self.walk_packet(
