@@ -693,3 +693,46 @@ fn a_flat_layer_is_not_copied_into_two_halves() {
         "the cube follows the layer wherever it lies"
     );
 }
+
+/// The octree renumbers its objects in the order its leaves name them: the order it returns
+/// is a permutation of the objects, neighbours in space get neighbouring numbers (a leaf's
+/// objects are numbered one after another), and a second renumbering changes nothing.
+#[test]
+fn the_octree_numbers_its_objects_leaf_by_leaf() {
+    // 256 unit boxes on a 16 × 16 grid, listed in an order that scatters neighbours: the
+    // scene's k-th box sits at grid cell (37·k mod 256)
+    let boxes: Vec<Aabb> = (0..256)
+        .map(|k| {
+            let cell = (k * 37) % 256;
+            let (x, z) = ((cell % 16) as f64 * 2.0, (cell / 16) as f64 * 2.0);
+            Aabb {
+                min: vec3(x, 0.0, z),
+                max: vec3(x + 1.0, 1.0, z + 1.0),
+            }
+        })
+        .collect();
+    let mut tree = Octree::build(&boxes, 4);
+    let order = tree.renumber(boxes.len());
+    let mut sorted = order.clone();
+    sorted.sort_unstable();
+    assert_eq!(sorted, (0..256).collect::<Vec<u32>>(), "a permutation");
+    // each run of four consecutive new numbers is one leaf of four neighbours: within a
+    // 4 × 4 patch of the grid (a cell of the octree), where the scene's order put them far
+    // apart
+    for run in order.chunks(4) {
+        let at = |k: u32| {
+            let c = (k as usize * 37) % 256;
+            (c % 16, c / 16)
+        };
+        let (x0, z0) = at(run[0]);
+        for &k in run {
+            let (x, z) = at(k);
+            assert!(x / 4 == x0 / 4 && z / 4 == z0 / 4, "{run:?}");
+        }
+    }
+    assert_eq!(
+        tree.renumber(boxes.len()),
+        (0..256).collect::<Vec<u32>>(),
+        "already in leaf order"
+    );
+}

@@ -177,9 +177,10 @@ impl Bvh {
     /// first one that does are dropped for its whole subtree. `visit(k, from, limits, alone)`
     /// is called for every position k of a leaf some ray from index `from` on may meet (rays
     /// before `from` miss it; `alone`: k is the leaf's only position, whose box is the
-    /// leaf's, so ray `from` meets it); ray r looks for hits after `t_min[r]` up to `limits[r]`, which
-    /// `visit` may shrink, or set to NaN when the ray needs nothing more (a NaN limit is met
-    /// by no box). `all` is the packet's [`Span`] for these limits, if it has one.
+    /// leaf's, so ray `from` meets it); ray r looks for hits after `t_min[r]` up to
+    /// `limits[r]`, which `visit` may shrink, or set to NaN when the ray needs nothing more
+    /// (a NaN limit is met by no box). `all` is the packet's [`Span`] for these limits, if it
+    /// has one.
     pub fn walk_packet(
         &self,
         rays: &[RayBox],

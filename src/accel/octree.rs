@@ -233,8 +233,8 @@ impl Octree {
     /// what it holds, and the rays before the first one that does are dropped for all of it.
     /// `visit(i, from, limits, alone)` is called for the items of every leaf some ray from
     /// `from` on may meet (`alone`: i is the leaf's only item, so ray `from` meets its box,
-    /// which holds the leaf's); a NaN limit is met by no box. `all` is the packet's [`Span`] for these
-    /// limits, if it has one.
+    /// which holds the leaf's); a NaN limit is met by no box. `all` is the packet's [`Span`]
+    /// for these limits, if it has one.
     pub fn walk_packet(
         &self,
         rays: &[RayBox],
