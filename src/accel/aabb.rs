@@ -190,18 +190,18 @@ impl Aabb {
         // No NaN can arise: 1/d is finite (see [`RayBox`]) and the bounds are finite, so a
         // product is 0·finite or finite·finite (at worst ±∞ by overflow, never 0·∞).
         let (o, inv) = (ray.origin, ray.inv_dir);
-        // the side met first on each axis: the lower one, or the upper one going down
-        let sides = |down: bool, lo: Real, hi: Real| if down { (hi, lo) } else { (lo, hi) };
-        let (nx, fx) = sides(ray.down[0], self.min.x, self.max.x);
-        let (ny, fy) = sides(ray.down[1], self.min.y, self.max.y);
-        let (nz, fz) = sides(ray.down[2], self.min.z, self.max.z);
+        // The crossings of the lower and the upper side of each axis; the near one is the
+        // smaller (the lower side's, or the upper one's going down). Rounding is monotone, so
+        // the smaller of the two is exactly the near side's crossing, with one `minsd`.
+        let lo = (self.min - o) * inv;
+        let hi = (self.max - o) * inv;
         let enter = greater(
-            greater((nx - o.x) * inv.x, (ny - o.y) * inv.y),
-            (nz - o.z) * inv.z,
+            greater(lesser(lo.x, hi.x), lesser(lo.y, hi.y)),
+            lesser(lo.z, hi.z),
         );
         let exit = lesser(
-            lesser((fx - o.x) * inv.x, (fy - o.y) * inv.y),
-            (fz - o.z) * inv.z,
+            lesser(greater(lo.x, hi.x), greater(lo.y, hi.y)),
+            greater(lo.z, hi.z),
         );
         (enter, exit + exit.abs() * SLACK)
     }
