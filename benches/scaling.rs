@@ -6,6 +6,7 @@
 //! cargo bench --bench scaling -- --sizes 10,1000 --runs 5 --budget 30
 //! cargo bench --bench scaling -- --fog                      # the fog layout
 //! cargo bench --bench scaling -- --eye 0,6,4                # a close-up (see below)
+//! cargo bench --bench scaling -- --pair 10,100000 --runs 21 --accel octree,bvh
 //! ```
 //!
 //! `--eye X,Y,Z` moves the camera (the scenes put it at 0,9,17, looking at the origin over the
@@ -15,12 +16,19 @@
 //!
 //! A combination whose render is predicted (linearly from the previous size) to take longer
 //! than `--budget` seconds is skipped and shown with its estimate.
+//!
+//! `--pair A,B` measures the growth from A to B spheres side by side, for a machine whose
+//! speed wanders between invocations: both scenes and both structures are built first, one
+//! render of each is left unmeasured, then the two renders alternate, run after run (A then
+//! B, then B then A, so a steady drift weighs on both alike). The table gives each one's
+//! median, the ratio of the medians, and the median and range of the runs' own ratios (each
+//! B over the A next to it).
 
 use std::time::Instant;
 
-use whitted::accel::{Accel, scatter};
+use whitted::accel::{Accel, Accelerator, scatter};
 use whitted::render::{self, Options, Stage};
-use whitted::scene::parse;
+use whitted::scene::{Scene, parse};
 
 struct Config {
     sizes: Vec<usize>,
@@ -31,6 +39,7 @@ struct Config {
     accels: Vec<Accel>,
     layout: scatter::Layout,
     eye: Option<[f64; 3]>,
+    pair: Option<(usize, usize)>,
 }
 
 fn parse_args() -> Result<Config, String> {
@@ -43,6 +52,7 @@ fn parse_args() -> Result<Config, String> {
         accels: Accel::ALL.to_vec(),
         layout: scatter::Layout::Field,
         eye: None,
+        pair: None,
     };
     let mut args = std::env::args().skip(1);
     while let Some(a) = args.next() {
@@ -69,6 +79,16 @@ fn parse_args() -> Result<Config, String> {
                     return Err("--eye needs three coordinates: X,Y,Z".into());
                 };
                 c.eye = Some([x, y, z]);
+            }
+            "--pair" => {
+                let v: Vec<usize> = value("--pair")?
+                    .split(',')
+                    .map(|s| s.trim().parse().map_err(|_| format!("bad size `{s}`")))
+                    .collect::<Result<_, _>>()?;
+                let [a, b] = v[..] else {
+                    return Err("--pair needs two sizes: A,B".into());
+                };
+                c.pair = Some((a, b));
             }
             "--runs" => c.runs = value("--runs")?.parse().map_err(|_| "bad --runs")?,
             "--budget" => c.budget = value("--budget")?.parse().map_err(|_| "bad --budget")?,
@@ -101,6 +121,86 @@ fn median(mut v: Vec<f64>) -> f64 {
     }
 }
 
+/// The scatter scene of `n` spheres, seen from `--eye` if given.
+fn scene(c: &Config, n: usize) -> Scene {
+    let mut scene = parse(
+        &scatter::scene_toml_with(n, 1, c.width, c.height, c.layout),
+        "scatter.toml",
+    )
+    .expect("the scatter scene parses");
+    if let Some([x, y, z]) = c.eye {
+        scene.camera.eye = whitted::real::vec3(x, y, z);
+    }
+    scene
+}
+
+/// Chapter 5's options for the benchmark's image size and `accel`.
+fn options(c: &Config, scene: &Scene, accel: Accel) -> Options {
+    let mut o = Options::for_scene(scene, Stage::ReflectionRefraction);
+    o.width = c.width;
+    o.height = c.height;
+    o.accel = accel;
+    o
+}
+
+/// Seconds to render `scene` with `acc`.
+fn render_seconds(scene: &Scene, o: &Options, acc: &Accelerator) -> f64 {
+    let start = Instant::now();
+    let _ = render::render_with(scene, o, acc, &|_| {});
+    start.elapsed().as_secs_f64()
+}
+
+/// `--pair A,B`: the two sizes' renders alternated, with their ratio.
+fn pair(c: &Config, (a, b): (usize, usize)) {
+    println!(
+        "scaling pair ({:?} layout): N = {a} against {b}, {}×{}, {} run(s) alternating, {} thread(s), {}; seconds",
+        c.layout,
+        c.width,
+        c.height,
+        c.runs,
+        rayon::current_num_threads(),
+        whitted::real::PRECISION
+    );
+    println!(
+        "| accel | render N = {a} | render N = {b} | ratio of medians | median ratio (range) | build N = {b} |"
+    );
+    println!("|---|---:|---:|---:|---:|---:|");
+    let scenes = [scene(c, a), scene(c, b)];
+    for &accel in &c.accels {
+        let o = [options(c, &scenes[0], accel), options(c, &scenes[1], accel)];
+        let start = Instant::now();
+        let acc_b = render::build_accel(&scenes[1], &o[1]);
+        let build_b = start.elapsed().as_secs_f64();
+        let acc = [render::build_accel(&scenes[0], &o[0]), acc_b];
+        // one render of each first, unmeasured: the thread pool and the memory warmed up
+        render_seconds(&scenes[0], &o[0], &acc[0]);
+        render_seconds(&scenes[1], &o[1], &acc[1]);
+        let (mut ta, mut tb, mut ratios) = (Vec::new(), Vec::new(), Vec::new());
+        for run in 0..c.runs {
+            // A then B, then B then A: a steady drift weighs on both alike
+            let (x, y) = if run % 2 == 0 {
+                let x = render_seconds(&scenes[0], &o[0], &acc[0]);
+                (x, render_seconds(&scenes[1], &o[1], &acc[1]))
+            } else {
+                let y = render_seconds(&scenes[1], &o[1], &acc[1]);
+                (render_seconds(&scenes[0], &o[0], &acc[0]), y)
+            };
+            ta.push(x);
+            tb.push(y);
+            ratios.push(y / x);
+        }
+        let lo = ratios.iter().copied().fold(f64::INFINITY, f64::min);
+        let hi = ratios.iter().copied().fold(f64::NEG_INFINITY, f64::max);
+        let (ma, mb) = (median(ta), median(tb));
+        println!(
+            "| {} | {ma:.3} | {mb:.3} | {:.2}× | {:.2}× ({lo:.2}–{hi:.2}) | {build_b:.3} |",
+            accel.name(),
+            mb / ma,
+            median(ratios)
+        );
+    }
+}
+
 fn main() {
     let c = match parse_args() {
         Ok(c) => c,
@@ -109,6 +209,10 @@ fn main() {
             std::process::exit(2);
         }
     };
+    if let Some(sizes) = c.pair {
+        pair(&c, sizes);
+        return;
+    }
     println!(
         "scaling ({:?} layout{}): {}×{}, {} run(s) each, {} thread(s), {}; median seconds, render (build)",
         c.layout,
@@ -133,14 +237,7 @@ fn main() {
     println!("---:|");
     let mut last: Vec<Option<(usize, f64)>> = vec![None; c.accels.len()];
     for &n in &c.sizes {
-        let mut scene = parse(
-            &scatter::scene_toml_with(n, 1, c.width, c.height, c.layout),
-            "scatter.toml",
-        )
-        .expect("the scatter scene parses");
-        if let Some([x, y, z]) = c.eye {
-            scene.camera.eye = whitted::real::vec3(x, y, z);
-        }
+        let scene = scene(&c, n);
         print!("| {n} |");
         let mut rays = 0;
         for (k, &accel) in c.accels.iter().enumerate() {
@@ -157,10 +254,7 @@ fn main() {
                     continue;
                 }
             }
-            let mut o = Options::for_scene(&scene, Stage::ReflectionRefraction);
-            o.width = c.width;
-            o.height = c.height;
-            o.accel = accel;
+            let o = options(&c, &scene, accel);
             let (mut builds, mut renders) = (Vec::new(), Vec::new());
             for _ in 0..c.runs {
                 let start = Instant::now();
