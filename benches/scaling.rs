@@ -90,7 +90,13 @@ fn parse_args() -> Result<Config, String> {
                 };
                 c.pair = Some((a, b));
             }
-            "--runs" => c.runs = value("--runs")?.parse().map_err(|_| "bad --runs")?,
+            "--runs" => {
+                c.runs = value("--runs")?
+                    .parse()
+                    .ok()
+                    .filter(|&r| r > 0)
+                    .ok_or("--runs needs a whole number of at least 1")?;
+            }
             "--budget" => c.budget = value("--budget")?.parse().map_err(|_| "bad --budget")?,
             "--width" => c.width = value("--width")?.parse().map_err(|_| "bad --width")?,
             "--height" => c.height = value("--height")?.parse().map_err(|_| "bad --height")?,
