@@ -22,7 +22,8 @@
 //! render of each is left unmeasured, then the two renders alternate, run after run (A then
 //! B, then B then A, so a steady drift weighs on both alike). The table gives each one's
 //! median, the ratio of the medians, and the median and range of the runs' own ratios (each
-//! B over the A next to it).
+//! B over the A next to it). `none`, `boxes` and `extents` are skipped where B's render,
+//! predicted linearly from A's, would take longer than `--budget` seconds.
 
 use std::time::Instant;
 
@@ -174,12 +175,23 @@ fn pair(c: &Config, (a, b): (usize, usize)) {
     let scenes = [scene(c, a), scene(c, b)];
     for &accel in &c.accels {
         let o = [options(c, &scenes[0], accel), options(c, &scenes[1], accel)];
+        let acc_a = render::build_accel(&scenes[0], &o[0]);
+        // one render of each first, unmeasured: the thread pool and the memory warmed up
+        let warm = render_seconds(&scenes[0], &o[0], &acc_a);
+        // brute force and lists grow linearly: skipped where B's render would be too long
+        let linear = matches!(accel, Accel::None | Accel::Boxes | Accel::Extents);
+        let estimate = warm * b as f64 / a.max(1) as f64;
+        if linear && estimate > c.budget {
+            println!(
+                "| {} | skipped (N = {b}: ≈{estimate:.0} s a render, over --budget) | | | | |",
+                accel.name()
+            );
+            continue;
+        }
         let start = Instant::now();
         let acc_b = render::build_accel(&scenes[1], &o[1]);
         let build_b = start.elapsed().as_secs_f64();
-        let acc = [render::build_accel(&scenes[0], &o[0]), acc_b];
-        // one render of each first, unmeasured: the thread pool and the memory warmed up
-        render_seconds(&scenes[0], &o[0], &acc[0]);
+        let acc = [acc_a, acc_b];
         render_seconds(&scenes[1], &o[1], &acc[1]);
         let (mut ta, mut tb, mut ratios) = (Vec::new(), Vec::new(), Vec::new());
         for run in 0..c.runs {
