@@ -482,6 +482,23 @@ impl Accelerator {
         }
     }
 
+    /// Takes note of the objects without a box for a feeler, as [`Blockers::meet`] does:
+    /// false as soon as an opaque one blocks it.
+    #[inline]
+    fn meet_unbounded(
+        &self,
+        feeler: &Ray,
+        u_min: Real,
+        formula: Formula,
+        blockers: &mut Blockers,
+        (objects, materials): (&[Object], &[Material]),
+    ) -> bool {
+        self.unbounded.iter().all(|&i| {
+            let hits = objects[i as usize].hits(feeler, formula);
+            blockers.meet(&hits, i, u_min, objects, materials)
+        })
+    }
+
     /// Takes note of bounded candidate `c` for a feeler that meets its box: false when it
     /// blocks the feeler and is opaque (see [`Blockers::meet`]).
     #[inline]
@@ -618,16 +635,15 @@ impl Accelerator {
         // while a feeler is open, where the walk from the light ends (1 − u_min, see below);
         // NaN once an opaque object blocks it (see `walk_packet`)
         let mut limits = [0.0; PACKET];
+        let scene = (objects, materials);
         for r in 0..n {
             counters::query();
-            limits[r] = 1.0 - u_min[r];
-            for &i in &self.unbounded {
-                let hits = objects[i as usize].hits(&feelers[r], formula);
-                if !blockers[r].meet(&hits, i, u_min[r], objects, materials) {
-                    limits[r] = Real::NAN;
-                    break;
-                }
-            }
+            limits[r] =
+                if self.meet_unbounded(&feelers[r], u_min[r], formula, &mut blockers[r], scene) {
+                    1.0 - u_min[r]
+                } else {
+                    Real::NAN
+                };
         }
         if !self.bounded.is_empty() {
             // The structure is walked from the light: the feelers reversed, L + (e − L)·v with
@@ -640,7 +656,6 @@ impl Accelerator {
                 .map(|f| RayBox::new(&Ray::new(light, -f.dir)))
                 .collect();
             let from_light = [0.0; PACKET];
-            let scene = (objects, materials);
             self.walk_packet(
                 &back,
                 &from_light[..n],
@@ -689,15 +704,12 @@ impl Accelerator {
         counters::query();
         let feeler = Ray::new(origin, light - origin);
         let mut blockers = Blockers::new();
-        for &i in &self.unbounded {
-            let hits = objects[i as usize].hits(&feeler, formula);
-            if !blockers.meet(&hits, i, u_min, objects, materials) {
-                return 0.0;
-            }
+        let scene = (objects, materials);
+        if !self.meet_unbounded(&feeler, u_min, formula, &mut blockers, scene) {
+            return 0.0;
         }
         if !self.bounded.is_empty() {
             let rb = RayBox::new(&feeler);
-            let scene = (objects, materials);
             let mut blocked = false;
             let mut test = |c: u32, blockers: &mut Blockers| -> bool {
                 let c = c as usize;
