@@ -493,6 +493,76 @@ fn counters_show_the_work_each_structure_saves() {
     assert_eq!(work(Accel::Bvh), bvh);
 }
 
+/// An object that straddles the octree's cubes sits in several leaves; a packet crossing two
+/// of them tests it once a ray, not once a leaf (the walk's mailbox), and the answers stay
+/// brute force's. Sixteen feelers climb through a translucent sphere that every octant holds:
+/// 16 object tests, where testing it in both leaves they cross would make 32.
+#[cfg(feature = "counters")]
+#[test]
+fn an_object_in_several_leaves_is_tested_once_a_ray() {
+    let mut toml = String::from(
+        "[camera]\neye = [0.0, 0.0, 20.0]\nlook_at = [0.0, 0.0, 0.0]\n\n\
+         [materials.haze]\ndiffuse = 0.2\ntransmission = 0.5\nior = 1.0\n\n\
+         [[objects]]\nsphere = { center = [0.0, 0.0, 0.0], radius = 4.0 }\nmaterial = \"haze\"\n",
+    );
+    // one small opaque sphere in each octant, away from the feelers, so that the root splits
+    for k in 0..8 {
+        let c = [1, 2, 4].map(|bit| if k & bit == 0 { -3.0 } else { 3.0 });
+        toml += &format!(
+            "\n[[objects]]\nsphere = {{ center = [{:.1}, {:.1}, {:.1}], radius = 0.3 }}\n",
+            c[0], c[1], c[2]
+        );
+    }
+    let scene = parse(&toml, "shared.toml").unwrap();
+    let boxes: Vec<Aabb> = scene.objects.iter().filter_map(world_bounds).collect();
+    let (fullest, pairs) = Octree::build(&boxes, 4).leaf_load();
+    assert_eq!(
+        (fullest, pairs),
+        (2, 16),
+        "each octant holds the big sphere and one small one"
+    );
+    let light = vec3(0.5, 9.0, 0.5);
+    let origins: Vec<Vec3> = (0..16)
+        .map(|k| {
+            let (i, j) = (f64::from(k % 4), f64::from(k / 4));
+            vec3(0.5 + 0.05 * i, -9.0, 0.5 + 0.05 * j)
+        })
+        .collect();
+    let u_min = [real(1e-6); 16];
+    for kind in [Accel::Octree, Accel::Bvh] {
+        let tree = Accelerator::build(&scene.objects, &scene.camera(), kind, TILE);
+        let mut share = [Real::NAN; 16];
+        let _ = whitted::accel::counters::take();
+        tree.transmittance_packet(
+            &scene.objects,
+            &scene.materials,
+            &origins,
+            light,
+            &u_min,
+            Default::default(),
+            &mut share,
+        );
+        let work = whitted::accel::counters::take();
+        assert_eq!(work.queries, 16);
+        assert_eq!(
+            work.objects, 16,
+            "{kind:?}: the big sphere once a feeler: {work:?}"
+        );
+        for (k, &o) in origins.iter().enumerate() {
+            let want = whitted::shadow::transmittance(
+                &scene.objects,
+                &scene.materials,
+                o,
+                light,
+                u_min[k],
+                Default::default(),
+            );
+            assert_eq!(want, 0.5, "the feeler crosses the haze only");
+            assert_eq!(share[k].to_bits(), want.to_bits(), "{kind:?}, feeler {k}");
+        }
+    }
+}
+
 /// Rays with a zero direction component: 1/d is held at ±Real::MAX instead of ±∞, so the
 /// slab test never computes 0·∞ (NaN), and its plain comparisons stay right. A ray parallel
 /// to a slab, inside it, crosses the box; outside it, misses; lying in a face plane, either
