@@ -31,6 +31,24 @@ use whitted::accel::{Accel, Accelerator, scatter};
 use whitted::render::{self, Options, Stage};
 use whitted::scene::{Scene, parse};
 
+/// What `--help` prints.
+const USAGE: &str = "\
+cargo bench --bench scaling -- [OPTIONS]
+
+Renders N random spheres over a plane (the scatter scene) at 1280x720 with each --accel and
+prints the median render time of each (the build time in brackets).
+
+  --sizes A,B,...   the numbers of spheres (default 10,100,1000,10000,100000)
+  --pair A,B        only A and B, their renders alternated run by run, with their ratio
+                    (instead of --sizes)
+  --accel LIST      some of none,boxes,extents,octree,bvh, comma-separated (default all)
+  --runs R          the runs each median is taken over (default 3)
+  --budget S        skip a linear option's render predicted to take over S seconds (default 20)
+  --fog             the fog layout instead of the field
+  --eye X,Y,Z       move the camera (0,6,4 is the close-up)
+  --width W         the image width (default 1280)
+  --height H        the image height (default 720)";
+
 struct Config {
     sizes: Vec<usize>,
     runs: usize,
@@ -55,12 +73,18 @@ fn parse_args() -> Result<Config, String> {
         eye: None,
         pair: None,
     };
+    let mut sizes_given = false;
     let mut args = std::env::args().skip(1);
     while let Some(a) = args.next() {
         let mut value = |name: &str| args.next().ok_or(format!("{name} needs a value"));
         match a.as_str() {
             "--bench" => {} // passed by `cargo bench`
+            "--help" | "-h" => {
+                println!("{USAGE}");
+                std::process::exit(0);
+            }
             "--sizes" => {
+                sizes_given = true;
                 c.sizes = value("--sizes")?
                     .split(',')
                     .map(|s| s.trim().parse().map_err(|_| format!("bad size `{s}`")))
@@ -112,8 +136,11 @@ fn parse_args() -> Result<Config, String> {
                     })
                     .collect::<Result<_, _>>()?;
             }
-            other => return Err(format!("unknown argument `{other}`")),
+            other => return Err(format!("unknown argument `{other}` (see --help)")),
         }
+    }
+    if sizes_given && c.pair.is_some() {
+        return Err("--pair A,B gives the two sizes itself; leave out --sizes".into());
     }
     Ok(c)
 }
@@ -150,14 +177,14 @@ fn options(c: &Config, scene: &Scene, accel: Accel) -> Options {
     o
 }
 
-/// Seconds to render `scene` with `acc`.
-fn render_seconds(scene: &Scene, o: &Options, acc: &Accelerator) -> f64 {
+/// Seconds to render `scene` with `acc`, and the rays it cast.
+fn render_seconds(scene: &Scene, o: &Options, acc: &Accelerator) -> (f64, u64) {
     let start = Instant::now();
-    let _ = render::render_with(scene, o, acc, &|_| {});
-    start.elapsed().as_secs_f64()
+    let (_, stats) = render::render_with(scene, o, acc, &|_| {});
+    (start.elapsed().as_secs_f64(), stats.total())
 }
 
-/// `--pair A,B`: the two sizes' renders alternated, with their ratio.
+/// `--pair A,B`: the two sizes' renders alternated, with their ratio and the rays each casts.
 fn pair(c: &Config, (a, b): (usize, usize)) {
     println!(
         "scaling pair ({:?} layout): N = {a} against {b}, {}×{}, {} run(s) alternating, {} thread(s), {}; seconds",
@@ -169,21 +196,21 @@ fn pair(c: &Config, (a, b): (usize, usize)) {
         whitted::real::PRECISION
     );
     println!(
-        "| accel | render N = {a} | render N = {b} | ratio of medians | median ratio (range) | build N = {b} |"
+        "| accel | render N = {a} | render N = {b} | ratio of medians | median ratio (range) | build N = {b} | rays N = {a} / {b} |"
     );
-    println!("|---|---:|---:|---:|---:|---:|");
+    println!("|---|---:|---:|---:|---:|---:|---:|");
     let scenes = [scene(c, a), scene(c, b)];
     for &accel in &c.accels {
         let o = [options(c, &scenes[0], accel), options(c, &scenes[1], accel)];
         let acc_a = render::build_accel(&scenes[0], &o[0]);
         // one render of each first, unmeasured: the thread pool and the memory warmed up
-        let warm = render_seconds(&scenes[0], &o[0], &acc_a);
+        let (warm, rays_a) = render_seconds(&scenes[0], &o[0], &acc_a);
         // brute force and lists grow linearly: skipped where B's render would be too long
         let linear = matches!(accel, Accel::None | Accel::Boxes | Accel::Extents);
         let estimate = warm * b as f64 / a.max(1) as f64;
         if linear && estimate > c.budget {
             println!(
-                "| {} | skipped (N = {b}: ≈{estimate:.0} s a render, over --budget) | | | | |",
+                "| {} | skipped (N = {b}: ≈{estimate:.0} s a render, over --budget) | | | | | |",
                 accel.name()
             );
             continue;
@@ -192,16 +219,16 @@ fn pair(c: &Config, (a, b): (usize, usize)) {
         let acc_b = render::build_accel(&scenes[1], &o[1]);
         let build_b = start.elapsed().as_secs_f64();
         let acc = [acc_a, acc_b];
-        render_seconds(&scenes[1], &o[1], &acc[1]);
+        let (_, rays_b) = render_seconds(&scenes[1], &o[1], &acc[1]);
         let (mut ta, mut tb, mut ratios) = (Vec::new(), Vec::new(), Vec::new());
         for run in 0..c.runs {
             // A then B, then B then A: a steady drift weighs on both alike
             let (x, y) = if run % 2 == 0 {
-                let x = render_seconds(&scenes[0], &o[0], &acc[0]);
-                (x, render_seconds(&scenes[1], &o[1], &acc[1]))
+                let x = render_seconds(&scenes[0], &o[0], &acc[0]).0;
+                (x, render_seconds(&scenes[1], &o[1], &acc[1]).0)
             } else {
-                let y = render_seconds(&scenes[1], &o[1], &acc[1]);
-                (render_seconds(&scenes[0], &o[0], &acc[0]), y)
+                let y = render_seconds(&scenes[1], &o[1], &acc[1]).0;
+                (render_seconds(&scenes[0], &o[0], &acc[0]).0, y)
             };
             ta.push(x);
             tb.push(y);
@@ -211,7 +238,7 @@ fn pair(c: &Config, (a, b): (usize, usize)) {
         let hi = ratios.iter().copied().fold(f64::NEG_INFINITY, f64::max);
         let (ma, mb) = (median(ta), median(tb));
         println!(
-            "| {} | {ma:.3} | {mb:.3} | {:.2}× | {:.2}× ({lo:.2}–{hi:.2}) | {build_b:.3} |",
+            "| {} | {ma:.3} | {mb:.3} | {:.2}× | {:.2}× ({lo:.2}–{hi:.2}) | {build_b:.3} | {rays_a} / {rays_b} |",
             accel.name(),
             mb / ma,
             median(ratios)
