@@ -14,8 +14,12 @@
 //! the picture stays alike as the field grows around it: what is left of the growth is the
 //! structures' own.
 //!
-//! A combination whose render is predicted (linearly from the previous size) to take longer
-//! than `--budget` seconds is skipped and shown with its estimate.
+//! Each `--accel` renders its sizes in turns: one unmeasured render of each size, small to
+//! large, then the measured runs, small to large, large to small, and so on. A steady drift
+//! of the machine's speed during the bench then weighs on every size alike, and the growth
+//! down a column is the structure's, not the drift's. A combination whose render is
+//! predicted (linearly from the previous size's unmeasured render, for `none`, `boxes` and
+//! `extents`) to take longer than `--budget` seconds is skipped and shown with its estimate.
 //!
 //! `--pair A,B` measures the growth from A to B spheres side by side, for a machine whose
 //! speed wanders between invocations: both scenes and both structures are built first, one
@@ -270,6 +274,60 @@ fn main() {
         rayon::current_num_threads(),
         whitted::real::PRECISION
     );
+    // Each option's sizes are measured in turns (small to large, then large to small, …), so
+    // that the machine's drift during the run weighs on every size alike and the growth read
+    // down a column is not the drift's: first one unmeasured render of each size (which also
+    // predicts whether the next size is worth trying), then the measured runs.
+    let scenes: Vec<Scene> = c.sizes.iter().map(|&n| scene(&c, n)).collect();
+    let mut cells: Vec<Vec<String>> = vec![Vec::new(); c.sizes.len()];
+    let mut rays = vec![0; c.sizes.len()];
+    for &accel in &c.accels {
+        eprintln!("{} …", accel.name());
+        // brute force and lists grow linearly; hierarchies are not skipped on a guess
+        let linear = matches!(accel, Accel::None | Accel::Boxes | Accel::Extents);
+        let mut ready = Vec::new();
+        let mut last: Option<(usize, f64)> = None;
+        for (i, (&n, scene)) in c.sizes.iter().zip(&scenes).enumerate() {
+            if let Some((n0, t0)) = last {
+                let estimate = if linear {
+                    t0 * n as f64 / n0 as f64
+                } else {
+                    t0
+                };
+                if estimate > c.budget {
+                    cells[i].push(format!("skipped (≈{estimate:.0} s)"));
+                    continue;
+                }
+            }
+            let o = options(&c, scene, accel);
+            let builds: Vec<f64> = (0..c.runs)
+                .map(|_| {
+                    let start = Instant::now();
+                    let _ = render::build_accel(scene, &o);
+                    start.elapsed().as_secs_f64()
+                })
+                .collect();
+            let acc = render::build_accel(scene, &o);
+            let (warm, r) = render_seconds(scene, &o, &acc);
+            rays[i] = r;
+            last = Some((n, warm));
+            ready.push((i, o, acc, median(builds), Vec::new()));
+        }
+        for run in 0..c.runs {
+            let turn: Vec<usize> = if run % 2 == 0 {
+                (0..ready.len()).collect()
+            } else {
+                (0..ready.len()).rev().collect()
+            };
+            for k in turn {
+                let (i, o, acc, _, times) = &mut ready[k];
+                times.push(render_seconds(&scenes[*i], o, acc).0);
+            }
+        }
+        for (i, _, _, build, times) in ready {
+            cells[i].push(format!("{:.3} ({build:.3})", median(times)));
+        }
+    }
     print!("| N |");
     for a in &c.accels {
         print!(" {} |", a.name());
@@ -280,42 +338,7 @@ fn main() {
         print!("---:|");
     }
     println!("---:|");
-    let mut last: Vec<Option<(usize, f64)>> = vec![None; c.accels.len()];
-    for &n in &c.sizes {
-        let scene = scene(&c, n);
-        print!("| {n} |");
-        let mut rays = 0;
-        for (k, &accel) in c.accels.iter().enumerate() {
-            if let Some((n0, t0)) = last[k] {
-                // brute force and lists grow linearly; hierarchies are not skipped on a guess
-                let linear = matches!(accel, Accel::None | Accel::Boxes | Accel::Extents);
-                let estimate = if linear {
-                    t0 * n as f64 / n0 as f64
-                } else {
-                    t0
-                };
-                if estimate > c.budget {
-                    print!(" skipped (≈{estimate:.0} s) |");
-                    continue;
-                }
-            }
-            let o = options(&c, &scene, accel);
-            let (mut builds, mut renders) = (Vec::new(), Vec::new());
-            for _ in 0..c.runs {
-                let start = Instant::now();
-                let acc = render::build_accel(&scene, &o);
-                builds.push(start.elapsed().as_secs_f64());
-                let start = Instant::now();
-                let (_, stats) = render::render_with(&scene, &o, &acc, &|_| {});
-                renders.push(start.elapsed().as_secs_f64());
-                rays = stats.total();
-            }
-            let (b, r) = (median(builds), median(renders));
-            last[k] = Some((n, r));
-            print!(" {r:.3} ({b:.3}) |");
-            use std::io::Write;
-            let _ = std::io::stdout().flush();
-        }
-        println!(" {rays} |");
+    for ((n, row), rays) in c.sizes.iter().zip(cells).zip(rays) {
+        println!("| {n} | {} | {rays} |", row.join(" | "));
     }
 }
