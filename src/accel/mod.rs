@@ -33,7 +33,9 @@
 //! packet's origins and directions cannot meet is turned down with one interval test
 //! (`Span` in [`aabb`]), which also screens each object of a leaf that holds several. A packet
 //! of feelers, which start far apart when a block of pixels sees a distant patch, walks the
-//! structure from the light, where they all start. Each ray still gets exactly its own answer.
+//! structure from the light, where they all start. An octree leaf shares the objects that
+//! straddle its cube with its neighbours, so the octree's packet walk also keeps a small
+//! mailbox of the objects it has already tested. Each ray still gets exactly its own answer.
 //!
 //! How much each one saves can be counted: a build with the `counters` feature ([`counters`])
 //! adds the queries, node visits, box tests and object tests to `--stats`.
