@@ -341,8 +341,7 @@ impl Mailbox {
     /// True when candidate `c` has been done for every ray from `from` on.
     #[inline]
     fn holds(&self, c: u32, from: usize) -> bool {
-        // every slot is compared, without stopping at the first match, so that the compiler
-        // can compare them side by side
+        // every slot is compared, without stopping at the first match: no branch per slot
         self.ids
             .iter()
             .zip(&self.from)
