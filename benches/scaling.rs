@@ -300,14 +300,16 @@ fn main() {
                 }
             }
             let o = options(&c, scene, accel);
-            let builds: Vec<f64> = (0..c.runs)
-                .map(|_| {
-                    let start = Instant::now();
-                    let _ = render::build_accel(scene, &o);
-                    start.elapsed().as_secs_f64()
-                })
-                .collect();
-            let acc = render::build_accel(scene, &o);
+            // `runs` builds timed; the last one is kept for the renders
+            let mut builds = Vec::new();
+            let mut acc = None;
+            for _ in 0..c.runs {
+                let start = Instant::now();
+                let built = render::build_accel(scene, &o);
+                builds.push(start.elapsed().as_secs_f64());
+                acc = Some(built); // (the previous one dropped outside the timing)
+            }
+            let acc = acc.expect("--runs is at least 1");
             let (warm, r) = render_seconds(scene, &o, &acc);
             rays[i] = r;
             last = Some((n, warm));
