@@ -2,7 +2,7 @@
 //! 1280×720 with every `--accel`, and prints the median build and render times.
 //!
 //! ```text
-//! cargo bench --bench scaling                               # N = 10 … 100 000, 3 runs each
+//! cargo bench --bench scaling                               # N = 10 … 100 000
 //! cargo bench --bench scaling -- --sizes 10,1000 --runs 5 --budget 30
 //! cargo bench --bench scaling -- --fog                      # the fog layout
 //! cargo bench --bench scaling -- --eye 0,6,4                # a close-up (see below)
@@ -20,6 +20,11 @@
 //! down a column is the structure's, not the drift's. A combination whose render is
 //! predicted (linearly from the previous size's unmeasured render, for `none`, `boxes` and
 //! `extents`) to take longer than `--budget` seconds is skipped and shown with its estimate.
+//! Unless `--runs` says how many, each `--accel` takes as many runs as fit in about
+//! [`AUTO_SECONDS`] of renders (by its unmeasured ones), at least 3 and at most 15: a render of
+//! a tenth of a second wanders by ±15 % on a shared machine, and the median of three such runs
+//! still moves a ratio by a tenth. Under the table, a row gives each column's growth: the
+//! median at the last size it rendered over the median at the first (`--sizes` in its order).
 //!
 //! `--pair A,B` measures the growth from A to B spheres side by side, for a machine whose
 //! speed wanders between invocations: both scenes and both structures are built first, one
@@ -40,22 +45,31 @@ const USAGE: &str = "\
 cargo bench --bench scaling -- [OPTIONS]
 
 Renders N random spheres over a plane (the scatter scene) at 1280x720 with each --accel and
-prints the median render time of each (the build time in brackets).
+prints the median render time of each (the build time in brackets), and each one's growth
+from the first size to the last it rendered.
 
   --sizes A,B,...   the numbers of spheres (default 10,100,1000,10000,100000)
   --pair A,B        only A and B, their renders alternated run by run, with their ratio
                     (instead of --sizes)
   --accel LIST      some of none,boxes,extents,octree,bvh, comma-separated (default all)
-  --runs R          the runs each median is taken over (default 3)
+  --runs R          the runs each median is taken over (default: as many as fit in about 20 s
+                    of renders per --accel, at least 3 and at most 15; with --pair, 15)
   --budget S        skip a linear option's render predicted to take over S seconds (default 20)
   --fog             the fog layout instead of the field
   --eye X,Y,Z       move the camera (0,6,4 is the close-up)
   --width W         the image width (default 1280)
   --height H        the image height (default 720)";
 
+/// Seconds of renders an `--accel` is given when `--runs` is left out.
+const AUTO_SECONDS: f64 = 20.0;
+
+/// The fewest and the most runs `--runs` left out gives.
+const AUTO_RUNS: (usize, usize) = (3, 15);
+
 struct Config {
     sizes: Vec<usize>,
-    runs: usize,
+    /// `None`: chosen per `--accel` (see [`AUTO_SECONDS`]).
+    runs: Option<usize>,
     budget: f64,
     width: u32,
     height: u32,
@@ -68,7 +82,7 @@ struct Config {
 fn parse_args() -> Result<Config, String> {
     let mut c = Config {
         sizes: vec![10, 100, 1_000, 10_000, 100_000],
-        runs: 3,
+        runs: None,
         budget: 20.0,
         width: 1280,
         height: 720,
@@ -120,11 +134,13 @@ fn parse_args() -> Result<Config, String> {
                 c.pair = Some((a, b));
             }
             "--runs" => {
-                c.runs = value("--runs")?
-                    .parse()
-                    .ok()
-                    .filter(|&r| r > 0)
-                    .ok_or("--runs needs a whole number of at least 1")?;
+                c.runs = Some(
+                    value("--runs")?
+                        .parse()
+                        .ok()
+                        .filter(|&r| r > 0)
+                        .ok_or("--runs needs a whole number of at least 1")?,
+                );
             }
             "--budget" => c.budget = value("--budget")?.parse().map_err(|_| "bad --budget")?,
             "--width" => c.width = value("--width")?.parse().map_err(|_| "bad --width")?,
@@ -190,12 +206,12 @@ fn render_seconds(scene: &Scene, o: &Options, acc: &Accelerator) -> (f64, u64) {
 
 /// `--pair A,B`: the two sizes' renders alternated, with their ratio and the rays each casts.
 fn pair(c: &Config, (a, b): (usize, usize)) {
+    let runs = c.runs.unwrap_or(AUTO_RUNS.1);
     println!(
-        "scaling pair ({:?} layout): N = {a} against {b}, {}×{}, {} run(s) alternating, {} thread(s), {}; seconds",
+        "scaling pair ({:?} layout): N = {a} against {b}, {}×{}, {runs} run(s) alternating, {} thread(s), {}; seconds",
         c.layout,
         c.width,
         c.height,
-        c.runs,
         rayon::current_num_threads(),
         whitted::real::PRECISION
     );
@@ -225,7 +241,7 @@ fn pair(c: &Config, (a, b): (usize, usize)) {
         let acc = [acc_a, acc_b];
         let (_, rays_b) = render_seconds(&scenes[1], &o[1], &acc[1]);
         let (mut ta, mut tb, mut ratios) = (Vec::new(), Vec::new(), Vec::new());
-        for run in 0..c.runs {
+        for run in 0..runs {
             // A then B, then B then A: a steady drift weighs on both alike
             let (x, y) = if run % 2 == 0 {
                 let x = render_seconds(&scenes[0], &o[0], &acc[0]).0;
@@ -263,14 +279,17 @@ fn main() {
         return;
     }
     println!(
-        "scaling ({:?} layout{}): {}×{}, {} run(s) each, {} thread(s), {}; median seconds, render (build)",
+        "scaling ({:?} layout{}): {}×{}, {}, {} thread(s), {}; median seconds, render (build)",
         c.layout,
         c.eye
             .map(|[x, y, z]| format!(", eye {x},{y},{z}"))
             .unwrap_or_default(),
         c.width,
         c.height,
-        c.runs,
+        match c.runs {
+            Some(r) => format!("{r} run(s) each"),
+            None => "runs per --accel as the table says".to_string(),
+        },
         rayon::current_num_threads(),
         whitted::real::PRECISION
     );
@@ -281,6 +300,8 @@ fn main() {
     let scenes: Vec<Scene> = c.sizes.iter().map(|&n| scene(&c, n)).collect();
     let mut cells: Vec<Vec<String>> = vec![Vec::new(); c.sizes.len()];
     let mut rays = vec![0; c.sizes.len()];
+    // per --accel: the runs taken, and the growth over the sizes it rendered
+    let mut footer: Vec<(usize, String)> = Vec::new();
     for &accel in &c.accels {
         eprintln!("{} …", accel.name());
         // brute force and lists grow linearly; hierarchies are not skipped on a guess
@@ -300,10 +321,10 @@ fn main() {
                 }
             }
             let o = options(&c, scene, accel);
-            // `runs` builds timed; the last one is kept for the renders
+            // `--runs` builds timed (3 if left out); the last one is kept for the renders
             let mut builds = Vec::new();
             let mut acc = None;
-            for _ in 0..c.runs {
+            for _ in 0..c.runs.unwrap_or(AUTO_RUNS.0) {
                 let start = Instant::now();
                 let built = render::build_accel(scene, &o);
                 builds.push(start.elapsed().as_secs_f64());
@@ -313,22 +334,31 @@ fn main() {
             let (warm, r) = render_seconds(scene, &o, &acc);
             rays[i] = r;
             last = Some((n, warm));
-            ready.push((i, o, acc, median(builds), Vec::new()));
+            ready.push((i, o, acc, median(builds), Vec::new(), warm));
         }
-        for run in 0..c.runs {
+        let round: f64 = ready.iter().map(|r| r.5).sum();
+        let runs = c.runs.unwrap_or_else(|| {
+            // (a float-to-int `as` saturates: an empty round gives the most runs)
+            ((AUTO_SECONDS / round) as usize).clamp(AUTO_RUNS.0, AUTO_RUNS.1)
+        });
+        for run in 0..runs {
             let turn: Vec<usize> = if run % 2 == 0 {
                 (0..ready.len()).collect()
             } else {
                 (0..ready.len()).rev().collect()
             };
             for k in turn {
-                let (i, o, acc, _, times) = &mut ready[k];
+                let (i, o, acc, _, times, _) = &mut ready[k];
                 times.push(render_seconds(&scenes[*i], o, acc).0);
             }
         }
-        for (i, _, _, build, times) in ready {
-            cells[i].push(format!("{:.3} ({build:.3})", median(times)));
+        let mut ends = Vec::new();
+        for (i, _, _, build, times, _) in ready {
+            let m = median(times);
+            cells[i].push(format!("{m:.3} ({build:.3})"));
+            ends.push((i, m));
         }
+        footer.push((runs, growth(&c.sizes, &ends)));
     }
     print!("| N |");
     for a in &c.accels {
@@ -342,5 +372,32 @@ fn main() {
     println!("---:|");
     for ((n, row), rays) in c.sizes.iter().zip(cells).zip(rays) {
         println!("| {n} | {} | {rays} |", row.join(" | "));
+    }
+    print!("| growth |");
+    for (_, g) in &footer {
+        print!(" {g} |");
+    }
+    println!(" |");
+    print!("| runs |");
+    for (r, _) in &footer {
+        print!(" {r} |");
+    }
+    println!(" |");
+}
+
+/// The growth down a column: the median render at the last size rendered over the one at the
+/// first (`ends`: index into `sizes` and median, in the order of `sizes`), and the sizes it
+/// spans when the column does not run from the first size to the last.
+fn growth(sizes: &[usize], ends: &[(usize, f64)]) -> String {
+    match (ends.first(), ends.last()) {
+        (Some(&(i, a)), Some(&(j, b))) if j != i => {
+            let span = if j + 1 == sizes.len() && i == 0 {
+                String::new()
+            } else {
+                format!(" (N = {} to {})", sizes[i], sizes[j])
+            };
+            format!("{:.2}×{span}", b / a)
+        }
+        _ => "–".to_string(),
     }
 }

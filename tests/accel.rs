@@ -493,6 +493,50 @@ fn counters_show_the_work_each_structure_saves() {
     assert_eq!(work(Accel::Bvh), bvh);
 }
 
+/// A packet walks the BVH nearer child first: the hits it finds there spare the far side.
+/// Sixteen camera rays looking down −z meet two spheres one behind the other; the BVH splits
+/// them along z, the far sphere on the left (the lower centres). Nearer first, the packet
+/// tests the near sphere only (16 object tests); the far one first, as the walk did before
+/// it read the split axis, it would test both (32).
+#[cfg(feature = "counters")]
+#[test]
+fn a_packet_opens_the_nearer_child_of_the_bvh_first() {
+    let scene = parse(
+        "[camera]\neye = [0.0, 0.0, 20.0]\nlook_at = [0.0, 0.0, 0.0]\n\n\
+         [[objects]]\nsphere = { center = [0.0, 0.0, -10.0], radius = 2.0 }\n\n\
+         [[objects]]\nsphere = { center = [0.0, 0.0, 0.0], radius = 2.0 }\n",
+        "row.toml",
+    )
+    .unwrap();
+    let rays: Vec<Ray> = (0..16)
+        .map(|k| {
+            let (i, j) = (f64::from(k % 4), f64::from(k / 4));
+            Ray::new(
+                vec3(0.0, 0.0, 20.0),
+                vec3(0.01 * i - 0.015, 0.01 * j - 0.015, -1.0),
+            )
+        })
+        .collect();
+    let brute = Accelerator::build(&scene.objects, &scene.camera(), Accel::None, TILE);
+    let bvh = Accelerator::build(&scene.objects, &scene.camera(), Accel::Bvh, TILE);
+    assert!(
+        bvh.describe().contains("3 nodes"),
+        "a root and two leaves: {}",
+        bvh.describe()
+    );
+    let mut got = vec![None; 16];
+    let _ = whitted::accel::counters::take();
+    bvh.nearest_packet(&scene.objects, &rays, 0.0, Default::default(), &mut got);
+    let work = whitted::accel::counters::take();
+    assert_eq!(work.queries, 16);
+    assert_eq!(work.objects, 16, "the near sphere only: {work:?}");
+    for (ray, got) in rays.iter().zip(&got) {
+        let want = brute.nearest(&scene.objects, ray, 0.0, Default::default(), None);
+        assert_eq!(want.map(|n| n.object), Some(1), "the near sphere is hit");
+        assert_eq!(*got, want);
+    }
+}
+
 /// An object that straddles the octree's cubes sits in several leaves; a packet crossing two
 /// of them tests it once a ray, not once a leaf (the walk's mailbox), and the answers stay
 /// brute force's. Sixteen feelers climb through a translucent sphere that every octant holds:

@@ -27,6 +27,9 @@ struct Node {
     index: u32,
     /// Number of items in a leaf, 0 for an inner node.
     count: u32,
+    /// Inner node: the axis (0, 1, 2 for x, y, z) its objects were split along, the left
+    /// child holding the lower centres.
+    axis: u32,
 }
 
 /// A BVH over boxes. Its leaves are ranges of [`Bvh::order`]: the walk reports positions in
@@ -174,7 +177,8 @@ impl Bvh {
 
     /// The walk of [`Bvh::walk`] for a packet of rays at once (Wald's "first active ray"):
     /// a node is opened when any ray of the packet meets its box, and the rays before the
-    /// first one that does are dropped for its whole subtree. `visit(k, from, limits, alone)`
+    /// first one that does are dropped for its whole subtree. Of two children, the nearer
+    /// along the split axis (for the direction of the first ray that needs either) goes first. `visit(k, from, limits, alone)`
     /// is called for every position k of a leaf some ray from index `from` on may meet (rays
     /// before `from` miss it; `alone`: k is the leaf's only position, whose box is the
     /// leaf's, so ray `from` meets it); ray r looks for hits after `t_min[r]` up to
@@ -214,11 +218,14 @@ impl Bvh {
                 let (l, r) = (node + 1, n.index);
                 match (first(l, from, limits), first(r, from, limits)) {
                     (Some(fl), Some(fr)) => {
-                        // the side an earlier ray already needs goes first
-                        let (near, far) = if fl <= fr {
-                            ((l, fl), (r, fr))
-                        } else {
+                        // the nearer side first, by the direction of the first ray that needs
+                        // one (the left child holds the lower centres along the split axis):
+                        // the hits found there may then spare the far side
+                        let down = rays[fl.min(fr)].down[n.axis as usize];
+                        let (near, far) = if down {
                             ((r, fr), (l, fl))
+                        } else {
+                            ((l, fl), (r, fr))
                         };
                         if stack.try_push(far).is_err() {
                             self.walk_packet_from(far, rays, t_min, limits, &mut visit);
@@ -314,6 +321,7 @@ impl Builder<'_> {
             bounds,
             index: offset as u32,
             count: items.len() as u32,
+            axis: 0,
         });
         if items.len() <= 1 {
             return me;
@@ -342,7 +350,7 @@ impl Builder<'_> {
                 self.centres[*a as usize][axis].total_cmp(&self.centres[*b as usize][axis])
             });
             let mid = items.len() / 2;
-            return self.inner(me, items, mid, offset, depth);
+            return self.inner(me, items, (mid, axis), offset, depth);
         };
         // partition: centres below the border go left
         let mut mid = 0;
@@ -355,16 +363,26 @@ impl Builder<'_> {
         if mid == 0 || mid == items.len() {
             mid = items.len() / 2;
         }
-        self.inner(me, items, mid, offset, depth)
+        self.inner(me, items, (mid, axis), offset, depth)
     }
 
-    fn inner(&mut self, me: u32, items: &mut [u32], mid: usize, offset: usize, depth: u32) -> u32 {
+    /// Makes node `me` an inner node: `items[..mid]` to the left, the rest to the right, split
+    /// along `axis`.
+    fn inner(
+        &mut self,
+        me: u32,
+        items: &mut [u32],
+        (mid, axis): (usize, usize),
+        offset: usize,
+        depth: u32,
+    ) -> u32 {
         let (left, right) = items.split_at_mut(mid);
         self.split(left, offset, depth + 1);
         let r = self.split(right, offset + mid, depth + 1);
         let n = &mut self.nodes[me as usize];
         n.index = r;
         n.count = 0;
+        n.axis = axis as u32;
         me
     }
 
