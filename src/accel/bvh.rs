@@ -178,13 +178,13 @@ impl Bvh {
     /// The walk of [`Bvh::walk`] for a packet of rays at once (Wald's "first active ray"):
     /// a node is opened when any ray of the packet meets its box, and the rays before the
     /// first one that does are dropped for its whole subtree. Of two children, the nearer
-    /// along the split axis (for the direction of the first ray that needs either) goes first. `visit(k, from, limits, alone)`
-    /// is called for every position k of a leaf some ray from index `from` on may meet (rays
-    /// before `from` miss it; `alone`: k is the leaf's only position, whose box is the
-    /// leaf's, so ray `from` meets it); ray r looks for hits after `t_min[r]` up to
-    /// `limits[r]`, which `visit` may shrink, or set to NaN when the ray needs nothing more
-    /// (a NaN limit is met by no box). `all` is the packet's [`Span`] for these limits, if it
-    /// has one.
+    /// along the split axis (for the direction of the first ray that needs either) goes
+    /// first. `visit(k, from, limits, alone)` is called for every position k of a leaf some
+    /// ray from index `from` on may meet (rays before `from` miss it; `alone`: k is the
+    /// leaf's only position, whose box is the leaf's, so ray `from` meets it); ray r looks
+    /// for hits after `t_min[r]` up to `limits[r]`, which `visit` may shrink, or set to NaN
+    /// when the ray needs nothing more (a NaN limit is met by no box). `all` is the packet's
+    /// [`Span`] for these limits, if it has one.
     pub fn walk_packet(
         &self,
         rays: &[RayBox],
