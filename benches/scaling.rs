@@ -36,8 +36,9 @@
 
 use std::time::Instant;
 
-use whitted::accel::{Accel, Accelerator, scatter};
+use whitted::accel::{Accel, Accelerator};
 use whitted::render::{self, Options, Stage};
+use whitted::scene::scatter;
 use whitted::scene::{Scene, parse};
 
 /// What `--help` prints.

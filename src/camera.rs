@@ -8,7 +8,7 @@
 //! H = N·tan(θ/2)        θ: vertical viewing angle, converted from degrees to radians
 //! W = H·A               A = width / height, the aspect ratio
 //! (u_c, v_r) = (−W + W·2c/n,  −H + H·2r/m)        column c of n, row r of m (r from the bottom)
-//! d = −N·n + W(2c/n − 1)·u + H(2r/m − 1)·v
+//! d = −N·n + u_c·u + v_r·v
 //! r(t) = e + d·t
 //! ```
 //!
@@ -51,9 +51,19 @@ pub fn pixel_on_near_plane(
     half_width: Real,
     half_height: Real,
 ) -> (Real, Real) {
-    let u_c = -half_width + half_width * 2.0 * c / columns;
-    let v_r = -half_height + half_height * 2.0 * r / rows;
+    // −W + W·2c/n written as W·(2c/n − 1): the centre column c = n/2 lands exactly on 0, so
+    // the middle ray of an odd-sized image is exactly d = −N·n
+    let u_c = half_width * (2.0 * c / columns - 1.0);
+    let v_r = half_height * (2.0 * r / rows - 1.0);
     (u_c, v_r)
+}
+
+/// Chapter 1's colour of a ray: its unit direction d̂ mapped from [−1, 1] to [0, 1] on each
+/// channel, (d̂ + 1)/2 (red = x, green = y, blue = z). The normals view of later chapters
+/// shows unit normals the same way.
+#[must_use]
+pub fn direction_colour(d: Vec3) -> Vec3 {
+    (crate::numeric::normalize(d) + Vec3::ONE) * 0.5
 }
 
 /// The viewing coordinate system (u, v, n) of an eye looking at a point, with `up` as the
@@ -121,15 +131,20 @@ impl Camera {
         })
     }
 
-    /// The notes' direction d = −N·n + W(2c/n − 1)·u + H(2r/m − 1)·v for a (possibly
-    /// fractional) column c and row r counted from the bottom. d reaches the near plane at t = 1.
+    /// The notes' direction d = −N·n + u_c·u + v_r·v towards the point (u_c, v_r) where the
+    /// (possibly fractional) column c and row r counted from the bottom land on the near plane
+    /// ([`pixel_on_near_plane`]). d reaches the near plane at t = 1.
     #[must_use]
     pub fn direction(&self, c: Real, r: Real) -> Vec3 {
-        let cols = self.columns as Real;
-        let rows = self.rows as Real;
-        -self.near * self.n
-            + self.half_width * (2.0 * c / cols - 1.0) * self.u
-            + self.half_height * (2.0 * r / rows - 1.0) * self.v
+        let (u_c, v_r) = pixel_on_near_plane(
+            c,
+            r,
+            self.columns as Real,
+            self.rows as Real,
+            self.half_width,
+            self.half_height,
+        );
+        -self.near * self.n + u_c * self.u + v_r * self.v
     }
 
     /// The ray r(t) = e + d·t through the notes' pixel corner (c, r).

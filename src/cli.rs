@@ -26,6 +26,7 @@ use std::sync::atomic::{AtomicBool, Ordering};
 use std::time::{Duration, Instant};
 
 use clap::Args;
+use clap::builder::PossibleValue;
 
 use crate::accel::Accel;
 use crate::error::Error;
@@ -34,6 +35,7 @@ use crate::output;
 use crate::real::Real;
 use crate::render::{self, Options, Stage, View};
 use crate::scene::load::{MAX_DEPTH, MAX_SAMPLES, MAX_SIDE};
+use crate::scene::scatter::Layout;
 use crate::scene::{self, Scene};
 use crate::shapes::Formula;
 
@@ -41,6 +43,56 @@ use crate::shapes::Formula;
 pub const SHOWCASE: &str = include_str!("../scenes/showcase.toml");
 /// The name the default scene goes by in messages.
 pub const SHOWCASE_NAME: &str = "scenes/showcase.toml";
+
+/// Gives a library type its command-line values and their help (clap's `ValueEnum`). The
+/// types themselves carry no command-line code; their names are the ones their `name()`
+/// methods give in reports (a test checks that the two agree).
+macro_rules! cli_values {
+    ($ty:ty { $($variant:path => $name:literal: $help:literal),+ $(,)? }) => {
+        impl clap::ValueEnum for $ty {
+            fn value_variants<'a>() -> &'a [Self] {
+                &[$($variant),+]
+            }
+
+            fn to_possible_value(&self) -> Option<PossibleValue> {
+                Some(match self {
+                    $($variant => PossibleValue::new($name).help($help)),+
+                })
+            }
+        }
+    };
+}
+
+cli_values!(Formula {
+    Formula::Textbook => "textbook": "the notes' formulas as printed",
+    Formula::Robust => "robust": "cancellation-free roots and discriminants (default)",
+});
+
+cli_values!(View {
+    View::Color => "color": "the chapter's colour (default)",
+    View::Flat => "flat": "the material's diffuse colour, unlit",
+    View::Normals => "normals": "the normal facing the camera, (n + 1)/2",
+    View::Depth => "depth": "the distance to the nearest hit, near = white",
+});
+
+cli_values!(Accel {
+    Accel::None => "none": "every object for every ray (the notes' step 4)",
+    Accel::Boxes => "boxes": "a bounding box per object",
+    Accel::Extents => "extents": "boxes, and projection extents for camera rays",
+    Accel::Octree => "octree": "cubes subdivided until each holds at most 4 objects",
+    Accel::Bvh => "bvh": "a bounding volume hierarchy, binned SAH (default)",
+});
+
+cli_values!(OffsetKind {
+    OffsetKind::Fixed => "fixed": "accept hits only for t > 1e-4 (world units): the classic",
+    OffsetKind::Scaled => "scaled": "move the origin by 1e-4·max(1, |P|) along the normal",
+    OffsetKind::ErrorBound => "error-bound": "move the origin by a bound on the hit point's rounding error (default)",
+});
+
+cli_values!(Layout {
+    Layout::Field => "field": "constant size and density over a square of side 2√N (default)",
+    Layout::Fog => "fog": "a fixed square; the radius shrinks as 1/√N",
+});
 
 /// Arguments shared by every chapter.
 #[derive(Args, Debug, Clone)]

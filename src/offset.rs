@@ -79,23 +79,27 @@ impl Offset {
     }
 }
 
-/// The three strategies by name, for the command line (`--offset fixed|scaled|error-bound`),
-/// each with its default ε.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash, clap::ValueEnum)]
+/// The three strategies by name (`--offset fixed|scaled|error-bound`), each with its
+/// default ε.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
 pub enum OffsetKind {
     /// [`Offset::Fixed`] with ε = [`Offset::FIXED_EPSILON`].
-    #[value(help = "accept hits only for t > 1e-4 (world units): the classic")]
     Fixed,
     /// [`Offset::Scaled`] with ε = [`Offset::SCALED_EPSILON`].
-    #[value(help = "move the origin by 1e-4·max(1, |P|) along the normal")]
     Scaled,
     /// [`Offset::ErrorBound`] (the default).
     #[default]
-    #[value(help = "move the origin by a bound on the hit point's rounding error (default)")]
     ErrorBound,
 }
 
 impl OffsetKind {
+    /// The three, the classic first.
+    pub const ALL: [OffsetKind; 3] = [
+        OffsetKind::Fixed,
+        OffsetKind::Scaled,
+        OffsetKind::ErrorBound,
+    ];
+
     /// The strategy with its default ε.
     #[must_use]
     pub fn offset(self) -> Offset {

@@ -15,9 +15,11 @@
 //! t = η·d + (η·cos θ₁ − cos θ₂)·n       cos θ₂ = √(1 − sin²θ₂)
 //! ```
 //!
-//! When sin²θ₂ would exceed 1 there is no transmitted ray: total internal reflection. It starts
-//! at the critical angle where sin θ₂ = 1, (c₂/c₁)·sin θc = 1, i.e. sin θc = n₂/n₁ (the notes
-//! print c₁/c₂, which gives sin θc > 1 for glass to air: an erratum).
+//! Past the critical angle there is no transmitted ray: total internal reflection. It starts
+//! where sin θ₂ = 1, (c₂/c₁)·sin θc = 1, i.e. sin θc = n₂/n₁ (the notes print c₁/c₂, which
+//! gives sin θc > 1 for glass to air: an erratum), so a ray with sin θ₁ > n₂/n₁ is all
+//! reflected. The notes' index n₂₁ = c₁/c₂ of medium 2 relative to medium 1 is n₂/n₁ in
+//! absolute indices n = c₀/c.
 //!
 //! ```toml
 //! [materials.glass]
@@ -35,23 +37,36 @@ pub fn reflect(d: Vec3, n: Vec3) -> Vec3 {
 }
 
 /// The transmitted direction for the unit incoming direction `d`, the unit normal `n` facing
-/// the incoming ray (d·n ≤ 0) and η = n₁/n₂; `None` under total internal reflection.
+/// the incoming ray (d·n ≤ 0), going from index n₁ into index n₂ (Snell: n₁·sin θ₁ = n₂·sin θ₂);
+/// `None` under total internal reflection, when θ₁ is past the critical angle
+/// ([`critical_angle_sine`]).
 #[must_use]
-pub fn refract(d: Vec3, n: Vec3, eta: Real) -> Option<Vec3> {
+pub fn refract(d: Vec3, n: Vec3, n1: Real, n2: Real) -> Option<Vec3> {
     let cos1 = -d.dot(n);
-    let sin2_sq = eta * eta * (1.0 - cos1 * cos1).max(0.0);
-    if sin2_sq > 1.0 {
-        return None; // total internal reflection
+    let sin1_sq = (1.0 - cos1 * cos1).max(0.0);
+    if let Some(sin_c) = critical_angle_sine(n1, n2)
+        && sin1_sq > sin_c * sin_c
+    {
+        return None; // sin θ₁ > sin θc: total internal reflection
     }
-    let cos2 = (1.0 - sin2_sq).sqrt();
+    let eta = n1 / n2;
+    let sin2_sq = eta * eta * sin1_sq; // sin²θ₂ = η²·sin²θ₁
+    let cos2 = (1.0 - sin2_sq).max(0.0).sqrt();
     Some(eta * d + (eta * cos1 - cos2) * n)
 }
 
-/// The critical angle θc (radians) going from index n₁ into index n₂: sin θc = n₂/n₁, i.e.
-/// (c₂/c₁)·sin θc = 1. `None` when n₁ ≤ n₂ (no total internal reflection is possible).
+/// sin θc = n₂/n₁, the sine of the critical angle going from index n₁ into index n₂, where the
+/// transmitted ray would leave at θ₂ = 90°; `None` when n₁ ≤ n₂ (no total internal reflection
+/// is possible). In the notes' speeds, (c₂/c₁)·sin θc = 1 (they print c₁/c₂: an erratum).
+#[must_use]
+pub fn critical_angle_sine(n1: Real, n2: Real) -> Option<Real> {
+    (n1 > n2).then(|| n2 / n1)
+}
+
+/// The critical angle θc itself, in radians: asin([`critical_angle_sine`]).
 #[must_use]
 pub fn critical_angle(n1: Real, n2: Real) -> Option<Real> {
-    (n1 > n2).then(|| (n2 / n1).asin())
+    critical_angle_sine(n1, n2).map(Real::asin)
 }
 
 /// The indices (n₁, n₂) for a ray hitting a surface of index `ior` in air: entering goes from

@@ -13,9 +13,11 @@
 //! caustics: the feeler is not bent). The feeler starts from an offset origin so that it does
 //! not meet the surface it leaves (see [`crate::offset`]).
 //!
-//! [`transmittance`] is the brute-force form, every object in turn; the renderer asks the
-//! acceleration structure instead ([`crate::accel::Accelerator::transmittance`]), which skips
-//! the objects the feeler cannot meet and returns exactly the same share.
+//! Three small functions make the chapter: [`feeler`] builds S(u), [`blocks`] says whether an
+//! object's hits lie in ]u_min, 1], and [`transmittance`] multiplies the transmissions of the
+//! objects that do. Which objects to test is the acceleration structure's business
+//! ([`crate::accel::Accelerator::transmittance`]): with `--accel none` every object in turn,
+//! otherwise only those whose boxes the feeler meets, with the same answer.
 //!
 //! ```toml
 //! [[lights]]
@@ -23,37 +25,37 @@
 //! shadows = true        # false: no feeler rays for this light
 //! ```
 
-use crate::material::Material;
 use crate::ray::Ray;
 use crate::real::{Real, Vec3};
-use crate::shapes::{Formula, Hits, Object};
+use crate::shapes::Hits;
 
-/// True when one of a feeler's hits lies between its start and the light: u ∈ ]u_min, 1].
+/// The feeler S(u) = P + (L − P)·u from the point P towards the light at L: u = 0 at P, u = 1
+/// at the light, so an object between them is met with u ∈ ]0, 1].
+#[inline]
+#[must_use]
+pub fn feeler(p: Vec3, light: Vec3) -> Ray {
+    Ray::new(p, light - p)
+}
+
+/// True when one of a feeler's hits lies between its start and the light: u ∈ ]u_min, 1]
+/// (u_min = 0 unless the start is left on the surface, see [`crate::offset`]). A hit behind
+/// the start (u ≤ u_min) or beyond the light (u > 1) casts no shadow.
+#[inline]
 #[must_use]
 pub fn blocks(hits: &Hits, u_min: Real) -> bool {
     hits.as_slice().iter().any(|h| h.t > u_min && h.t <= 1.0)
 }
 
-/// The share of a light that reaches the start of the feeler `S(u) = origin + (L − origin)·u`:
-/// 1 when nothing lies between, 0 behind an opaque object, and the product of the
-/// transmission coefficients of the translucent objects crossed with u ∈ ]u_min, 1].
+/// The share of a light that reaches the start of a feeler, from the transmissions k_t of the
+/// objects it crosses (in scene order): 1 when it crosses none, their product otherwise, 0
+/// as soon as one is opaque (k_t = 0).
 #[must_use]
-pub fn transmittance(
-    objects: &[Object],
-    materials: &[Material],
-    origin: Vec3,
-    light: Vec3,
-    u_min: Real,
-    formula: Formula,
-) -> Real {
-    let feeler = Ray::new(origin, light - origin); // S(u) = P + (L − P)u
+pub fn transmittance(crossed: impl IntoIterator<Item = Real>) -> Real {
     let mut share = 1.0;
-    for object in objects {
-        if blocks(&object.intersect(&feeler, formula), u_min) {
-            share *= materials[object.material].transmission;
-            if share == 0.0 {
-                break;
-            }
+    for k_t in crossed {
+        share *= k_t;
+        if share == 0.0 {
+            break;
         }
     }
     share

@@ -19,7 +19,7 @@
 //! transform = [ { scale = [0.9, 0.9, 1.1] }, { rotate_x = -90.0 }, { translate = [0.2, 0.1, -2.2] } ]
 //! ```
 
-use crate::real::{Mat3, Mat4, Real, Vec3};
+use crate::real::{Mat3, Mat4, Real, Vec3, Vec4};
 
 /// One elementary placement step. Angles are in degrees, as in the scene file.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -39,15 +39,40 @@ pub enum Step {
 }
 
 impl Step {
-    /// The step's matrix.
+    /// The step's matrix. A rotation by a whole multiple of 90° has exact entries 0 and ±1
+    /// (see [`sin_cos_degrees`]), so an upright plane, cylinder or cone is placed exactly.
     #[must_use]
     pub fn matrix(&self) -> Mat4 {
         match *self {
             Step::Scale(s) => Mat4::from_scale(s),
-            Step::RotateX(a) => Mat4::from_rotation_x(a.to_radians()),
-            Step::RotateY(a) => Mat4::from_rotation_y(a.to_radians()),
-            Step::RotateZ(a) => Mat4::from_rotation_z(a.to_radians()),
-            Step::RotateAxis(axis, a) => Mat4::from_axis_angle(axis.normalize(), a.to_radians()),
+            Step::RotateX(a) => {
+                let (s, c) = sin_cos_degrees(a);
+                Mat4::from_cols(
+                    Vec4::X,
+                    Vec4::new(0.0, c, s, 0.0),
+                    Vec4::new(0.0, -s, c, 0.0),
+                    Vec4::W,
+                )
+            }
+            Step::RotateY(a) => {
+                let (s, c) = sin_cos_degrees(a);
+                Mat4::from_cols(
+                    Vec4::new(c, 0.0, -s, 0.0),
+                    Vec4::Y,
+                    Vec4::new(s, 0.0, c, 0.0),
+                    Vec4::W,
+                )
+            }
+            Step::RotateZ(a) => {
+                let (s, c) = sin_cos_degrees(a);
+                Mat4::from_cols(
+                    Vec4::new(c, s, 0.0, 0.0),
+                    Vec4::new(-s, c, 0.0, 0.0),
+                    Vec4::Z,
+                    Vec4::W,
+                )
+            }
+            Step::RotateAxis(axis, a) => rotation_about(axis.normalize(), sin_cos_degrees(a)),
             Step::Translate(t) => Mat4::from_translation(t),
         }
     }
@@ -80,9 +105,51 @@ impl Step {
     }
 }
 
-/// The rotation that turns +z onto the unit vector `to`, as a single step.
+/// (sin θ, cos θ) for θ in degrees. For a whole multiple of 90° the values are exact: 0 and ±1,
+/// where `θ.to_radians().sin_cos()` would give cos 90° = 6.1e-17 (f64) or −4.4e-8 (f32), tilting
+/// an upright plane by that much: a ray parallel to the floor would then meet it far away.
+#[must_use]
+pub fn sin_cos_degrees(degrees: Real) -> (Real, Real) {
+    let turns = degrees / 90.0;
+    if turns == turns.round() && turns.abs() < 1e15 {
+        // a whole number of quarter turns: which quarter, from 0 to 3
+        return match (turns.round() as i64).rem_euclid(4) {
+            0 => (0.0, 1.0),
+            1 => (1.0, 0.0),
+            2 => (0.0, -1.0),
+            _ => (-1.0, 0.0),
+        };
+    }
+    degrees.to_radians().sin_cos()
+}
+
+/// The rotation about the unit `axis` whose angle has sine and cosine `(s, c)` (Rodrigues'
+/// formula: R = c·I + s·[axis]ₓ + (1 − c)·axis·axisᵀ).
+fn rotation_about(axis: Vec3, (s, c): (Real, Real)) -> Mat4 {
+    let k = 1.0 - c;
+    let (x, y, z) = (axis.x, axis.y, axis.z);
+    let (xs, ys, zs) = (x * s, y * s, z * s);
+    let (xy, xz, yz) = (x * y * k, x * z * k, y * z * k);
+    Mat4::from_cols(
+        Vec4::new(x * x * k + c, xy + zs, xz - ys, 0.0),
+        Vec4::new(xy - zs, y * y * k + c, yz + xs, 0.0),
+        Vec4::new(xz + ys, yz - xs, z * z * k + c, 0.0),
+        Vec4::W,
+    )
+}
+
+/// The rotation that turns +z onto the unit vector `to`, as a single step. Onto a coordinate
+/// axis (±x, ±y, −z) it is a quarter or half turn about x or y, whose matrix is exact.
 #[must_use]
 pub fn rotation_from_z(to: Vec3) -> Step {
+    // rotating z by θ about x gives (0, −sin θ, cos θ); about y, (sin θ, 0, cos θ)
+    match to.to_array() {
+        [0.0, 0.0, z] if z > 0.0 => return Step::RotateZ(0.0),
+        [0.0, 0.0, _] => return Step::RotateX(180.0),
+        [0.0, y, 0.0] => return Step::RotateX(if y > 0.0 { -90.0 } else { 90.0 }),
+        [x, 0.0, 0.0] => return Step::RotateY(if x > 0.0 { 90.0 } else { -90.0 }),
+        _ => {}
+    }
     let z = Vec3::Z;
     let cos = z.dot(to).clamp(-1.0, 1.0);
     match z.cross(to).try_normalize() {

@@ -1,13 +1,18 @@
 //! Speed without changing a pixel (notes: "Computational Aspects"): every acceleration
 //! technique gives exactly the brute-force image, whatever the number of threads.
 
+mod common;
+
+use common::brute_share;
 use whitted::accel::aabb::{RayBox, polyhedron_bounds, world_bounds};
 use whitted::accel::extents::{Footprint, footprint};
-use whitted::accel::{Aabb, Accel, Accelerator, Bvh, Octree, scatter};
+use whitted::accel::{Aabb, Accel, Accelerator, Bvh, Octree};
 use whitted::ray::Ray;
 use whitted::real::{Real, Vec3, real, vec3};
 use whitted::render::{self, Framebuffer, Options, Stage, Stats, TILE, View};
+use whitted::scene::scatter;
 use whitted::scene::{Scene, parse};
+use whitted::shadow;
 use whitted::shapes::{Facet, Polyhedron};
 
 fn showcase() -> Scene {
@@ -577,11 +582,12 @@ fn an_object_in_several_leaves_is_tested_once_a_ray() {
         let tree = Accelerator::build(&scene.objects, &scene.camera(), kind, TILE);
         let mut share = [Real::NAN; 16];
         let _ = whitted::accel::counters::take();
+        let feelers: Vec<Ray> = origins.iter().map(|&o| shadow::feeler(o, light)).collect();
         tree.transmittance_packet(
             &scene.objects,
             &scene.materials,
-            &origins,
             light,
+            &feelers,
             &u_min,
             Default::default(),
             &mut share,
@@ -593,11 +599,10 @@ fn an_object_in_several_leaves_is_tested_once_a_ray() {
             "{kind:?}: the big sphere once a feeler: {work:?}"
         );
         for (k, &o) in origins.iter().enumerate() {
-            let want = whitted::shadow::transmittance(
+            let want = brute_share(
                 &scene.objects,
                 &scene.materials,
-                o,
-                light,
+                &shadow::feeler(o, light),
                 u_min[k],
                 Default::default(),
             );
@@ -733,21 +738,21 @@ fn packets_answer_as_single_rays_do() {
             let u_max = if round % 4 < 2 { 1e-3 } else { 0.9 };
             let u_min: Vec<Real> = (0..n).map(|_| real(r(1e-9, u_max))).collect();
             let mut share = vec![Real::NAN; n];
+            let feelers: Vec<Ray> = origins.iter().map(|&o| shadow::feeler(o, light)).collect();
             tree.transmittance_packet(
                 &scene.objects,
                 &scene.materials,
-                &origins,
                 light,
+                &feelers,
                 &u_min,
                 Default::default(),
                 &mut share,
             );
             for k in 0..n {
-                let want = whitted::shadow::transmittance(
+                let want = brute_share(
                     &scene.objects,
                     &scene.materials,
-                    origins[k],
-                    light,
+                    &feelers[k],
                     u_min[k],
                     Default::default(),
                 );

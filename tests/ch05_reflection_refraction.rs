@@ -44,7 +44,7 @@ fn reflection_of_a_45_degree_ray() {
 /// plane of incidence.
 #[test]
 fn snell_air_to_glass_at_30_degrees() {
-    let t = refract(incoming(30.0), Vec3::Y, 1.0 / 1.5).unwrap();
+    let t = refract(incoming(30.0), Vec3::Y, 1.0, 1.5).unwrap();
     assert_abs_diff_eq!(t.length(), 1.0, epsilon = TOL);
     let sin2 = t.x; // the tangential component of a unit vector is sin θ₂
     assert_abs_diff_eq!(sin2, 1.0 / 3.0, epsilon = TOL);
@@ -88,11 +88,11 @@ fn critical_angle_from_glass_to_air() {
 #[test]
 fn glass_to_air_just_below_and_just_above_the_critical_angle() {
     let theta_c = critical_angle(1.5, 1.0).unwrap().to_degrees();
-    let below = refract(incoming(theta_c - 0.1), Vec3::Y, 1.5).unwrap();
+    let below = refract(incoming(theta_c - 0.1), Vec3::Y, 1.5, 1.0).unwrap();
     assert_abs_diff_eq!(below.length(), 1.0, epsilon = 10.0 * TOL);
     assert!(below.x > 0.99 && below.x < 1.0, "sin θ₂ = {}", below.x);
-    assert!(refract(incoming(theta_c + 0.1), Vec3::Y, 1.5).is_none());
-    assert!(refract(incoming(89.0), Vec3::Y, 1.5).is_none());
+    assert!(refract(incoming(theta_c + 0.1), Vec3::Y, 1.5, 1.0).is_none());
+    assert!(refract(incoming(89.0), Vec3::Y, 1.5, 1.0).is_none());
 }
 
 /// A camera on the axis of a glass sphere, a red wall behind it.
@@ -112,7 +112,7 @@ fn glass_sphere_scene(max_depth: u32) -> String {
 #[test]
 fn ray_along_the_axis_of_a_glass_sphere_leaves_undeflected() {
     assert_vec_eq(
-        refract(Vec3::NEG_Z, Vec3::Z, 1.0 / 1.5).unwrap(),
+        refract(Vec3::NEG_Z, Vec3::Z, 1.0, 1.5).unwrap(),
         Vec3::NEG_Z,
         TOL,
     );

@@ -686,7 +686,7 @@ fn total_internal_reflection_starts_exactly_at_the_critical_angle() {
     assert!((f(theta_c).to_degrees() - 41.810_314_895_778_6).abs() < 1e-4);
     let n = Vec3::Y;
     let at = |theta: f64| vec3(theta.sin(), -theta.cos(), 0.0);
-    let below = optics::refract(at(f(theta_c) - tol::CRITICAL_STEP), n, n1 / n2)
+    let below = optics::refract(at(f(theta_c) - tol::CRITICAL_STEP), n, n1, n2)
         .expect("below the critical angle light gets through");
     assert!((f(below.length()) - 1.0).abs() < 1e3 * eps());
     assert!(
@@ -694,7 +694,7 @@ fn total_internal_reflection_starts_exactly_at_the_critical_angle() {
         "nearly tangent: {below:?}"
     );
     assert_eq!(
-        optics::refract(at(f(theta_c) + tol::CRITICAL_STEP), n, n1 / n2),
+        optics::refract(at(f(theta_c) + tol::CRITICAL_STEP), n, n1, n2),
         None
     );
     // the notes' condition (c₁/c₂)·sin θc = 1 with c = c₀/n: sin θc = n₁/n₂

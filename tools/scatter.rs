@@ -1,9 +1,9 @@
 //! `scatter N [--seed S] [-o scene.toml]`: writes the scaling scene of N random spheres over a
-//! plane (see `whitted::accel::scatter`), to a file or to stdout.
+//! plane (see `whitted::scene::scatter`), to a file or to stdout.
 
 use std::process::ExitCode;
 
-use whitted::accel::scatter;
+use whitted::scene::scatter;
 
 /// Writes a scene of N random spheres over a plane, for measuring how rendering time grows
 /// with the number of objects under each `--accel`.

@@ -165,7 +165,7 @@ fn hit_mask(scene: &Scene, options: &Options) -> Vec<u8> {
     let mut mask = Vec::with_capacity((options.width * options.height) as usize);
     for y in 0..options.height {
         for x in 0..options.width {
-            let ray = tracer.camera.pixel_ray(x, y, 0.5, 0.5);
+            let ray = tracer.camera().pixel_ray(x, y, 0.5, 0.5);
             let hit = tracer.nearest(&ray, 0.0);
             mask.push(hit.map_or(0, |n| (n.object + 1).min(255) as u8));
         }

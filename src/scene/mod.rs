@@ -14,6 +14,7 @@
 
 pub mod format;
 pub mod load;
+pub mod scatter;
 
 pub use load::{load, parse};
 

@@ -24,7 +24,7 @@
 //! the roots in the stable form q/a, c/q.
 
 use super::cylinder::Extremes;
-use super::quadratic::{Formula, solve, stable_pair};
+use super::quadratic::{Formula, solve, stable_roots};
 use super::{Hit, Hits, Part, Span};
 use crate::ray::Ray;
 use crate::real::{Real, Vec3};
@@ -98,7 +98,7 @@ fn intersect_robust(ray: &Ray) -> Hits {
             None
         };
     } else {
-        match stable_pair(a, b, c, discriminant(ray)) {
+        match stable_roots(a, b, c, discriminant(ray)) {
             Some((t1, t2)) if a > 0.0 => pieces[0] = Some(wall(t1, t2)),
             Some((t1, t2)) => {
                 pieces[0] = Some(wall(Real::NEG_INFINITY, t1));

@@ -12,7 +12,7 @@
 //! answer is their common part, so a ray through a rim can never slip between a wall test and
 //! a cap test, and a = 0 needs no special case.
 
-use super::quadratic::{Formula, solve, stable_pair};
+use super::quadratic::{Formula, solve, stable_roots};
 use super::{Hit, Hits, Part, Span, entering_leaving};
 use crate::ray::Ray;
 use crate::real::{Real, Vec3};
@@ -26,6 +26,15 @@ pub fn coefficients(ray: &Ray) -> (Real, Real, Real) {
         e.x * d.x + e.y * d.y,       // b = e_x d_x + e_y d_y
         e.x * e.x + e.y * e.y - 1.0, // c = e_x² + e_y² − 1
     )
+}
+
+/// The wall's discriminant b² − ac, computed as a·(1 − |f|²) with f = (e − (b/a)·d) in x and
+/// y: the point of the line's shadow on the z = 0 plane closest to the axis. The difference is
+/// taken between numbers of the size of the radius, not of |e|², as for the sphere.
+#[must_use]
+pub fn discriminant(ray: &Ray, a: Real, b: Real) -> Real {
+    let f = ray.origin.truncate() - ray.dir.truncate() * (b / a);
+    a * (1.0 - f.dot(f))
 }
 
 /// The object-space normal of `part` at the point p.
@@ -57,10 +66,7 @@ fn intersect_robust(ray: &Ray) -> Hits {
             return Hits::none();
         }
     } else {
-        // Δ = a·(1 − |f|²) with f the point of the (x, y) line closest to the axis
-        let f = ray.origin.truncate() - ray.dir.truncate() * (b / a);
-        let disc = a * (1.0 - f.dot(f));
-        match stable_pair(a, b, c, disc) {
+        match stable_roots(a, b, c, discriminant(ray, a, b)) {
             Some((t1, t2)) => Span {
                 lo: t1,
                 lo_part: Part::Wall,

@@ -36,7 +36,7 @@ pub use polyhedron::{Facet, Polyhedron};
 pub use quadratic::Formula;
 
 use crate::ray::Ray;
-use crate::real::{Real, Vec3};
+use crate::real::{Mat4, Real, Vec3};
 use crate::transform::Placement;
 
 /// Which part of a shape a ray hit.
@@ -145,11 +145,33 @@ impl Hits {
         self.len == 0
     }
 
-    /// The first hit with t > `t_min`: the visible one for a ray that starts at t_min.
+    /// The first hit with t > `t_min`: the visible one for a ray that starts at t_min (the
+    /// hits come in increasing t).
     #[must_use]
     pub fn first_after(&self, t_min: Real) -> Option<Hit> {
         self.as_slice().iter().copied().find(|h| h.t > t_min)
     }
+}
+
+/// The nearest hit of a ray over the objects of a scene: the hit (world normal) and the index
+/// of the object hit.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Nearest {
+    /// The hit.
+    pub hit: Hit,
+    /// Index of the object hit.
+    pub object: usize,
+}
+
+/// Step 5 of the notes' process: of the hits found, the visible one has the smallest t. True
+/// when a hit at `t` on object number `object` comes before the best so far, at `best_t` on
+/// `best_object` (∞ and any index when there is none yet). Two hits at the same t go to the
+/// object listed first in the scene, so the answer does not depend on the order in which the
+/// objects were tested.
+#[inline]
+#[must_use]
+pub fn nearer(t: Real, object: usize, best_t: Real, best_object: usize) -> bool {
+    t < best_t || (t == best_t && object < best_object)
 }
 
 /// The closed set of generic shapes.
@@ -168,6 +190,18 @@ pub enum Shape {
 }
 
 impl Shape {
+    /// The hits of a world ray with the shape placed by a matrix M whose inverse is `inv`: the
+    /// ray carried into object space, M⁻¹r(t) = M⁻¹e + M⁻¹d·t ([`Ray::transformed`]), and
+    /// intersected with the generic shape. t is the world ray's; the normals stay in object
+    /// space (carry them back with [`Placement::normal_to_world`]). Every ray–object test of
+    /// every render path goes through here: [`Object::intersect`] and the acceleration
+    /// structures, which keep M⁻¹ and the shape side by side for speed.
+    #[inline]
+    #[must_use]
+    pub fn intersect_placed(&self, inv: &Mat4, ray: &Ray, formula: Formula) -> Hits {
+        self.intersect_local(&ray.transformed(inv), formula)
+    }
+
     /// Intersects an object-space ray with the generic shape. Normals are in object space.
     #[must_use]
     pub fn intersect_local(&self, ray: &Ray, formula: Formula) -> Hits {
@@ -232,19 +266,18 @@ impl Object {
         }
         hits
     }
-}
 
-impl Object {
     /// The hits of a world ray with the object, normals left in object space: the first half
-    /// of [`Object::intersect`]. The acceleration structures ([`crate::accel`]) use it to carry
-    /// only the nearest hit's normal back to the world, and none for a feeler ray.
+    /// of [`Object::intersect`] (see [`Shape::intersect_placed`]).
     #[inline]
     #[must_use]
     pub fn intersect_object_space(&self, ray: &Ray, formula: Formula) -> Hits {
         self.shape
-            .intersect_local(&ray.transformed(&self.placement.inv), formula)
+            .intersect_placed(&self.placement.inv, ray, formula)
     }
+}
 
+impl Object {
     /// The hit point `p` (computed as e + d·t, so off the surface by an error that grows with
     /// the distance the ray travelled) moved back onto the surface, with a componentwise bound
     /// on the error of the result.

@@ -136,15 +136,14 @@ impl Polyhedron {
         let mut t_far = Real::INFINITY;
         let (mut near_facet, mut far_facet) = (0, 0);
         for (i, facet) in self.facets.iter().enumerate() {
-            let denom = facet.normal.dot(ray.dir); // n·d
-            let num = facet.d - facet.normal.dot(ray.origin); // d − n·e
+            let denom = facet.normal.dot(ray.dir); // n·d: < 0 entering, > 0 leaving
             if denom == 0.0 {
-                if num < 0.0 {
+                if facet.normal.dot(ray.origin) > facet.d {
                     return Hits::none(); // parallel and outside this facet
                 }
                 continue; // parallel and inside: this facet does not bound the ray
             }
-            let t = num / denom;
+            let t = facet_t(facet, ray);
             if denom < 0.0 {
                 if t > t_near {
                     (t_near, near_facet) = (t, i); // outside to inside

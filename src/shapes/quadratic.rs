@@ -18,16 +18,28 @@ use crate::numeric::sign;
 use crate::real::Real;
 
 /// Which formulas the intersection routines use.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash, clap::ValueEnum)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
 pub enum Formula {
     /// The notes' formulas as printed: t = −b/a ± √(b² − ac)/a, discriminant b² − ac,
     /// and the notes' range tests for the cylinder and cone.
-    #[value(help = "the notes' formulas as printed")]
     Textbook,
     /// Cancellation-free roots and discriminants, interval clipping for finite shapes.
     #[default]
-    #[value(help = "cancellation-free roots and discriminants (default)")]
     Robust,
+}
+
+impl Formula {
+    /// Both, the notes' first.
+    pub const ALL: [Formula; 2] = [Formula::Textbook, Formula::Robust];
+
+    /// The name reports and `--formula` use.
+    #[must_use]
+    pub fn name(self) -> &'static str {
+        match self {
+            Formula::Textbook => "textbook",
+            Formula::Robust => "robust",
+        }
+    }
 }
 
 /// The real roots of a quadratic, in increasing order; non-finite roots are dropped.
@@ -71,36 +83,35 @@ pub fn discriminant(a: Real, b: Real, c: Real) -> Real {
 }
 
 /// The roots of at² + 2bt + c = 0 given its discriminant Δ = b² − ac (computed by the caller,
-/// which may have a more accurate way than [`discriminant`]).
+/// which may have a more accurate way than [`discriminant`]): the notes' form for
+/// [`Formula::Textbook`], [`stable_roots`] for [`Formula::Robust`]. Roots that are not finite
+/// are dropped.
 #[must_use]
 pub fn solve_with_discriminant(a: Real, b: Real, c: Real, disc: Real, formula: Formula) -> Roots {
+    match formula {
+        Formula::Textbook => textbook_roots(a, b, disc),
+        Formula::Robust => match stable_roots(a, b, c, disc) {
+            Some((t1, t2)) => Roots::from_pair(t1, t2),
+            None => Roots::None,
+        },
+    }
+}
+
+/// The notes' t = −b/a ± √(b² − ac)/a, as printed.
+fn textbook_roots(a: Real, b: Real, disc: Real) -> Roots {
     if disc.is_nan() || disc < 0.0 {
         return Roots::None;
     }
-    let root = disc.sqrt();
-    match formula {
-        Formula::Textbook => {
-            // t = −b/a ± √(b² − ac)/a, as printed in the notes
-            if disc == 0.0 {
-                let t = -b / a;
-                return if t.is_finite() {
-                    Roots::One(t)
-                } else {
-                    Roots::None
-                };
-            }
-            Roots::from_pair(-b / a - root / a, -b / a + root / a)
-        }
-        Formula::Robust => {
-            let q = -(b + sign(b) * root);
-            if disc == 0.0 && a != 0.0 {
-                return Roots::from_pair(q / a, q / a);
-            }
-            // q/a is the root of large magnitude, c/q the small one; for a = 0 the equation is
-            // linear, q = −2b and c/q = −c/(2b) is its only root.
-            Roots::from_pair(q / a, c / q)
-        }
+    if disc == 0.0 {
+        let t = -b / a;
+        return if t.is_finite() {
+            Roots::One(t)
+        } else {
+            Roots::None
+        };
     }
+    let root = disc.sqrt();
+    Roots::from_pair(-b / a - root / a, -b / a + root / a)
 }
 
 /// The roots of at² + 2bt + c = 0 with the notes' discriminant b² − ac.
@@ -109,21 +120,28 @@ pub fn solve(a: Real, b: Real, c: Real, formula: Formula) -> Roots {
     solve_with_discriminant(a, b, c, discriminant(a, b, c), formula)
 }
 
-/// Both roots of at² + 2bt + c = 0 (a ≠ 0) from its discriminant Δ ≥ 0, in increasing order,
-/// by the stable form, *keeping* infinite roots: for a of a few ulps the far root may overflow
-/// to ±∞, which is still the right end of a stretch of the line (a tube or a cone nappe seen
-/// almost along its axis). `None` when Δ < 0 or is NaN.
+/// Both roots of at² + 2bt + c = 0 from its discriminant Δ = b² − ac, in increasing order, by
+/// the cancellation-free form
+///
+/// ```text
+/// q = −(b + sign(b)·√Δ)      t₁ = q/a      t₂ = c/q      (t₁ = t₂ = q/a when Δ = 0)
+/// ```
+///
+/// *keeping* infinite roots: for a of a few ulps the far root may overflow to ±∞, which is
+/// still the right end of a stretch of the line (a tube or a cone nappe seen almost along its
+/// axis), and for a = 0 (a linear equation) q/a is ±∞ and c/q = −c/(2b) the one real root.
+/// `None` when Δ < 0, or when a root is NaN (a = b = 0).
 #[must_use]
-pub fn stable_pair(a: Real, b: Real, c: Real, disc: Real) -> Option<(Real, Real)> {
-    if disc.is_nan() || disc < 0.0 || a == 0.0 {
+pub fn stable_roots(a: Real, b: Real, c: Real, disc: Real) -> Option<(Real, Real)> {
+    if disc.is_nan() || disc < 0.0 {
         return None;
     }
     let q = -(b + sign(b) * disc.sqrt());
-    if q == 0.0 {
-        // b = 0 and Δ = 0, so ac = 0 with a ≠ 0: the double root t = 0
-        return Some((0.0, 0.0));
-    }
-    let (t1, t2) = (q / a, c / q);
+    let (t1, t2) = if disc == 0.0 && a != 0.0 {
+        (q / a, q / a) // a double root
+    } else {
+        (q / a, c / q)
+    };
     if t1.is_nan() || t2.is_nan() {
         return None;
     }

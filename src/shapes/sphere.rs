@@ -8,16 +8,30 @@
 //! size of the radius, not of |e|² (Ray Tracing Gems, ch. 7). This keeps small spheres far away
 //! hittable in f32.
 
-use super::quadratic::{Formula, Roots, discriminant, solve_with_discriminant};
+use super::quadratic::{self, Formula, Roots, solve_with_discriminant};
 use super::{Hit, Hits, Part, entering_leaving};
 use crate::ray::Ray;
-use crate::real::Real;
+use crate::real::{Real, Vec3};
 
 /// The sphere's quadratic coefficients (a, b, c) for a·t² + 2b·t + c = 0.
 #[must_use]
 pub fn coefficients(ray: &Ray) -> (Real, Real, Real) {
     let (e, d) = (ray.origin, ray.dir);
     (d.dot(d), e.dot(d), e.dot(e) - 1.0) // a = |d|², b = e·d, c = |e|² − 1
+}
+
+/// The robust discriminant b² − ac = a·(1 − |f|²), with f = e − (b/a)·d the point of the line
+/// closest to the centre (Ray Tracing Gems, ch. 7): both terms are of the size of the radius.
+#[must_use]
+pub fn discriminant(ray: &Ray, a: Real, b: Real) -> Real {
+    let f = ray.origin - ray.dir * (b / a);
+    a * (1.0 - f.dot(f))
+}
+
+/// The normal at the point P of the generic sphere: P itself.
+#[must_use]
+pub fn normal(p: Vec3) -> Vec3 {
+    p
 }
 
 /// Intersects an object-space ray with the unit sphere.
@@ -28,15 +42,12 @@ pub fn intersect(ray: &Ray, formula: Formula) -> Hits {
         return Hits::none();
     }
     let disc = match formula {
-        Formula::Textbook => discriminant(a, b, c),
-        Formula::Robust => {
-            let f = ray.origin - ray.dir * (b / a); // closest point of the line to the centre
-            a * (1.0 - f.dot(f))
-        }
+        Formula::Textbook => quadratic::discriminant(a, b, c),
+        Formula::Robust => discriminant(ray, a, b),
     };
     let hit = |t: Real| Hit {
         t,
-        normal: ray.at(t), // the normal at P is P
+        normal: normal(ray.at(t)),
         part: Part::Surface,
         entering: true,
     };

@@ -40,3 +40,24 @@ pub fn centre(scene: &Scene, stage: Stage) -> (Vec3, Stats) {
     let (fb, stats) = render_at(scene, stage, 1, 1);
     (fb.pixels[0], stats)
 }
+
+use whitted::material::Material;
+use whitted::ray::Ray;
+use whitted::shapes::{Formula, Object};
+
+/// The share of a light that the feeler lets through, from first principles: every object in
+/// scene order, [`whitted::shadow::blocks`] on its hits, [`whitted::shadow::transmittance`] of
+/// the transmissions of those that block. The oracle the accelerated answers must match.
+pub fn brute_share(
+    objects: &[Object],
+    materials: &[Material],
+    feeler: &Ray,
+    u_min: Real,
+    formula: Formula,
+) -> Real {
+    let crossed = objects
+        .iter()
+        .filter(|o| whitted::shadow::blocks(&o.intersect(feeler, formula), u_min))
+        .map(|o| materials[o.material].transmission);
+    whitted::shadow::transmittance(crossed)
+}

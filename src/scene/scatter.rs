@@ -1,4 +1,4 @@
-//! Scaling scenes: N random spheres over a plane, for measuring how each [`super::Accel`]
+//! Scaling scenes: N random spheres over a plane, for measuring how each [`crate::accel::Accel`]
 //! grows with the number of objects. Two layouts:
 //!
 //! - [`Layout::Field`] (the default): spheres of radius 0.35 at a constant density, one per
@@ -46,7 +46,7 @@ impl SplitMix64 {
 }
 
 /// How the spheres are spread (see the module docs).
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, clap::ValueEnum)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub enum Layout {
     /// Constant size and density over a square of side 2√N.
     #[default]

@@ -1,0 +1,72 @@
+#!/usr/bin/env python3
+"""Two builds of a chapter binary, side by side: the same arguments, their runs alternated.
+
+    python3 benches/ab.py OLD_BINARY NEW_BINARY [--runs N] [--threads T] -- ARGS...
+
+Runs OLD and NEW in turns (A B, then B A, ...) after one unmeasured run of each, so a drift
+of the machine's speed weighs on both alike, and prints each one's median wall time (the whole
+process, as a user waits for it), the ratio of the medians (NEW / OLD: below 1 is faster), and
+the median and range of the runs' own ratios. `-o` is pointed at a temporary file unless ARGS
+give one. With --threads, RAYON_NUM_THREADS is set for both.
+"""
+import os
+import statistics
+import subprocess
+import sys
+import tempfile
+import time
+
+
+def main(argv):
+    if "--" not in argv or len(argv) < 3:
+        print(__doc__.strip(), file=sys.stderr)
+        return 2
+    split = argv.index("--")
+    head, args = argv[:split], argv[split + 1:]
+    runs, threads, binaries = 11, None, []
+    i = 0
+    while i < len(head):
+        if head[i] == "--runs":
+            runs = int(head[i + 1])
+            i += 2
+        elif head[i] == "--threads":
+            threads = head[i + 1]
+            i += 2
+        else:
+            binaries.append(head[i])
+            i += 1
+    if len(binaries) != 2 or runs < 1:
+        print("error: give exactly two binaries and --runs of at least 1", file=sys.stderr)
+        return 2
+    env = dict(os.environ)
+    if threads:
+        env["RAYON_NUM_THREADS"] = threads
+    tmp = tempfile.mkdtemp(prefix="whitted-ab-")
+    if "-o" not in args:
+        args = args + ["-o", os.path.join(tmp, "out.png")]
+
+    def once(binary):
+        start = time.perf_counter()
+        subprocess.run([binary] + args + ["-q"], env=env, check=True)
+        return time.perf_counter() - start
+
+    for b in binaries:
+        once(b)  # unmeasured: caches, page faults, frequency
+    times = {b: [] for b in binaries}
+    for r in range(runs):
+        order = binaries if r % 2 == 0 else binaries[::-1]
+        for b in order:
+            times[b].append(once(b))
+    old, new = binaries
+    m_old, m_new = statistics.median(times[old]), statistics.median(times[new])
+    ratios = [n / o for o, n in zip(times[old], times[new])]
+    print(f"args: {' '.join(args)}  ({runs} runs each, alternated)")
+    print(f"  median {m_old:.4f} s  old  {old}")
+    print(f"  median {m_new:.4f} s  new  {new}")
+    print(f"  new / old: {m_new / m_old:.3f} (median of run ratios {statistics.median(ratios):.3f}, "
+          f"range {min(ratios):.3f} to {max(ratios):.3f})")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv[1:]))

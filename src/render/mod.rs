@@ -1,0 +1,29 @@
+//! Rendering: the road of one pixel, and the machinery that runs it over a whole image.
+//!
+//! | module | what it holds |
+//! |---|---|
+//! | [`tracer`] | **the road of one pixel**: camera ray → nearest hit → local light → feelers → mirror and transmitted rays. Start reading here. |
+//! | [`options`] | the chapter ([`Stage`]), the [`View`] and the settings of a render ([`Options`]) |
+//! | [`tiles`] | the whole image in parallel tiles: [`render`], [`render_with`] |
+//! | [`packets`] | blocks of pixels traced together, the same image bit for bit |
+//! | [`sampling`] | where the samples of a pixel go |
+//! | [`framebuffer`] | the image in linear RGB ([`Framebuffer`]) |
+//! | [`stats`] | rays cast by kind ([`Stats`]) |
+//!
+//! The road calls one small function per formula of the notes, and the speed machinery
+//! (tiles, packets, the acceleration structures of [`crate::accel`]) calls the same functions:
+//! it changes the time, never a bit of the image.
+
+pub mod framebuffer;
+pub mod options;
+pub mod packets;
+pub mod sampling;
+pub mod stats;
+pub mod tiles;
+pub mod tracer;
+
+pub use framebuffer::{Framebuffer, MAX_FRAMEBUFFER_BYTES, check_size};
+pub use options::{Options, Stage, View};
+pub use stats::Stats;
+pub use tiles::{BLOCK, TILE, render, render_with};
+pub use tracer::{Tracer, build_accel};

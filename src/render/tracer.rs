@@ -1,0 +1,340 @@
+//! The road of one pixel: every chapter's renderer, one stop after another.
+//!
+//! ```text
+//! pixel (x, y) ─► camera ray (ch1) ─► nearest hit over the objects (ch2)
+//!   ─► I_a + Σ lights (I_d + I_s) (ch3) ─► × the share of each feeler (ch4)
+//!   ─► + k_t·I_r + k_r·I_l from the transmitted and mirror rays, recursively (ch5) ─► colour
+//! ```
+//!
+//! Read it top to bottom: [`Tracer::pixel`] → [`Tracer::camera_ray`] → [`Tracer::nearest`]
+//! → [`Tracer::shade`] → [`Tracer::local_light`] (with [`Tracer::feeler`]) →
+//! [`Tracer::reflect_and_refract`] → [`Tracer::trace`] for each new ray. Each stop calls the
+//! small function of the notes' formula ([`crate::camera`], [`crate::shapes`],
+//! [`crate::shading`], [`crate::shadow`], [`crate::optics`]); no formula is computed here.
+//! [`Stage`] says how far along the road a chapter goes:
+//!
+//! | stage | what a camera ray returns |
+//! |---|---|
+//! | 1 [`Stage::CameraRays`] | the ray direction as a colour, (d̂ + 1)/2 |
+//! | 2 [`Stage::GenericObjects`] | the nearest hit, seen through a [`View`] (flat colour, normals, depth) |
+//! | 3 [`Stage::Shading`] | ambient + diffuse + specular from every light (Phong) |
+//! | 4 [`Stage::Shadows`] | the same, each light tested by a feeler ray |
+//! | 5 [`Stage::ReflectionRefraction`] | plus mirror and transmitted rays, recursively: I = I_a + I_d + I_s + I_l + I_r |
+//!
+//! The scene decides which stops are needed: no feeler for a light with `shadows = false`, no
+//! mirror ray from a material with `reflection = 0`, no transmitted ray where
+//! `transmission = 0`. [`Stats`] counts the rays of each kind.
+//!
+//! The search for the nearest hit, and for what a feeler crosses, is asked of the acceleration
+//! structure ([`crate::accel`]), which gives exactly what testing every object in turn gives.
+//! Tiles ([`super::tiles`]) and packets ([`super::packets`]) sit around this road and call
+//! the same functions.
+
+use std::borrow::Cow;
+
+use super::{Options, Stage, Stats, View, sampling};
+use crate::accel::{Accel, Accelerator};
+use crate::camera::{Camera, direction_colour};
+use crate::light::Light;
+use crate::material::Material;
+use crate::offset::SpawnPoint;
+use crate::optics;
+use crate::ray::Ray;
+use crate::real::{Real, Vec3};
+use crate::scene::Scene;
+use crate::shading;
+use crate::shadow;
+use crate::shapes::{Hit, Nearest};
+
+/// Traces rays through one scene with one set of options.
+pub struct Tracer<'a> {
+    pub(crate) scene: &'a Scene,
+    pub(crate) options: &'a Options,
+    pub(crate) camera: Camera,
+    pub(crate) accel: Cow<'a, Accelerator>,
+}
+
+/// A hit as shading sees it.
+pub(crate) struct Surface<'s> {
+    /// The hit (world normal, pointing out of the object).
+    pub hit: Hit,
+    /// The material hit.
+    pub material: &'s Material,
+    /// The hit point P = r(t).
+    pub p: Vec3,
+    /// The ray's unit direction.
+    pub d: Vec3,
+    /// The shading normal n, turned towards the viewer.
+    pub n: Vec3,
+    /// Where rays leaving the hit start.
+    pub spawn: SpawnPoint,
+}
+
+/// A feeler: the ray S(u) = P′ + (L − P′)·u from the offset start P′, and the smallest u that
+/// counts as "between" (0 unless the offset strategy keeps the start on the surface).
+pub(crate) type Feeler = (Ray, Real);
+
+/// Builds the acceleration structure `options.accel` for the scene seen at the options' size.
+#[must_use]
+pub fn build_accel(scene: &Scene, options: &Options) -> Accelerator {
+    let camera = scene.camera.camera(options.width, options.height);
+    // chapter 1 intersects nothing
+    let kind = if options.stage == Stage::CameraRays {
+        Accel::None
+    } else {
+        options.accel
+    };
+    Accelerator::build(&scene.objects, &camera, kind, super::TILE)
+}
+
+impl<'a> Tracer<'a> {
+    /// A tracer for the scene with the options' image size (builds `options.accel`).
+    #[must_use]
+    pub fn new(scene: &'a Scene, options: &'a Options) -> Self {
+        Self {
+            scene,
+            options,
+            camera: scene.camera.camera(options.width, options.height),
+            accel: Cow::Owned(build_accel(scene, options)),
+        }
+    }
+
+    /// A tracer using an acceleration structure built beforehand (see [`build_accel`]).
+    #[must_use]
+    pub fn with_accel(scene: &'a Scene, options: &'a Options, accel: &'a Accelerator) -> Self {
+        Self {
+            scene,
+            options,
+            camera: scene.camera.camera(options.width, options.height),
+            accel: Cow::Borrowed(accel),
+        }
+    }
+
+    /// The camera at the options' image size.
+    #[must_use]
+    pub fn camera(&self) -> &Camera {
+        &self.camera
+    }
+
+    /// The colour of pixel (x, y), row y from the top: the mean over its samples.
+    pub fn pixel(&self, x: u32, y: u32, stats: &mut Stats) -> Vec3 {
+        let o = self.options;
+        let samples = o.samples_per_pixel();
+        let mut sum = Vec3::ZERO;
+        for s in 0..samples {
+            let (dx, dy) = sampling::sample_position(o.seed, samples, x, y, s);
+            let ray = self.camera.pixel_ray(x, y, dx, dy); // chapter 1: r(t) = e + d·t
+            stats.primary += 1;
+            sum += self.camera_ray(&ray, (x, y), stats);
+        }
+        sum / samples as Real
+    }
+
+    /// What the camera ray of image pixel `pixel` brings back.
+    pub(crate) fn camera_ray(&self, ray: &Ray, pixel: (u32, u32), stats: &mut Stats) -> Vec3 {
+        if self.options.stage == Stage::CameraRays {
+            return direction_colour(ray.dir); // chapter 1: (d̂ + 1)/2
+        }
+        let nearest = self.nearest_from(ray, 0.0, Some(pixel));
+        self.seen(ray, nearest, stats)
+    }
+
+    /// The colour of a camera ray (from stage 2 on) whose nearest hit is `nearest`, as the
+    /// view shows it.
+    pub(crate) fn seen(&self, ray: &Ray, nearest: Option<Nearest>, stats: &mut Stats) -> Vec3 {
+        let o = self.options;
+        match o.view {
+            View::Color if o.stage == Stage::GenericObjects => self.flat(nearest),
+            View::Color => self.shade(ray, nearest, 0, 1.0, stats),
+            View::Flat => self.flat(nearest),
+            View::Normals => match nearest {
+                Some(n) => direction_colour(facing(n.hit.normal, ray.dir)),
+                None => self.scene.background,
+            },
+            View::Depth => match nearest {
+                Some(n) => Vec3::splat(n.hit.t * ray.dir.length()),
+                None => Vec3::splat(Real::INFINITY),
+            },
+        }
+    }
+
+    /// Chapter 2's colour: the diffuse colour ρd of the material hit, unlit.
+    fn flat(&self, nearest: Option<Nearest>) -> Vec3 {
+        match nearest {
+            Some(n) => self.scene.materials[self.scene.objects[n.object].material].diffuse,
+            None => self.scene.background,
+        }
+    }
+
+    /// The nearest hit with t > `t_min` over all objects (the notes' step 5: the smallest t;
+    /// of equal t, the object listed first).
+    #[must_use]
+    pub fn nearest(&self, ray: &Ray, t_min: Real) -> Option<Nearest> {
+        self.nearest_from(ray, t_min, None)
+    }
+
+    /// [`Tracer::nearest`] for a ray that may be the camera ray of image pixel `pixel`.
+    fn nearest_from(&self, ray: &Ray, t_min: Real, pixel: Option<(u32, u32)>) -> Option<Nearest> {
+        self.accel
+            .nearest(&self.scene.objects, ray, t_min, self.options.formula, pixel)
+    }
+
+    /// The light coming back along `ray` (stages 3–5): the nearest hit after `t_min`, shaded.
+    /// `depth` counts the bounces that led here and `weight` the share of the pixel the ray
+    /// carries.
+    pub fn trace(
+        &self,
+        ray: &Ray,
+        t_min: Real,
+        depth: u32,
+        weight: Real,
+        stats: &mut Stats,
+    ) -> Vec3 {
+        self.shade(ray, self.nearest(ray, t_min), depth, weight, stats)
+    }
+
+    /// I = I_a + I_d + I_s + I_l + I_r at the nearest hit of `ray` (the background colour for
+    /// a miss): the local light, then from stage 5 the mirror and transmitted rays.
+    fn shade(
+        &self,
+        ray: &Ray,
+        nearest: Option<Nearest>,
+        depth: u32,
+        weight: Real,
+        stats: &mut Stats,
+    ) -> Vec3 {
+        let Some(nearest) = nearest else {
+            return self.scene.background;
+        };
+        let s = self.surface(ray, &nearest);
+        let local = self.local_light(&s, &mut |_, feeler| self.transmittance(feeler), stats);
+        self.reflect_and_refract(&s, local, depth, weight, stats)
+    }
+
+    /// What shading needs to know of a hit.
+    pub(crate) fn surface<'s>(&'s self, ray: &Ray, nearest: &Nearest) -> Surface<'s> {
+        let hit = nearest.hit;
+        let object = &self.scene.objects[nearest.object];
+        let d = crate::numeric::normalize(ray.dir);
+        Surface {
+            hit,
+            material: &self.scene.materials[object.material],
+            p: ray.at(hit.t),
+            d,
+            n: facing(hit.normal, d), // shading normal, towards the viewer
+            spawn: SpawnPoint::new(object, ray, &hit),
+        }
+    }
+
+    /// The local light I_a + Σ_lights (I_d + I_s)·share (chapters 3 and 4): Phong's terms of
+    /// every light, each times the share of that light its feeler lets through (from stage 4;
+    /// 1 before). `share(light, feeler)` answers for the feeler towards light number `light`:
+    /// [`Tracer::shade`] traces it ([`Tracer::transmittance`]); a packet of pixels looks up
+    /// what it traced for all of them at once.
+    pub(crate) fn local_light(
+        &self,
+        s: &Surface,
+        share: &mut dyn FnMut(usize, &Feeler) -> Real,
+        stats: &mut Stats,
+    ) -> Vec3 {
+        let mut color = shading::ambient(s.material, self.scene.ambient); // I_a
+        for (l, light) in self.scene.lights.iter().enumerate() {
+            let unshadowed = shading::direct(s.material, light, s.p, s.n, -s.d); // I_d + I_s
+            if unshadowed == Vec3::ZERO {
+                continue; // the light is behind the surface: nothing to shadow
+            }
+            let arriving = match self.feeler(s, light) {
+                Some(feeler) => {
+                    stats.shadow += 1;
+                    share(l, &feeler)
+                }
+                None => 1.0,
+            };
+            color += unshadowed * arriving;
+        }
+        color
+    }
+
+    /// From stage 4, the feeler towards `light` (if it casts shadows and lies in front of the
+    /// surface, n·(L − P) > 0): S(u) = P′ + (L − P′)·u from P′, the hit point moved off the
+    /// surface by the offset strategy ([`crate::offset`]).
+    pub(crate) fn feeler(&self, s: &Surface, light: &Light) -> Option<Feeler> {
+        let o = self.options;
+        if o.stage < Stage::Shadows || !light.shadows || s.n.dot(light.position - s.p) <= 0.0 {
+            return None;
+        }
+        let (start, u_min) = o.offset.spawn(&s.spawn, light.position - s.p);
+        Some((shadow::feeler(start, light.position), u_min))
+    }
+
+    /// The share of its light that a feeler lets through: the product of the transmissions of
+    /// the objects it crosses with u ∈ ]u_min, 1] ([`crate::shadow`]).
+    fn transmittance(&self, (feeler, u_min): &Feeler) -> Real {
+        self.accel.transmittance(
+            &self.scene.objects,
+            &self.scene.materials,
+            feeler,
+            *u_min,
+            self.options.formula,
+        )
+    }
+
+    /// `color` + k_t·I_r + k_r·I_l (stage 5, while `depth < max_depth`): the light of the
+    /// transmitted ray (Snell's law, [`optics::refract`]) and of the mirror ray
+    /// ([`optics::reflect`]), each traced in turn. Under total internal reflection the
+    /// transmitted share goes to the mirror ray. A ray whose weight would fall below
+    /// `min_weight` is not traced.
+    pub(crate) fn reflect_and_refract(
+        &self,
+        s: &Surface,
+        mut color: Vec3,
+        depth: u32,
+        weight: Real,
+        stats: &mut Stats,
+    ) -> Vec3 {
+        let o = self.options;
+        if o.stage < Stage::ReflectionRefraction || depth >= o.max_depth {
+            return color;
+        }
+        let (material, d, n) = (s.material, s.d, s.n);
+        let mut k_r = material.reflection;
+        if material.is_translucent() {
+            let entering = s.hit.normal.dot(d) < 0.0; // the side that was hit
+            let (n1, n2) = optics::indices(entering, material.ior);
+            match optics::refract(d, n, n1, n2) {
+                Some(t_dir) => {
+                    let k_t = material.transmission;
+                    if weight * k_t >= o.min_weight {
+                        stats.refracted += 1;
+                        let (origin, t0) = o.offset.spawn(&s.spawn, t_dir);
+                        let i_r = self.trace(
+                            &Ray::new(origin, t_dir),
+                            t0,
+                            depth + 1,
+                            weight * k_t,
+                            stats,
+                        );
+                        color += k_t * i_r;
+                    }
+                }
+                None => {
+                    k_r += material.transmission; // total internal reflection
+                    stats.total_internal += 1;
+                }
+            }
+        }
+        if k_r > 0.0 && weight * k_r >= o.min_weight {
+            stats.reflected += 1;
+            let l = optics::reflect(d, n);
+            let (origin, t0) = o.offset.spawn(&s.spawn, l);
+            let i_l = self.trace(&Ray::new(origin, l), t0, depth + 1, weight * k_r, stats);
+            color += k_r * i_l;
+        }
+        color
+    }
+}
+
+/// The normal n turned to face against the direction `d` (towards where the ray came from).
+fn facing(n: Vec3, d: Vec3) -> Vec3 {
+    if n.dot(d) > 0.0 { -n } else { n }
+}
