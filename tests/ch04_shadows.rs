@@ -3,13 +3,13 @@
 
 mod common;
 
-use common::{TOL, assert_vec_eq, centre, render_at, scene};
+use common::{TOL, assert_vec_eq, centre, render_at, render_both_ways, scene};
 use whitted::accel::{Accel, Accelerator};
 use whitted::camera::Camera;
 use whitted::material::Material;
 use whitted::offset::Offset;
 use whitted::real::{Real, Vec3, vec3};
-use whitted::render::{Options, Stage, render};
+use whitted::render::{Options, Stage};
 use whitted::shadow;
 use whitted::shapes::{Formula, Object, Shape};
 use whitted::transform::{Placement, Step};
@@ -132,8 +132,8 @@ fn wrongly_shadowed(text: &str, offset: Offset) -> (usize, usize) {
         offset,
         ..o3.clone()
     };
-    let (a, _) = render(&s, &o3);
-    let (b, _) = render(&s, &o4);
+    let (a, _) = render_both_ways(&s, &o3);
+    let (b, _) = render_both_ways(&s, &o4);
     let lit = a
         .pixels
         .iter()

@@ -27,12 +27,47 @@ pub fn scene(text: &str) -> Scene {
     parse(text, "test.toml").unwrap_or_else(|e| panic!("{e}"))
 }
 
-/// Renders `scene` at stage `stage` and the given size.
+/// Renders `scene` at stage `stage` and the given size by the plain road of one pixel, and
+/// checks that packets (on by default) give the same image bit for bit and the same rays.
 pub fn render_at(scene: &Scene, stage: Stage, width: u32, height: u32) -> (Framebuffer, Stats) {
     let mut o = Options::for_scene(scene, stage);
     o.width = width;
     o.height = height;
-    render(scene, &o)
+    render_both_ways(scene, &o)
+}
+
+/// Renders with `options` by the plain road (packets off) and with packets, asserts the two
+/// agree bit for bit, and returns the road's image and rays.
+pub fn render_both_ways(scene: &Scene, options: &Options) -> (Framebuffer, Stats) {
+    let mut road = options.clone();
+    road.packets = false;
+    let mut packets = options.clone();
+    packets.packets = true;
+    let (fb, stats) = render(scene, &road);
+    let (fb2, stats2) = render(scene, &packets);
+    let bits = |fb: &Framebuffer| -> Vec<_> {
+        fb.pixels
+            .iter()
+            .flat_map(|p| p.to_array().map(|x| x.to_bits()))
+            .collect()
+    };
+    assert!(bits(&fb) == bits(&fb2), "packets changed the image");
+    assert_eq!(
+        (
+            stats.primary,
+            stats.shadow,
+            stats.reflected,
+            stats.refracted
+        ),
+        (
+            stats2.primary,
+            stats2.shadow,
+            stats2.reflected,
+            stats2.refracted
+        ),
+        "packets changed the rays cast"
+    );
+    (fb, stats)
 }
 
 /// The colour seen along the camera's axis: a 1 × 1 render, whose only ray is d = −N·n.
