@@ -76,29 +76,20 @@ pub fn viewing_basis(eye: Vec3, look_at: Vec3, up: Vec3) -> Option<(Vec3, Vec3, 
     Some((u, v, n))
 }
 
-/// A pinhole camera with the notes' parameters, and the derived near-plane size.
+/// A pinhole camera with the notes' parameters, and the derived near-plane size. Built once
+/// by [`Camera::new`]; its parts are read with the accessors of the same names.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Camera {
-    /// The eye e, origin of the viewing coordinates.
-    pub eye: Vec3,
-    /// Unit vector to the right on the near plane.
-    pub u: Vec3,
-    /// Unit vector up on the near plane.
-    pub v: Vec3,
-    /// Unit vector pointing backwards (the camera looks along −n).
-    pub n: Vec3,
-    /// Distance N from the eye to the near plane.
-    pub near: Real,
-    /// Vertical viewing angle θ in degrees.
-    pub fov: Real,
-    /// Number of pixel columns (the notes' n).
-    pub columns: u32,
-    /// Number of pixel rows (the notes' m).
-    pub rows: u32,
-    /// H, half the near plane's height.
-    pub half_height: Real,
-    /// W, half the near plane's width.
-    pub half_width: Real,
+    eye: Vec3,
+    u: Vec3,
+    v: Vec3,
+    n: Vec3,
+    near: Real,
+    fov: Real,
+    columns: u32,
+    rows: u32,
+    half_height: Real,
+    half_width: Real,
 }
 
 impl Camera {
@@ -129,6 +120,66 @@ impl Camera {
             half_height,
             half_width,
         })
+    }
+
+    /// The eye e, origin of the viewing coordinates.
+    #[must_use]
+    pub fn eye(&self) -> Vec3 {
+        self.eye
+    }
+
+    /// Unit vector to the right on the near plane.
+    #[must_use]
+    pub fn u(&self) -> Vec3 {
+        self.u
+    }
+
+    /// Unit vector up on the near plane.
+    #[must_use]
+    pub fn v(&self) -> Vec3 {
+        self.v
+    }
+
+    /// Unit vector pointing backwards (the camera looks along −n).
+    #[must_use]
+    pub fn n(&self) -> Vec3 {
+        self.n
+    }
+
+    /// Distance N from the eye to the near plane.
+    #[must_use]
+    pub fn near(&self) -> Real {
+        self.near
+    }
+
+    /// Vertical viewing angle θ in degrees.
+    #[must_use]
+    pub fn fov(&self) -> Real {
+        self.fov
+    }
+
+    /// Number of pixel columns (the notes' n).
+    #[must_use]
+    pub fn columns(&self) -> u32 {
+        self.columns
+    }
+
+    /// Number of pixel rows (the notes' m).
+    #[must_use]
+    pub fn rows(&self) -> u32 {
+        self.rows
+    }
+
+    /// H, half the near plane's height.
+    #[must_use]
+    pub fn half_height(&self) -> Real {
+        self.half_height
+    }
+
+    /// W, half the near plane's width.
+    #[must_use]
+    pub fn half_width(&self) -> Real {
+        self.half_width
     }
 
     /// The notes' direction d = −N·n + u_c·u + v_r·v towards the point (u_c, v_r) where the

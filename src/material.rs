@@ -52,12 +52,6 @@ impl Default for Material {
 }
 
 impl Material {
-    /// True when the material spawns mirror rays.
-    #[must_use]
-    pub fn is_mirror(&self) -> bool {
-        self.reflection > 0.0
-    }
-
     /// True when the material lets light through (spawns refracted rays, dims shadows).
     #[must_use]
     pub fn is_translucent(&self) -> bool {

@@ -44,17 +44,6 @@ impl Offset {
     /// The relative ε of [`Offset::Scaled`].
     pub const SCALED_EPSILON: Real = 1e-4;
 
-    /// Parses `fixed`, `scaled` or `error-bound`.
-    #[must_use]
-    pub fn from_name(name: &str) -> Option<Self> {
-        match name {
-            "fixed" => Some(Offset::Fixed(Self::FIXED_EPSILON)),
-            "scaled" => Some(Offset::Scaled(Self::SCALED_EPSILON)),
-            "error-bound" => Some(Offset::ErrorBound),
-            _ => None,
-        }
-    }
-
     /// The origin and the smallest accepted t of a ray leaving the point `p` (computed as
     /// `e + d·t` from a ray of origin `e`, direction `d`, at parameter `t`) of a surface with
     /// unit normal `n`, along `dir`.

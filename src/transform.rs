@@ -163,12 +163,9 @@ pub fn rotation_from_z(to: Vec3) -> Step {
 /// A placement M with its cached inverse M⁻¹ and the normal matrix (M⁻¹)ᵀ.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Placement {
-    /// M: object space → world space.
-    pub m: Mat4,
-    /// M⁻¹: world space → object space.
-    pub inv: Mat4,
-    /// (M⁻¹)ᵀ restricted to 3×3: carries object-space normals to world space.
-    pub normal_matrix: Mat3,
+    m: Mat4,
+    inv: Mat4,
+    normal_matrix: Mat3,
 }
 
 impl Default for Placement {
@@ -213,6 +210,27 @@ impl Placement {
             inv,
             normal_matrix: Mat3::from_mat4(inv).transpose(),
         }
+    }
+
+    /// M: object space → world space.
+    #[inline]
+    #[must_use]
+    pub fn m(&self) -> &Mat4 {
+        &self.m
+    }
+
+    /// M⁻¹: world space → object space.
+    #[inline]
+    #[must_use]
+    pub fn inv(&self) -> &Mat4 {
+        &self.inv
+    }
+
+    /// (M⁻¹)ᵀ restricted to 3×3: carries object-space normals to world space.
+    #[inline]
+    #[must_use]
+    pub fn normal_matrix(&self) -> &Mat3 {
+        &self.normal_matrix
     }
 
     /// Carries an object-space normal to world space: (M⁻¹)ᵀ·n′, renormalised.

@@ -302,27 +302,23 @@ fn polyhedron_boxes_come_from_vertices_and_open_ones_have_none() {
     let b = polyhedron_bounds(&Polyhedron::cube()).expect("the cube is bounded");
     assert!((b.min - Vec3::splat(-1.0)).length() < 1e-6 && (b.max - Vec3::ONE).length() < 1e-6);
     let f = |n: [f64; 3], d: f64| Facet::new(vec3(n[0], n[1], n[2]), d as Real).unwrap();
-    let long = Polyhedron {
-        facets: vec![
-            f([1., 0., 0.], 3.),
-            f([-1., 0., 0.], 3.),
-            f([0., 1., 0.], 1.),
-            f([0., -1., 0.], 1.),
-            f([0., 0., 1.], 0.5),
-            f([0., 0., -1.], 0.5),
-        ],
-    };
+    let long = Polyhedron::new(vec![
+        f([1., 0., 0.], 3.),
+        f([-1., 0., 0.], 3.),
+        f([0., 1., 0.], 1.),
+        f([0., -1., 0.], 1.),
+        f([0., 0., 1.], 0.5),
+        f([0., 0., -1.], 0.5),
+    ]);
     let b = polyhedron_bounds(&long).expect("bounded");
     assert!((b.max - vec3(3.0, 1.0, 0.5)).length() < 1e-6);
-    let open = Polyhedron {
-        facets: vec![
-            f([1., 0., 0.], 1.),
-            f([-1., 0., 0.], 1.),
-            f([0., 1., 0.], 1.),
-            f([0., -1., 0.], 1.),
-            f([0., 0., 1.], 1.), // nothing closes −z
-        ],
-    };
+    let open = Polyhedron::new(vec![
+        f([1., 0., 0.], 1.),
+        f([-1., 0., 0.], 1.),
+        f([0., 1., 0.], 1.),
+        f([0., -1., 0.], 1.),
+        f([0., 0., 1.], 1.), // nothing closes −z
+    ]);
     assert_eq!(polyhedron_bounds(&open), None);
 }
 
@@ -390,8 +386,8 @@ fn scatter_writes_the_same_scene_for_povray() {
             let [x, y, z, r] = numbers[..] else {
                 panic!("{line}")
             };
-            let centre = object.placement.m.transform_point3(Vec3::ZERO);
-            let radius = object.placement.m.transform_vector3(Vec3::X).length();
+            let centre = object.placement.m().transform_point3(Vec3::ZERO);
+            let radius = object.placement.m().transform_vector3(Vec3::X).length();
             let near = |a: f64, b: Real| (real(a) - b).abs() < 1e-4 * (1.0 + b.abs());
             assert!(
                 near(x, centre.x) && near(y, centre.y) && near(-z, centre.z),

@@ -76,11 +76,11 @@ fn half_width_is_half_height_times_aspect() {
     assert_abs_diff_eq!(near_plane_half_width(h, 1.0), 1.0, epsilon = TOL);
     let cam = straight_camera(60.0, 2.0, 640, 480);
     assert_abs_diff_eq!(
-        cam.half_width,
-        cam.half_height * 640.0 / 480.0,
+        cam.half_width(),
+        cam.half_height() * 640.0 / 480.0,
         epsilon = TOL
     );
-    assert_abs_diff_eq!(cam.half_height, 2.0 / (3.0 as Real).sqrt(), epsilon = TOL);
+    assert_abs_diff_eq!(cam.half_height(), 2.0 / (3.0 as Real).sqrt(), epsilon = TOL);
 }
 
 /// "Principles of Ray Tracing": (u_c, v_r) = (−W + W·2c/n, −H + H·2r/m) puts c = r = 0 on the
@@ -139,8 +139,8 @@ fn up_parallel_to_the_view_direction_has_no_basis() {
 #[test]
 fn direction_at_the_four_corners() {
     let cam = straight_camera(90.0, 1.0, 4, 2);
-    assert_abs_diff_eq!(cam.half_height, 1.0, epsilon = TOL);
-    assert_abs_diff_eq!(cam.half_width, 2.0, epsilon = TOL);
+    assert_abs_diff_eq!(cam.half_height(), 1.0, epsilon = TOL);
+    assert_abs_diff_eq!(cam.half_width(), 2.0, epsilon = TOL);
     assert_vec_eq(cam.direction(0.0, 0.0), vec3(-2.0, -1.0, -1.0), TOL);
     assert_vec_eq(cam.direction(4.0, 0.0), vec3(2.0, -1.0, -1.0), TOL);
     assert_vec_eq(cam.direction(0.0, 2.0), vec3(-2.0, 1.0, -1.0), TOL);
@@ -163,11 +163,11 @@ fn ray_reaches_the_near_plane_pixel_at_t_equal_one() {
     )
     .unwrap();
     let (c, r) = (37.0, 150.0);
-    let (u_c, v_r) = pixel_on_near_plane(c, r, 320.0, 200.0, cam.half_width, cam.half_height);
-    let world = u_c * cam.u + v_r * cam.v - cam.near * cam.n + cam.eye;
+    let (u_c, v_r) = pixel_on_near_plane(c, r, 320.0, 200.0, cam.half_width(), cam.half_height());
+    let world = u_c * cam.u() + v_r * cam.v() - cam.near() * cam.n() + cam.eye();
     assert_vec_eq(cam.ray(c, r).at(1.0), world, 1e3 * TOL);
     // and that point lies at distance N in front of the eye
-    assert_abs_diff_eq!((world - cam.eye).dot(-cam.n), 2.5, epsilon = 1e3 * TOL);
+    assert_abs_diff_eq!((world - cam.eye()).dot(-cam.n()), 2.5, epsilon = 1e3 * TOL);
 }
 
 /// "Principles of Ray Tracing" (erratum: corners versus centres): the notes' integer (c, r)

@@ -272,12 +272,12 @@ fn cone_apex_has_a_finite_unit_normal() {
 fn facet_t_is_d_minus_n_dot_e_all_over_n_dot_d() {
     let facet = polyhedron::Facet::new(Vec3::Z, 1.0).unwrap(); // the plane z = 1
     let r = ray([0.0, 0.0, 5.0], [0.0, 0.0, -2.0]);
-    let as_printed = facet.d - facet.normal.dot(r.origin) / facet.normal.dot(r.dir); // 1 − 5/(−2) = 3.5
+    let as_printed = facet.d() - facet.normal().dot(r.origin) / facet.normal().dot(r.dir); // 1 − 5/(−2) = 3.5
     let right = polyhedron::facet_t(&facet, &r); // (1 − 5)/(−2) = 2
     assert_abs_diff_eq!(right, 2.0, epsilon = TOL);
-    assert_abs_diff_eq!(facet.normal.dot(r.at(right)), facet.d, epsilon = TOL); // on the facet
+    assert_abs_diff_eq!(facet.normal().dot(r.at(right)), facet.d(), epsilon = TOL); // on the facet
     assert_abs_diff_eq!(as_printed, 3.5, epsilon = TOL);
-    assert!((facet.normal.dot(r.at(as_printed)) - facet.d).abs() > 1.0); // z = −2: not on it
+    assert!((facet.normal().dot(r.at(as_printed)) - facet.d()).abs() > 1.0); // z = −2: not on it
 }
 
 /// "Convex Polyhedra": the cube [−1, 1]³ along z: enters facet +z (index 4) at t = 4, leaves
@@ -298,11 +298,11 @@ fn cube_entering_and_leaving_facets() {
 fn ray_parallel_to_a_facet_misses_outside_and_passes_inside() {
     let cube = generic(Shape::Polyhedron(Polyhedron::cube()));
     // parallel to the facet y = 1 (index 2), at y = 2: d − n·e = 1 − 2 < 0, outside
-    let facet = Polyhedron::cube().facets[2];
+    let facet = Polyhedron::cube().facets()[2];
     let e = vec3(0.0, 2.0, 5.0);
-    assert!(facet.d - facet.normal.dot(e) < 0.0);
+    assert!(facet.d() - facet.normal().dot(e) < 0.0);
     assert!(
-        facet.normal.dot(e) > facet.d,
+        facet.normal().dot(e) > facet.d(),
         "Q·n > d: outside, by the notes' rule"
     );
     assert!(
@@ -348,9 +348,9 @@ fn tetrahedron_hits_through_its_facets() {
     for v in vertices {
         let p = vec3(v[0], v[1], v[2]);
         let on = Polyhedron::tetrahedron()
-            .facets
+            .facets()
             .iter()
-            .filter(|f| (f.normal.dot(p) - f.d).abs() <= TOL)
+            .filter(|f| (f.normal().dot(p) - f.d()).abs() <= TOL)
             .count();
         assert_eq!(on, 3);
     }
@@ -371,13 +371,13 @@ fn ellipsoid() -> Object {
 #[test]
 fn inverse_from_inverse_steps_undoes_the_placement() {
     let o = ellipsoid();
-    let product = o.placement.m * o.placement.inv;
+    let product = o.placement.m() * o.placement.inv();
     assert!(
         product.abs_diff_eq(Mat4::IDENTITY, 10.0 * TOL),
         "{product:?}"
     );
     // steps apply in order: scale first, so the scale stretches the object's own x axis
-    let p = o.placement.m.transform_point3(Vec3::X);
+    let p = o.placement.m().transform_point3(Vec3::X);
     let a = (30.0 as Real).to_radians();
     assert_vec_eq(
         p,
@@ -392,7 +392,7 @@ fn inverse_from_inverse_steps_undoes_the_placement() {
 fn t_is_the_same_in_world_and_object_space() {
     let o = ellipsoid();
     let world = ray([-4.0, -1.0, 2.5], [3.0, -0.5, 0.2]);
-    let local = world.transformed(&o.placement.inv);
+    let local = world.transformed(&o.placement.inv());
     assert!(
         (local.dir.length() - world.dir.length()).abs() > 0.1,
         "the scale changes |d|"
@@ -404,7 +404,7 @@ fn t_is_the_same_in_world_and_object_space() {
         let p_object = local.at(h.t);
         assert_abs_diff_eq!(p_object.length(), 1.0, epsilon = 100.0 * TOL); // on the unit sphere
         assert_vec_eq(
-            o.placement.m.transform_point3(p_object),
+            o.placement.m().transform_point3(p_object),
             p_world,
             100.0 * TOL,
         );
@@ -412,7 +412,7 @@ fn t_is_the_same_in_world_and_object_space() {
     // renormalising M⁻¹d would change t: the hit would no longer be at world.at(t)
     let renormalised = Ray::new(local.origin, local.dir.normalize());
     let t_bad = sphere::intersect(&renormalised, Formula::Robust).as_slice()[0].t;
-    let miss = o.placement.inv.transform_point3(world.at(t_bad)).length();
+    let miss = o.placement.inv().transform_point3(world.at(t_bad)).length();
     assert!(
         (miss - 1.0).abs() > 0.1,
         "renormalised t lands off the surface ({miss})"
@@ -440,7 +440,7 @@ fn normal_under_non_uniform_scale_uses_inverse_transpose() {
     assert_abs_diff_eq!(hit.normal.dot(tangent), 0.0, epsilon = 10.0 * TOL);
     let wrong = o
         .placement
-        .m
+        .m()
         .transform_vector3(vec3(1.0, 1.0, 0.0) / s)
         .normalize();
     assert!(
@@ -542,11 +542,12 @@ fn presets_are_closed_solids_with_the_expected_corners() {
 /// the solid flat describe no polyhedron; `check` says which.
 #[test]
 fn open_empty_or_flat_facet_sets_are_not_polyhedra() {
-    let from = |rows: &[[f64; 4]]| Polyhedron {
-        facets: rows
-            .iter()
-            .map(|r| polyhedron::Facet::new(vec3(r[0], r[1], r[2]), r[3] as Real).unwrap())
-            .collect(),
+    let from = |rows: &[[f64; 4]]| {
+        Polyhedron::new(
+            rows.iter()
+                .map(|r| polyhedron::Facet::new(vec3(r[0], r[1], r[2]), r[3] as Real).unwrap())
+                .collect(),
+        )
     };
     let open = from(&[
         [0.0, -1.0, 0.0, 0.0],

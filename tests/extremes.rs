@@ -15,7 +15,7 @@
 use proptest::prelude::*;
 use proptest::test_runner::RngSeed;
 use whitted::numeric::{normalize, normalize_naive};
-use whitted::offset::Offset;
+use whitted::offset::{Offset, OffsetKind};
 use whitted::optics;
 use whitted::ray::Ray;
 use whitted::real::{Real, Vec3, real, vec3};
@@ -405,12 +405,12 @@ fn rays_through_the_cone_apex_get_finite_unit_normals() {
         Shape::Cone,
         &[Step::Scale(vec3(2.0, 2.0, 3.0)), Step::RotateX(-70.0)],
     );
-    let apex = cone.placement.m.transform_point3(vec3(0.0, 0.0, 1.0));
+    let apex = cone.placement.m().transform_point3(vec3(0.0, 0.0, 1.0));
     for i in 0..90 {
         let phi = (i as f64 * 4.0).to_radians();
         for (dz, lying) in [(-0.3, false), (-1.0, true), (-3.0, false), (0.5, false)] {
             let local = vec3(phi.cos(), phi.sin(), dz);
-            let dir = cone.placement.m.transform_vector3(local);
+            let dir = cone.placement.m().transform_vector3(local);
             let ray = Ray::new(apex - dir * 3.0, dir);
             for formula in [Formula::Robust, Formula::Textbook] {
                 let hs = hits(&cone, &ray, formula);
@@ -510,8 +510,8 @@ fn placements_from_a_millionth_to_a_million_keep_hits_on_the_surface() {
                     Step::Translate(vec3(3.0 * s, -2.0 * s, 1.0 * s)),
                 ];
                 let object = placed(shape.clone(), &steps);
-                let centre = object.placement.m.transform_point3(Vec3::ZERO);
-                let target = object.placement.m.transform_point3(vec3(0.1, 0.2, 0.3));
+                let centre = object.placement.m().transform_point3(Vec3::ZERO);
+                let target = object.placement.m().transform_point3(vec3(0.1, 0.2, 0.3));
                 let origin = centre + vec3(5.0 * s, 20.0 * s, 40.0 * s);
                 let ray = Ray::new(origin, target - origin);
                 let hs = hits(&object, &ray, Formula::Robust);
@@ -519,7 +519,7 @@ fn placements_from_a_millionth_to_a_million_keep_hits_on_the_surface() {
                 let s_min = s * f(anisotropy.min_element());
                 for h in &hs {
                     let p = ray.at(h.t);
-                    let local = object.placement.inv.transform_point3(p);
+                    let local = object.placement.inv().transform_point3(p);
                     let residual = surface_residual(shape, h.part, local);
                     // the rounding of world coordinates, seen in object units
                     let scale = 1.0 + (f(origin.length()) + f(p.length())) / s_min;
@@ -551,12 +551,12 @@ fn surface_residual(shape: &Shape, part: Part, p: Vec3) -> f64 {
         (Shape::Cone, Part::Base) => (z + 1.0).abs() + outside(radial, 2.0),
         (Shape::Cone, _) => (radial - (1.0 - z)).abs() + outside(z, 1.0),
         (Shape::Polyhedron(poly), Part::Facet(i)) => {
-            let facet = poly.facets[i as usize];
-            let on = (f(facet.normal.dot(p)) - f(facet.d)).abs();
+            let facet = poly.facets()[i as usize];
+            let on = (f(facet.normal().dot(p)) - f(facet.d())).abs();
             let out = poly
-                .facets
+                .facets()
                 .iter()
-                .map(|g| (f(g.normal.dot(p)) - f(g.d)).max(0.0))
+                .map(|g| (f(g.normal().dot(p)) - f(g.d())).max(0.0))
                 .fold(0.0, f64::max);
             on + out
         }
@@ -719,17 +719,17 @@ fn no_nan_or_infinity_reaches_a_pixel_of_the_extreme_scenes() {
     ] {
         let scene = scene::parse(text, name).expect("valid scene");
         for formula in [Formula::Textbook, Formula::Robust] {
-            for offset in ["fixed", "scaled", "error-bound"] {
+            for offset in OffsetKind::ALL {
                 let mut options = Options::for_scene(&scene, Stage::ReflectionRefraction);
                 (options.width, options.height) = (40, 30);
                 options.formula = formula;
-                options.offset = Offset::from_name(offset).unwrap();
+                options.offset = offset.offset();
                 let (fb, _) = render::render(&scene, &options);
                 assert!(
                     fb.pixels
                         .iter()
                         .all(|p| p.is_finite() && p.min_element() >= 0.0),
-                    "{name} {formula:?} {offset}"
+                    "{name} {formula:?} {offset:?}"
                 );
             }
         }
@@ -799,7 +799,7 @@ proptest! {
     ) {
         let shape = shape_of(which);
         let object = placed(shape.clone(), &steps);
-        let m = object.placement.m;
+        let m = object.placement.m();
         let origin = m.transform_point3(vec3(0.0, 0.0, 0.0)) + vec3(from[0] * s, from[1] * s, from[2] * s);
         let target = m.transform_point3(vec3(towards[0], towards[1], towards[2]));
         prop_assume!(origin != target);
@@ -814,7 +814,7 @@ proptest! {
         for h in &hs {
             prop_assert!((f(h.normal.length()) - 1.0).abs() < tol::UNIT, "{h:?}");
             let p = ray.at(h.t);
-            let local = object.placement.inv.transform_point3(p);
+            let local = object.placement.inv().transform_point3(p);
             let scale = 1.0 + (f(origin.length()) + f(p.length())) / s_min;
             let residual = surface_residual(&shape, h.part, local);
             prop_assert!(residual <= 1024.0 * eps() * scale, "residual {residual} (scale {scale}) for {h:?} at {local:?}");
@@ -855,7 +855,7 @@ proptest! {
     ) {
         let shape = shape_of(which);
         let object = placed(shape.clone(), &steps);
-        let m = object.placement.m;
+        let m = object.placement.m();
         let origin = m.transform_point3(Vec3::ZERO) + vec3(from[0] * s, from[1] * s, from[2] * s);
         let target = m.transform_point3(vec3(towards[0], towards[1], towards[2]));
         prop_assume!(origin != target);

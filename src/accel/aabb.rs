@@ -351,7 +351,7 @@ pub fn generic_bounds(shape: &Shape) -> Option<Aabb> {
 /// against every ray, outside any hierarchy).
 #[must_use]
 pub fn world_bounds(object: &Object) -> Option<Aabb> {
-    let m = &object.placement.m;
+    let m = &object.placement.m();
     let b = match object.shape {
         // the exact box of the ellipsoid M·(unit sphere): half-extent on axis k is |row k of M|
         Shape::Sphere => {

@@ -59,8 +59,8 @@ pub fn footprint(b: &Aabb, camera: &Camera) -> Footprint {
     // depth is linear, so the box's deepest point is a corner
     let deepest = (0..8)
         .map(|i| {
-            let q = corner(i) - camera.eye;
-            -q.dot(camera.n) / q.length().max(Real::MIN_POSITIVE)
+            let q = corner(i) - camera.eye();
+            -q.dot(camera.n()) / q.length().max(Real::MIN_POSITIVE)
         })
         .fold(Real::NEG_INFINITY, Real::max);
     if deepest < -1e-3 {
@@ -76,7 +76,7 @@ pub fn footprint(b: &Aabb, camera: &Camera) -> Footprint {
 /// that may see the box, or `None` if the box may cover any pixel (it reaches behind the eye).
 #[must_use]
 pub fn rectangle(b: &Aabb, camera: &Camera) -> Option<[i64; 4]> {
-    let (cols, rows) = (camera.columns as Real, camera.rows as Real);
+    let (cols, rows) = (camera.columns() as Real, camera.rows() as Real);
     let (mut x0, mut x1, mut y0, mut y1) = (
         Real::INFINITY,
         Real::NEG_INFINITY,
@@ -89,16 +89,16 @@ pub fn rectangle(b: &Aabb, camera: &Camera) -> Option<[i64; 4]> {
             if i & 2 == 0 { b.min.y } else { b.max.y },
             if i & 4 == 0 { b.min.z } else { b.max.z },
         );
-        let q = p - camera.eye;
-        let depth = -q.dot(camera.n);
+        let q = p - camera.eye();
+        let depth = -q.dot(camera.n());
         if depth.is_nan() || depth <= 1e-6 * q.length() {
             return None;
         }
-        let s = camera.near / depth;
-        let u_c = q.dot(camera.u) * s;
-        let v_r = q.dot(camera.v) * s;
-        let c = (u_c + camera.half_width) * cols / (2.0 * camera.half_width);
-        let y = rows - (v_r + camera.half_height) * rows / (2.0 * camera.half_height);
+        let s = camera.near() / depth;
+        let u_c = q.dot(camera.u()) * s;
+        let v_r = q.dot(camera.v()) * s;
+        let c = (u_c + camera.half_width()) * cols / (2.0 * camera.half_width());
+        let y = rows - (v_r + camera.half_height()) * rows / (2.0 * camera.half_height());
         x0 = x0.min(c);
         x1 = x1.max(c);
         y0 = y0.min(y);
@@ -119,8 +119,8 @@ impl Extents {
     /// is the box of candidate i (lists keep candidates in increasing order).
     #[must_use]
     pub fn build(boxes: &[Aabb], camera: &Camera, tile: u32) -> Self {
-        let tiles_x = camera.columns.div_ceil(tile);
-        let tiles_y = camera.rows.div_ceil(tile);
+        let tiles_x = camera.columns().div_ceil(tile);
+        let tiles_y = camera.rows().div_ceil(tile);
         let count = (tiles_x as usize) * (tiles_y as usize);
         let mut lists: Vec<Vec<u32>> = vec![Vec::new(); count];
         let mut everywhere = Vec::new();
@@ -129,7 +129,11 @@ impl Extents {
             let (tx0, tx1, ty0, ty1) = match footprint(b, camera) {
                 Footprint::Nowhere => continue,
                 Footprint::Rectangle([x0, x1, y0, y1]) => {
-                    if x1 < 0 || y1 < 0 || x0 >= camera.columns as i64 || y0 >= camera.rows as i64 {
+                    if x1 < 0
+                        || y1 < 0
+                        || x0 >= camera.columns() as i64
+                        || y0 >= camera.rows() as i64
+                    {
                         continue; // off screen: no camera ray can see it
                     }
                     (

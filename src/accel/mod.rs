@@ -209,7 +209,7 @@ impl Accelerator {
             .map(|&i| {
                 let o = &objects[i as usize];
                 Candidate {
-                    inv: o.placement.inv,
+                    inv: *o.placement.inv(),
                     shape: o.shape.clone(),
                 }
             })

@@ -368,7 +368,7 @@ fn build_object(
     }
 
     let placement = Placement::from_steps(&steps)
-        .filter(|p| p.m.is_finite() && p.inv.is_finite())
+        .filter(|p| p.m().is_finite() && p.inv().is_finite())
         .ok_or_else(|| {
             err(
                 span.clone(),
@@ -487,7 +487,7 @@ fn polyhedron(
                     })
                 })
                 .collect::<Result<Vec<_>, _>>()?;
-            let poly = Polyhedron { facets: list };
+            let poly = Polyhedron::new(list);
             poly.check()
                 .map_err(|why| err(facets.span(), format!("polyhedron facets: {why}")))?;
             Ok(poly)

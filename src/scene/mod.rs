@@ -92,10 +92,4 @@ impl Scene {
     pub fn camera(&self) -> Camera {
         self.camera.camera(self.width, self.height)
     }
-
-    /// The material of object `i`.
-    #[must_use]
-    pub fn material_of(&self, object: &Object) -> &Material {
-        &self.materials[object.material]
-    }
 }

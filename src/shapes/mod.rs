@@ -273,7 +273,7 @@ impl Object {
     #[must_use]
     pub fn intersect_object_space(&self, ray: &Ray, formula: Formula) -> Hits {
         self.shape
-            .intersect_placed(&self.placement.inv, ray, formula)
+            .intersect_placed(&self.placement.inv(), ray, formula)
     }
 }
 
@@ -295,13 +295,13 @@ impl Object {
     pub fn reproject(&self, p: Vec3, part: Part) -> (Vec3, Vec3) {
         let q = self
             .shape
-            .project(self.placement.inv.transform_point3(p), part);
+            .project(self.placement.inv().transform_point3(p), part);
         if !q.is_finite() {
             return (p, Vec3::splat(Real::INFINITY));
         }
-        let refined = self.placement.m.transform_point3(q);
-        let m = abs_matrix(&self.placement.m);
-        let inv = abs_matrix(&self.placement.inv);
+        let refined = self.placement.m().transform_point3(q);
+        let m = abs_matrix(&self.placement.m());
+        let inv = abs_matrix(&self.placement.inv());
         let carried = m.transform_point3(q.abs());
         let round_trip = m.transform_point3(inv.transform_point3(p.abs()));
         (refined, carried + round_trip)
@@ -347,8 +347,8 @@ impl Shape {
                 let k = (r + q.z - 1.0) / 2.0;
                 radial(Vec3::new(q.x, q.y, q.z - k), (r - k).max(0.0))
             }
-            (Shape::Polyhedron(poly), Part::Facet(i)) => match poly.facets.get(i as usize) {
-                Some(f) => q - f.normal * (f.normal.dot(q) - f.d),
+            (Shape::Polyhedron(poly), Part::Facet(i)) => match poly.facets().get(i as usize) {
+                Some(f) => q - f.normal() * (f.normal().dot(q) - f.d()),
                 None => q,
             },
             (Shape::Polyhedron(_), _) => q,

@@ -27,13 +27,25 @@ use crate::real::{Mat3, Real, Vec3};
 /// One facet: the plane n·P = d with n the outward unit normal.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Facet {
-    /// The outward unit normal n.
-    pub normal: Vec3,
-    /// The constant d of n·P = d.
-    pub d: Real,
+    normal: Vec3,
+    d: Real,
 }
 
 impl Facet {
+    /// The outward unit normal n.
+    #[inline]
+    #[must_use]
+    pub fn normal(&self) -> Vec3 {
+        self.normal
+    }
+
+    /// The constant d of n·P = d.
+    #[inline]
+    #[must_use]
+    pub fn d(&self) -> Real {
+        self.d
+    }
+
     /// A facet from any non-zero normal: n and d are divided by |n|. `None` for a zero or
     /// non-finite normal.
     #[must_use]
@@ -50,17 +62,29 @@ impl Facet {
 #[inline]
 #[must_use]
 pub fn facet_t(facet: &Facet, ray: &Ray) -> Real {
-    (facet.d - facet.normal.dot(ray.origin)) / facet.normal.dot(ray.dir)
+    (facet.d() - facet.normal().dot(ray.origin)) / facet.normal().dot(ray.dir)
 }
 
 /// A convex polyhedron given by its facets.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Polyhedron {
-    /// The facets, outward unit normals.
-    pub facets: Vec<Facet>,
+    facets: Vec<Facet>,
 }
 
 impl Polyhedron {
+    /// The polyhedron bounded by `facets` (see [`Polyhedron::check`] for whether they close a
+    /// solid).
+    #[must_use]
+    pub fn new(facets: Vec<Facet>) -> Self {
+        Self { facets }
+    }
+
+    /// The facets, in the order given.
+    #[must_use]
+    pub fn facets(&self) -> &[Facet] {
+        &self.facets
+    }
+
     /// The cube [−1, 1]³: six facets ±x, ±y, ±z at d = 1.
     #[must_use]
     pub fn cube() -> Self {
@@ -136,9 +160,9 @@ impl Polyhedron {
         let mut t_far = Real::INFINITY;
         let (mut near_facet, mut far_facet) = (0, 0);
         for (i, facet) in self.facets.iter().enumerate() {
-            let denom = facet.normal.dot(ray.dir); // n·d: < 0 entering, > 0 leaving
+            let denom = facet.normal().dot(ray.dir); // n·d: < 0 entering, > 0 leaving
             if denom == 0.0 {
-                if facet.normal.dot(ray.origin) > facet.d {
+                if facet.normal().dot(ray.origin) > facet.d() {
                     return Hits::none(); // parallel and outside this facet
                 }
                 continue; // parallel and inside: this facet does not bound the ray
@@ -157,7 +181,7 @@ impl Polyhedron {
         }
         let hit = |t: Real, i: usize| Hit {
             t,
-            normal: self.facets[i].normal,
+            normal: self.facets[i].normal(),
             part: Part::Facet(i as u32),
             entering: true,
         };
@@ -193,7 +217,7 @@ impl Polyhedron {
                         continue; // two of the planes are parallel, or all three share a line
                     }
                     let p = m.inverse() * Vec3::new(f[i].d, f[j].d, f[k].d);
-                    if p.is_finite() && f.iter().all(|g| g.normal.dot(p) <= g.d + tol) {
+                    if p.is_finite() && f.iter().all(|g| g.normal().dot(p) <= g.d() + tol) {
                         out.push(p);
                     }
                 }
@@ -203,7 +227,10 @@ impl Polyhedron {
     }
 
     fn tolerance(&self) -> Real {
-        let scale = self.facets.iter().fold(1.0, |m: Real, f| m.max(f.d.abs()));
+        let scale = self
+            .facets
+            .iter()
+            .fold(1.0, |m: Real, f| m.max(f.d().abs()));
         Real::EPSILON.sqrt() * scale
     }
 
@@ -221,7 +248,7 @@ impl Polyhedron {
                     continue;
                 };
                 for dir in [v, -v] {
-                    if f.iter().all(|g| g.normal.dot(dir) <= tol) {
+                    if f.iter().all(|g| g.normal().dot(dir) <= tol) {
                         return Err(
                             "the facets do not close the polyhedron: it is unbounded in some direction",
                         );
@@ -238,7 +265,7 @@ impl Polyhedron {
         let centre = vertices.iter().copied().sum::<Vec3>() / vertices.len() as Real;
         let depth = f
             .iter()
-            .map(|g| g.d - g.normal.dot(centre))
+            .map(|g| g.d() - g.normal().dot(centre))
             .fold(Real::INFINITY, Real::min);
         if depth <= self.tolerance() {
             return Err("the facets enclose no solid: the polyhedron is flat");
