@@ -273,7 +273,7 @@ impl Object {
     #[must_use]
     pub fn intersect_object_space(&self, ray: &Ray, formula: Formula) -> Hits {
         self.shape
-            .intersect_placed(&self.placement.inv(), ray, formula)
+            .intersect_placed(self.placement.inv(), ray, formula)
     }
 }
 
