@@ -392,7 +392,7 @@ fn inverse_from_inverse_steps_undoes_the_placement() {
 fn t_is_the_same_in_world_and_object_space() {
     let o = ellipsoid();
     let world = ray([-4.0, -1.0, 2.5], [3.0, -0.5, 0.2]);
-    let local = world.transformed(&o.placement.inv());
+    let local = world.transformed(o.placement.inv());
     assert!(
         (local.dir.length() - world.dir.length()).abs() > 0.1,
         "the scale changes |d|"

@@ -300,8 +300,8 @@ impl Object {
             return (p, Vec3::splat(Real::INFINITY));
         }
         let refined = self.placement.m().transform_point3(q);
-        let m = abs_matrix(&self.placement.m());
-        let inv = abs_matrix(&self.placement.inv());
+        let m = abs_matrix(self.placement.m());
+        let inv = abs_matrix(self.placement.inv());
         let carried = m.transform_point3(q.abs());
         let round_trip = m.transform_point3(inv.transform_point3(p.abs()));
         (refined, carried + round_trip)
