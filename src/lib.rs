@@ -11,15 +11,20 @@
 //! | 4 shadows | `ch04_shadows` | [`shadow`], [`offset`] |
 //! | 5 reflection and refraction | `ch05_reflection_refraction` | [`optics`] |
 //!
-//! Shared by all: [`render`] (the trace loop, [`render::Stage`] decides which stops exist),
-//! [`numeric`], [`error`], [`output`] (atomic PNG writing) and [`cli`] (the arguments every
-//! binary shares).
+//! Each formula of the notes is one small function in those modules, and the renderer calls
+//! exactly that function (`chapters/formulas.toml` lists them). **The road of one pixel** —
+//! camera ray, nearest hit, local light, feelers, mirror and transmitted rays — is one plain
+//! file, [`render::tracer`]; [`render::Stage`] decides how far along it a chapter goes.
 //!
-//! Everything computes with [`real::Real`], `f64` by default and `f32` under the `f32` feature.
+//! Around the road: [`render`] (tiles in parallel, packets, the framebuffer, statistics),
+//! [`numeric`], [`error`], [`output`] (atomic PNG writing) and [`cli`] (the arguments every
+//! binary shares). Everything computes with [`real::Real`], `f64` by default and `f32` under
+//! the `f32` feature.
 //!
 //! Speed (the notes' "Computational Aspects") lives in [`accel`]: bounding boxes, projection
-//! extents, an octree and a BVH, chosen with `--accel` and never changing a pixel; the image is
-//! rendered in parallel tiles ([`render`]). Measurements: `docs/performance.md`.
+//! extents, an octree and a BVH, chosen with `--accel`. They decide which objects a ray is
+//! tested against, never how, so no choice changes a pixel. Measurements:
+//! `docs/performance.md`.
 
 pub mod accel;
 pub mod camera;

@@ -225,8 +225,10 @@ fn cone_wall_two_hits_with_normals_x_y_one_minus_z() {
     }
 }
 
-/// "Generic Cone": the base z = −1 is a unit disc with normal (0, 0, −1); from below at x = 0.5
-/// the ray enters the base at t = 2 and leaves the wall where (1 − z)² = 0.25, z = 0.5, t = 3.5.
+/// "Generic Cone": the base z = −1 is the disc of radius 2 (where the wall reaches
+/// x² + y² = (1 − (−1))²; the notes call it a unit circle, an erratum) with normal (0, 0, −1);
+/// from below at x = 0.5 the ray enters the base at t = 2 and leaves the wall where
+/// (1 − z)² = 0.25, z = 0.5, t = 3.5.
 #[test]
 fn cone_base_then_wall() {
     let k = 1.0 / (2.0 as Real).sqrt();

@@ -1,7 +1,8 @@
 //! Bounding boxes (notes: "Computational Aspects", item 1).
 //!
 //! Every generic shape but the plane fits in a known box in its own space: the sphere and the
-//! cylinder in [−1, 1]³, the cone x² + y² = (1 − z)², z ∈ [−1, 1] in [−2, 2]² × [−1, 1], a polyhedron in the box of its vertices. Placing the
+//! cylinder in [−1, 1]³, the cone x² + y² = (1 − z)², z ∈ [−1, 1] in [−2, 2]² × [−1, 1], a
+//! polyhedron in the box of its vertices. Placing the
 //! object by M carries that box into the world; the world box of the placed object is the box
 //! around the eight carried corners (for a sphere, the exact box of the ellipsoid). A ray that
 //! misses the box cannot hit the object, and a slab test costs a few multiplications where an
@@ -94,7 +95,8 @@ impl Aabb {
         max: Vec3::splat(Real::NEG_INFINITY),
     };
 
-    /// The generic box [−1, 1]³ of the sphere, the cylinder and the cone.
+    /// The generic box [−1, 1]³ of the sphere and the cylinder (the cone's is wider:
+    /// [−2, 2]² × [−1, 1], see [`generic_bounds`]).
     pub const GENERIC: Aabb = Aabb {
         min: Vec3::splat(-1.0),
         max: Vec3::splat(1.0),

@@ -51,8 +51,8 @@ pub mod bvh;
 pub mod counters;
 pub mod extents;
 pub mod octree;
-mod packet;
-mod query;
+pub mod packet;
+pub mod query;
 
 use std::time::Instant;
 

@@ -25,5 +25,5 @@ pub mod tracer;
 pub use framebuffer::{Framebuffer, MAX_FRAMEBUFFER_BYTES, check_size};
 pub use options::{Options, Stage, View};
 pub use stats::Stats;
-pub use tiles::{BLOCK, TILE, render, render_with};
-pub use tracer::{Tracer, build_accel};
+pub use tiles::{BLOCK, TILE, build_accel, render, render_with};
+pub use tracer::Tracer;

@@ -5,7 +5,7 @@
 //! block of pixels go through the structure as one packet
 //! ([`crate::accel::Accelerator::nearest_packet`]), and so do their feelers towards each light
 //! ([`crate::accel::Accelerator::transmittance_packet`]). Every pixel is then shaded by the
-//! road of one pixel itself ([`Tracer::local_light`], [`Tracer::reflect_and_refract`]), which
+//! road of one pixel itself (`Tracer::local_light`, `Tracer::reflect_and_refract`), which
 //! looks its feelers' shares up instead of tracing them one by one; its mirror and transmitted
 //! rays are traced one by one. The packets change the time, never a bit of the image:
 //! [`Options::packets`] turns them off, and the tests render both ways and compare.
@@ -25,7 +25,7 @@ pub(crate) type Block<T> = ArrayVec<T, PACKET>;
 pub(crate) type Shares = Vec<[Real; PACKET]>;
 
 impl Tracer<'_> {
-    /// Whether [`Tracer::block`] traces a block's camera rays together: packets asked for, one
+    /// Whether `Tracer::block` traces a block's camera rays together: packets asked for, one
     /// ray a pixel, from stage 2 on, through a BVH or an octree.
     fn packets(&self) -> bool {
         let o: &Options = self.options;
@@ -36,7 +36,7 @@ impl Tracer<'_> {
     }
 
     /// The colours of the pixels x0..x1 of rows y0..y1 (at most [`PACKET`] of them), row after
-    /// row: the colours [`Tracer::pixel`] gives, traced as packets when [`Tracer::packets`].
+    /// row: the colours [`Tracer::pixel`] gives, traced as packets when `Tracer::packets`.
     /// `scratch` keeps its allocation from one block to the next.
     pub(crate) fn block(
         &self,
@@ -86,9 +86,9 @@ impl Tracer<'_> {
             .collect()
     }
 
-    /// Traces, light by light, the feelers [`Tracer::feeler`] sends from the surfaces as one
+    /// Traces, light by light, the feelers `Tracer::feeler` sends from the surfaces as one
     /// packet, and keeps their shares in `shares[light][pixel]`, ready for
-    /// [`Tracer::local_light`] to look up.
+    /// `Tracer::local_light` to look up.
     fn trace_feelers(&self, surfaces: &[Option<Surface>], shares: &mut Shares) {
         let lights = &self.scene.lights;
         shares.clear();

@@ -9,7 +9,8 @@
 
 use rayon::prelude::*;
 
-use super::{Framebuffer, Options, Stage, Stats, Tracer, View, build_accel};
+use super::{Framebuffer, Options, Stage, Stats, Tracer, View};
+use crate::accel::Accel;
 use crate::accel::Accelerator;
 use crate::real::{Real, Vec3};
 use crate::scene::Scene;
@@ -20,6 +21,19 @@ pub const TILE: u32 = 16;
 /// Side of the square blocks of pixels whose camera rays are traced as one packet
 /// (BLOCK² ≤ [`crate::accel::PACKET`]).
 pub const BLOCK: u32 = 4;
+
+/// Builds the acceleration structure `options.accel` for the scene seen at the options' size.
+#[must_use]
+pub fn build_accel(scene: &Scene, options: &Options) -> Accelerator {
+    let camera = scene.camera.camera(options.width, options.height);
+    // chapter 1 intersects nothing
+    let kind = if options.stage == Stage::CameraRays {
+        Accel::None
+    } else {
+        options.accel
+    };
+    Accelerator::build(&scene.objects, &camera, kind, TILE)
+}
 
 /// Renders the scene: returns the image and the rays cast.
 #[must_use]

@@ -6,9 +6,9 @@
 //!   ─► + k_t·I_r + k_r·I_l from the transmitted and mirror rays, recursively (ch5) ─► colour
 //! ```
 //!
-//! Read it top to bottom: [`Tracer::pixel`] → [`Tracer::camera_ray`] → [`Tracer::nearest`]
-//! → [`Tracer::shade`] → [`Tracer::local_light`] (with [`Tracer::feeler`]) →
-//! [`Tracer::reflect_and_refract`] → [`Tracer::trace`] for each new ray. Each stop calls the
+//! Read it top to bottom: [`Tracer::pixel`] → `Tracer::camera_ray` → [`Tracer::nearest`]
+//! → `Tracer::shade` → `Tracer::local_light` (with `Tracer::feeler`) →
+//! `Tracer::reflect_and_refract` → [`Tracer::trace`] for each new ray. Each stop calls the
 //! small function of the notes' formula ([`crate::camera`], [`crate::shapes`],
 //! [`crate::shading`], [`crate::shadow`], [`crate::optics`]); no formula is computed here.
 //! [`Stage`] says how far along the road a chapter goes:
@@ -32,8 +32,8 @@
 
 use std::borrow::Cow;
 
-use super::{Options, Stage, Stats, View, sampling};
-use crate::accel::{Accel, Accelerator};
+use super::{Options, Stage, Stats, View, build_accel, sampling};
+use crate::accel::Accelerator;
 use crate::camera::{Camera, direction_colour};
 use crate::light::Light;
 use crate::material::Material;
@@ -73,19 +73,6 @@ pub(crate) struct Surface<'s> {
 /// A feeler: the ray S(u) = P′ + (L − P′)·u from the offset start P′, and the smallest u that
 /// counts as "between" (0 unless the offset strategy keeps the start on the surface).
 pub(crate) type Feeler = (Ray, Real);
-
-/// Builds the acceleration structure `options.accel` for the scene seen at the options' size.
-#[must_use]
-pub fn build_accel(scene: &Scene, options: &Options) -> Accelerator {
-    let camera = scene.camera.camera(options.width, options.height);
-    // chapter 1 intersects nothing
-    let kind = if options.stage == Stage::CameraRays {
-        Accel::None
-    } else {
-        options.accel
-    };
-    Accelerator::build(&scene.objects, &camera, kind, super::TILE)
-}
 
 impl<'a> Tracer<'a> {
     /// A tracer for the scene with the options' image size (builds `options.accel`).
@@ -229,7 +216,7 @@ impl<'a> Tracer<'a> {
     /// The local light I_a + Σ_lights (I_d + I_s)·share (chapters 3 and 4): Phong's terms of
     /// every light, each times the share of that light its feeler lets through (from stage 4;
     /// 1 before). `share(light, feeler)` answers for the feeler towards light number `light`:
-    /// [`Tracer::shade`] traces it ([`Tracer::transmittance`]); a packet of pixels looks up
+    /// `Tracer::shade` traces it (`Tracer::transmittance`); a packet of pixels looks up
     /// what it traced for all of them at once.
     pub(crate) fn local_light(
         &self,

@@ -1,0 +1,134 @@
+//! The layers a newcomer reads: the library's modules depend on one another without cycles,
+//! the core types carry no command-line code, and the road of one pixel holds no speed
+//! machinery. These read the source files themselves.
+
+use std::collections::{BTreeMap, BTreeSet};
+use std::path::{Path, PathBuf};
+
+fn src() -> PathBuf {
+    PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("src")
+}
+
+/// Every `.rs` file under `dir`, recursively.
+fn rust_files(dir: &Path) -> Vec<PathBuf> {
+    let mut out = Vec::new();
+    for entry in std::fs::read_dir(dir).unwrap() {
+        let path = entry.unwrap().path();
+        if path.is_dir() {
+            out.extend(rust_files(&path));
+        } else if path.extension().is_some_and(|e| e == "rs") {
+            out.push(path);
+        }
+    }
+    out.sort();
+    out
+}
+
+/// The file's code without its comments (line comments, doc comments included).
+fn code(text: &str) -> String {
+    text.lines()
+        .map(|l| match l.find("//") {
+            Some(i) => &l[..i],
+            None => l,
+        })
+        .collect::<Vec<_>>()
+        .join("\n")
+}
+
+/// The top-level module a file of `src/` belongs to (`render` for `src/render/tracer.rs`).
+fn top_module(path: &Path) -> String {
+    let rel = path.strip_prefix(src()).unwrap();
+    let first = rel
+        .components()
+        .next()
+        .unwrap()
+        .as_os_str()
+        .to_string_lossy();
+    first.trim_end_matches(".rs").to_string()
+}
+
+/// Which top-level modules each top-level module names (`crate::x`).
+fn dependencies() -> BTreeMap<String, BTreeSet<String>> {
+    let mut deps: BTreeMap<String, BTreeSet<String>> = BTreeMap::new();
+    for file in rust_files(&src()) {
+        let me = top_module(&file);
+        if me == "lib" {
+            continue;
+        }
+        let text = code(&std::fs::read_to_string(&file).unwrap());
+        let entry = deps.entry(me.clone()).or_default();
+        for (i, _) in text.match_indices("crate::") {
+            let name: String = text[i + 7..]
+                .chars()
+                .take_while(|c| c.is_alphanumeric() || *c == '_')
+                .collect();
+            if !name.is_empty() && name != me {
+                entry.insert(name);
+            }
+        }
+    }
+    deps
+}
+
+/// The library's modules depend on one another without a cycle: they can be read in an order
+/// where each uses only those before it (the order is printed).
+#[test]
+fn the_modules_form_no_cycle() {
+    let deps = dependencies();
+    assert!(deps.contains_key("render") && deps.contains_key("accel"));
+    let mut done: Vec<String> = Vec::new();
+    let mut left: BTreeSet<String> = deps.keys().cloned().collect();
+    while !left.is_empty() {
+        let ready: Vec<String> = left
+            .iter()
+            .filter(|m| {
+                deps[*m]
+                    .iter()
+                    .all(|d| done.contains(d) || !deps.contains_key(d))
+            })
+            .cloned()
+            .collect();
+        assert!(
+            !ready.is_empty(),
+            "a cycle among {left:?}: {:?}",
+            left.iter().map(|m| (m, &deps[m])).collect::<Vec<_>>()
+        );
+        for m in ready {
+            left.remove(&m);
+            done.push(m);
+        }
+    }
+    println!("reading order: {}", done.join(" → "));
+    // the speed machinery sits on the road, not under it
+    let position = |m: &str| done.iter().position(|d| d == m).unwrap();
+    assert!(position("accel") < position("render"));
+    assert!(!deps["accel"].contains("render"), "{:?}", deps["accel"]);
+}
+
+/// Core types carry no command-line code: `clap` appears in `src/cli.rs` only (the binaries
+/// and tools have their own mains).
+#[test]
+fn only_the_command_line_module_knows_clap() {
+    let mut found = Vec::new();
+    for file in rust_files(&src()) {
+        let text = code(&std::fs::read_to_string(&file).unwrap());
+        if file.file_name().unwrap() != "cli.rs" && text.contains("clap") {
+            found.push(file.display().to_string());
+        }
+    }
+    assert!(found.is_empty(), "clap outside src/cli.rs: {found:?}");
+}
+
+/// The road of one pixel (`src/render/tracer.rs`) is plain: no tile, packet, mailbox or
+/// counter code in it, and short enough to read in one sitting.
+#[test]
+fn the_road_of_one_pixel_holds_no_speed_machinery() {
+    let path = src().join("render/tracer.rs");
+    let text = std::fs::read_to_string(&path).unwrap();
+    let code = code(&text).to_lowercase();
+    for word in ["packet", "tile", "mailbox", "counters", "rayon", "block"] {
+        assert!(!code.contains(word), "the road's code mentions `{word}`");
+    }
+    let lines = text.lines().count();
+    assert!(lines <= 400, "the road is {lines} lines long");
+}
