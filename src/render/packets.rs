@@ -78,7 +78,7 @@ impl Tracer<'_> {
             .enumerate()
             .map(|(i, s)| match s {
                 Some(s) => {
-                    let local = self.local_light(s, &mut |l, _| scratch[l][i], stats);
+                    let local = self.local_light(s, |l, _| scratch[l][i], stats);
                     self.reflect_and_refract(s, local, 0, 1.0, stats)
                 }
                 None => self.scene.background,

@@ -194,7 +194,7 @@ impl<'a> Tracer<'a> {
             return self.scene.background;
         };
         let s = self.surface(ray, &nearest);
-        let local = self.local_light(&s, &mut |_, feeler| self.transmittance(feeler), stats);
+        let local = self.local_light(&s, |_, feeler| self.transmittance(feeler), stats);
         self.reflect_and_refract(&s, local, depth, weight, stats)
     }
 
@@ -221,7 +221,7 @@ impl<'a> Tracer<'a> {
     pub(crate) fn local_light(
         &self,
         s: &Surface,
-        share: &mut dyn FnMut(usize, &Feeler) -> Real,
+        mut share: impl FnMut(usize, &Feeler) -> Real,
         stats: &mut Stats,
     ) -> Vec3 {
         let mut color = shading::ambient(s.material, self.scene.ambient); // I_a
