@@ -4,7 +4,7 @@
 //! chNN [SCENE] [-o OUT.png] [--width W] [--height H]      every chapter
 //!      [--quiet]                                           every chapter
 //!      [--view color|flat|normals|depth]                   chapters 2–5
-//!      [--accel none|boxes|extents|octree|bvh]             chapters 2–5
+//!      [--accel none|boxes|extents|octree|bvh] [--no-packets]   chapters 2–5
 //!      [--samples N] [--max-depth N] [--stats]             chapter 5
 //!      [--formula textbook|robust]                         chapters 4–5
 //!      [--offset fixed|scaled|error-bound]                 chapters 4–5
@@ -123,6 +123,10 @@ pub struct ViewArg {
     /// with every choice, only the time changes.
     #[arg(long, value_enum, default_value_t = Accel::default())]
     pub accel: Accel,
+    /// Trace every pixel alone by the plain road, instead of the camera rays and feelers of
+    /// 4×4 blocks as packets (a BVH or an octree, one sample a pixel); the same image either way.
+    #[arg(long)]
+    pub no_packets: bool,
 }
 
 /// Chapter 5's tracing controls.
@@ -236,6 +240,7 @@ fn run_inner(
     if let Some(v) = view {
         options.view = v.view;
         options.accel = v.accel;
+        options.packets = !v.no_packets;
     }
     if let Some(t) = tracing {
         options.samples = t.samples.unwrap_or(options.samples);

@@ -373,3 +373,36 @@ fn over_unity_material_warns_but_renders() {
     );
     assert!(dir.path().join("s.png").exists());
 }
+
+/// The command line's value names are the names the library reports (`--accel octree` is
+/// `Accel::Octree.name()`, and so on), every variant has one, with a help line.
+#[test]
+fn command_line_names_are_the_library_names() {
+    use clap::ValueEnum;
+    use whitted::accel::Accel;
+    use whitted::offset::OffsetKind;
+    use whitted::shapes::Formula;
+    fn names<T: ValueEnum>() -> Vec<String> {
+        T::value_variants()
+            .iter()
+            .map(|v| {
+                let p = v.to_possible_value().unwrap();
+                assert!(p.get_help().is_some(), "{} has no help", p.get_name());
+                p.get_name().to_string()
+            })
+            .collect()
+    }
+    assert_eq!(names::<Accel>(), Accel::ALL.map(|a| a.name().to_string()));
+    assert_eq!(
+        names::<Formula>(),
+        Formula::ALL.map(|f| f.name().to_string())
+    );
+    assert_eq!(
+        names::<OffsetKind>(),
+        OffsetKind::ALL.map(|o| o.name().to_string())
+    );
+    assert_eq!(
+        names::<whitted::render::View>(),
+        ["color", "flat", "normals", "depth"]
+    );
+}

@@ -45,28 +45,30 @@ fn an_oversized_image_is_refused_in_one_line_before_any_work() {
     assert!(!out.exists());
 }
 
-/// Every `--accel` writes the same PNG, byte for byte.
+/// Every `--accel`, with packets and with `--no-packets`, writes the same PNG, byte for byte.
 #[test]
 fn every_accel_writes_the_same_png() {
     let dir = tempfile::tempdir().unwrap();
     let mut images = Vec::new();
     for accel in ["none", "boxes", "extents", "octree", "bvh"] {
-        let out = dir.path().join(format!("{accel}.png"));
-        let (code, _, err) = run(
-            CH05,
-            &[
+        for packets in [None, Some("--no-packets")] {
+            let out = dir.path().join(format!("{accel}-{packets:?}.png"));
+            let mut args = vec![
                 "-o",
                 out.to_str().unwrap(),
                 "--width",
                 "64",
                 "--accel",
                 accel,
-                "-q",
-            ],
-        );
-        assert_eq!(code, 0, "{err}");
-        images.push(std::fs::read(&out).unwrap());
+            ];
+            args.extend(packets);
+            args.push("-q");
+            let (code, _, err) = run(CH05, &args);
+            assert_eq!(code, 0, "{err}");
+            images.push(std::fs::read(&out).unwrap());
+        }
     }
+    assert_eq!(images.len(), 10);
     assert!(images.iter().all(|i| *i == images[0]));
     let (code, _, err) = run(CH02, &["-o", "/dev/null.png", "--accel", "kd-tree"]);
     assert_eq!(code, 2, "{err}");
