@@ -221,7 +221,7 @@ impl Aabb {
 /// axis, the range of their origins and of their 1/d, when all go the same way along it.
 /// A box that no ray of these ranges could meet is missed by every ray of the packet, and
 /// one test says so instead of one a ray.
-pub struct Span {
+pub(crate) struct Span {
     origin: [(Real, Real); 3],
     inv_dir: [(Real, Real); 3],
     down: [bool; 3],
@@ -233,7 +233,7 @@ pub struct Span {
 impl Span {
     /// The span of `rays`, or `None` if they do not all go the same way along every axis.
     #[must_use]
-    pub fn of(rays: &[RayBox], t_min: &[Real], limits: &[Real]) -> Option<Self> {
+    pub(crate) fn of(rays: &[RayBox], t_min: &[Real], limits: &[Real]) -> Option<Self> {
         let first = rays.first()?;
         let mut span = Span {
             origin: [(Real::INFINITY, Real::NEG_INFINITY); 3],
@@ -272,7 +272,7 @@ impl Span {
     /// the test errs only towards opening the box.
     #[inline]
     #[must_use]
-    pub fn misses(&self, b: &Aabb) -> bool {
+    pub(crate) fn misses(&self, b: &Aabb) -> bool {
         super::counters::box_test();
         let (lo, hi) = ([b.min.x, b.min.y, b.min.z], [b.max.x, b.max.y, b.max.z]);
         let mut enter = Real::NEG_INFINITY;

@@ -185,7 +185,7 @@ impl Bvh {
     /// for hits after `t_min[r]` up to `limits[r]`, which `visit` may shrink, or set to NaN
     /// when the ray needs nothing more (a NaN limit is met by no box). `all` is the packet's
     /// [`Span`] for these limits, if it has one.
-    pub fn walk_packet(
+    pub(crate) fn walk_packet(
         &self,
         rays: &[RayBox],
         t_min: &[Real],

@@ -235,7 +235,7 @@ impl Octree {
     /// `from` on may meet (`alone`: i is the leaf's only item, so ray `from` meets its box,
     /// which holds the leaf's); a NaN limit is met by no box. `all` is the packet's [`Span`]
     /// for these limits, if it has one.
-    pub fn walk_packet(
+    pub(crate) fn walk_packet(
         &self,
         rays: &[RayBox],
         t_min: &[Real],
