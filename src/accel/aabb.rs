@@ -43,15 +43,21 @@ pub(crate) const SLACK: Real = 16.0 * Real::EPSILON;
 #[derive(Clone, Copy, Debug)]
 pub struct RayBox {
     /// The origin e.
-    pub origin: Vec3,
+    pub(crate) origin: Vec3,
     /// 1/d, componentwise, held within ±[`Real::MAX`]: where d has a zero component it is
     /// ±MAX (the sign of the zero) instead of ±∞, so that (bound − e)·(1/d) is never 0·∞.
-    pub inv_dir: Vec3,
+    pub(crate) inv_dir: Vec3,
     /// Per axis: the ray moves down it (1/d < 0), so it meets a box's upper side first.
-    pub down: [bool; 3],
+    pub(crate) down: [bool; 3],
 }
 
 impl RayBox {
+    /// 1/d, componentwise, held within ±[`Real::MAX`] (see the field).
+    #[must_use]
+    pub fn inv_dir(&self) -> Vec3 {
+        self.inv_dir
+    }
+
     /// Prepares `ray` for slab tests.
     #[inline]
     #[must_use]

@@ -112,8 +112,8 @@ fn slab_test_handles_rays_parallel_to_an_axis() {
     };
     for zero in [0.0, -0.0] {
         let rb = RayBox::new(&Ray::new(vec3(0.5, 0.5, -5.0), vec3(zero, zero, 1.0)));
-        assert!(rb.inv_dir.is_finite(), "{:?}", rb.inv_dir);
-        assert_eq!(rb.inv_dir.x.is_sign_negative(), zero.is_sign_negative());
+        assert!(rb.inv_dir().is_finite(), "{:?}", rb.inv_dir());
+        assert_eq!(rb.inv_dir().x.is_sign_negative(), zero.is_sign_negative());
         // inside the x and y slabs: enters at z = −1 (t = 4) and leaves at z = 1 (t = 6)
         let (enter, exit) = b.slabs(&rb);
         assert!((enter - 4.0).abs() < 1e-4 && (exit - 6.0).abs() < 1e-4);
