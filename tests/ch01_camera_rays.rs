@@ -6,11 +6,13 @@
 mod common;
 
 use approx::assert_abs_diff_eq;
-use common::{TOL, assert_vec_eq};
+use common::{TOL, assert_vec_eq, centre, scene};
 use whitted::camera::{
-    Camera, near_plane_half_height, near_plane_half_width, pixel_on_near_plane, viewing_basis,
+    Camera, direction_colour, near_plane_half_height, near_plane_half_width, pixel_on_near_plane,
+    viewing_basis,
 };
 use whitted::real::{Real, Vec3, real, vec3};
+use whitted::render::Stage;
 
 /// A camera at the origin looking down −z (so n = +z, u = +x, v = +y).
 fn straight_camera(fov: Real, near: Real, columns: u32, rows: u32) -> Camera {
@@ -198,4 +200,49 @@ fn top_image_row_looks_up() {
     assert!(cam.pixel_ray(5, 9, 0.5, 0.5).dir.y < 0.0);
     assert!(cam.pixel_ray(0, 5, 0.5, 0.5).dir.x < 0.0);
     assert!(cam.pixel_ray(9, 5, 0.5, 0.5).dir.x > 0.0);
+}
+
+/// "Principles of Ray Tracing": chapter 1 colours a ray by its unit direction, (d̂ + 1)/2 on
+/// each channel. Hand values: (0, 0, −2) has d̂ = (0, 0, −1), so (½, ½, 0); (3, 4, 0) has
+/// |d| = 5, d̂ = (0.6, 0.8, 0), so (1.6/2, 1.8/2, 1/2) = (0.8, 0.9, 0.5); (−7, 0, 0) gives
+/// (0, ½, ½); (1, 1, 1) has d̂ = (1, 1, 1)/√3, so each channel is (1/√3 + 1)/2 ≈ 0.788675.
+#[test]
+fn ray_colour_is_unit_direction_plus_one_over_two() {
+    assert_vec_eq(
+        direction_colour(vec3(0.0, 0.0, -2.0)),
+        vec3(0.5, 0.5, 0.0),
+        TOL,
+    );
+    assert_vec_eq(
+        direction_colour(vec3(3.0, 4.0, 0.0)),
+        vec3(0.8, 0.9, 0.5),
+        TOL,
+    );
+    assert_vec_eq(
+        direction_colour(vec3(-7.0, 0.0, 0.0)),
+        vec3(0.0, 0.5, 0.5),
+        TOL,
+    );
+    let k = (1.0 / (3.0 as Real).sqrt() + 1.0) / 2.0;
+    assert_abs_diff_eq!(k, real(0.788_675_134_594_812_9), epsilon = TOL);
+    assert_vec_eq(direction_colour(vec3(1.0, 1.0, 1.0)), Vec3::splat(k), TOL);
+}
+
+/// "Principles of Ray Tracing": the only ray of a 1 × 1 image goes through the middle of the
+/// near plane, d = −N·n. Looking along −z (n = +z) with N = 2 it is (0, 0, −2), coloured
+/// (½, ½, 0) once made unit; looking along +x (n = −x) with N = 0.5 it is (0.5, 0, 0),
+/// coloured (1, ½, ½).
+#[test]
+fn centre_pixel_of_a_chapter_one_image_is_the_colour_of_minus_n() {
+    let along_minus_z = scene(
+        "[camera]\neye = [0.0, 0.0, 5.0]\nlook_at = [0.0, 0.0, 0.0]\nnear = 2.0\n[[objects]]\nsphere = {}\n",
+    );
+    let (c, stats) = centre(&along_minus_z, Stage::CameraRays);
+    assert_vec_eq(c, vec3(0.5, 0.5, 0.0), TOL);
+    assert_eq!(stats.primary, 1);
+    let along_x = scene(
+        "[camera]\neye = [-3.0, 1.0, 2.0]\nlook_at = [4.0, 1.0, 2.0]\nnear = 0.5\n[[objects]]\nsphere = {}\n",
+    );
+    let (c, _) = centre(&along_x, Stage::CameraRays);
+    assert_vec_eq(c, vec3(1.0, 0.5, 0.5), TOL);
 }

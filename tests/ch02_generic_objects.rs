@@ -5,12 +5,16 @@
 mod common;
 
 use approx::assert_abs_diff_eq;
-use common::{TOL, assert_vec_eq};
+use common::{TOL, assert_vec_eq, centre, render_at, render_both_ways, scene};
+use whitted::accel::Accel;
 use whitted::ray::Ray;
 use whitted::real::{Mat4, Real, Vec3, vec3};
+use whitted::render::{Options, Stage, Tracer};
 use whitted::shapes::quadratic::{Formula, Roots, discriminant, solve};
-use whitted::shapes::{Hits, Object, Part, Polyhedron, Shape, cone, cylinder, polyhedron, sphere};
-use whitted::transform::{Placement, Step};
+use whitted::shapes::{
+    Hits, Object, Part, Polyhedron, Shape, cone, cylinder, nearer, polyhedron, sphere,
+};
+use whitted::transform::{Placement, Step, rotation_from_z, sin_cos_degrees};
 
 fn ray(e: [f64; 3], d: [f64; 3]) -> Ray {
     Ray::new(vec3(e[0], e[1], e[2]), vec3(d[0], d[1], d[2]))
@@ -616,4 +620,274 @@ fn placed_cone_from_base_apex_radius() {
     assert_abs_diff_eq!(hits.as_slice()[0].t, 1.0, epsilon = 10.0 * TOL);
     assert_eq!(hits.as_slice()[0].part, Part::Base);
     assert_abs_diff_eq!(hits.as_slice()[1].t, 4.0, epsilon = 10.0 * TOL);
+}
+
+// --- the nearest hit (step 5) ------------------------------------------------------------
+
+/// Three spheres on the axis of a camera at the origin looking down −z, listed far, behind,
+/// near (so the answer cannot come from the order alone).
+const THREE_SPHERES: &str = "[camera]\neye = [0.0, 0.0, 0.0]\nlook_at = [0.0, 0.0, -1.0]\n\
+    [materials.far]\ndiffuse = [0.0, 0.0, 1.0]\n[materials.behind]\ndiffuse = [0.0, 1.0, 0.0]\n\
+    [materials.near]\ndiffuse = [1.0, 0.0, 0.0]\n\
+    [[objects]]\nsphere = { center = [0.0, 0.0, -10.0], radius = 1.0 }\nmaterial = \"far\"\n\
+    [[objects]]\nsphere = { center = [0.0, 0.0, 5.0], radius = 2.0 }\nmaterial = \"behind\"\n\
+    [[objects]]\nsphere = { center = [0.0, 0.0, -5.0], radius = 1.0 }\nmaterial = \"near\"\n";
+
+/// "Ray Tracing Process", step 5: of all the hits the visible one has the smallest t > 0.
+/// Along r(t) = (0, 0, −2t), |r(t) − c|² = ρ² gives by hand: the far sphere (c_z = −10, ρ = 1)
+/// (10 − 2t)² = 1, t = 4.5 or 5.5; the near one (c_z = −5, ρ = 1) (5 − 2t)² = 1, t = 2 or 3;
+/// the one behind the eye (c_z = 5, ρ = 2) (5 + 2t)² = 4, t = −1.5 or −3.5, both < 0. The
+/// near sphere (object 2) wins at t = 2 with normal +z; from t_min = 2.5 its far side (t = 3,
+/// leaving, normal −z); from t_min = 3.5 the far sphere at t = 4.5; for every accelerator.
+#[test]
+fn nearest_hit_has_the_smallest_positive_t() {
+    let s = scene(THREE_SPHERES);
+    let ray = ray([0.0, 0.0, 0.0], [0.0, 0.0, -2.0]);
+    for accel in Accel::ALL {
+        let mut o = Options::for_scene(&s, Stage::GenericObjects);
+        o.accel = accel;
+        let tracer = Tracer::new(&s, &o);
+        let near = tracer
+            .nearest(&ray, 0.0)
+            .expect("the near sphere is in front");
+        assert_eq!(near.object, 2, "{accel:?}");
+        assert_abs_diff_eq!(near.hit.t, 2.0, epsilon = 10.0 * TOL);
+        assert_vec_eq(near.hit.normal, Vec3::Z, 10.0 * TOL);
+        assert!(near.hit.entering);
+        let inside = tracer.nearest(&ray, 2.5).unwrap();
+        assert_eq!(inside.object, 2, "{accel:?}");
+        assert_abs_diff_eq!(inside.hit.t, 3.0, epsilon = 10.0 * TOL);
+        assert_vec_eq(inside.hit.normal, Vec3::NEG_Z, 10.0 * TOL);
+        assert!(!inside.hit.entering);
+        let beyond = tracer.nearest(&ray, 3.5).unwrap();
+        assert_eq!(beyond.object, 0, "{accel:?}");
+        assert_abs_diff_eq!(beyond.hit.t, 4.5, epsilon = 10.0 * TOL);
+        assert!(tracer.nearest(&ray, 5.5).is_none(), "{accel:?}");
+    }
+    // the chapter-2 image shows the near sphere's flat colour ρd
+    let (c, _) = centre(&s, Stage::GenericObjects);
+    assert_vec_eq(c, vec3(1.0, 0.0, 0.0), 0.0);
+}
+
+/// "Ray Tracing Process", step 5 (the tie rule of `shapes::nearer`): a smaller t wins whatever
+/// the order; of two hits at the same t, the object listed first.
+#[test]
+fn equal_t_goes_to_the_object_listed_first() {
+    assert!(nearer(2.0, 0, 2.0, 1));
+    assert!(!nearer(2.0, 1, 2.0, 0));
+    assert!(!nearer(2.0, 3, 2.0, 3));
+    assert!(nearer(1.5, 7, 2.0, 0));
+    assert!(!nearer(2.5, 0, 2.0, 7));
+    assert!(nearer(1e9, usize::MAX, Real::INFINITY, 0)); // anything beats "no hit yet"
+}
+
+/// Two coincident unit spheres of different materials at (0, 0, −5), seen along the camera's
+/// axis.
+fn coincident(first: &str, second: &str) -> String {
+    format!(
+        "[camera]\neye = [0.0, 0.0, 0.0]\nlook_at = [0.0, 0.0, -1.0]\n\
+         [materials.red]\ndiffuse = [1.0, 0.0, 0.0]\n[materials.green]\ndiffuse = [0.0, 1.0, 0.0]\n\
+         [[objects]]\nsphere = {{ center = [0.0, 0.0, -5.0] }}\nmaterial = \"{first}\"\n\
+         [[objects]]\nsphere = {{ center = [0.0, 0.0, -5.0] }}\nmaterial = \"{second}\"\n"
+    )
+}
+
+/// "Ray Tracing Process", step 5: two coincident spheres are hit at the same t = 4 (|(0, 0, −t)
+/// − (0, 0, −5)| = 1); the one listed first shows, red before green or green before red, for
+/// every accelerator, in the rendered 1 × 1 image and through `Tracer::nearest`.
+#[test]
+fn coincident_objects_show_the_first_listed_for_every_accel() {
+    for (first, second, colour) in [
+        ("red", "green", vec3(1.0, 0.0, 0.0)),
+        ("green", "red", vec3(0.0, 1.0, 0.0)),
+    ] {
+        let s = scene(&coincident(first, second));
+        for accel in Accel::ALL {
+            let mut o = Options::for_scene(&s, Stage::GenericObjects);
+            (o.width, o.height, o.accel) = (1, 1, accel);
+            let (fb, _) = render_both_ways(&s, &o);
+            assert_eq!(fb.pixels[0], colour, "{first} first, {accel:?}");
+            let near = Tracer::new(&s, &o)
+                .nearest(&ray([0.0, 0.0, 0.0], [0.0, 0.0, -1.0]), 0.0)
+                .unwrap();
+            assert_eq!(near.object, 0, "{first} first, {accel:?}");
+            assert_abs_diff_eq!(near.hit.t, 4.0, epsilon = 10.0 * TOL);
+        }
+    }
+}
+
+/// "Convex Polyhedra": a facet with n·d < 0 is crossed from outside to inside, one with n·d > 0
+/// from inside to outside. On the triangular prism y ≥ 0, x + y ≤ 2, −x + y ≤ 2, |z| ≤ 1
+/// (facets 0–4, normals (0, −1, 0), (1, 1, 0)/√2, (−1, 1, 0)/√2, ±z; the slanted facets have
+/// d = 2/√2), t = (d − n·e)/(n·d), written below with the √2 of the slanted facets cancelled:
+/// - e = (5, 0.5, 0), d = (−1, 0, 0): facet 1 has n·d = −1/√2 < 0, t = (2 − 5.5)/(−1) = 3.5
+///   (x = 1.5), entering; facet 2 has n·d = 1/√2 > 0, t = (2 − (−4.5))/1 = 6.5 (x = −1.5),
+///   leaving; facet 0 and the caps are parallel with e inside them.
+/// - e = (0.5, −3, 0.2), d = (0, 2, 0): facet 0 n·d = −2, t = (0 − 3)/(−2) = 1.5 (y = 0),
+///   entering; facet 1 n·d = 2/√2, t = (2 − (−2.5))/2 = 2.25 (y = 1.5), leaving; facet 2
+///   t = (2 − (−3.5))/2 = 2.75 comes later and does not bound the ray.
+/// - from inside, e = (0.5, 0.5, 0), d = (1, 0, 0): entering through facet 2 behind the origin
+///   at t = (2 − 0)/(−1) = −2 (x = −1.5), leaving through facet 1 at t = (2 − 1)/1 = 1.
+#[test]
+fn polyhedron_enters_where_n_dot_d_is_negative_and_leaves_where_positive() {
+    let facet =
+        |n: [f64; 3], d: f64| polyhedron::Facet::new(vec3(n[0], n[1], n[2]), d as Real).unwrap();
+    let prism = Polyhedron::new(vec![
+        facet([0.0, -1.0, 0.0], 0.0),
+        facet([1.0, 1.0, 0.0], 2.0),
+        facet([-1.0, 1.0, 0.0], 2.0),
+        facet([0.0, 0.0, 1.0], 1.0),
+        facet([0.0, 0.0, -1.0], 1.0),
+    ]);
+    assert_eq!(prism.check(), Ok(()));
+    let prism = generic(Shape::Polyhedron(prism));
+    let k = 1.0 / (2.0 as Real).sqrt();
+    let (n1, n2) = (vec3(1.0, 1.0, 0.0) * k, vec3(-1.0, 1.0, 0.0) * k);
+    let cases = [
+        (
+            ray([5.0, 0.5, 0.0], [-1.0, 0.0, 0.0]),
+            [(3.5, 1, n1), (6.5, 2, n2)],
+        ),
+        (
+            ray([0.5, -3.0, 0.2], [0.0, 2.0, 0.0]),
+            [(1.5, 0, Vec3::NEG_Y), (2.25, 1, n1)],
+        ),
+        (
+            ray([0.5, 0.5, 0.0], [1.0, 0.0, 0.0]),
+            [(-2.0, 2, n2), (1.0, 1, n1)],
+        ),
+    ];
+    for (r, expected) in cases {
+        let hits = prism.intersect(&r, Formula::Robust);
+        assert_hits(
+            &hits,
+            &[
+                (expected[0].0, Part::Facet(expected[0].1)),
+                (expected[1].0, Part::Facet(expected[1].1)),
+            ],
+        );
+        let [enter, leave] = [hits.as_slice()[0], hits.as_slice()[1]];
+        assert_vec_eq(enter.normal, expected[0].2, TOL);
+        assert_vec_eq(leave.normal, expected[1].2, TOL);
+        assert!(enter.entering && enter.normal.dot(r.dir) < 0.0, "{r:?}");
+        assert!(!leave.entering && leave.normal.dot(r.dir) > 0.0, "{r:?}");
+    }
+}
+
+// --- exact quarter turns -----------------------------------------------------------------
+
+/// True when every entry of `m` is exactly 0, 1 or −1.
+fn entries_are_exactly_0_or_1(m: &Mat4) -> bool {
+    m.to_cols_array()
+        .iter()
+        .all(|&x| x == 0.0 || x.abs() == 1.0)
+}
+
+/// "Ray Tracing Process" (q = M·q′): a rotation by a whole multiple of 90° has sine and cosine
+/// exactly 0 and ±1, so M and M⁻¹ hold nothing else: sin 90° = 1, cos 90° = 0 (where
+/// `to_radians().sin_cos()` gives cos 90° = 6.1e-17 in f64, −4.4e-8 in f32); −90° → (−1, 0);
+/// 180° → (0, −1); 270° → (−1, 0); 450° = 360° + 90° → (1, 0). Turning +z onto ±x, ±y and −z
+/// gives such matrices, which carry +z exactly onto the target and multiply to I exactly.
+#[test]
+fn rotations_by_multiples_of_90_degrees_are_exact() {
+    assert_eq!(sin_cos_degrees(90.0), (1.0, 0.0));
+    assert_eq!(sin_cos_degrees(-90.0), (-1.0, 0.0));
+    assert_eq!(sin_cos_degrees(180.0), (0.0, -1.0));
+    assert_eq!(sin_cos_degrees(270.0), (-1.0, 0.0));
+    assert_eq!(sin_cos_degrees(450.0), (1.0, 0.0));
+    assert_eq!(sin_cos_degrees(-360.0), (0.0, 1.0));
+    assert_ne!(
+        (90.0 as Real).to_radians().cos(),
+        0.0,
+        "why the special case exists"
+    );
+    for to in [
+        Vec3::X,
+        Vec3::NEG_X,
+        Vec3::Y,
+        Vec3::NEG_Y,
+        Vec3::NEG_Z,
+        Vec3::Z,
+    ] {
+        let step = rotation_from_z(to);
+        let placement = Placement::from_steps(&[step]).unwrap();
+        for m in [step.matrix(), *placement.m(), *placement.inv()] {
+            assert!(entries_are_exactly_0_or_1(&m), "+z → {to}: {m:?}");
+        }
+        assert_eq!(placement.m().transform_vector3(Vec3::Z), to);
+        assert_eq!(placement.inv().transform_vector3(to), Vec3::Z);
+        assert_eq!(*placement.m() * *placement.inv(), Mat4::IDENTITY);
+    }
+}
+
+/// The floor `plane = { point = [0, 0, 0], normal = [0, 1, 0] }` seen from a camera at
+/// y = 1 looking at (0, 1, `look_z`).
+fn floor_scene(look_z: f64) -> String {
+    format!(
+        "[camera]\neye = [0.0, 1.0, 0.0]\nlook_at = [0.0, 1.0, {look_z}]\n\
+         [image]\nbackground = [0.0, 0.2, 0.8]\n[materials.floor]\ndiffuse = [0.9, 0.6, 0.1]\n\
+         [[objects]]\nplane = {{ point = [0.0, 0.0, 0.0], normal = [0.0, 1.0, 0.0] }}\nmaterial = \"floor\"\n"
+    )
+}
+
+/// "Generic Plane" placed by "Ray Tracing Process": with normal (0, 1, 0) the plane is the
+/// generic z = 0 turned by −90° about x, exactly, so a world ray with d_y = 0 has d_z = 0 in
+/// object space and misses ("if d_z = 0 the ray is parallel"), in f64 and f32 alike: along ±x
+/// and ±z, at heights 1 and 10⁻³. A camera at y = 1 looking along −z (and one looking along
+/// +z) sees it on no pixel of the middle row of a 5 × 3 image (v_r = H(2·1.5/3 − 1) = 0, so
+/// d_y = 0), and on every pixel of the bottom row (v_r = −2H/3, the floor at distance
+/// 1/(2H/3) ≈ 2.6); the top row is background too. Before rotations by quarter turns were
+/// made exact, cos 90° ≠ 0 tilted the floor, and the middle row on one side met it about
+/// 1/cos 90° away, 10¹⁶–10¹⁷ in f64 and 10⁷–10⁸ in f32: floor colour where the horizon
+/// should be.
+#[test]
+fn ray_parallel_to_a_placed_floor_misses_it() {
+    let s = scene(&floor_scene(-1.0));
+    let floor = &s.objects[0];
+    for y in [1.0, 1e-3] {
+        for d in [
+            [1.0, 0.0, 0.0],
+            [-1.0, 0.0, 0.0],
+            [0.0, 0.0, 1.0],
+            [0.0, 0.0, -1.0],
+        ] {
+            let hits = floor.intersect(&ray([0.3, y, -0.7], d), Formula::Robust);
+            assert!(hits.is_empty(), "y = {y}, d = {d:?}: {hits:?}");
+        }
+        // the same floor turned by the inexact angle: some parallel ray meets it very far away
+        let inexact = Mat4::from_rotation_x((90.0 as Real).to_radians()); // M⁻¹ of −90° about x
+        let far = [[0.0, 0.0, 1.0], [0.0, 0.0, -1.0]]
+            .iter()
+            .flat_map(|&d| {
+                Shape::Plane
+                    .intersect_placed(&inexact, &ray([0.3, y, -0.7], d), Formula::Robust)
+                    .as_slice()
+                    .to_vec()
+            })
+            .filter(|h| h.t > 0.0)
+            .map(|h| h.t)
+            .fold(0.0, Real::max);
+        assert!(far > 1e4, "y = {y}: the inexact floor is met at t = {far}");
+    }
+    let (sky, ground) = (vec3(0.0, 0.2, 0.8), vec3(0.9, 0.6, 0.1));
+    for look_z in [-1.0, 1.0] {
+        let (fb, _) = render_at(&scene(&floor_scene(look_z)), Stage::GenericObjects, 5, 3);
+        for x in 0..5 {
+            assert_eq!(
+                fb.get(x, 0),
+                sky,
+                "top row, column {x}, looking at z = {look_z}"
+            );
+            assert_eq!(
+                fb.get(x, 1),
+                sky,
+                "middle row, column {x}, looking at z = {look_z}"
+            );
+            assert_eq!(
+                fb.get(x, 2),
+                ground,
+                "bottom row, column {x}, looking at z = {look_z}"
+            );
+        }
+    }
 }

@@ -206,3 +206,69 @@ fn shading_casts_primary_rays_only() {
     assert_eq!(stats.primary, 200);
     assert_eq!((stats.shadow, stats.reflected, stats.refracted), (0, 0, 0));
 }
+
+/// "Shading": I = I_a + I_p/(a0 + a1·d + a2·d²)·(ρd·(n·s) + ρs·(r·v)^f) per channel, with both
+/// cosines strictly between 0 and 1. At P = 0 with n = (0, 1, 0), the light at L = (√3, 1, 0)
+/// is d = 2 away, s = (√3/2, ½, 0) at 60° from n: n·s = ½; r = 2(n·s)n − s = (−√3/2, ½, 0),
+/// 60° on the other side of n. The viewer along v = (−sin 15°, cos 15°, 0) is 45° from r:
+/// r·v = cos 45° = √2/2 (and n·v = cos 15° ≠ r·v, so n·v in its place would show); with
+/// f = 3, (r·v)³ = √2/4 ≈ 0.353553. Attenuation (1, 0.25, 0.25): 1 + 0.5 + 1 = 2.5, a factor
+/// 0.4. With ρd = (0.5, 0.4, 0.3), ρs = (0.2, 0.3, 0.4), I_p = (0.9, 0.8, 0.7):
+/// - ρd·½ + ρs·√2/4 = (0.25 + 0.070711, 0.2 + 0.106066, 0.15 + 0.141421)
+///   = (0.320711, 0.306066, 0.291421)
+/// - × 0.4 × I_p = (0.115456, 0.097941, 0.081598)
+/// - + ρa·I_m = (0.1, 0.2, 0.3)·(0.5, 0.4, 0.3) = (0.05, 0.08, 0.09)
+/// - I = (0.165456, 0.177941, 0.171598)
+///
+/// by `shading::direct` and in a rendered 1 × 1 image of a floor seen from 2 away along v.
+#[test]
+fn phong_with_both_cosines_between_zero_and_one() {
+    let r3 = (3.0 as Real).sqrt();
+    let h = (2.0 as Real).sqrt() / 4.0; // (√2/2)³
+    let m = Material {
+        ambient: vec3(0.1, 0.2, 0.3),
+        diffuse: vec3(0.5, 0.4, 0.3),
+        specular: vec3(0.2, 0.3, 0.4),
+        shininess: 3.0,
+        ..Material::default()
+    };
+    let light = Light {
+        position: Vec3::new(r3, 1.0, 0.0),
+        intensity: vec3(0.9, 0.8, 0.7),
+        attenuation: [1.0, 0.25, 0.25],
+        shadows: true,
+    };
+    let (p, n) = (Vec3::ZERO, Vec3::Y);
+    let a = (15.0 as Real).to_radians();
+    let v = Vec3::new(-a.sin(), a.cos(), 0.0);
+    let s = (light.position - p).normalize();
+    assert_abs_diff_eq!(lambert(n, s), 0.5, epsilon = TOL);
+    assert_abs_diff_eq!(
+        mirror(s, n).dot(v),
+        (2.0 as Real).sqrt() / 2.0,
+        epsilon = 10.0 * TOL
+    );
+    assert_abs_diff_eq!(highlight(n, s, v, 3.0), h, epsilon = 10.0 * TOL);
+    assert_abs_diff_eq!(light.attenuation_at(2.0), 0.4, epsilon = TOL);
+    let direct_by_hand =
+        vec3(0.9, 0.8, 0.7) * 0.4 * (vec3(0.25, 0.2, 0.15) + vec3(0.2, 0.3, 0.4) * h);
+    assert_vec_eq(direct_by_hand, vec3(0.115_456, 0.097_941, 0.081_598), 1e-6);
+    assert_vec_eq(direct(&m, &light, p, n, v), direct_by_hand, 10.0 * TOL);
+    let i = vec3(0.05, 0.08, 0.09) + direct_by_hand;
+    assert_vec_eq(
+        ambient(&m, vec3(0.5, 0.4, 0.3)) + direct(&m, &light, p, n, v),
+        i,
+        10.0 * TOL,
+    );
+    // the eye at P + 2v = (−2 sin 15°, 2 cos 15°, 0)
+    let text = "[camera]\neye = [-0.5176380902050415, 1.9318516525781366, 0.0]\nlook_at = [0.0, 0.0, 0.0]\n\
+        [ambient]\nintensity = [0.5, 0.4, 0.3]\n\
+        [[lights]]\nposition = [1.7320508075688772, 1.0, 0.0]\nintensity = [0.9, 0.8, 0.7]\n\
+        attenuation = [1.0, 0.25, 0.25]\n\
+        [materials.m]\nambient = [0.1, 0.2, 0.3]\ndiffuse = [0.5, 0.4, 0.3]\n\
+        specular = [0.2, 0.3, 0.4]\nshininess = 3\n\
+        [[objects]]\nplane = { point = [0.0, 0.0, 0.0], normal = [0.0, 1.0, 0.0] }\nmaterial = \"m\"\n";
+    let (c, stats) = centre(&scene(text), Stage::Shading);
+    assert_vec_eq(c, i, 10.0 * TOL);
+    assert_eq!(stats.shadow, 0);
+}

@@ -11,7 +11,7 @@ use whitted::offset::Offset;
 use whitted::real::{Real, Vec3, vec3};
 use whitted::render::{Options, Stage};
 use whitted::shadow;
-use whitted::shapes::{Formula, Object, Shape};
+use whitted::shapes::{Formula, Hit, Hits, Object, Shape};
 use whitted::transform::{Placement, Step};
 
 fn ball(center: Vec3, material: usize) -> Object {
@@ -188,4 +188,102 @@ fn feelers_only_where_a_scene_needs_them() {
     let hits = fb.pixels.iter().filter(|p| **p != Vec3::ZERO).count() as u64;
     assert!(hits > 0);
     assert_eq!(on.shadow, hits, "one feeler per visible lit point");
+}
+
+/// "Shadowing": S(u) = r(t₀) + (L − r(t₀))·u starts at the point and reaches the light at u = 1.
+/// Hand values for P = (1, 2, 3), L = (−4, 6, 0.5): L − P = (−5, 4, −2.5), S(0) = P,
+/// S(1) = L, S(½) = (−1.5, 4, 1.75), the midpoint.
+#[test]
+fn feeler_starts_at_the_point_and_reaches_the_light_at_u_one() {
+    let (p, l) = (vec3(1.0, 2.0, 3.0), vec3(-4.0, 6.0, 0.5));
+    let s = shadow::feeler(p, l);
+    assert_vec_eq(s.dir, vec3(-5.0, 4.0, -2.5), TOL);
+    assert_vec_eq(s.at(0.0), p, TOL);
+    assert_vec_eq(s.at(1.0), l, TOL);
+    assert_vec_eq(s.at(0.5), vec3(-1.5, 4.0, 1.75), TOL);
+}
+
+/// A hit at u alone, for `shadow::blocks`.
+fn at_u(u: Real) -> Hits {
+    Hits::one(Hit {
+        t: u,
+        ..Hit::default()
+    })
+}
+
+/// "Shadowing": only u ∈ ]0, 1] counts, and the open end is open. An occluder met at u = 0
+/// exactly — the feeler starts on its surface — casts no shadow: from P = 0 towards
+/// L = (0, 10, 0), a unit sphere centred at (0, −1, 0) is met where (10u + 1)² = 1, u = 0 or
+/// −0.2, and the floor y = 0 where 10u = 0. A sphere centred at (0, 1, 0) is met at u = 0 and
+/// u = 0.2: the feeler goes through it, so it does shadow.
+#[test]
+fn occluder_at_u_zero_does_not_shadow() {
+    let l = vec3(0.0, 10.0, 0.0);
+    let feeler = shadow::feeler(P, l);
+    let under = ball(vec3(0.0, -1.0, 0.0), 0);
+    let hits = under.intersect(&feeler, Formula::Robust);
+    let u: Vec<Real> = hits.as_slice().iter().map(|h| h.t).collect();
+    assert_eq!(u.len(), 2);
+    assert!((u[0] + 0.2).abs() <= TOL && u[1].abs() <= TOL, "{u:?}");
+    assert!(!shadow::blocks(&hits, 0.0));
+    let s = scene(
+        "[[objects]]\nplane = { point = [0.0, 0.0, 0.0], normal = [0.0, 1.0, 0.0] }\n\
+         [[objects]]\nsphere = { center = [0.0, -1.0, 0.0] }\n",
+    );
+    let floor = s.objects[0].intersect(&feeler, Formula::Robust);
+    assert_eq!(floor.len(), 1);
+    assert_eq!(floor.as_slice()[0].t, 0.0);
+    assert!(!shadow::blocks(&floor, 0.0));
+    assert_eq!(
+        common::brute_share(&s.objects, &s.materials, &feeler, 0.0, Formula::Robust),
+        1.0
+    );
+    assert_eq!(share(&s.objects, l), 1.0);
+    // the same point on the underside of a sphere above it: the feeler crosses it, u = 0.2
+    let over = [ball(vec3(0.0, 1.0, 0.0), 0)];
+    assert_eq!(share(&over, l), 0.0);
+}
+
+/// "Shadowing" with the start left on the surface: a hit at u ≤ u_min is the surface the
+/// feeler leaves and does not count; one just above u_min does. With u_min = 0.25, a plane
+/// y = 2.5 crossed by the feeler from 0 to (0, 10, 0) at u = 2.5/10 = 0.25 exactly does not
+/// block; the plane y = 2.51, at u = 0.251, does. u = 1 (the light) still counts, u just above
+/// 1 does not.
+#[test]
+fn hit_at_or_before_u_min_does_not_count_and_just_after_does() {
+    let u_min: Real = 0.25;
+    assert!(!shadow::blocks(&at_u(0.25), u_min));
+    assert!(!shadow::blocks(&at_u(0.1), u_min));
+    assert!(shadow::blocks(&at_u(0.251), u_min));
+    assert!(shadow::blocks(&at_u(1.0), u_min));
+    assert!(!shadow::blocks(&at_u(1.001), u_min));
+    assert!(shadow::blocks(&at_u(0.25), 0.0));
+    let feeler = shadow::feeler(P, L);
+    let plane_at = |y: f64| {
+        scene(&format!(
+            "[[objects]]\nplane = {{ point = [0.0, {y}, 0.0], normal = [0.0, 1.0, 0.0] }}\n"
+        ))
+    };
+    let on = plane_at(2.5);
+    let hits = on.objects[0].intersect(&feeler, Formula::Robust);
+    assert_eq!(hits.as_slice()[0].t, 0.25);
+    assert!(!shadow::blocks(&hits, u_min));
+    assert_eq!(
+        common::brute_share(&on.objects, &on.materials, &feeler, u_min, Formula::Robust),
+        1.0
+    );
+    let above = plane_at(2.51);
+    let hits = above.objects[0].intersect(&feeler, Formula::Robust);
+    assert!((hits.as_slice()[0].t - 0.251).abs() <= TOL);
+    assert!(shadow::blocks(&hits, u_min));
+    assert_eq!(
+        common::brute_share(
+            &above.objects,
+            &above.materials,
+            &feeler,
+            u_min,
+            Formula::Robust
+        ),
+        0.0
+    );
 }

@@ -5,7 +5,7 @@ mod common;
 
 use approx::assert_abs_diff_eq;
 use common::{TOL, assert_vec_eq, centre, render_at, render_both_ways, scene};
-use whitted::optics::{critical_angle, reflect, refract};
+use whitted::optics::{critical_angle, critical_angle_sine, indices, reflect, refract};
 use whitted::real::{Real, Vec3, real, vec3};
 use whitted::render::{Options, Stage, render};
 
@@ -227,4 +227,131 @@ fn supersampling_is_the_same_every_run() {
     o.samples = 1;
     let (c, _) = render(&s, &o);
     assert_ne!(a, c);
+}
+
+/// "Reflection and Refraction": a ray entering a material of index `ior` from air goes from
+/// n₁ = 1 to n₂ = ior; leaving it, from n₁ = ior to n₂ = 1. The notes' index of medium 2
+/// relative to medium 1 is n₂₁ = c₁/c₂; with speeds c = c₀/n it is (c₀/n₁)/(c₀/n₂) = n₂/n₁:
+/// air → water c₁/c₂ = 1.33, water → air 1/1.33 ≈ 0.7519.
+#[test]
+fn indices_go_from_air_into_the_material_and_back() {
+    assert_eq!(indices(true, 1.5), (1.0, 1.5));
+    assert_eq!(indices(false, 1.5), (1.5, 1.0));
+    assert_eq!(indices(true, 1.33), (1.0, 1.33));
+    assert_eq!(indices(false, 2.42), (2.42, 1.0));
+    let speed = |n: Real| 1.0 / n; // c = c₀/n with c₀ = 1
+    let (n1, n2) = indices(true, 1.33);
+    assert_abs_diff_eq!(speed(n1) / speed(n2), 1.33, epsilon = TOL); // n₂₁ = c₁/c₂
+    assert_abs_diff_eq!(speed(n1) / speed(n2), n2 / n1, epsilon = TOL);
+    let (n1, n2) = indices(false, 1.33);
+    assert_abs_diff_eq!(
+        speed(n1) / speed(n2),
+        real(0.751_879_699_248_120_3), // 1/1.33
+        epsilon = TOL
+    );
+}
+
+/// "Reflection and Refraction": Snell's law sin θ₁/c₁ = sin θ₂/c₂, i.e. n₁·sin θ₁ = n₂·sin θ₂,
+/// on `refract`'s output (for a unit t, sin θ₂ is its component along the surface). At 30°
+/// from air into water: sin θ₂ = 0.5/1.33 = 50/133 ≈ 0.375940, bent towards the normal; from
+/// water into air: sin θ₂ = 1.33·0.5 = 0.665, bent away. At 45° into water: sin θ₂ =
+/// (√2/2)/1.33 ≈ 0.531659.
+#[test]
+fn refracted_ray_obeys_n1_sin_theta1_equals_n2_sin_theta2() {
+    for (entering, angle, sin2) in [
+        (true, 30.0, 0.375_939_849_624_060_13),
+        (false, 30.0, 0.665),
+        (true, 45.0, 0.531_659_233_974_847_8),
+    ] {
+        let (n1, n2) = indices(entering, 1.33);
+        let t = refract(incoming(angle), Vec3::Y, n1, n2).unwrap();
+        assert_abs_diff_eq!(t.length(), 1.0, epsilon = 10.0 * TOL);
+        assert_abs_diff_eq!(t.x, real(sin2), epsilon = 10.0 * TOL); // sin θ₂
+        assert_abs_diff_eq!(t.z, 0.0, epsilon = TOL); // in the plane of incidence
+        assert!(t.y < 0.0, "the ray goes on through the surface");
+        assert_abs_diff_eq!(n1 * deg(angle).sin(), n2 * t.x, epsilon = 10.0 * TOL);
+    }
+}
+
+/// "Reflection and Refraction", the notes' table of indices: from each material into air the
+/// critical angle is θc = asin(n₂/n₁) = asin(1/n). By hand: water 1.33, asin(0.751880) =
+/// 48.7535°; diamond 2.42, asin(0.413223) = 24.4075°; glass 1.5, asin(0.666667) = 41.8103°;
+/// glass 1.9, asin(0.526316) = 31.7569°. 0.01° short of θc a ray still gets out, with
+/// n·sin θ₁ = sin θ₂ just under 1; 0.01° past it, total internal reflection.
+#[test]
+fn critical_angles_of_the_notes_table() {
+    for (n, sin_c, theta_c_deg) in [
+        (1.33, 0.751_879_699_248_120_3, 48.753_466_631_327_235),
+        (2.42, 0.413_223_140_495_867_8, 24.407_468_917_986_588),
+        (1.5, 0.666_666_666_666_666_6, 41.810_314_895_778_596),
+        (1.9, 0.526_315_789_473_684_2, 31.756_863_859_297_127),
+    ] {
+        let n = real(n);
+        assert_abs_diff_eq!(
+            critical_angle_sine(n, 1.0).unwrap(),
+            real(sin_c),
+            epsilon = TOL
+        );
+        let theta_c = critical_angle(n, 1.0).unwrap();
+        assert_abs_diff_eq!(theta_c, deg(real(theta_c_deg)), epsilon = 10.0 * TOL);
+        assert!(critical_angle(1.0, n).is_none(), "none from air into {n}");
+        let below = refract(incoming(real(theta_c_deg - 0.01)), Vec3::Y, n, 1.0).unwrap();
+        assert!(
+            below.x < 1.0 && below.x > 0.99,
+            "n = {n}: sin θ₂ = {}",
+            below.x
+        );
+        assert_abs_diff_eq!(
+            n * deg(real(theta_c_deg - 0.01)).sin(),
+            below.x,
+            epsilon = 10.0 * TOL
+        );
+        assert!(refract(incoming(real(theta_c_deg + 0.01)), Vec3::Y, n, 1.0).is_none());
+    }
+}
+
+/// A floor at y = 0 that is a mirror (k_r = 0.3) and translucent (k_t = 0.5, n = 1.5), seen
+/// straight down from (0, 2, 0); an ambient-only ceiling at y = 5 above the camera; one light
+/// at L = (√3, 1, 0); a blue-grey background below the floor.
+const FIVE_TERMS: &str = "[camera]\neye = [0.0, 2.0, 0.0]\nlook_at = [0.0, 0.0, 0.0]\nup = [0.0, 0.0, -1.0]\n\
+    [image]\nbackground = [0.2, 0.4, 0.6]\n[render]\nmax_depth = 1\n\
+    [ambient]\nintensity = [1.0, 0.5, 0.5]\n\
+    [[lights]]\nposition = [1.7320508075688772, 1.0, 0.0]\nintensity = [1.0, 0.8, 0.6]\n\
+    [materials.floor]\nambient = [0.1, 0.2, 0.3]\ndiffuse = [0.4, 0.3, 0.2]\nspecular = 0.2\nshininess = 3\n\
+    reflection = 0.3\ntransmission = 0.5\nior = 1.5\n\
+    [materials.ceiling]\nambient = [0.4, 0.6, 0.2]\ndiffuse = 0.0\nspecular = 0.0\n\
+    [[objects]]\nplane = { point = [0.0, 0.0, 0.0], normal = [0.0, 1.0, 0.0] }\nmaterial = \"floor\"\n\
+    [[objects]]\nplane = { point = [0.0, 5.0, 0.0], normal = [0.0, -1.0, 0.0] }\nmaterial = \"ceiling\"\n";
+
+/// "Lighting Equations": I = I_a + I_d + I_s + I_l + I_r, all five non-zero, one level deep.
+/// The camera ray d = (0, −1, 0) meets the floor at P = 0 with n = v = (0, 1, 0); s = (√3, 1, 0)/2
+/// (60° from n, nothing in between, d = 2, no attenuation): n·s = ½, r = (−√3/2, ½, 0),
+/// r·v = ½, (r·v)³ = ⅛. By hand, per channel (r, g, b):
+/// - I_a = ρa·I_m = (0.1, 0.2, 0.3)·(1, 0.5, 0.5) = (0.1, 0.1, 0.15)
+/// - I_d = I_p·ρd·(n·s) = (1, 0.8, 0.6)·(0.4, 0.3, 0.2)·½ = (0.2, 0.12, 0.06)
+/// - I_s = I_p·ρs·(r·v)³ = (1, 0.8, 0.6)·0.2·⅛ = (0.025, 0.02, 0.015)
+/// - I_l: the mirror ray (0, 1, 0) meets the ceiling, lit by ambient only:
+///   k_r·ρa′·I_m = 0.3·(0.4, 0.6, 0.2)·(1, 0.5, 0.5) = 0.3·(0.4, 0.3, 0.1) = (0.12, 0.09, 0.03)
+/// - I_r: the transmitted ray, at normal incidence straight down, meets nothing:
+///   k_t·background = 0.5·(0.2, 0.4, 0.6) = (0.1, 0.2, 0.3)
+///
+/// I = (0.545, 0.53, 0.555): one feeler, one mirror ray, one transmitted ray. Exchanging k_r
+/// and k_t would give (0.585, 0.51, 0.455), and dropping any term changes the sum.
+#[test]
+fn five_terms_of_the_lighting_equation_add_up() {
+    let s = scene(FIVE_TERMS);
+    let (c, stats) = centre(&s, Stage::ReflectionRefraction);
+    assert_vec_eq(c, vec3(0.545, 0.53, 0.555), 10.0 * TOL);
+    assert_eq!(
+        (
+            stats.primary,
+            stats.shadow,
+            stats.reflected,
+            stats.refracted
+        ),
+        (1, 1, 1, 1)
+    );
+    // the local part alone, at stage 4: I_a + I_d + I_s
+    let (local, _) = centre(&s, Stage::Shadows);
+    assert_vec_eq(local, vec3(0.325, 0.24, 0.225), 10.0 * TOL);
 }
