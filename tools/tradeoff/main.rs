@@ -16,7 +16,9 @@
 //! Both precisions come from one command: the f64 build builds the f32 variant of itself
 //! (`cargo build --release --features f32`, in its own target directory) and runs it as a
 //! worker that renders the same settings and dumps raw pixels. The workers also time each
-//! shape's intersection routine (ns per ray–shape test), textbook against robust.
+//! shape's intersection routine (ns per ray–shape test), textbook against robust, and measure
+//! how the generic-object method fares for a planet-sized sphere seen from one unit above it
+//! (the hit's error in world units, shadow acne, and what fixes it at what cost).
 //!
 //! | module | topic |
 //! |---|---|
@@ -25,11 +27,13 @@
 //! | [`worker`] | the worker of each precision, the f32 build, the files they leave |
 //! | [`shapes`] | ns per ray–shape test |
 //! | [`metrics`] | error against the reference; the rows of results |
+//! | [`planet`] | a huge sphere seen from close by: errors, acne, fixes, and its section of the report |
 //! | [`report`] | docs/tradeoff.md |
 //! | [`plot`] | docs/tradeoff.svg |
 
 mod measure;
 mod metrics;
+mod planet;
 mod plot;
 mod report;
 mod settings;
@@ -95,7 +99,7 @@ fn main() -> ExitCode {
 }
 
 /// The whole measurement, from the f64 build: run both workers, render the references,
-/// compare, and write the report and the plot.
+/// compare, and write the report (with the workers' planet measurements) and the plot.
 fn coordinate(args: &Args) -> Result<(), String> {
     if PRECISION != "f64" {
         return Err("run the f64 build: it builds and runs the f32 variant itself".into());
@@ -117,10 +121,15 @@ fn coordinate(args: &Args) -> Result<(), String> {
     let references = measure::references(args.width, args.height, args.reference_samples);
     let rows = metrics::rows(&dirs, &references, n)?;
     let micro = worker::read_shape_timings(&dirs)?;
+    let planet = planet::report::section(
+        &planet::Measured::read(&dirs[0].1)?,
+        &planet::Measured::read(&dirs[1].1)?,
+    );
 
     std::fs::create_dir_all(&args.out).map_err(|e| e.to_string())?;
     let load = report::machine_note(load_before, measure::load_average());
-    let md = report::report(&rows, &micro, args, started.elapsed().as_secs_f64(), &load);
+    let seconds = started.elapsed().as_secs_f64();
+    let md = report::report(&rows, &micro, &planet, args, seconds, &load);
     let md_path = args.out.join("tradeoff.md");
     whitted::output::write_file(&md_path, md.as_bytes()).map_err(|e| e.to_string())?;
     let svg_path = args.out.join("tradeoff.svg");

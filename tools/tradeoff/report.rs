@@ -42,10 +42,11 @@ fn find<'a>(rows: &'a [Row], precision: &str, s: Setting) -> Option<&'a Row> {
         .find(|r| r.precision == precision && r.setting == s)
 }
 
-/// The Markdown report.
+/// The Markdown report; `planet` is its last section ([`crate::planet::report::section`]).
 pub fn report(
     rows: &[Row],
     micro: &[(&str, String, String, f64)],
+    planet: &str,
     args: &Args,
     seconds: f64,
     load: &str,
@@ -217,5 +218,7 @@ pub fn report(
             get("f64", "Robust")
         ));
     }
+    w(String::new());
+    md.push_str(planet);
     md
 }

@@ -3,7 +3,8 @@
 //! itself as the f64 worker and builds the f32 variant of itself to run as the other.
 //!
 //! A worker's directory holds `KEY.raw` per setting (linear RGB as little-endian f32, then
-//! the hit mask), `times.tsv` (key, median seconds) and `shapes.tsv` (shape, formula, ns).
+//! the hit mask), `times.tsv` (key, median seconds), `shapes.tsv` (shape, formula, ns) and
+//! `planet.tsv` (see [`planet::measure_all`]).
 
 use std::fs;
 use std::path::{Path, PathBuf};
@@ -11,6 +12,7 @@ use std::process::Command;
 
 use crate::Args;
 use crate::measure::{self, Image};
+use crate::planet;
 use crate::settings::settings;
 use crate::shapes::shape_timings;
 
@@ -38,6 +40,7 @@ pub fn worker(dir: &Path, args: &Args) -> std::io::Result<()> {
         micro.push_str(&format!("{shape}\t{formula:?}\t{ns}\n"));
     }
     fs::write(dir.join("shapes.tsv"), micro)?;
+    fs::write(dir.join("planet.tsv"), planet::measure_all())?;
     Ok(())
 }
 
