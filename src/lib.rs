@@ -15,6 +15,9 @@
 //! [`numeric`], [`error`], [`output`] (atomic PNG writing) and [`cli`] (the arguments every
 //! binary shares).
 //!
+//! The course tools live in [`course`]: the manifest of the functions that compute the notes'
+//! formulas, and the proof that every render path calls them (`whitted formulas --prove`).
+//!
 //! Everything computes with [`real::Real`], `f64` by default and `f32` under the `f32` feature.
 //!
 //! Speed (the notes' "Computational Aspects") lives in [`accel`]: bounding boxes, projection
@@ -24,6 +27,7 @@
 pub mod accel;
 pub mod camera;
 pub mod cli;
+pub mod course;
 pub mod error;
 pub mod light;
 pub mod material;
