@@ -92,13 +92,21 @@ fn locate_segments(root: &Path, segments: &[String], hops: usize) -> Result<Loca
             ..one.clone()
         }),
         [] => {
-            // not defined here: follow a re-export of the first name, if there is one
+            // not defined here: follow a re-export of the first name, if there is one, and
+            // report the first one's error when none leads to the function
+            let mut first_error = None;
             for target in reexports(&ast, module, &rest[0]) {
                 let mut next = target;
                 next.extend_from_slice(&rest[1..]);
-                if let Ok(found) = locate_segments(root, &next, hops + 1) {
-                    return Ok(found);
+                match locate_segments(root, &next, hops + 1) {
+                    Ok(found) => return Ok(found),
+                    Err(e) => {
+                        first_error.get_or_insert(e);
+                    }
                 }
+            }
+            if let Some(e) = first_error {
+                return Err(e);
             }
             let hint = match rest {
                 [ty, _] => format!(
