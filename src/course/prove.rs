@@ -528,6 +528,10 @@ fn build(project: &Path, target_dir: &Path, test: &str) -> Result<PathBuf, Error
         ])
         .current_dir(project)
         .env("CARGO_TARGET_DIR", target_dir)
+        // no debug info: the test target links every binary of the crate, and a panic's
+        // message is all the proof reads (measured: a warm build 60 s → 26 s, each binary
+        // 100 MB → 4 MB)
+        .env("CARGO_PROFILE_DEV_DEBUG", "0")
         .stdin(Stdio::null())
         .stderr(Stdio::inherit())
         .output()
