@@ -265,10 +265,12 @@ pub fn prove(root: &Path, manifest: &Manifest, options: &Options) -> Result<Repo
     let locations = locate_all(root, manifest)?;
 
     // the copy, poisoned
-    let temp = tempfile::Builder::new()
+    let mut temp = tempfile::Builder::new()
         .prefix("whitted-prove-")
         .tempdir()
         .map_err(|e| Error::io(std::env::temp_dir(), e))?;
+    // kept on request even when the proof stops with an error (a build that fails …)
+    temp.disable_cleanup(options.keep);
     let copy = temp.path().join("project");
     let runs = temp.path().join("runs");
     std::fs::create_dir_all(&runs).map_err(|e| Error::io(&runs, e))?;
@@ -390,7 +392,7 @@ pub fn prove(root: &Path, manifest: &Manifest, options: &Options) -> Result<Repo
     let mut rows = rows.into_inner().unwrap_or_else(|p| p.into_inner());
     rows.sort_by_key(|r| r.index);
 
-    let kept = options.keep.then(|| temp.keep());
+    let kept = options.keep.then(|| temp.path().to_path_buf());
     Ok(Report {
         rows,
         kept,
@@ -561,11 +563,14 @@ fn build(project: &Path, target_dir: &Path, test: &str) -> Result<PathBuf, Error
     }
     match exe {
         Some(exe) if out.status.success() => Ok(exe),
-        _ => Err(Error::Proof(format!(
-            "the poisoned copy does not build (cargo test --no-run --test {test}){}{}",
-            if errors.is_empty() { "" } else { ":\n" },
-            errors.join("\n")
-        ))),
+        _ => {
+            for error in &errors {
+                eprint!("{error}");
+            }
+            Err(Error::Proof(format!(
+                "`cargo test --no-run --test {test}` fails in the poisoned copy; cargo's and the compiler's messages are above"
+            )))
+        }
     }
 }
 
