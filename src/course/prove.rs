@@ -428,12 +428,13 @@ fn select(manifest: &Manifest, only: &[String]) -> Result<Vec<usize>, Error> {
 
 /// What a poisoned run proves.
 fn verdict(run: &TestRun, filter: &str) -> Verdict {
-    let passed: Vec<String> = run
+    let mut passed: Vec<String> = run
         .results
         .iter()
         .filter(|(_, o)| *o == TestOutcome::Passed)
         .map(|(n, _)| n.clone())
         .collect();
+    passed.sort(); // libtest reports in the order the tests end
     let failed = run
         .results
         .iter()
