@@ -21,6 +21,9 @@
 //! binary shares). Everything computes with [`real::Real`], `f64` by default and `f32` under
 //! the `f32` feature.
 //!
+//! The course tools live in [`course`]: the manifest of the functions that compute the notes'
+//! formulas, and the proof that every render path calls them (`whitted formulas --prove`).
+//!
 //! Speed (the notes' "Computational Aspects") lives in [`accel`]: bounding boxes, projection
 //! extents, an octree and a BVH, chosen with `--accel`. They decide which objects a ray is
 //! tested against, never how, so no choice changes a pixel. Measurements:
@@ -29,6 +32,7 @@
 pub mod accel;
 pub mod camera;
 pub mod cli;
+pub mod course;
 pub mod error;
 pub mod light;
 pub mod material;

@@ -1,0 +1,223 @@
+//! Reading and checking the manifest `chapters/formulas.toml`, the one list of the functions
+//! that compute the notes' formulas.
+//!
+//! Every key is checked: unknown keys, a chapter outside 1–5, a section the notes do not
+//! have, a malformed function path or a function listed twice are errors that name the file,
+//! line and column of the offending value, e.g.
+//! `chapters/formulas.toml:12:12: chapter: expected 1 to 5, found 7`.
+
+use std::collections::HashMap;
+use std::ops::Range;
+use std::path::Path;
+
+use serde::Deserialize;
+use toml::Spanned;
+
+use super::{Error, SECTIONS};
+use crate::error::line_col;
+
+/// Where the manifest lives, relative to the project's root.
+pub const DEFAULT_PATH: &str = "chapters/formulas.toml";
+
+/// The placeholder that [`Prove::filter`] replaces with a chapter's number.
+pub const CHAPTER_PLACEHOLDER: &str = "{chapter}";
+
+/// The checked manifest.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Manifest {
+    /// The file's name, as given to [`load`] or [`parse`], for messages.
+    pub file: String,
+    /// How the proof finds the render paths.
+    pub prove: Prove,
+    /// The formula functions, in the file's order; an entry's index is its number in the proof.
+    pub entries: Vec<Entry>,
+}
+
+/// The `[prove]` table: which tests are the render paths.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Prove {
+    /// The integration test target (a file in `tests/`) whose tests are the render paths.
+    pub test: String,
+    /// The libtest filter that selects one chapter's tests; `{chapter}` stands for its number.
+    pub filter: String,
+}
+
+impl Prove {
+    /// The filter for chapter `chapter`: [`Prove::filter`] with `{chapter}` replaced.
+    #[must_use]
+    pub fn filter_for(&self, chapter: u8) -> String {
+        self.filter
+            .replace(CHAPTER_PLACEHOLDER, &chapter.to_string())
+    }
+}
+
+/// One `[[formula]]` entry: a function and the formula of the notes it computes.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Entry {
+    /// The function's path in the crate: `module::fn` or `module::Type::method`.
+    pub function: String,
+    /// The chapter (1–5) whose render paths must all call the function.
+    pub chapter: u8,
+    /// The section of the notes where the formula is given.
+    pub section: String,
+    /// The formula, in the notes' symbols.
+    pub formula: String,
+    /// The line of the entry's `function` key in the manifest (from 1).
+    pub line: usize,
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct RawManifest {
+    prove: Spanned<RawProve>,
+    #[serde(default)]
+    formula: Vec<Spanned<RawEntry>>,
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct RawProve {
+    test: Spanned<String>,
+    filter: Spanned<String>,
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct RawEntry {
+    function: Spanned<String>,
+    chapter: Spanned<i64>,
+    section: Spanned<String>,
+    formula: Spanned<String>,
+}
+
+/// Reads and checks the manifest at `path`; messages name the path as given.
+pub fn load(path: &Path) -> Result<Manifest, Error> {
+    let text = std::fs::read_to_string(path).map_err(|e| Error::io(path, e))?;
+    parse(&text, &path.display().to_string())
+}
+
+/// Checks the manifest text `text`; `file` names it in messages.
+pub fn parse(text: &str, file: &str) -> Result<Manifest, Error> {
+    let err = |span: Range<usize>, message: String| {
+        let (line, col) = line_col(text, span.start);
+        Error::Manifest {
+            file: file.to_string(),
+            line,
+            col,
+            message,
+        }
+    };
+
+    let raw: RawManifest = toml::from_str(text).map_err(|e| {
+        let message = e.message().trim().replace('\n', " ");
+        err(e.span().unwrap_or(0..0), message)
+    })?;
+
+    let (test, filter) = (&raw.prove.get_ref().test, &raw.prove.get_ref().filter);
+    if test.get_ref().is_empty() || test.get_ref().contains(char::is_whitespace) {
+        return Err(err(
+            test.span(),
+            format!(
+                "prove.test: expected the name of a test target (a file in tests/ without .rs), found {:?}",
+                test.get_ref()
+            ),
+        ));
+    }
+    if filter.get_ref().trim().is_empty() {
+        return Err(err(
+            filter.span(),
+            "prove.filter: expected a test-name filter such as \"ch{chapter}_\", found an empty one"
+                .into(),
+        ));
+    }
+    let prove = Prove {
+        test: test.get_ref().clone(),
+        filter: filter.get_ref().clone(),
+    };
+
+    if raw.formula.is_empty() {
+        return Err(err(
+            raw.prove.span(),
+            "the manifest lists no function: expected at least one [[formula]] table".into(),
+        ));
+    }
+
+    let mut entries = Vec::with_capacity(raw.formula.len());
+    let mut seen: HashMap<String, usize> = HashMap::new();
+    for spanned in &raw.formula {
+        let raw = spanned.get_ref();
+        let function = raw.function.get_ref().trim();
+        if !is_function_path(function) {
+            return Err(err(
+                raw.function.span(),
+                format!(
+                    "function: expected a path in the crate such as \"camera::viewing_basis\" or \"ray::Ray::at\", found {:?}",
+                    raw.function.get_ref()
+                ),
+            ));
+        }
+        let (line, _) = line_col(text, raw.function.span().start);
+        if let Some(first) = seen.insert(function.to_string(), line) {
+            return Err(err(
+                raw.function.span(),
+                format!("function {function} is listed twice (first on line {first})"),
+            ));
+        }
+        let chapter = *raw.chapter.get_ref();
+        let chapter = u8::try_from(chapter)
+            .ok()
+            .filter(|c| (1..=5).contains(c))
+            .ok_or_else(|| {
+                err(
+                    raw.chapter.span(),
+                    format!("chapter: expected 1 to 5, found {chapter}"),
+                )
+            })?;
+        let section = raw.section.get_ref();
+        if !SECTIONS.contains(&section.as_str()) {
+            return Err(err(
+                raw.section.span(),
+                format!(
+                    "section: {section:?} is not a section of the course notes; expected one of: {}",
+                    SECTIONS.join(", ")
+                ),
+            ));
+        }
+        let formula = raw.formula.get_ref().trim();
+        if formula.is_empty() {
+            return Err(err(
+                raw.formula.span(),
+                "formula: expected the formula in the notes' symbols, found an empty string".into(),
+            ));
+        }
+        entries.push(Entry {
+            function: function.to_string(),
+            chapter,
+            section: section.clone(),
+            formula: formula.to_string(),
+            line,
+        });
+    }
+
+    Ok(Manifest {
+        file: file.to_string(),
+        prove,
+        entries,
+    })
+}
+
+/// Whether `path` is two or more Rust identifiers joined by `::`.
+fn is_function_path(path: &str) -> bool {
+    let segments: Vec<&str> = path.split("::").collect();
+    segments.len() >= 2 && segments.iter().all(|s| is_identifier(s))
+}
+
+/// Whether `s` is a plain (ASCII) Rust identifier.
+fn is_identifier(s: &str) -> bool {
+    let mut chars = s.chars();
+    chars
+        .next()
+        .is_some_and(|c| c.is_ascii_alphabetic() || c == '_')
+        && chars.all(|c| c.is_ascii_alphanumeric() || c == '_')
+        && s != "_"
+}

@@ -1,0 +1,129 @@
+//! The course tools: which function holds which formula of the notes, and the proof that the
+//! renderer really computes each formula there.
+//!
+//! The design asks that every formula of the course notes be computed in exactly one small
+//! function, and that every render path (scalar or packets, with or without an acceleration
+//! structure) go through that function. One file lists those functions, the manifest
+//! `chapters/formulas.toml`:
+//!
+//! ```toml
+//! [prove]
+//! test = "render_paths"     # the integration test whose tests are the render paths
+//! filter = "ch{chapter}_"   # the tests of one chapter
+//!
+//! [[formula]]
+//! function = "camera::near_plane_half_height"
+//! chapter = 1
+//! section = "Principles of Ray Tracing"
+//! formula = "H = N·tan(θ/2)"
+//! ```
+//!
+//! Three parts read it:
+//!
+//! - [`manifest`] reads and checks the file; a mistake is reported as `file:line:col: …`;
+//! - [`source`] finds each function in `src/` (following `pub use` re-exports) and the exact
+//!   bytes of its body, and rewrites bodies: the handout and the proof are both such edits;
+//! - [`prove`] poisons one function at a time in a copy of the project and checks that every
+//!   render path of the function's chapter then fails. A function that a render path can avoid
+//!   is not the only place its formula is computed, or not a place that matters.
+//!
+//! The binary `whitted` exposes them: `whitted formulas` lists the manifest with each
+//! function's `file:line`, `whitted formulas --prove` runs the proof.
+
+pub mod manifest;
+pub mod prove;
+pub mod source;
+
+use std::path::PathBuf;
+
+/// The chapters, as the binaries name them (index 0 is chapter 1).
+pub const CHAPTERS: [&str; 5] = [
+    "camera rays",
+    "generic objects",
+    "shading",
+    "shadows",
+    "reflection and refraction",
+];
+
+/// The section titles of the course notes, the only values a manifest's `section` may take.
+pub const SECTIONS: [&str; 14] = [
+    "Principles of Ray Tracing",
+    "Ray Tracing Process",
+    "Generic Objects",
+    "Generic Sphere",
+    "Generic Plane",
+    "Generic Cylinder",
+    "Generic Cone",
+    "Convex Polyhedra",
+    "Computational Aspects",
+    "Shading",
+    "Surface Normals at Intersections",
+    "Shadowing",
+    "Reflection and Refraction",
+    "Lighting Equations",
+];
+
+/// What can go wrong in the course tools, each worded for the person running them.
+#[derive(Debug, thiserror::Error)]
+pub enum Error {
+    /// A mistake in the manifest; `line` and `col` count from 1.
+    #[error("{file}:{line}:{col}: {message}")]
+    Manifest {
+        /// The manifest file as named on the command line.
+        file: String,
+        /// Line of the offending value.
+        line: usize,
+        /// Column of the offending value (in characters).
+        col: usize,
+        /// What is wrong.
+        message: String,
+    },
+    /// A manifest entry names a function that cannot be found, or is not unique.
+    #[error("{manifest}:{line}: {function}: {message}")]
+    Function {
+        /// The manifest file.
+        manifest: String,
+        /// The entry's line in the manifest.
+        line: usize,
+        /// The entry's function path.
+        function: String,
+        /// What went wrong, naming the source file.
+        message: String,
+    },
+    /// A source file does not parse as Rust.
+    #[error("{file}:{line}:{col}: cannot parse the Rust source: {message}")]
+    Parse {
+        /// The source file.
+        file: String,
+        /// Line of the error.
+        line: usize,
+        /// Column of the error (in characters).
+        col: usize,
+        /// The parser's message.
+        message: String,
+    },
+    /// A file or directory could not be read, written or copied.
+    #[error("{}: {source}", path.display())]
+    Io {
+        /// The path.
+        path: PathBuf,
+        /// The reason.
+        source: std::io::Error,
+    },
+    /// The proof could not be carried out (the build failed, the baseline is red …).
+    #[error("{0}")]
+    Proof(String),
+    /// A command-line value makes no sense (an `--only` that names no entry …).
+    #[error("{0}")]
+    Usage(String),
+}
+
+impl Error {
+    /// An I/O error on `path`.
+    pub fn io(path: impl Into<PathBuf>, source: std::io::Error) -> Self {
+        Error::Io {
+            path: path.into(),
+            source,
+        }
+    }
+}

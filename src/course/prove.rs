@@ -1,0 +1,649 @@
+//! The proof that every formula function is on every render path of its chapter.
+//!
+//! A render path is a test of the manifest's `[prove] test` target (`tests/render_paths.rs`):
+//! it renders a chapter's scene one way (scalar, packets, an acceleration structure …) and
+//! compares the image with a golden one. The proof works on a copy of the project, so the
+//! working tree is never touched:
+//!
+//! 1. every file that git knows (tracked, or new and not ignored) is copied to a temporary
+//!    directory (without git, every file outside `target/` and `.git/`);
+//! 2. in the copy, each manifest function `K` gets a first statement
+//!    `if crate::__poison::on(K) { todo!("poisoned: PATH") }`, and `src/lib.rs` gets the hidden
+//!    module `__poison`, whose `on(k)` is true when the environment variable `WHITTED_POISON`
+//!    holds `k` (read once);
+//! 3. the test target is built once (`cargo test --no-run`), into `target/prove` of the real
+//!    project so that the dependencies are compiled only the first time;
+//! 4. the tests run once unpoisoned: all must pass, since a proof needs a green baseline;
+//! 5. for each function, the tests of its chapter (the `[prove] filter`) run with
+//!    `WHITTED_POISON=K`. The function is proven when at least one test ran and every one of
+//!    them failed: no render path of the chapter can produce its image without calling it.
+//!
+//! Two functions are tried at a time, each run under a time limit, so that a poisoned loop
+//! cannot hang the proof.
+
+use std::collections::BTreeMap;
+use std::fs::File;
+use std::io::Write;
+use std::path::{Path, PathBuf};
+use std::process::{Command, Stdio};
+use std::sync::Mutex;
+use std::sync::atomic::{AtomicUsize, Ordering};
+use std::time::{Duration, Instant};
+
+use super::Error;
+use super::manifest::Manifest;
+use super::source::{self, Edit, Location};
+
+/// The environment variable that names the poisoned function's number.
+pub const POISON_VAR: &str = "WHITTED_POISON";
+
+/// How the proof runs.
+#[derive(Clone, Debug)]
+pub struct Options {
+    /// Prove only these functions (manifest paths); empty means all.
+    pub only: Vec<String>,
+    /// Keep the temporary copy of the project (its path is in the report).
+    pub keep: bool,
+    /// How many test runs go on at once.
+    pub jobs: usize,
+    /// The time limit of one test run.
+    pub timeout: Duration,
+    /// Where cargo builds the copy; `None` is `target/prove` under the project's root.
+    pub target_dir: Option<PathBuf>,
+}
+
+impl Default for Options {
+    fn default() -> Self {
+        Self {
+            only: Vec::new(),
+            keep: false,
+            jobs: 2,
+            timeout: Duration::from_secs(120),
+            target_dir: None,
+        }
+    }
+}
+
+/// What poisoning one function did to its chapter's render paths.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum Verdict {
+    /// Every test of the chapter failed: the function is on every render path.
+    Proven,
+    /// These tests still passed with the function poisoned.
+    NotOnPath(Vec<String>),
+    /// No test matched the chapter's filter.
+    NoTests(String),
+    /// The run did not finish normally (time limit, crash); the reason.
+    Unfinished(String),
+}
+
+impl std::fmt::Display for Verdict {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            Verdict::Proven => write!(f, "proven"),
+            Verdict::NotOnPath(passed) => write!(f, "NOT on path: {}", passed.join(", ")),
+            Verdict::NoTests(filter) => write!(f, "NOT proven: no test matches {filter:?}"),
+            Verdict::Unfinished(why) => write!(f, "NOT proven: {why}"),
+        }
+    }
+}
+
+/// The outcome for one manifest entry.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Row {
+    /// The entry's index in the manifest (its poison number).
+    pub index: usize,
+    /// What poisoning it did.
+    pub verdict: Verdict,
+}
+
+/// The proof's result.
+#[derive(Clone, Debug)]
+pub struct Report {
+    /// One row per function tried, in the manifest's order.
+    pub rows: Vec<Row>,
+    /// The copy of the project, when it was kept.
+    pub kept: Option<PathBuf>,
+    /// Time spent copying, editing and building.
+    pub build_time: Duration,
+    /// Time spent running the tests (the baseline and every poisoned run).
+    pub run_time: Duration,
+}
+
+impl Report {
+    /// How many functions were proven.
+    #[must_use]
+    pub fn proven(&self) -> usize {
+        self.rows
+            .iter()
+            .filter(|r| r.verdict == Verdict::Proven)
+            .count()
+    }
+
+    /// Writes the table (chapter, function, verdict) and the summary line.
+    pub fn write_table(&self, manifest: &Manifest, out: &mut dyn Write) -> std::io::Result<()> {
+        let width = self
+            .rows
+            .iter()
+            .map(|r| manifest.entries[r.index].function.chars().count())
+            .max()
+            .unwrap_or(0)
+            .max("function".len());
+        writeln!(out, "chapter  {:<width$}  result", "function")?;
+        for row in &self.rows {
+            let entry = &manifest.entries[row.index];
+            writeln!(
+                out,
+                "{:<7}  {:<width$}  {}",
+                entry.chapter, entry.function, row.verdict
+            )?;
+        }
+        writeln!(
+            out,
+            "{} of {} formula functions proven on every render path of their chapter",
+            self.proven(),
+            self.rows.len()
+        )
+    }
+}
+
+/// How a test ended, as libtest reports it.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum TestOutcome {
+    /// `ok`
+    Passed,
+    /// `FAILED`
+    Failed,
+    /// `ignored`
+    Ignored,
+}
+
+/// The results in libtest's output: one `(name, outcome)` per line `test NAME ... ok|FAILED|ignored`.
+#[must_use]
+pub fn parse_libtest(stdout: &str) -> Vec<(String, TestOutcome)> {
+    stdout
+        .lines()
+        .filter_map(|line| {
+            let rest = line.strip_prefix("test ")?;
+            let (name, result) = rest.rsplit_once(" ... ")?;
+            let outcome = match result.trim() {
+                "ok" => TestOutcome::Passed,
+                "FAILED" => TestOutcome::Failed,
+                r if r.starts_with("ignored") => TestOutcome::Ignored,
+                _ => return None,
+            };
+            Some((name.to_string(), outcome))
+        })
+        .collect()
+}
+
+/// The statement that poisons function number `index` (its path is `function`).
+#[must_use]
+pub fn guard(index: usize, function: &str) -> String {
+    format!(" if crate::__poison::on({index}) {{ todo!(\"poisoned: {function}\") }}")
+}
+
+/// The module appended to the copy's `src/lib.rs`.
+pub const POISON_MODULE: &str = r#"
+
+/// The poison switch of `whitted formulas --prove`; it exists only in the proof's copy.
+#[doc(hidden)]
+pub mod __poison {
+    /// Whether formula function `k` is poisoned: `WHITTED_POISON` holds `k` (read once).
+    pub fn on(k: usize) -> bool {
+        static POISONED: std::sync::OnceLock<Option<usize>> = std::sync::OnceLock::new();
+        *POISONED.get_or_init(|| {
+            std::env::var("WHITTED_POISON")
+                .ok()
+                .and_then(|v| v.trim().parse().ok())
+        }) == Some(k)
+    }
+}
+"#;
+
+/// Finds every manifest function under `root`. An error names the entry and the file.
+pub fn locate_all(root: &Path, manifest: &Manifest) -> Result<Vec<Location>, Error> {
+    manifest
+        .entries
+        .iter()
+        .map(|entry| {
+            let found =
+                source::locate(root, &entry.function).map_err(|message| Error::Function {
+                    manifest: manifest.file.clone(),
+                    line: entry.line,
+                    function: entry.function.clone(),
+                    message,
+                })?;
+            if found.is_const {
+                return Err(Error::Function {
+                    manifest: manifest.file.clone(),
+                    line: entry.line,
+                    function: entry.function.clone(),
+                    message: format!(
+                        "is a const fn ({}:{}): its body cannot test the poison switch",
+                        found.file.display(),
+                        found.line
+                    ),
+                });
+            }
+            Ok(found)
+        })
+        .collect()
+}
+
+/// The poisoned text of each source file that holds manifest functions: every body at
+/// `locations` (in manifest order) gets its guard. Files are read under `root`.
+pub fn poisoned_sources(
+    root: &Path,
+    manifest: &Manifest,
+    locations: &[Location],
+) -> Result<BTreeMap<PathBuf, String>, Error> {
+    let mut by_file: BTreeMap<PathBuf, Vec<(std::ops::Range<usize>, Edit)>> = BTreeMap::new();
+    for (index, (entry, at)) in manifest.entries.iter().zip(locations).enumerate() {
+        by_file.entry(at.file.clone()).or_default().push((
+            at.body.clone(),
+            Edit::Prepend(guard(index, &entry.function)),
+        ));
+    }
+    by_file
+        .into_iter()
+        .map(|(file, edits)| {
+            let path = root.join(&file);
+            let text = std::fs::read_to_string(&path).map_err(|e| Error::io(&path, e))?;
+            let edited = source::edit_bodies(&text, &edits)
+                .map_err(|m| Error::Proof(format!("{}: {m}", file.display())))?;
+            Ok((file, edited))
+        })
+        .collect()
+}
+
+/// Runs the proof for the project at `root` (the directory of `Cargo.toml`). Progress goes to
+/// stderr; the table is the caller's to print with [`Report::write_table`].
+pub fn prove(root: &Path, manifest: &Manifest, options: &Options) -> Result<Report, Error> {
+    let started = Instant::now();
+    let selected = select(manifest, &options.only)?;
+    let locations = locate_all(root, manifest)?;
+
+    // the copy, poisoned
+    let mut temp = tempfile::Builder::new()
+        .prefix("whitted-prove-")
+        .tempdir()
+        .map_err(|e| Error::io(std::env::temp_dir(), e))?;
+    // kept on request even when the proof stops with an error (a build that fails …)
+    temp.disable_cleanup(options.keep);
+    let copy = temp.path().join("project");
+    let runs = temp.path().join("runs");
+    std::fs::create_dir_all(&runs).map_err(|e| Error::io(&runs, e))?;
+    let files = copy_project(root, &copy)?;
+    eprintln!(
+        "proof: {files} files copied to {}; poisoning {} functions",
+        copy.display(),
+        manifest.entries.len()
+    );
+    for (file, text) in poisoned_sources(&copy, manifest, &locations)? {
+        let path = copy.join(file);
+        std::fs::write(&path, text).map_err(|e| Error::io(&path, e))?;
+    }
+    let lib = copy.join("src/lib.rs");
+    let mut lib_text = std::fs::read_to_string(&lib).map_err(|e| Error::io(&lib, e))?;
+    lib_text.push_str(POISON_MODULE);
+    std::fs::write(&lib, lib_text).map_err(|e| Error::io(&lib, e))?;
+
+    // one build
+    let target_dir = options
+        .target_dir
+        .clone()
+        .unwrap_or_else(|| root.join("target").join("prove"));
+    let exe = build(&copy, &target_dir, &manifest.prove.test)?;
+    let build_time = started.elapsed();
+
+    // the baseline, then each function
+    let ran = Instant::now();
+    let baseline = run_tests(
+        &exe,
+        &copy,
+        None,
+        None,
+        &runs.join("baseline"),
+        options.timeout,
+    )?;
+    let red: Vec<&str> = baseline
+        .results
+        .iter()
+        .filter(|(_, o)| *o == TestOutcome::Failed)
+        .map(|(n, _)| n.as_str())
+        .collect();
+    if let Some(why) = &baseline.unfinished {
+        return Err(Error::Proof(format!(
+            "the unpoisoned run of tests/{}.rs did not finish ({why}); a proof needs a green baseline",
+            manifest.prove.test
+        )));
+    }
+    if !red.is_empty() || !baseline.success {
+        return Err(Error::Proof(format!(
+            "tests/{}.rs fails without any poison ({}); a proof needs a green baseline: run `cargo test --test {}`",
+            manifest.prove.test,
+            if red.is_empty() {
+                format!(
+                    "its output: {} (kept with --keep)",
+                    runs.join("baseline.out").display()
+                )
+            } else {
+                red.join(", ")
+            },
+            manifest.prove.test
+        )));
+    }
+    if baseline.results.is_empty() {
+        return Err(Error::Proof(format!(
+            "tests/{}.rs has no tests: there is no render path to prove anything on",
+            manifest.prove.test
+        )));
+    }
+    eprintln!(
+        "proof: baseline green ({} tests); poisoning {} functions, {} at a time",
+        baseline.results.len(),
+        selected.len(),
+        options.jobs.max(1)
+    );
+
+    let next = AtomicUsize::new(0);
+    let done = AtomicUsize::new(0);
+    let rows: Mutex<Vec<Row>> = Mutex::new(Vec::new());
+    let failure: Mutex<Option<Error>> = Mutex::new(None);
+    std::thread::scope(|scope| {
+        for _ in 0..options.jobs.max(1) {
+            scope.spawn(|| {
+                loop {
+                    let i = next.fetch_add(1, Ordering::SeqCst);
+                    let Some(&index) = selected.get(i) else { break };
+                    let entry = &manifest.entries[index];
+                    let filter = manifest.prove.filter_for(entry.chapter);
+                    let log = runs.join(index.to_string());
+                    let verdict = match run_tests(
+                        &exe,
+                        &copy,
+                        Some(&filter),
+                        Some(index),
+                        &log,
+                        options.timeout,
+                    ) {
+                        Ok(run) => verdict(&run, &filter),
+                        Err(e) => {
+                            failure
+                                .lock()
+                                .unwrap_or_else(|p| p.into_inner())
+                                .get_or_insert(e);
+                            break;
+                        }
+                    };
+                    let n = done.fetch_add(1, Ordering::SeqCst) + 1;
+                    eprintln!("[{n}/{}] {}: {verdict}", selected.len(), entry.function);
+                    rows.lock()
+                        .unwrap_or_else(|p| p.into_inner())
+                        .push(Row { index, verdict });
+                }
+            });
+        }
+    });
+    if let Some(e) = failure.into_inner().unwrap_or_else(|p| p.into_inner()) {
+        return Err(e);
+    }
+    let mut rows = rows.into_inner().unwrap_or_else(|p| p.into_inner());
+    rows.sort_by_key(|r| r.index);
+
+    let kept = options.keep.then(|| temp.path().to_path_buf());
+    Ok(Report {
+        rows,
+        kept,
+        build_time,
+        run_time: ran.elapsed(),
+    })
+}
+
+/// The indices of the entries to prove: those named by `only`, or all.
+fn select(manifest: &Manifest, only: &[String]) -> Result<Vec<usize>, Error> {
+    if only.is_empty() {
+        return Ok((0..manifest.entries.len()).collect());
+    }
+    let mut selected = Vec::new();
+    for path in only {
+        let index = manifest
+            .entries
+            .iter()
+            .position(|e| &e.function == path)
+            .ok_or_else(|| {
+                Error::Usage(format!(
+                    "--only {path}: no such function in {}",
+                    manifest.file
+                ))
+            })?;
+        if !selected.contains(&index) {
+            selected.push(index);
+        }
+    }
+    selected.sort_unstable();
+    Ok(selected)
+}
+
+/// What a poisoned run proves.
+fn verdict(run: &TestRun, filter: &str) -> Verdict {
+    let mut passed: Vec<String> = run
+        .results
+        .iter()
+        .filter(|(_, o)| *o == TestOutcome::Passed)
+        .map(|(n, _)| n.clone())
+        .collect();
+    passed.sort(); // libtest reports in the order the tests end
+    let failed = run
+        .results
+        .iter()
+        .filter(|(_, o)| *o == TestOutcome::Failed)
+        .count();
+    if !passed.is_empty() {
+        Verdict::NotOnPath(passed)
+    } else if let Some(why) = &run.unfinished {
+        Verdict::Unfinished(why.clone())
+    } else if failed == 0 {
+        Verdict::NoTests(filter.to_string())
+    } else {
+        Verdict::Proven
+    }
+}
+
+/// The files to copy, relative to `root`: what git lists (tracked, or untracked and not
+/// ignored), or else every file outside `target/` and `.git/`.
+fn project_files(root: &Path) -> Result<Vec<PathBuf>, Error> {
+    let listed = Command::new("git")
+        .args([
+            "ls-files",
+            "-z",
+            "--cached",
+            "--others",
+            "--exclude-standard",
+        ])
+        .current_dir(root)
+        .stderr(Stdio::null())
+        .output();
+    if let Ok(out) = listed
+        && out.status.success()
+    {
+        let text = String::from_utf8_lossy(&out.stdout);
+        return Ok(text
+            .split('\0')
+            .filter(|p| !p.is_empty())
+            .map(PathBuf::from)
+            .filter(|p| root.join(p).is_file())
+            .collect());
+    }
+    let mut files = Vec::new();
+    walk(root, Path::new(""), &mut files)?;
+    Ok(files)
+}
+
+fn walk(root: &Path, dir: &Path, files: &mut Vec<PathBuf>) -> Result<(), Error> {
+    let full = root.join(dir);
+    for entry in std::fs::read_dir(&full).map_err(|e| Error::io(&full, e))? {
+        let entry = entry.map_err(|e| Error::io(&full, e))?;
+        let name = entry.file_name();
+        let relative = dir.join(&name);
+        let kind = entry.file_type().map_err(|e| Error::io(&relative, e))?;
+        if kind.is_dir() {
+            if name != "target" && name != ".git" {
+                walk(root, &relative, files)?;
+            }
+        } else if root.join(&relative).is_file() {
+            files.push(relative);
+        }
+    }
+    Ok(())
+}
+
+/// Copies the project's files from `root` to `dest`; returns how many.
+fn copy_project(root: &Path, dest: &Path) -> Result<usize, Error> {
+    let files = project_files(root)?;
+    for file in &files {
+        let to = dest.join(file);
+        if let Some(parent) = to.parent() {
+            std::fs::create_dir_all(parent).map_err(|e| Error::io(parent, e))?;
+        }
+        std::fs::copy(root.join(file), &to).map_err(|e| Error::io(root.join(file), e))?;
+    }
+    Ok(files.len())
+}
+
+/// Builds the test target `test` of the project at `project` into `target_dir`; returns the
+/// test executable.
+fn build(project: &Path, target_dir: &Path, test: &str) -> Result<PathBuf, Error> {
+    let cargo = std::env::var_os("CARGO").unwrap_or_else(|| "cargo".into());
+    eprintln!(
+        "proof: building the poisoned copy's tests/{test}.rs into {}",
+        target_dir.display()
+    );
+    let out = Command::new(cargo)
+        .args([
+            "test",
+            "--no-run",
+            "--locked",
+            "--test",
+            test,
+            "--message-format=json",
+        ])
+        .current_dir(project)
+        .env("CARGO_TARGET_DIR", target_dir)
+        // no debug info: the test target links every binary of the crate, and a panic's
+        // message is all the proof reads (measured: a warm build 60 s → 26 s, each binary
+        // 100 MB → 4 MB)
+        .env("CARGO_PROFILE_DEV_DEBUG", "0")
+        .stdin(Stdio::null())
+        .stderr(Stdio::inherit())
+        .output()
+        .map_err(|e| Error::Proof(format!("cannot run cargo: {e}")))?;
+    let mut exe = None;
+    let mut errors = Vec::new();
+    for line in String::from_utf8_lossy(&out.stdout).lines() {
+        let Ok(msg) = serde_json::from_str::<serde_json::Value>(line) else {
+            continue;
+        };
+        match msg["reason"].as_str() {
+            Some("compiler-artifact")
+                if msg["target"]["name"] == test
+                    && msg["target"]["kind"]
+                        .as_array()
+                        .is_some_and(|k| k.iter().any(|k| k == "test")) =>
+            {
+                exe = msg["executable"].as_str().map(PathBuf::from);
+            }
+            Some("compiler-message") if msg["message"]["level"] == "error" => {
+                if let Some(text) = msg["message"]["rendered"].as_str() {
+                    errors.push(text.to_string());
+                }
+            }
+            _ => {}
+        }
+    }
+    match exe {
+        Some(exe) if out.status.success() => Ok(exe),
+        _ => {
+            for error in &errors {
+                eprint!("{error}");
+            }
+            Err(Error::Proof(format!(
+                "`cargo test --no-run --test {test}` fails in the poisoned copy; cargo's and the compiler's messages are above"
+            )))
+        }
+    }
+}
+
+/// One run of the test executable.
+struct TestRun {
+    results: Vec<(String, TestOutcome)>,
+    success: bool,
+    /// Why the run did not finish normally, if it did not.
+    unfinished: Option<String>,
+}
+
+/// Runs the test executable from `project`, with a test-name filter and a poisoned function
+/// (none for the baseline); its output goes to `log.out` and `log.err`.
+fn run_tests(
+    exe: &Path,
+    project: &Path,
+    filter: Option<&str>,
+    poison: Option<usize>,
+    log: &Path,
+    timeout: Duration,
+) -> Result<TestRun, Error> {
+    let (out_path, err_path) = (log.with_extension("out"), log.with_extension("err"));
+    let stdout = File::create(&out_path).map_err(|e| Error::io(&out_path, e))?;
+    let stderr = File::create(&err_path).map_err(|e| Error::io(&err_path, e))?;
+    let mut command = Command::new(exe);
+    command
+        .args(filter)
+        .args(["--test-threads", "2"])
+        .current_dir(project)
+        .env_remove(POISON_VAR)
+        .env_remove("WHITTED_BLESS") // a blessing run would overwrite the goldens and pass
+        .stdin(Stdio::null())
+        .stdout(stdout)
+        .stderr(stderr);
+    if let Some(k) = poison {
+        command.env(POISON_VAR, k.to_string());
+    }
+    let mut child = command
+        .spawn()
+        .map_err(|e| Error::Proof(format!("cannot run {}: {e}", exe.display())))?;
+    let started = Instant::now();
+    let (status, unfinished) = loop {
+        match child.try_wait() {
+            Ok(Some(status)) => break (Some(status), None),
+            Ok(None) if started.elapsed() > timeout => {
+                let _ = child.kill();
+                let _ = child.wait();
+                break (
+                    None,
+                    Some(format!("time limit of {} s reached", timeout.as_secs())),
+                );
+            }
+            Ok(None) => std::thread::sleep(Duration::from_millis(20)),
+            Err(e) => return Err(Error::Proof(format!("waiting for {}: {e}", exe.display()))),
+        }
+    };
+    let text = std::fs::read_to_string(&out_path).map_err(|e| Error::io(&out_path, e))?;
+    let results = parse_libtest(&text);
+    let success = status.is_some_and(|s| s.success());
+    // a test process that ends without libtest's summary line crashed (abort, signal)
+    let unfinished = unfinished.or_else(|| {
+        (!text.contains("test result:")).then(|| {
+            format!(
+                "the test process ended without a result ({}); its stderr: {} (kept with --keep)",
+                status.map_or("killed".into(), |s| s.to_string()),
+                err_path.display()
+            )
+        })
+    });
+    Ok(TestRun {
+        results,
+        success,
+        unfinished,
+    })
+}

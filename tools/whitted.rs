@@ -1,0 +1,208 @@
+//! `whitted` — the course tools: the formula functions of the notes, listed and proven.
+//!
+//! ```text
+//! whitted formulas                                  the manifest, by chapter, with file:line
+//! whitted formulas --prove [--only PATH]... [--keep] poison each function, run the render paths
+//! ```
+//!
+//! Exit status: 0 when everything asked for is fine, 1 when some function is not proven,
+//! 2 on an error (a bad manifest, a function not found, a build that fails …), printed as
+//! one line `error: …`.
+
+use std::path::{Path, PathBuf};
+use std::process::ExitCode;
+
+use clap::{Parser, Subcommand};
+use whitted::course::manifest::{self, Manifest};
+use whitted::course::prove::{self, Options};
+use whitted::course::{CHAPTERS, Error};
+
+/// The course tools of whitted, the toolkit for learning classic ray tracing.
+#[derive(Parser)]
+#[command(name = "whitted", version)]
+struct Args {
+    #[command(subcommand)]
+    command: Command,
+}
+
+#[derive(Subcommand)]
+enum Command {
+    /// The functions that compute the course notes' formulas (chapters/formulas.toml).
+    ///
+    /// Without options, lists them by chapter, each with its file:line, the formula and the
+    /// notes' section. With --prove, shows that each one is on every render path of its
+    /// chapter: in a copy of the project, one function at a time is made to panic
+    /// ("poisoned"), and every test of tests/render_paths.rs for its chapter must then fail.
+    /// Exit status: 0 all proven, 1 some not, 2 on an error.
+    Formulas(Formulas),
+}
+
+#[derive(clap::Args)]
+struct Formulas {
+    /// Run the proof: build a poisoned copy of the project once (into target/prove), check
+    /// that the render paths pass unpoisoned, then poison each function in turn.
+    #[arg(long)]
+    prove: bool,
+    /// Prove only this function (a path as in the manifest, e.g. camera::viewing_basis);
+    /// may be repeated.
+    #[arg(long, value_name = "PATH", requires = "prove")]
+    only: Vec<String>,
+    /// Keep the temporary copy of the project and the test runs' output, for debugging; its
+    /// path is printed.
+    #[arg(long, requires = "prove")]
+    keep: bool,
+    /// The time limit of one test run, in seconds: a poisoned function that makes a render
+    /// loop forever counts as not proven instead of hanging the proof.
+    #[arg(long, value_name = "SECONDS", default_value_t = 120, requires = "prove",
+          value_parser = clap::value_parser!(u64).range(1..=86_400))]
+    timeout: u64,
+    /// The project's root (the directory of Cargo.toml) [default: the nearest one at or
+    /// above the current directory].
+    #[arg(long, value_name = "DIR")]
+    root: Option<PathBuf>,
+}
+
+fn main() -> ExitCode {
+    let args = parse_args();
+    let result = match args.command {
+        Command::Formulas(f) => formulas(&f),
+    };
+    match result {
+        Ok(code) => code,
+        Err(e) => {
+            eprintln!("error: {e}");
+            ExitCode::from(2)
+        }
+    }
+}
+
+fn formulas(args: &Formulas) -> Result<ExitCode, Error> {
+    let root = match &args.root {
+        Some(root) => root.clone(),
+        None => find_root()?,
+    };
+    let manifest = read_manifest(&root)?;
+    if !args.prove {
+        list(&root, &manifest)?;
+        return Ok(ExitCode::SUCCESS);
+    }
+    let options = Options {
+        only: args.only.clone(),
+        keep: args.keep,
+        timeout: std::time::Duration::from_secs(args.timeout),
+        ..Options::default()
+    };
+    let report = prove::prove(&root, &manifest, &options)?;
+    eprintln!(
+        "proof: build {:.1} s, test runs {:.1} s",
+        report.build_time.as_secs_f64(),
+        report.run_time.as_secs_f64()
+    );
+    if let Some(kept) = &report.kept {
+        eprintln!(
+            "proof: the poisoned copy and the runs' output are kept in {}",
+            kept.display()
+        );
+    }
+    let mut out = std::io::stdout().lock();
+    report
+        .write_table(&manifest, &mut out)
+        .map_err(|e| Error::io("stdout", e))?;
+    Ok(if report.proven() == report.rows.len() {
+        ExitCode::SUCCESS
+    } else {
+        ExitCode::from(1)
+    })
+}
+
+/// Parses the command line as the chapter binaries do (`whitted::cli::parse_args`): help and
+/// version exit 0, a mistake is one line `error: …` with exit status 2. A clap message that
+/// ends in a list (the arguments missing) keeps the list on that line.
+fn parse_args() -> Args {
+    match Args::try_parse() {
+        Ok(args) => args,
+        Err(e) if !e.use_stderr() => {
+            let _ = e.print();
+            std::process::exit(0);
+        }
+        Err(e) => {
+            let text = e.render().to_string();
+            let mut lines = text.lines().map(str::trim).filter(|l| !l.is_empty());
+            let mut line = lines
+                .next()
+                .unwrap_or("error: invalid arguments")
+                .to_string();
+            if line.ends_with(':') {
+                let list: Vec<&str> = lines.take_while(|l| !l.starts_with("Usage:")).collect();
+                line = format!("{line} {}", list.join(", "));
+            }
+            eprintln!("{line} (see --help)");
+            std::process::exit(2);
+        }
+    }
+}
+
+/// The nearest directory at or above the current one that holds a Cargo.toml.
+fn find_root() -> Result<PathBuf, Error> {
+    let here = std::env::current_dir().map_err(|e| Error::io(".", e))?;
+    here.ancestors()
+        .find(|d| d.join("Cargo.toml").is_file())
+        .map(Path::to_path_buf)
+        .ok_or_else(|| {
+            Error::Usage(format!(
+                "no Cargo.toml in {} or above: run whitted in the project, or give --root DIR",
+                here.display()
+            ))
+        })
+}
+
+/// Reads the manifest of the project at `root`, named relative to the current directory
+/// when the root is the current directory.
+fn read_manifest(root: &Path) -> Result<Manifest, Error> {
+    let path = root.join(manifest::DEFAULT_PATH);
+    let here = std::env::current_dir().ok();
+    let name = match path.strip_prefix(here.as_deref().unwrap_or(Path::new("/nowhere"))) {
+        Ok(relative) => relative.display().to_string(),
+        Err(_) => path.display().to_string(),
+    };
+    let text = std::fs::read_to_string(&path).map_err(|e| Error::io(&path, e))?;
+    manifest::parse(&text, &name)
+}
+
+/// Prints the manifest by chapter: function, file:line, formula, section.
+fn list(root: &Path, manifest: &Manifest) -> Result<(), Error> {
+    let locations = prove::locate_all(root, manifest)?;
+    let places: Vec<String> = locations
+        .iter()
+        .map(|l| format!("{}:{}", l.file.display(), l.line))
+        .collect();
+    let fn_width = manifest
+        .entries
+        .iter()
+        .map(|e| e.function.chars().count())
+        .max()
+        .unwrap_or(0);
+    let at_width = places.iter().map(|p| p.chars().count()).max().unwrap_or(0);
+    for (number, title) in (1u8..).zip(CHAPTERS) {
+        let entries: Vec<usize> = (0..manifest.entries.len())
+            .filter(|&i| manifest.entries[i].chapter == number)
+            .collect();
+        if entries.is_empty() {
+            continue;
+        }
+        println!("chapter {number} — {title}");
+        for i in entries {
+            let e = &manifest.entries[i];
+            println!(
+                "  {:<fn_width$}  {:<at_width$}  {}   ({})",
+                e.function, places[i], e.formula, e.section
+            );
+        }
+    }
+    println!(
+        "{} formula functions in {}; `whitted formulas --prove` shows they are on every render path",
+        manifest.entries.len(),
+        manifest.file
+    );
+    Ok(())
+}
