@@ -158,7 +158,8 @@ pub struct Accuracy {
 }
 
 /// Parses the command line. `--help` and `--version` print and exit 0; any other problem is
-/// printed as one line `error: …` (clap's own first line) with exit status 2.
+/// printed as one line `error: …` (clap's own first line, with the list that follows it when
+/// it ends in a colon, such as the arguments missing) with exit status 2.
 #[must_use]
 pub fn parse_args<T: clap::Parser>() -> T {
     match T::try_parse() {
@@ -168,10 +169,23 @@ pub fn parse_args<T: clap::Parser>() -> T {
             let _ = e.print();
             std::process::exit(0);
         }
+        Err(e) if e.kind() == clap::error::ErrorKind::DisplayHelpOnMissingArgumentOrSubcommand => {
+            // a bare `whitted`: the help says what to ask for
+            let _ = e.print();
+            std::process::exit(2);
+        }
         Err(e) => {
             let text = e.render().to_string();
-            let first = text.lines().next().unwrap_or("error: invalid arguments");
-            eprintln!("{first} (see --help)");
+            let mut lines = text.lines().map(str::trim).filter(|l| !l.is_empty());
+            let mut line = lines
+                .next()
+                .unwrap_or("error: invalid arguments")
+                .to_string();
+            if line.ends_with(':') {
+                let list: Vec<&str> = lines.take_while(|l| !l.starts_with("Usage:")).collect();
+                line = format!("{line} {}", list.join(", "));
+            }
+            eprintln!("{line} (see --help)");
             std::process::exit(2);
         }
     }

@@ -63,7 +63,7 @@ struct Formulas {
 }
 
 fn main() -> ExitCode {
-    let args = parse_args();
+    let args: Args = whitted::cli::parse_args();
     let result = match args.command {
         Command::Formulas(f) => formulas(&f),
     };
@@ -113,33 +113,6 @@ fn formulas(args: &Formulas) -> Result<ExitCode, Error> {
     } else {
         ExitCode::from(1)
     })
-}
-
-/// Parses the command line as the chapter binaries do (`whitted::cli::parse_args`): help and
-/// version exit 0, a mistake is one line `error: …` with exit status 2. A clap message that
-/// ends in a list (the arguments missing) keeps the list on that line.
-fn parse_args() -> Args {
-    match Args::try_parse() {
-        Ok(args) => args,
-        Err(e) if !e.use_stderr() => {
-            let _ = e.print();
-            std::process::exit(0);
-        }
-        Err(e) => {
-            let text = e.render().to_string();
-            let mut lines = text.lines().map(str::trim).filter(|l| !l.is_empty());
-            let mut line = lines
-                .next()
-                .unwrap_or("error: invalid arguments")
-                .to_string();
-            if line.ends_with(':') {
-                let list: Vec<&str> = lines.take_while(|l| !l.starts_with("Usage:")).collect();
-                line = format!("{line} {}", list.join(", "));
-            }
-            eprintln!("{line} (see --help)");
-            std::process::exit(2);
-        }
-    }
 }
 
 /// The nearest directory at or above the current one that holds a Cargo.toml.

@@ -6,7 +6,9 @@
 //! `Type::method` inside an `impl Type` or `impl Trait for Type` block of that file. When the
 //! file has no such item but re-exports the name (`pub use polyhedron::{Facet, Polyhedron};`),
 //! the search follows the re-export, so `shapes::Polyhedron::intersect` is found in
-//! `src/shapes/polyhedron.rs`. Inline `mod name { … }` blocks and `#[path]` attributes are not
+//! `src/shapes/polyhedron.rs`; and a method missing from its module's file is looked for in the
+//! `impl` blocks of that module's children (`accel::Accelerator::nearest` is in
+//! `src/accel/query.rs`). Inline `mod name { … }` blocks and `#[path]` attributes are not
 //! followed.
 //!
 //! The file is parsed with `syn`, and the body block `{ … }` of the function is given as a byte
@@ -92,6 +94,20 @@ fn locate_segments(root: &Path, segments: &[String], hops: usize) -> Result<Loca
             ..one.clone()
         }),
         [] => {
+            // a type's `impl` blocks may sit in the files of its module's children
+            // (`accel::Accelerator::nearest` is in `src/accel/query.rs`)
+            if let [ty, method] = rest {
+                let inner = child_methods(root, &ast, module, ty, method)?;
+                if let [one] = inner.as_slice() {
+                    return Ok(one.clone());
+                }
+                if inner.len() > 1 {
+                    return Err(format!(
+                        "method {method} of `{ty}` is defined in {} child modules of {shown}: the path must name exactly one",
+                        inner.len()
+                    ));
+                }
+            }
             // not defined here: follow a re-export of the first name, if there is one, and
             // report the first one's error when none leads to the function
             let mut first_error = None;
@@ -131,6 +147,40 @@ fn locate_segments(root: &Path, segments: &[String], hops: usize) -> Result<Loca
             ))
         }
     }
+}
+
+/// The methods `method` of `impl ty` blocks in the files of the child modules that `ast` (the
+/// file of `module`) declares with `mod name;`, each with its file.
+fn child_methods(
+    root: &Path,
+    ast: &syn::File,
+    module: &[String],
+    ty: &str,
+    method: &str,
+) -> Result<Vec<Location>, String> {
+    let mut found = Vec::new();
+    for item in &ast.items {
+        let Item::Mod(m) = item else { continue };
+        if m.content.is_some() {
+            continue; // an inline module: not followed
+        }
+        let mut child = module.to_vec();
+        child.push(m.ident.to_string());
+        let Some(file) = module_file(root, &child) else {
+            continue;
+        };
+        let shown = file.display().to_string();
+        let text = std::fs::read_to_string(root.join(&file))
+            .map_err(|e| format!("cannot read {shown}: {e}"))?;
+        let child_ast = parse(&text, &shown)?;
+        for one in methods(&child_ast, ty, method) {
+            found.push(Location {
+                file: file.clone(),
+                ..one
+            });
+        }
+    }
+    Ok(found)
 }
 
 /// The file of the module `segments` below `root/src`, if it exists (`src/a/b.rs` first, then
