@@ -79,7 +79,7 @@ cli_values!(Accel {
     Accel::None => "none": "every object for every ray (the notes' step 4)",
     Accel::Boxes => "boxes": "a bounding box per object",
     Accel::Extents => "extents": "boxes, and projection extents for camera rays",
-    Accel::Octree => "octree": "cubes subdivided until each holds at most 4 objects",
+    Accel::Octree => "octree": "cubes subdivided until each holds at most 8 objects",
     Accel::Bvh => "bvh": "a bounding volume hierarchy, binned SAH (default)",
 });
 
@@ -124,7 +124,7 @@ pub struct ViewArg {
     #[arg(long, value_enum, default_value_t = Accel::default())]
     pub accel: Accel,
     /// Trace every pixel alone by the plain road, instead of the camera rays and feelers of
-    /// 4×4 blocks as packets (a BVH or an octree, one sample a pixel); the same image either way.
+    /// 8×8 blocks as packets (a BVH or an octree, one sample a pixel); the same image either way.
     #[arg(long)]
     pub no_packets: bool,
 }

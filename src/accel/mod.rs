@@ -26,7 +26,7 @@
 //! ```
 //!
 //! The BVH and the octree also answer *packets* of up to [`PACKET`] rays at once (the camera
-//! rays of a 4 × 4 block of pixels, or their feelers towards one light): the structure is
+//! rays of an 8 × 8 block of pixels, or their feelers towards one light): the structure is
 //! walked once for all of them, a node opened when some ray of the packet meets its box.
 //! Two classic devices keep that cheap: the rays before the first one that meets a box are
 //! dropped for all of its subtree (Wald's "first active ray"), and a box that the span of the
@@ -106,10 +106,11 @@ impl Accel {
 }
 
 /// The most rays [`Accelerator::nearest_packet`] takes at once.
-pub const PACKET: usize = 16;
+pub const PACKET: usize = 64;
 
-/// The octree's k: a cube holding more objects than this is subdivided.
-pub const OCTREE_K: usize = 4;
+/// The octree's k: a cube holding more objects than this is subdivided. With packets of
+/// 64 rays, 8 measured faster than 4 on the 100 000-sphere field (and 12 or 16 no better).
+pub const OCTREE_K: usize = 8;
 
 #[derive(Clone, Debug)]
 enum Index {

@@ -79,7 +79,7 @@ pub struct Options {
     pub seed: u64,
     /// Which acceleration structure answers ray queries (the image does not depend on it).
     pub accel: Accel,
-    /// Trace the camera rays of 4 × 4 pixels, and their feelers, as packets where that pays
+    /// Trace the camera rays of 8 × 8 pixels, and their feelers, as packets where that pays
     /// (one sample a pixel, a BVH or an octree; see [`super::packets`]). The image is the
     /// same bit for bit either way; `false` renders every pixel by the plain road alone.
     pub packets: bool,
