@@ -9,7 +9,7 @@
 //! a few angles below the horizon:
 //!
 //! - how far the hit found lies from the true surface, and how far along the ray from the
-//!   true hit (against an f64 reference computed in world space, see [`reference`]), for the
+//!   true hit (against an f64 reference computed in world space, see [`reference()`]), for the
 //!   library's method and for the fixes of [`fixes`];
 //! - the share of lit hit points whose feeler ray meets the planet again (shadow acne) under
 //!   each offset strategy, and how far the error-bound offset pushes feelers out;
