@@ -2,7 +2,8 @@
 //!
 //! ```text
 //! whitted formulas                                  the manifest, by chapter, with file:line
-//! whitted formulas --prove [--only PATH]... [--keep] poison each function, run the render paths
+//! whitted formulas --prove [--only PATH]... [--keep] [--features f32]
+//!                                                   poison each function, run the render paths
 //! ```
 //!
 //! Exit status: 0 when everything asked for is fine, 1 when some function is not proven,
@@ -56,6 +57,10 @@ struct Formulas {
     #[arg(long, value_name = "SECONDS", default_value_t = 120, requires = "prove",
           value_parser = clap::value_parser!(u64).range(1..=86_400))]
     timeout: u64,
+    /// Cargo features to build the poisoned copy with, comma-separated (`--features f32`
+    /// proves the single-precision build).
+    #[arg(long, value_name = "LIST", value_delimiter = ',', requires = "prove")]
+    features: Vec<String>,
     /// The project's root (the directory of Cargo.toml) [default: the nearest one at or
     /// above the current directory].
     #[arg(long, value_name = "DIR")]
@@ -90,6 +95,7 @@ fn formulas(args: &Formulas) -> Result<ExitCode, Error> {
         only: args.only.clone(),
         keep: args.keep,
         timeout: std::time::Duration::from_secs(args.timeout),
+        features: args.features.clone(),
         ..Options::default()
     };
     let report = prove::prove(&root, &manifest, &options)?;

@@ -50,6 +50,8 @@ pub struct Options {
     pub timeout: Duration,
     /// Where cargo builds the copy; `None` is `target/prove` under the project's root.
     pub target_dir: Option<PathBuf>,
+    /// Cargo features the copy is built with (`f32` proves the single-precision build).
+    pub features: Vec<String>,
 }
 
 impl Default for Options {
@@ -60,6 +62,7 @@ impl Default for Options {
             jobs: 2,
             timeout: Duration::from_secs(120),
             target_dir: None,
+            features: Vec::new(),
         }
     }
 }
@@ -294,7 +297,7 @@ pub fn prove(root: &Path, manifest: &Manifest, options: &Options) -> Result<Repo
         .target_dir
         .clone()
         .unwrap_or_else(|| root.join("target").join("prove"));
-    let exe = build(&copy, &target_dir, &manifest.prove.test)?;
+    let exe = build(&copy, &target_dir, &manifest.prove.test, &options.features)?;
     let build_time = started.elapsed();
 
     // the baseline, then each function
@@ -514,21 +517,38 @@ fn copy_project(root: &Path, dest: &Path) -> Result<usize, Error> {
 
 /// Builds the test target `test` of the project at `project` into `target_dir`; returns the
 /// test executable.
-fn build(project: &Path, target_dir: &Path, test: &str) -> Result<PathBuf, Error> {
+fn build(
+    project: &Path,
+    target_dir: &Path,
+    test: &str,
+    features: &[String],
+) -> Result<PathBuf, Error> {
     let cargo = std::env::var_os("CARGO").unwrap_or_else(|| "cargo".into());
     eprintln!(
-        "proof: building the poisoned copy's tests/{test}.rs into {}",
-        target_dir.display()
+        "proof: building the poisoned copy's tests/{test}.rs into {}{}",
+        target_dir.display(),
+        if features.is_empty() {
+            String::new()
+        } else {
+            format!(" with --features {}", features.join(","))
+        }
     );
+    let mut args: Vec<String> = [
+        "test",
+        "--no-run",
+        "--locked",
+        "--test",
+        test,
+        "--message-format=json",
+    ]
+    .map(String::from)
+    .to_vec();
+    if !features.is_empty() {
+        args.push("--features".into());
+        args.push(features.join(","));
+    }
     let out = Command::new(cargo)
-        .args([
-            "test",
-            "--no-run",
-            "--locked",
-            "--test",
-            test,
-            "--message-format=json",
-        ])
+        .args(&args)
         .current_dir(project)
         .env("CARGO_TARGET_DIR", target_dir)
         // no debug info: the test target links every binary of the crate, and a panic's
