@@ -22,23 +22,6 @@ pub enum Stage {
     ReflectionRefraction = 5,
 }
 
-impl Stage {
-    /// Every stage, chapter 1 first.
-    pub const ALL: [Stage; 5] = [
-        Stage::CameraRays,
-        Stage::GenericObjects,
-        Stage::Shading,
-        Stage::Shadows,
-        Stage::ReflectionRefraction,
-    ];
-
-    /// The chapter's number, 1 to 5.
-    #[must_use]
-    pub fn chapter(self) -> u32 {
-        self as u32
-    }
-}
-
 /// What a stage-2 (or later) render shows at each pixel.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
 pub enum View {

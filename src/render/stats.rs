@@ -28,7 +28,7 @@ impl Stats {
     }
 
     /// Adds another render's (or another tile's) counts to these.
-    pub fn add(&mut self, o: &Stats) {
+    pub(crate) fn add(&mut self, o: &Stats) {
         self.primary += o.primary;
         self.shadow += o.shadow;
         self.reflected += o.reflected;
