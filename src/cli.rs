@@ -3,7 +3,8 @@
 //! ```text
 //! chNN [SCENE] [-o OUT.png] [--width W] [--height H]      every chapter
 //!      [--quiet]                                           every chapter
-//!      [--view color|flat|normals|depth]                   chapters 2–5
+//!      [--view color|flat|normals|depth|shadows|rays]      chapters 2–5
+//!      [--inspect X,Y [--json]]                            chapters 2–5
 //!      [--accel none|boxes|extents|octree|bvh] [--no-packets]   chapters 2–5
 //!      [--samples N] [--max-depth N] [--stats]             chapter 5
 //!      [--formula textbook|robust]                         chapters 4–5
@@ -73,6 +74,8 @@ cli_values!(View {
     View::Flat => "flat": "the material's diffuse colour, unlit",
     View::Normals => "normals": "the normal facing the camera, (n + 1)/2",
     View::Depth => "depth": "the distance to the nearest hit, near = white",
+    View::Shadows => "shadows": "which lights reach each point: light 0 red, 1 green, 2 blue",
+    View::Rays => "rays": "the rays each pixel casts, black (1) to white (the most possible)",
 });
 
 cli_values!(Accel {
@@ -127,6 +130,22 @@ pub struct ViewArg {
     /// 8×8 blocks as packets (a BVH or an octree, one sample a pixel); the same image either way.
     #[arg(long)]
     pub no_packets: bool,
+    /// Print the ray tree of pixel X,Y (column X, row Y from the top, from 0) — hits, each
+    /// light's I_a, I_d, I_s and feeler, mirror and transmitted rays — and exit, writing no image.
+    #[arg(long, value_name = "X,Y", value_parser = parse_pixel, conflicts_with = "output", allow_hyphen_values = true)]
+    pub inspect: Option<(u32, u32)>,
+    /// With --inspect: print the tree as JSON (its shape: docs/inspect.md).
+    #[arg(long, requires = "inspect")]
+    pub json: bool,
+}
+
+/// Reads `X,Y` as a pixel's column and row.
+fn parse_pixel(text: &str) -> Result<(u32, u32), String> {
+    let bad = || format!("expected X,Y: a pixel's column and row, such as 320,240 (got `{text}`)");
+    let (x, y) = text.split_once(',').ok_or_else(bad)?;
+    let x = x.trim().parse().map_err(|_| bad())?;
+    let y = y.trim().parse().map_err(|_| bad())?;
+    Ok((x, y))
 }
 
 /// Chapter 5's tracing controls.
@@ -240,11 +259,14 @@ fn run_inner(
     tracing: Option<&Tracing>,
     accuracy: Option<&Accuracy>,
 ) -> Result<(), Error> {
+    let inspect = view.and_then(|v| v.inspect);
     let out = common
         .output
         .clone()
         .unwrap_or_else(|| PathBuf::from(format!("{binary}.png")));
-    output::check_destination(&out)?;
+    if inspect.is_none() {
+        output::check_destination(&out)?;
+    }
     let scene = read_scene(common.scene.as_deref())?;
     for w in &scene.warnings {
         eprintln!("warning: {w}");
@@ -263,6 +285,9 @@ fn run_inner(
     if let Some(a) = accuracy {
         options.formula = a.formula;
         options.offset = a.offset.offset();
+    }
+    if let (Some(pixel), Some(v)) = (inspect, view) {
+        return print_tree(&scene, &options, pixel, v.json);
     }
     render::check_size(options.width, options.height)?;
     let start = Instant::now();
@@ -293,6 +318,45 @@ fn run_inner(
         eprintln!("{}", summary(fb.width, fb.height, &stats, seconds));
     }
     Ok(())
+}
+
+/// `--inspect X,Y [--json]`: prints the ray tree of one pixel on stdout.
+fn print_tree(
+    scene: &Scene,
+    options: &Options,
+    (x, y): (u32, u32),
+    json: bool,
+) -> Result<(), Error> {
+    let (w, h) = (options.width, options.height);
+    if x >= w || y >= h {
+        return Err(Error::Usage(format!(
+            "--inspect {x},{y}: the pixel is outside the {w}×{h} image (X from 0 to {}, Y from 0 to {})",
+            w - 1,
+            h - 1
+        )));
+    }
+    let tree = render::Tracer::new(scene, options).inspect(x, y);
+    let text = if json {
+        let json = serde_json::to_string_pretty(&tree.to_json())
+            .map_err(|e| Error::Usage(format!("cannot write the tree as JSON: {e}")))?;
+        json + "\n"
+    } else {
+        tree.to_string()
+    };
+    print_out(&text)
+}
+
+/// Writes `text` on stdout; a reader that stops early (`| head`) is not an error.
+fn print_out(text: &str) -> Result<(), Error> {
+    use std::io::Write;
+    let mut out = std::io::stdout().lock();
+    match out.write_all(text.as_bytes()).and_then(|()| out.flush()) {
+        Err(e) if e.kind() != std::io::ErrorKind::BrokenPipe => Err(Error::Write {
+            path: PathBuf::from("standard output"),
+            message: e.to_string(),
+        }),
+        _ => Ok(()),
+    }
 }
 
 /// The line `--stats` adds in a build with the `counters` feature: what the queries tested, in

@@ -15,17 +15,9 @@ use image::codecs::png::{CompressionType, FilterType, PngEncoder};
 use rayon::prelude::*;
 
 use crate::error::Error;
-use crate::real::Real;
 use crate::render::Framebuffer;
 
-/// One linear intensity as a byte: clamp to [0, 1], scale by 255, round; NaN becomes 0.
-#[must_use]
-pub fn to_byte(x: Real) -> u8 {
-    if x.is_nan() {
-        return 0;
-    }
-    (x.clamp(0.0, 1.0) * 255.0).round() as u8
-}
+pub use crate::render::framebuffer::to_byte;
 
 /// The framebuffer as RGB bytes, row by row from the top (converted in parallel chunks: on a
 /// large image this is otherwise the slowest serial step after the render).

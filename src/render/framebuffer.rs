@@ -1,7 +1,8 @@
-//! The framebuffer: the rendered image in linear RGB, and the limit on its size.
+//! The framebuffer: the rendered image in linear RGB, the byte each intensity becomes in the
+//! PNG, and the limit on the image's size.
 
 use crate::error::Error;
-use crate::real::Vec3;
+use crate::real::{Real, Vec3};
 
 /// A linear-RGB image, rows from the top.
 #[derive(Clone, Debug, PartialEq)]
@@ -30,6 +31,16 @@ impl Framebuffer {
     pub fn get(&self, x: u32, y: u32) -> Vec3 {
         self.pixels[(y * self.width + x) as usize]
     }
+}
+
+/// One linear intensity as the byte the PNG holds: clamp to [0, 1], scale by 255, round; NaN
+/// becomes 0 (see [`crate::output`]).
+#[must_use]
+pub fn to_byte(x: Real) -> u8 {
+    if x.is_nan() {
+        return 0;
+    }
+    (x.clamp(0.0, 1.0) * 255.0).round() as u8
 }
 
 /// The largest framebuffer a render may allocate: 4 GiB, that is width × height × 3 ×

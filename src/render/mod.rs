@@ -9,21 +9,29 @@
 //! | [`sampling`] | where the samples of a pixel go |
 //! | [`framebuffer`] | the image in linear RGB ([`Framebuffer`]) |
 //! | [`stats`] | rays cast by kind ([`Stats`]) |
+//! | [`recorder`] | what the road tells as it goes ([`Recorder`]): [`Stats`] counts, the inspector keeps the tree |
+//! | [`inspect`] | the ray tree of one pixel (`--inspect X,Y`) as text and JSON |
+//! | [`views`] | the scales and palettes of the depth, shadow-mask and rays-per-pixel views |
 //!
 //! The road calls one small function per formula of the notes, and the speed machinery
 //! (tiles, packets, the acceleration structures of [`crate::accel`]) calls the same functions:
 //! it changes the time, never a bit of the image.
 
 pub mod framebuffer;
+pub mod inspect;
 pub mod options;
 pub mod packets;
+pub mod recorder;
 pub mod sampling;
 pub mod stats;
 pub mod tiles;
 pub mod tracer;
+pub mod views;
 
 pub use framebuffer::{Framebuffer, MAX_FRAMEBUFFER_BYTES, check_size};
+pub use inspect::RayTree;
 pub use options::{Options, Stage, View};
+pub use recorder::{RayKind, Recorder, Stop};
 pub use stats::Stats;
 pub use tiles::{BLOCK, TILE, build_accel, render, render_with};
 pub use tracer::Tracer;

@@ -32,8 +32,39 @@ pub enum View {
     Flat,
     /// The world normal n mapped to a colour, (n + 1)/2.
     Normals,
-    /// Distance to the nearest hit, near = white, far = dark.
+    /// Distance to the nearest hit, near = white, far = dark (see [`super::views`]).
     Depth,
+    /// Which lights reach each point: light 0 red, 1 green, 2 blue … times the share that
+    /// arrives (see [`super::views`]).
+    Shadows,
+    /// The rays each pixel casts, on a heat scale from 1 (black) to the most possible
+    /// (white) (see [`super::views`]).
+    Rays,
+}
+
+impl View {
+    /// Every view, in the order the live window cycles through them.
+    pub const ALL: [View; 6] = [
+        View::Color,
+        View::Flat,
+        View::Normals,
+        View::Depth,
+        View::Shadows,
+        View::Rays,
+    ];
+
+    /// The view's name on the command line and in reports.
+    #[must_use]
+    pub fn name(self) -> &'static str {
+        match self {
+            View::Color => "color",
+            View::Flat => "flat",
+            View::Normals => "normals",
+            View::Depth => "depth",
+            View::Shadows => "shadows",
+            View::Rays => "rays",
+        }
+    }
 }
 
 /// Everything about a render that is not in the scene.

@@ -30,6 +30,7 @@ impl Tracer<'_> {
     fn packets(&self) -> bool {
         let o: &Options = self.options;
         o.packets
+            && o.view != View::Rays // counts each pixel's rays on the plain road
             && o.samples_per_pixel() == 1
             && o.stage >= Stage::GenericObjects
             && matches!(self.accel.kind(), Accel::Bvh | Accel::Octree)

@@ -9,10 +9,9 @@
 
 use rayon::prelude::*;
 
-use super::{Framebuffer, Options, Stage, Stats, Tracer, View};
+use super::{Framebuffer, Options, Stage, Stats, Tracer};
 use crate::accel::Accel;
 use crate::accel::Accelerator;
-use crate::real::{Real, Vec3};
 use crate::scene::Scene;
 
 /// Side of the square tiles the image is rendered in.
@@ -95,24 +94,5 @@ pub fn render_with(
             a.add(&b);
             a
         });
-    if options.view == View::Depth && options.stage >= Stage::GenericObjects {
-        shade_depth(&mut fb);
-    }
     (fb, stats)
-}
-
-/// Maps distances (∞ for a miss) to grey levels: nearest 1, farthest 0.15, misses 0.
-fn shade_depth(fb: &mut Framebuffer) {
-    let finite = fb.pixels.iter().map(|p| p.x).filter(|d| d.is_finite());
-    let (lo, hi) = finite.fold((Real::INFINITY, Real::NEG_INFINITY), |(lo, hi), d| {
-        (lo.min(d), hi.max(d))
-    });
-    let range = (hi - lo).max(Real::MIN_POSITIVE);
-    for p in &mut fb.pixels {
-        *p = if p.x.is_finite() {
-            Vec3::splat(1.0 - 0.85 * (p.x - lo) / range)
-        } else {
-            Vec3::ZERO
-        };
-    }
 }

@@ -23,7 +23,11 @@
 //!
 //! The scene decides which stops are needed: no feeler for a light with `shadows = false`, no
 //! mirror ray from a material with `reflection = 0`, no transmitted ray where
-//! `transmission = 0`. [`Stats`] counts the rays of each kind.
+//! `transmission = 0`.
+//!
+//! Every stop tells a [`Recorder`] what it did ([`super::recorder`]): for a plain render that
+//! is [`Stats`], which counts the rays of each kind and nothing else; for `--inspect X,Y` it
+//! is [`super::inspect::TreeRecorder`], which keeps the whole ray tree of the pixel.
 //!
 //! The search for the nearest hit, and for what a feeler crosses, is asked of the acceleration
 //! structure ([`crate::accel`]), which gives exactly what testing every object in turn gives.
@@ -32,7 +36,8 @@
 
 use std::borrow::Cow;
 
-use super::{Options, Stage, Stats, View, build_accel, sampling};
+use super::recorder::{RayKind, Recorder, Stop};
+use super::{Options, Stage, View, build_accel, sampling, views};
 use crate::accel::Accelerator;
 use crate::camera::{Camera, direction_colour};
 use crate::light::Light;
@@ -52,10 +57,12 @@ pub struct Tracer<'a> {
     pub(crate) options: &'a Options,
     pub(crate) camera: Camera,
     pub(crate) accel: Cow<'a, Accelerator>,
+    /// The scales of the depth and rays-per-pixel views, fixed before the first pixel.
+    pub(crate) scales: views::Scales,
 }
 
 /// A hit as shading sees it.
-pub(crate) struct Surface<'s> {
+pub struct Surface<'s> {
     /// The hit (world normal, pointing out of the object).
     pub hit: Hit,
     /// The material hit.
@@ -72,29 +79,31 @@ pub(crate) struct Surface<'s> {
 
 /// A feeler: the ray S(u) = P′ + (L − P′)·u from the offset start P′, and the smallest u that
 /// counts as "between" (0 unless the offset strategy keeps the start on the surface).
-pub(crate) type Feeler = (Ray, Real);
+pub type Feeler = (Ray, Real);
 
 impl<'a> Tracer<'a> {
     /// A tracer for the scene with the options' image size (builds `options.accel`).
     #[must_use]
     pub fn new(scene: &'a Scene, options: &'a Options) -> Self {
-        Self {
-            scene,
-            options,
-            camera: scene.camera.camera(options.width, options.height),
-            accel: Cow::Owned(build_accel(scene, options)),
-        }
+        Self::with(scene, options, Cow::Owned(build_accel(scene, options)))
     }
 
     /// A tracer using an acceleration structure built beforehand (see [`build_accel`]).
     #[must_use]
     pub fn with_accel(scene: &'a Scene, options: &'a Options, accel: &'a Accelerator) -> Self {
-        Self {
+        Self::with(scene, options, Cow::Borrowed(accel))
+    }
+
+    fn with(scene: &'a Scene, options: &'a Options, accel: Cow<'a, Accelerator>) -> Self {
+        let mut tracer = Self {
             scene,
             options,
             camera: scene.camera.camera(options.width, options.height),
-            accel: Cow::Borrowed(accel),
-        }
+            accel,
+            scales: views::Scales::default(),
+        };
+        tracer.scales = views::Scales::measure(&tracer);
+        tracer
     }
 
     /// The camera at the options' image size.
@@ -103,44 +112,68 @@ impl<'a> Tracer<'a> {
         &self.camera
     }
 
-    /// The colour of pixel (x, y), row y from the top: the mean over its samples.
-    pub fn pixel(&self, x: u32, y: u32, stats: &mut Stats) -> Vec3 {
+    /// The colour of pixel (x, y), row y from the top: the mean over its samples. `rec`
+    /// hears every stop of the road ([`Stats`](super::Stats) counts the rays).
+    pub fn pixel(&self, x: u32, y: u32, rec: &mut impl Recorder) -> Vec3 {
+        if self.options.view == View::Rays {
+            // the colour is the number of rays this pixel cast
+            let mut count = super::Stats::default();
+            self.samples(x, y, &mut (rec, &mut count));
+            return self.scales.heat(count.total());
+        }
+        self.samples(x, y, rec)
+    }
+
+    /// The mean of the colours the samples of pixel (x, y) bring back.
+    fn samples(&self, x: u32, y: u32, rec: &mut impl Recorder) -> Vec3 {
         let o = self.options;
         let samples = o.samples_per_pixel();
         let mut sum = Vec3::ZERO;
         for s in 0..samples {
             let (dx, dy) = sampling::sample_position(o.seed, samples, x, y, s);
+            rec.sample(s, dx, dy);
             let ray = self.camera.pixel_ray(x, y, dx, dy); // chapter 1: r(t) = e + d·t
-            stats.primary += 1;
-            sum += self.camera_ray(&ray, (x, y), stats);
+            rec.ray(RayKind::Camera, &ray, 0.0, 0, 1.0);
+            let colour = self.camera_ray(&ray, (x, y), rec);
+            rec.done(colour);
+            sum += colour;
         }
         sum / samples as Real
     }
 
     /// What the camera ray of image pixel `pixel` brings back.
-    pub(crate) fn camera_ray(&self, ray: &Ray, pixel: (u32, u32), stats: &mut Stats) -> Vec3 {
+    fn camera_ray(&self, ray: &Ray, pixel: (u32, u32), rec: &mut impl Recorder) -> Vec3 {
         if self.options.stage == Stage::CameraRays {
             return direction_colour(ray.dir); // chapter 1: (d̂ + 1)/2
         }
         let nearest = self.nearest_from(ray, 0.0, Some(pixel));
-        self.seen(ray, nearest, stats)
+        rec.hit(nearest.as_ref());
+        self.seen(ray, nearest, rec)
     }
 
     /// The colour of a camera ray (from stage 2 on) whose nearest hit is `nearest`, as the
     /// view shows it.
-    pub(crate) fn seen(&self, ray: &Ray, nearest: Option<Nearest>, stats: &mut Stats) -> Vec3 {
+    pub(crate) fn seen(
+        &self,
+        ray: &Ray,
+        nearest: Option<Nearest>,
+        rec: &mut impl Recorder,
+    ) -> Vec3 {
         let o = self.options;
         match o.view {
-            View::Color if o.stage == Stage::GenericObjects => self.flat(nearest),
-            View::Color => self.shade(ray, nearest, 0, 1.0, stats),
+            View::Color | View::Rays if o.stage == Stage::GenericObjects => self.flat(nearest),
+            View::Color | View::Rays => self.shade(ray, nearest, 0, 1.0, rec),
             View::Flat => self.flat(nearest),
             View::Normals => match nearest {
                 Some(n) => direction_colour(facing(n.hit.normal, ray.dir)),
                 None => self.scene.background,
             },
-            View::Depth => match nearest {
-                Some(n) => Vec3::splat(n.hit.t * ray.dir.length()),
-                None => Vec3::splat(Real::INFINITY),
+            View::Depth => self
+                .scales
+                .depth(nearest.map(|n| n.hit.t * ray.dir.length())),
+            View::Shadows => match nearest {
+                Some(n) => self.shadow_mask(&self.surface(ray, &n), rec),
+                None => Vec3::ZERO,
             },
         }
     }
@@ -175,9 +208,11 @@ impl<'a> Tracer<'a> {
         t_min: Real,
         depth: u32,
         weight: Real,
-        stats: &mut Stats,
+        rec: &mut impl Recorder,
     ) -> Vec3 {
-        self.shade(ray, self.nearest(ray, t_min), depth, weight, stats)
+        let nearest = self.nearest(ray, t_min);
+        rec.hit(nearest.as_ref());
+        self.shade(ray, nearest, depth, weight, rec)
     }
 
     /// I = I_a + I_d + I_s + I_l + I_r at the nearest hit of `ray` (the background colour for
@@ -188,14 +223,14 @@ impl<'a> Tracer<'a> {
         nearest: Option<Nearest>,
         depth: u32,
         weight: Real,
-        stats: &mut Stats,
+        rec: &mut impl Recorder,
     ) -> Vec3 {
         let Some(nearest) = nearest else {
             return self.scene.background;
         };
         let s = self.surface(ray, &nearest);
-        let local = self.local_light(&s, |_, feeler| self.transmittance(feeler), stats);
-        self.reflect_and_refract(&s, local, depth, weight, stats)
+        let local = self.local_light(&s, |_, feeler| self.transmittance(feeler), rec);
+        self.reflect_and_refract(&s, local, depth, weight, rec)
     }
 
     /// What shading needs to know of a hit.
@@ -222,23 +257,26 @@ impl<'a> Tracer<'a> {
         &self,
         s: &Surface,
         mut share: impl FnMut(usize, &Feeler) -> Real,
-        stats: &mut Stats,
+        rec: &mut impl Recorder,
     ) -> Vec3 {
-        let mut color = shading::ambient(s.material, self.scene.ambient); // I_a
+        let i_a = shading::ambient(s.material, self.scene.ambient); // I_a
+        rec.ambient(i_a);
+        let mut color = i_a;
         for (l, light) in self.scene.lights.iter().enumerate() {
             let unshadowed = shading::direct(s.material, light, s.p, s.n, -s.d); // I_d + I_s
             if unshadowed == Vec3::ZERO {
+                rec.light(l, s, unshadowed, None, 1.0);
                 continue; // the light is behind the surface: nothing to shadow
             }
-            let arriving = match self.feeler(s, light) {
-                Some(feeler) => {
-                    stats.shadow += 1;
-                    share(l, &feeler)
-                }
+            let feeler = self.feeler(s, light);
+            let arriving = match &feeler {
+                Some(feeler) => share(l, feeler),
                 None => 1.0,
             };
+            rec.light(l, s, unshadowed, feeler.as_ref(), arriving);
             color += unshadowed * arriving;
         }
+        rec.local(color);
         color
     }
 
@@ -256,7 +294,7 @@ impl<'a> Tracer<'a> {
 
     /// The share of its light that a feeler lets through: the product of the transmissions of
     /// the objects it crosses with u ∈ ]u_min, 1] ([`crate::shadow`]).
-    fn transmittance(&self, (feeler, u_min): &Feeler) -> Real {
+    pub(crate) fn transmittance(&self, (feeler, u_min): &Feeler) -> Real {
         self.accel.transmittance(
             &self.scene.objects,
             &self.scene.materials,
@@ -277,13 +315,22 @@ impl<'a> Tracer<'a> {
         mut color: Vec3,
         depth: u32,
         weight: Real,
-        stats: &mut Stats,
+        rec: &mut impl Recorder,
     ) -> Vec3 {
         let o = self.options;
-        if o.stage < Stage::ReflectionRefraction || depth >= o.max_depth {
+        if o.stage < Stage::ReflectionRefraction {
             return color;
         }
         let (material, d, n) = (s.material, s.d, s.n);
+        if depth >= o.max_depth {
+            if material.is_translucent() {
+                rec.stopped(RayKind::Transmitted, Stop::MaxDepth);
+            }
+            if material.reflection > 0.0 {
+                rec.stopped(RayKind::Mirror, Stop::MaxDepth);
+            }
+            return color;
+        }
         let mut k_r = material.reflection;
         if material.is_translucent() {
             let entering = s.hit.normal.dot(d) < 0.0; // the side that was hit
@@ -292,32 +339,56 @@ impl<'a> Tracer<'a> {
                 Some(t_dir) => {
                     let k_t = material.transmission;
                     if weight * k_t >= o.min_weight {
-                        stats.refracted += 1;
                         let (origin, t0) = o.offset.spawn(&s.spawn, t_dir);
-                        let i_r = self.trace(
-                            &Ray::new(origin, t_dir),
+                        let ray = Ray::new(origin, t_dir);
+                        let i_r = self.follow(
+                            RayKind::Transmitted,
+                            &ray,
                             t0,
                             depth + 1,
                             weight * k_t,
-                            stats,
+                            rec,
                         );
                         color += k_t * i_r;
+                    } else {
+                        rec.stopped(RayKind::Transmitted, Stop::Weight);
                     }
                 }
                 None => {
                     k_r += material.transmission; // total internal reflection
-                    stats.total_internal += 1;
+                    rec.stopped(RayKind::Transmitted, Stop::TotalInternalReflection);
                 }
             }
         }
-        if k_r > 0.0 && weight * k_r >= o.min_weight {
-            stats.reflected += 1;
-            let l = optics::reflect(d, n);
-            let (origin, t0) = o.offset.spawn(&s.spawn, l);
-            let i_l = self.trace(&Ray::new(origin, l), t0, depth + 1, weight * k_r, stats);
-            color += k_r * i_l;
+        if k_r > 0.0 {
+            if weight * k_r >= o.min_weight {
+                let l = optics::reflect(d, n);
+                let (origin, t0) = o.offset.spawn(&s.spawn, l);
+                let ray = Ray::new(origin, l);
+                let i_l = self.follow(RayKind::Mirror, &ray, t0, depth + 1, weight * k_r, rec);
+                color += k_r * i_l;
+            } else {
+                rec.stopped(RayKind::Mirror, Stop::Weight);
+            }
         }
         color
+    }
+
+    /// Traces a mirror or transmitted ray, telling `rec` that it leaves and what it brings
+    /// back.
+    fn follow(
+        &self,
+        kind: RayKind,
+        ray: &Ray,
+        t_min: Real,
+        depth: u32,
+        weight: Real,
+        rec: &mut impl Recorder,
+    ) -> Vec3 {
+        rec.ray(kind, ray, t_min, depth, weight);
+        let colour = self.trace(ray, t_min, depth, weight, rec);
+        rec.done(colour);
+        colour
     }
 }
 

@@ -523,6 +523,7 @@ pub struct ObjectDesc {
     pub transform: Vec<Spanned<StepDesc>>,
     /// Name of a `[materials.NAME]` table (default: a matte grey).
     pub material: Option<Spanned<String>>,
-    /// A label for whoever reads the scene file; the renderer does not use it.
+    /// A label for the object: the inspector (`--inspect X,Y`) and the live window name the
+    /// object by it; the image does not depend on it.
     pub name: Option<String>,
 }

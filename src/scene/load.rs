@@ -210,6 +210,11 @@ pub fn parse(text: &str, file: &str) -> Result<Scene, Error> {
         ));
     }
     let mut objects = Vec::with_capacity(raw.objects.len());
+    let object_names = raw
+        .objects
+        .iter()
+        .map(|o| o.get_ref().name.clone())
+        .collect();
     for o in &raw.objects {
         let mut object = build_object(o, &err)?;
         if let Some(name) = &o.get_ref().material {
@@ -247,6 +252,7 @@ pub fn parse(text: &str, file: &str) -> Result<Scene, Error> {
         materials,
         material_names,
         objects,
+        object_names,
         warnings,
     })
 }

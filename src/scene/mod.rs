@@ -82,6 +82,9 @@ pub struct Scene {
     pub material_names: Vec<String>,
     /// The placed objects.
     pub objects: Vec<Object>,
+    /// The `name` each object was given in the scene file, in the order of `objects` (the
+    /// inspector shows it; an object added in code past the end has none).
+    pub object_names: Vec<Option<String>>,
     /// Remarks about the scene that do not stop it from rendering (e.g. ρa + ρd + ρs > 1).
     pub warnings: Vec<String>,
 }
@@ -91,5 +94,11 @@ impl Scene {
     #[must_use]
     pub fn camera(&self) -> Camera {
         self.camera.camera(self.width, self.height)
+    }
+
+    /// The name object number `i` was given in the scene file, if any.
+    #[must_use]
+    pub fn object_name(&self, i: usize) -> Option<&str> {
+        self.object_names.get(i).and_then(|n| n.as_deref())
     }
 }

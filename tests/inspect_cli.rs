@@ -1,0 +1,142 @@
+//! `--inspect X,Y [--json]` on chapters 2–5, as a student runs it: the tree printed for a
+//! pixel of each chapter's scene has the colour of that pixel in the `-o` render, no image is
+//! written, and a pixel outside the image is one line of error with exit status 2.
+
+use std::path::Path;
+use std::process::{Command, Output};
+
+use whitted::output::to_byte;
+use whitted::real::Real;
+
+/// Chapters 2–5 and their scenes.
+const CHAPTERS: [(&str, &str); 4] = [
+    (
+        env!("CARGO_BIN_EXE_ch02_generic_objects"),
+        "scenes/ch02_generic_objects.toml",
+    ),
+    (
+        env!("CARGO_BIN_EXE_ch03_shading"),
+        "scenes/ch03_shading.toml",
+    ),
+    (
+        env!("CARGO_BIN_EXE_ch04_shadows"),
+        "scenes/ch04_shadows.toml",
+    ),
+    (
+        env!("CARGO_BIN_EXE_ch05_reflection_refraction"),
+        "scenes/ch05_reflection_refraction.toml",
+    ),
+];
+
+fn run(bin: &str, args: &[&str], dir: &Path) -> Output {
+    Command::new(bin)
+        .args(args)
+        .current_dir(dir)
+        .output()
+        .expect("binary runs")
+}
+
+fn scene_path(rel: &str) -> String {
+    Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join(rel)
+        .display()
+        .to_string()
+}
+
+/// For a few pixels of each chapter's scene, the colour `--inspect X,Y --json` prints, encoded
+/// as the PNG encodes it, is that pixel of the `-o` render; the text form names the same
+/// pixel and chapter; neither writes a file.
+#[test]
+fn the_inspected_colour_is_the_rendered_pixel_in_every_chapter() {
+    let dir = tempfile::tempdir().unwrap();
+    for (n, (bin, scene)) in CHAPTERS.iter().enumerate() {
+        let scene = scene_path(scene);
+        let png = dir.path().join("out.png");
+        let size = ["--width", "80"];
+        let o = run(
+            bin,
+            &[&scene, "-o", png.to_str().unwrap(), size[0], size[1], "-q"],
+            dir.path(),
+        );
+        assert!(
+            o.status.success(),
+            "{bin}: {}",
+            String::from_utf8_lossy(&o.stderr)
+        );
+        let image = image::open(&png).unwrap().to_rgb8();
+        std::fs::remove_file(&png).unwrap();
+        let (w, h) = image.dimensions();
+        for (x, y) in [(w / 2, h / 2), (3, h - 2), (w - 5, 4), (w / 3, 2 * h / 3)] {
+            let pixel = format!("{x},{y}");
+            let o = run(
+                bin,
+                &[&scene, size[0], size[1], "--inspect", &pixel, "--json"],
+                dir.path(),
+            );
+            assert!(
+                o.status.success(),
+                "{bin}: {}",
+                String::from_utf8_lossy(&o.stderr)
+            );
+            let v: serde_json::Value = serde_json::from_slice(&o.stdout).expect("JSON");
+            assert_eq!(v["chapter"], n + 2);
+            assert_eq!(v["pixel"], serde_json::json!([x, y]));
+            let rgb: Vec<u8> = v["colour"]
+                .as_array()
+                .unwrap()
+                .iter()
+                .map(|c| to_byte(c.as_f64().unwrap() as Real))
+                .collect();
+            assert_eq!(rgb, image.get_pixel(x, y).0, "{bin} pixel ({x}, {y})");
+
+            let o = run(
+                bin,
+                &[&scene, size[0], size[1], "--inspect", &pixel],
+                dir.path(),
+            );
+            let text = String::from_utf8(o.stdout).unwrap();
+            let head = format!("pixel ({x}, {y}), chapter {}", n + 2);
+            assert!(text.starts_with(&head), "{text}");
+            assert!(text.contains("camera ray r(t) = e + d·t"), "{text}");
+        }
+        let left: Vec<_> = std::fs::read_dir(dir.path()).unwrap().collect();
+        assert!(left.is_empty(), "--inspect wrote {left:?}");
+    }
+}
+
+/// A pixel outside the image, a malformed X,Y, --json alone and --inspect with -o are each one
+/// line `error: …` with exit status 2; chapter 1 has no --inspect.
+#[test]
+fn bad_inspect_requests_exit_with_status_2() {
+    let dir = tempfile::tempdir().unwrap();
+    let ch05 = CHAPTERS[3].0;
+    let cases: [(&str, &[&str], &str); 6] = [
+        (ch05, &["--inspect", "640,0"], "outside the 640×480 image"),
+        (ch05, &["--inspect", "0,480"], "outside the 640×480 image"),
+        (ch05, &["--inspect", "3x4"], "expected X,Y"),
+        (ch05, &["--inspect", "-1,2"], "expected X,Y"),
+        (ch05, &["--json"], "--inspect"),
+        (
+            ch05,
+            &["--inspect", "1,1", "-o", "x.png"],
+            "cannot be used with",
+        ),
+    ];
+    for (bin, args, needle) in cases {
+        let o = run(bin, args, dir.path());
+        let err = String::from_utf8_lossy(&o.stderr);
+        assert_eq!(o.status.code(), Some(2), "{args:?}: {err}");
+        assert_eq!(err.lines().count(), 1, "{args:?}: {err}");
+        assert!(
+            err.starts_with("error: ") && err.contains(needle),
+            "{args:?}: {err}"
+        );
+        assert!(!err.contains("panicked"));
+    }
+    let ch01 = env!("CARGO_BIN_EXE_ch01_camera_rays");
+    assert_eq!(
+        run(ch01, &["--inspect", "1,1"], dir.path()).status.code(),
+        Some(2)
+    );
+    assert!(std::fs::read_dir(dir.path()).unwrap().next().is_none());
+}
