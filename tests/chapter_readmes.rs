@@ -138,3 +138,71 @@ fn every_formula_function_is_in_its_chapters_readme() {
     }
     assert!(absent.is_empty(), "not in their README: {absent:?}");
 }
+
+/// The chapter binaries, by name.
+const BINARIES: [(&str, &str); 4] = [
+    (
+        "ch02_generic_objects",
+        env!("CARGO_BIN_EXE_ch02_generic_objects"),
+    ),
+    ("ch03_shading", env!("CARGO_BIN_EXE_ch03_shading")),
+    ("ch04_shadows", env!("CARGO_BIN_EXE_ch04_shadows")),
+    (
+        "ch05_reflection_refraction",
+        env!("CARGO_BIN_EXE_ch05_reflection_refraction"),
+    ),
+];
+
+/// The text with every digit replaced by `#` (f32 prints other last digits than f64).
+fn digits_masked(text: &str) -> String {
+    text.chars()
+        .map(|c| if c.is_ascii_digit() { '#' } else { c })
+        .collect()
+}
+
+/// Chapters 2–5 show one inspected pixel of their scene: the command in the README, run now,
+/// prints exactly the tree the README shows (in an f32 build, the same lines with other
+/// digits), so the README cannot drift from the code.
+#[test]
+fn the_inspected_pixel_in_each_readme_is_what_the_binary_prints() {
+    for n in 2..=5u8 {
+        let text = readme(n);
+        let body = section(&text, "One pixel, inspected")
+            .unwrap_or_else(|| panic!("chapter {n}'s README has no \"One pixel, inspected\""));
+        let block = body
+            .split("```text\n")
+            .nth(1)
+            .and_then(|b| b.split("```").next())
+            .unwrap_or_else(|| panic!("chapter {n}: no ```text block"));
+        let (command, shown) = block.split_once('\n').unwrap();
+        let (bin, args) = command
+            .strip_prefix("$ cargo run --release --bin ")
+            .and_then(|c| c.split_once(" -- "))
+            .unwrap_or_else(|| panic!("chapter {n}: `{command}` is not a cargo run line"));
+        let exe = BINARIES
+            .iter()
+            .find(|(name, _)| *name == bin)
+            .unwrap_or_else(|| panic!("chapter {n}: no binary {bin}"))
+            .1;
+        assert!(args.contains("--inspect"), "{command}");
+        let out = std::process::Command::new(exe)
+            .args(args.split_whitespace())
+            .current_dir(root())
+            .output()
+            .unwrap();
+        assert!(
+            out.status.success(),
+            "{command}: {}",
+            String::from_utf8_lossy(&out.stderr)
+        );
+        let printed = String::from_utf8(out.stdout).unwrap();
+        if cfg!(feature = "f32") {
+            assert_eq!(digits_masked(&printed), digits_masked(shown), "chapter {n}");
+        } else {
+            assert_eq!(
+                printed, shown,
+                "chapter {n}: rerun `{command}` and paste its output"
+            );
+        }
+    }
+}
