@@ -73,7 +73,7 @@ cli_values!(View {
     View::Color => "color": "the chapter's colour (default)",
     View::Flat => "flat": "the material's diffuse colour, unlit",
     View::Normals => "normals": "the normal facing the camera, (n + 1)/2",
-    View::Depth => "depth": "the distance to the nearest hit, near = white",
+    View::Depth => "depth": "the distance to the nearest hit, near = white, far = grey (scale 1/d)",
     View::Shadows => "shadows": "which lights reach each point: light 0 red, 1 green, 2 blue",
     View::Rays => "rays": "the rays each pixel casts, black (1) to white (the most possible)",
 });

@@ -142,8 +142,8 @@ fn the_heat_scale_brightens_from_black_to_white() {
     }
 }
 
-/// The depth view: grey 1 − 0.85·(d − near)/(far − near) with near and far measured by a probe
-/// before the first pixel, clamped, black for a miss. For a floor seen from above, the nearest
+/// The depth view: grey 0.15 + 0.85·(1/d − 1/far)/(1/near − 1/far) with near and far measured
+/// by a probe before the first pixel, clamped, black for a miss. For a floor seen from above, the nearest
 /// pixel is white, the farthest grey 0.15, and grey falls with distance.
 #[test]
 fn the_depth_view_scale_is_known_before_the_first_pixel() {
@@ -163,7 +163,10 @@ fn the_depth_view_scale_is_known_before_the_first_pixel() {
                 .map(|n| n.hit.t * ray.dir.length());
             let expected = match d {
                 None => Vec3::ZERO,
-                Some(d) => Vec3::splat(1.0 - 0.85 * ((d - near) / (far - near)).clamp(0.0, 1.0)),
+                Some(d) => {
+                    let x = (1.0 / d - 1.0 / far) / (1.0 / near - 1.0 / far);
+                    Vec3::splat(0.15 + 0.85 * x.clamp(0.0, 1.0))
+                }
             };
             assert_eq!(fb.get(x, y), expected, "({x}, {y})");
             pixels.push(fb.get(x, y).x);

@@ -32,7 +32,8 @@ pub enum View {
     Flat,
     /// The world normal n mapped to a colour, (n + 1)/2.
     Normals,
-    /// Distance to the nearest hit, near = white, far = dark (see [`super::views`]).
+    /// Distance to the nearest hit on an inverse scale, near = white, far = grey, a miss
+    /// black (see [`super::views`]).
     Depth,
     /// Which lights reach each point: light 0 red, 1 green, 2 blue … times the share that
     /// arrives (see [`super::views`]).

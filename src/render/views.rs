@@ -5,9 +5,11 @@
 //! of it) must come out as it does in the whole image, so every scale is fixed before the
 //! first pixel is traced ([`Scales::measure`], called when the tracer is made):
 //!
-//! - **depth**: the distance |t·d| to the nearest hit, white at the nearest distance a probe
-//!   of [`DEPTH_PROBES`]² camera rays spread over the image finds, grey 0.15 at its farthest
-//!   (nearer or farther pixels are clamped), black for a miss;
+//! - **depth**: the distance |t·d| to the nearest hit on an inverse scale, white at the nearest
+//!   distance a probe of [`DEPTH_PROBES`]² camera rays spread over the image finds, grey 0.15 at
+//!   its farthest (nearer or farther pixels are clamped), black for a miss. Grey falls with 1/d,
+//!   not d: a floor running to the horizon would otherwise squeeze every object into white;
+//!   with 1/d an object twice as far is about half as bright;
 //! - **rays per pixel**: the rays a pixel casts (camera, feelers, mirror, transmitted, over
 //!   all its samples) on a logarithmic heat scale, black for one ray to white for the most
 //!   the scene and options allow ([`Scales::rays_max`]);
@@ -58,16 +60,17 @@ impl Scales {
     }
 
     /// The depth view's grey for a camera ray whose nearest hit is at distance `distance`
-    /// (`None` for a miss, black).
+    /// (`None` for a miss, black): 0.15 + 0.85·(1/d − 1/far)/(1/near − 1/far), clamped to
+    /// [0.15, 1].
     #[must_use]
     pub fn depth(&self, distance: Option<Real>) -> Vec3 {
         let Some(d) = distance else {
             return Vec3::ZERO;
         };
         match self.depth {
-            Some((lo, hi)) if hi > lo => {
-                let x = ((d - lo) / (hi - lo)).clamp(0.0, 1.0);
-                Vec3::splat(1.0 - 0.85 * x)
+            Some((near, far)) if far > near => {
+                let x = ((1.0 / d - 1.0 / far) / (1.0 / near - 1.0 / far)).clamp(0.0, 1.0);
+                Vec3::splat(0.15 + 0.85 * x)
             }
             _ => Vec3::ONE,
         }
