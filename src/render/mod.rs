@@ -4,7 +4,7 @@
 //! |---|---|
 //! | [`tracer`] | **the road of one pixel**: camera ray → nearest hit → local light → feelers → mirror and transmitted rays. Start reading here. |
 //! | [`options`] | the chapter ([`Stage`]), the [`View`] and the settings of a render ([`Options`]) |
-//! | [`tiles`] | the whole image in parallel tiles: [`render`], [`render_with`] |
+//! | [`tiles`] | the image in parallel tiles: [`render`], [`render_with`]; a [`Rect`] of it, cancellable between tiles, for the live window: [`render_rect`] |
 //! | [`packets`] | blocks of pixels traced together, the same image bit for bit |
 //! | [`sampling`] | where the samples of a pixel go |
 //! | [`framebuffer`] | the image in linear RGB ([`Framebuffer`]) |
@@ -33,5 +33,5 @@ pub use inspect::RayTree;
 pub use options::{Options, Stage, View};
 pub use recorder::{RayKind, Recorder, Stop};
 pub use stats::Stats;
-pub use tiles::{BLOCK, TILE, build_accel, render, render_with};
+pub use tiles::{BLOCK, Finished, Rect, TILE, build_accel, render, render_rect, render_with};
 pub use tracer::Tracer;
