@@ -268,12 +268,17 @@ impl<'a> Tracer<'a> {
                 rec.light(l, s, unshadowed, None, 1.0);
                 continue; // the light is behind the surface: nothing to shadow
             }
-            let feeler = self.feeler(s, light);
-            let arriving = match &feeler {
-                Some(feeler) => share(l, feeler),
-                None => 1.0,
+            let arriving = match self.feeler(s, light) {
+                Some(feeler) => {
+                    let arriving = share(l, &feeler);
+                    rec.light(l, s, unshadowed, Some(&feeler), arriving);
+                    arriving
+                }
+                None => {
+                    rec.light(l, s, unshadowed, None, 1.0);
+                    1.0
+                }
             };
-            rec.light(l, s, unshadowed, feeler.as_ref(), arriving);
             color += unshadowed * arriving;
         }
         rec.local(color);
@@ -294,6 +299,7 @@ impl<'a> Tracer<'a> {
 
     /// The share of its light that a feeler lets through: the product of the transmissions of
     /// the objects it crosses with u ∈ ]u_min, 1] ([`crate::shadow`]).
+    #[inline] // two callers (this road and the shadow-mask view): keep it in the road
     pub(crate) fn transmittance(&self, (feeler, u_min): &Feeler) -> Real {
         self.accel.transmittance(
             &self.scene.objects,
