@@ -26,7 +26,7 @@
 //! `transmission = 0`.
 //!
 //! Every stop tells a [`Recorder`] what it did ([`super::recorder`]): for a plain render that
-//! is [`Stats`], which counts the rays of each kind and nothing else; for `--inspect X,Y` it
+//! is [`Stats`](super::Stats), which counts the rays of each kind and nothing else; for `--inspect X,Y` it
 //! is [`super::inspect::TreeRecorder`], which keeps the whole ray tree of the pixel.
 //!
 //! The search for the nearest hit, and for what a feeler crosses, is asked of the acceleration
