@@ -215,13 +215,13 @@ fn progress_reports_every_tile_once_and_they_cover_the_rectangle() {
     }
 }
 
-/// A render whose `cancel()` says stop after `k` tiles, in a pool of `threads` threads:
-/// returns how it ended, the tiles finished, and the framebuffer.
-fn cancel_after(
+/// A render in a pool of `threads` threads whose `cancel()`, asked for the n-th time (from 0),
+/// says `stop(n)`: returns how it ended, the tiles finished, and the framebuffer.
+fn cancel_when(
     tracer: &Tracer,
     rect: Rect,
-    k: usize,
     threads: usize,
+    stop: &(dyn Fn(usize) -> bool + Sync),
 ) -> (Finished, Vec<Rect>, Framebuffer) {
     let pool = rayon::ThreadPoolBuilder::new()
         .num_threads(threads)
@@ -235,12 +235,23 @@ fn cancel_after(
             tracer,
             rect,
             &mut fb,
-            &|| asked.fetch_add(1, Ordering::SeqCst) >= k,
+            &|| stop(asked.fetch_add(1, Ordering::SeqCst)),
             &|t| tiles.lock().unwrap().push(t),
         )
     });
     let finished = finished.expect("the framebuffer is the image's size");
     (finished, tiles.into_inner().unwrap(), fb)
+}
+
+/// A render whose `cancel()` says stop from its (k+1)-th question on, in a pool of `threads`
+/// threads.
+fn cancel_after(
+    tracer: &Tracer,
+    rect: Rect,
+    k: usize,
+    threads: usize,
+) -> (Finished, Vec<Rect>, Framebuffer) {
+    cancel_when(tracer, rect, threads, &|n| n >= k)
 }
 
 /// Cancelled after k tiles on one thread: exactly k tiles are done, they hold the whole
@@ -301,28 +312,10 @@ fn one_stop_is_enough_to_cancel() {
     let (full, _) = render(&scene, &o);
     let tracer = Tracer::new(&scene, &o);
     for threads in [1, 3] {
-        let pool = rayon::ThreadPoolBuilder::new()
-            .num_threads(threads)
-            .build()
-            .expect("a thread pool");
-        let asked = AtomicUsize::new(0);
-        let tiles = Mutex::new(Vec::new());
-        let mut fb = sentinel_fb(W, H);
-        let finished = pool.install(|| {
-            render_rect(
-                &tracer,
-                Rect::new(0, 0, W, H),
-                &mut fb,
-                // stop on the fifth question only
-                &|| asked.fetch_add(1, Ordering::SeqCst) == 4,
-                &|t| tiles.lock().unwrap().push(t),
-            )
-        });
-        assert!(
-            matches!(finished, Ok(Finished::Cancelled(_))),
-            "{finished:?}"
-        );
-        let done = tiles.into_inner().unwrap();
+        // stop on the fifth question only
+        let (finished, done, fb) =
+            cancel_when(&tracer, Rect::new(0, 0, W, H), threads, &|n| n == 4);
+        assert!(finished.is_cancelled(), "{finished:?}");
         let wanted = if threads == 1 { 4..5 } else { 4..12 };
         assert!(
             wanted.contains(&done.len()),

@@ -520,26 +520,24 @@ fn write_ray(f: &mut fmt::Formatter<'_>, r: &RayNode, level: usize) -> fmt::Resu
             V(r.direction),
             V(r.colour)
         )?,
-        RayKind::Mirror => writeln!(
-            f,
-            "{pad}mirror ray (depth {}, k_r = {}, weight {}) from {} along l = {} → I_l = {}",
-            r.depth,
-            N(r.k),
-            N(r.weight),
-            V(r.origin),
-            V(r.direction),
-            V(r.colour)
-        )?,
-        RayKind::Transmitted => writeln!(
-            f,
-            "{pad}transmitted ray (depth {}, k_t = {}, weight {}) from {} along {} → I_r = {}",
-            r.depth,
-            N(r.k),
-            N(r.weight),
-            V(r.origin),
-            V(r.direction),
-            V(r.colour)
-        )?,
+        kind => {
+            // the mirror ray brings back I_l (counted k_r times), the transmitted ray I_r (k_t)
+            let (k, along, light) = match kind {
+                RayKind::Mirror => ("k_r", "along l = ", "I_l"),
+                _ => ("k_t", "along ", "I_r"),
+            };
+            writeln!(
+                f,
+                "{pad}{} ray (depth {}, {k} = {}, weight {}) from {} {along}{} → {light} = {}",
+                kind.name(),
+                r.depth,
+                N(r.k),
+                N(r.weight),
+                V(r.origin),
+                V(r.direction),
+                V(r.colour)
+            )?;
+        }
     }
     let pad = "  ".repeat(level + 1);
     let Some(h) = &r.hit else {
