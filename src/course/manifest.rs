@@ -64,6 +64,31 @@ pub struct Entry {
     pub formula: String,
     /// The line of the entry's `function` key in the manifest (from 1).
     pub line: usize,
+    /// The exercise the function is: its id, title, task, hints and points.
+    pub exercise: Exercise,
+}
+
+/// The exercise a formula function is, for the handout, `whitted learn` and grading.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Exercise {
+    /// `chapter.k`: the k-th function of its chapter in the manifest (`2.3`).
+    pub id: String,
+    /// A few words naming it ("The sphere's discriminant").
+    pub title: String,
+    /// What to write: the contract the function must keep (its signature is in the source).
+    pub task: String,
+    /// Two or three hints, from a nudge to nearly the answer.
+    pub hints: Vec<String>,
+    /// What the exercise is worth.
+    pub points: u32,
+}
+
+impl Exercise {
+    /// The prefix of the names of the exercise's own tests: `ex2_3_` for exercise 2.3.
+    #[must_use]
+    pub fn test_prefix(&self) -> String {
+        format!("ex{}_", self.id.replace('.', "_"))
+    }
 }
 
 #[derive(Deserialize)]
@@ -88,6 +113,11 @@ struct RawEntry {
     chapter: Spanned<i64>,
     section: Spanned<String>,
     formula: Spanned<String>,
+    id: Option<Spanned<String>>,
+    title: Option<Spanned<String>>,
+    task: Option<Spanned<String>>,
+    hints: Option<Spanned<Vec<String>>>,
+    points: Option<Spanned<i64>>,
 }
 
 /// Reads and checks the manifest at `path`; messages name the path as given.
@@ -144,6 +174,7 @@ pub fn parse(text: &str, file: &str) -> Result<Manifest, Error> {
 
     let mut entries = Vec::with_capacity(raw.formula.len());
     let mut seen: HashMap<String, usize> = HashMap::new();
+    let mut per_chapter = [0usize; 5];
     for spanned in &raw.formula {
         let raw = spanned.get_ref();
         let function = raw.function.get_ref().trim();
@@ -190,12 +221,16 @@ pub fn parse(text: &str, file: &str) -> Result<Manifest, Error> {
                 "formula: expected the formula in the notes' symbols, found an empty string".into(),
             ));
         }
+        per_chapter[usize::from(chapter) - 1] += 1;
+        let id = format!("{chapter}.{}", per_chapter[usize::from(chapter) - 1]);
+        let exercise = exercise(raw, id, spanned.span(), &err)?;
         entries.push(Entry {
             function: function.to_string(),
             chapter,
             section: section.clone(),
             formula: formula.to_string(),
             line,
+            exercise,
         });
     }
 
@@ -203,6 +238,87 @@ pub fn parse(text: &str, file: &str) -> Result<Manifest, Error> {
         file: file.to_string(),
         prove,
         entries,
+    })
+}
+
+/// The most points one exercise may be worth.
+pub const MAX_POINTS: u32 = 100;
+
+/// Checks an entry's exercise keys. `id` is the one its place gives (`chapter.k`); the
+/// entry's `id` key must say the same, so that a reader of the file sees it.
+fn exercise(
+    raw: &RawEntry,
+    id: String,
+    table: Range<usize>,
+    err: &impl Fn(Range<usize>, String) -> Error,
+) -> Result<Exercise, Error> {
+    let missing = |key: &str| {
+        err(
+            table.clone(),
+            format!(
+                "[[formula]] for {}: the exercise key `{key}` is missing",
+                raw.function.get_ref()
+            ),
+        )
+    };
+    let given = raw.id.as_ref().ok_or_else(|| missing("id"))?;
+    if given.get_ref().trim() != id {
+        return Err(err(
+            given.span(),
+            format!(
+                "id: expected \"{id}\" (chapter.k, k counting this chapter's [[formula]] tables in order), found {:?}",
+                given.get_ref()
+            ),
+        ));
+    }
+    let text = |key: &str, value: &Option<Spanned<String>>| -> Result<String, Error> {
+        let value = value.as_ref().ok_or_else(|| missing(key))?;
+        let t = value.get_ref().trim();
+        if t.is_empty() {
+            return Err(err(
+                value.span(),
+                format!("{key}: expected some text, found an empty string"),
+            ));
+        }
+        Ok(t.to_string())
+    };
+    let title = text("title", &raw.title)?;
+    let task = text("task", &raw.task)?;
+    let hints = raw.hints.as_ref().ok_or_else(|| missing("hints"))?;
+    let list: Vec<String> = hints
+        .get_ref()
+        .iter()
+        .map(|h| h.trim().to_string())
+        .collect();
+    if !(2..=3).contains(&list.len()) || list.iter().any(String::is_empty) {
+        return Err(err(
+            hints.span(),
+            format!(
+                "hints: expected two or three hints (a nudge first, nearly the answer last), found {} ({} empty)",
+                list.len(),
+                list.iter().filter(|h| h.is_empty()).count()
+            ),
+        ));
+    }
+    let points = raw.points.as_ref().ok_or_else(|| missing("points"))?;
+    let value = u32::try_from(*points.get_ref())
+        .ok()
+        .filter(|p| (1..=MAX_POINTS).contains(p))
+        .ok_or_else(|| {
+            err(
+                points.span(),
+                format!(
+                    "points: expected 1 to {MAX_POINTS}, found {}",
+                    points.get_ref()
+                ),
+            )
+        })?;
+    Ok(Exercise {
+        id,
+        title,
+        task,
+        hints: list,
+        points: value,
     })
 }
 
