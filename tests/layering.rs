@@ -129,6 +129,12 @@ fn the_road_of_one_pixel_holds_no_speed_machinery() {
     for word in ["packet", "tile", "mailbox", "counters", "rayon", "block"] {
         assert!(!code.contains(word), "the road's code mentions `{word}`");
     }
-    let lines = text.lines().count();
+    // the exercises' marker lines (`// BEGIN SOLUTION 3.7`, `// END SOLUTION`) do not count
+    let lines = text
+        .lines()
+        .filter(|l| {
+            !l.trim_start().starts_with("// BEGIN SOLUTION") && l.trim() != "// END SOLUTION"
+        })
+        .count();
     assert!(lines <= 400, "the road is {lines} lines long");
 }

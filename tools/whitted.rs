@@ -1,9 +1,13 @@
-//! `whitted` — the course tools: the formula functions of the notes, listed and proven.
+//! `whitted` — the course tools: the formula functions of the notes (the exercises), a
+//! student's handout, and the student's loop.
 //!
 //! ```text
 //! whitted formulas                                  the manifest, by chapter, with file:line
 //! whitted formulas --prove [--only PATH]... [--keep] [--features f32]
 //!                                                   poison each function, run the render paths
+//! whitted handout --out DIR [--chapters 1-3 | --exercises 2.3,2.4]
+//!                                                   a student's copy, the exercises as todo!()
+//! whitted learn [list | hint [ID] | watch]          progress, the next exercise, hints, rerun on save
 //! ```
 //!
 //! Exit status: 0 when everything asked for is fine, 1 when some function is not proven,
@@ -36,6 +40,65 @@ enum Command {
     /// ("poisoned"), and every test of tests/render_paths.rs for its chapter must then fail.
     /// Exit status: 0 all proven, 1 some not, 2 on an error.
     Formulas(Formulas),
+    /// Writes a student's copy of the project, with exercises taken out.
+    ///
+    /// Each chosen exercise's reference body (between `// BEGIN SOLUTION ID` and
+    /// `// END SOLUTION` in src/) becomes `todo!("exercise ID: … — see chapters/…/README.md")`;
+    /// the others keep their reference code. Of tests/, only the targets of the manifest's
+    /// [handout] tests go along; .ci/ stays behind. Without --chapters or --exercises, every
+    /// exercise is taken out. DIR must not exist (or be empty).
+    Handout(HandoutArgs),
+    /// The student's loop: progress, the next exercise and its failing test, hints.
+    ///
+    /// Runs the exercise tests (`cargo test` on the manifest's [handout] tests) and shows, per
+    /// chapter, how many exercises pass, then the next one to write with its first failing
+    /// test, the formula it checks and the notes' section. Colour only on a terminal, and not
+    /// with NO_COLOR set.
+    Learn(LearnArgs),
+}
+
+#[derive(clap::Args)]
+struct HandoutArgs {
+    /// The directory to write the student's copy into (it must not exist, or be empty).
+    #[arg(long, value_name = "DIR")]
+    out: PathBuf,
+    /// Take out the exercises of these chapters only: 4, or a range such as 1-3.
+    #[arg(long, value_name = "N|A-B", value_parser = whitted::course::handout::parse_chapters,
+          conflicts_with = "exercises")]
+    chapters: Option<(u8, u8)>,
+    /// Take out these exercises only, by id (comma-separated): 2.3,2.4.
+    #[arg(long, value_name = "IDS", value_delimiter = ',')]
+    exercises: Vec<String>,
+    /// The project to copy [default: the nearest Cargo.toml at or above the current directory].
+    #[arg(long, value_name = "DIR")]
+    root: Option<PathBuf>,
+}
+
+#[derive(clap::Args)]
+struct LearnArgs {
+    #[command(subcommand)]
+    what: Option<LearnCommand>,
+    /// The project [default: the nearest Cargo.toml at or above the current directory].
+    #[arg(long, value_name = "DIR", global = true)]
+    root: Option<PathBuf>,
+}
+
+#[derive(Subcommand)]
+enum LearnCommand {
+    /// Every exercise, by chapter, with its state (done, to do, failing) and points.
+    List,
+    /// The next hint of an exercise (the next unfinished one without ID); ask again for more.
+    Hint {
+        /// The exercise, e.g. 2.3.
+        id: Option<String>,
+    },
+    /// Reruns the tests on every save, and renders the chapter's scene to
+    /// .whitted/chNN_….png each time one of its exercises turns green.
+    Watch {
+        /// Stop after this many reruns (for scripts); without it, run until Ctrl-C.
+        #[arg(long, value_name = "N")]
+        cycles: Option<usize>,
+    },
 }
 
 #[derive(clap::Args)]
@@ -71,6 +134,8 @@ fn main() -> ExitCode {
     let args: Args = whitted::cli::parse_args();
     let result = match args.command {
         Command::Formulas(f) => formulas(&f),
+        Command::Handout(h) => handout(&h),
+        Command::Learn(l) => learn(&l),
     };
     match result {
         Ok(code) => code,
@@ -119,6 +184,100 @@ fn formulas(args: &Formulas) -> Result<ExitCode, Error> {
     } else {
         ExitCode::from(1)
     })
+}
+
+fn handout(args: &HandoutArgs) -> Result<ExitCode, Error> {
+    let root = match &args.root {
+        Some(root) => root.clone(),
+        None => find_root()?,
+    };
+    let manifest = read_manifest(&root)?;
+    let selected = whitted::course::handout::select(&manifest, args.chapters, &args.exercises)?;
+    let made = whitted::course::handout::write(&root, &manifest, &selected, &args.out)?;
+    let ids: Vec<&str> = made
+        .stripped
+        .iter()
+        .map(|&i| manifest.entries[i].exercise.id.as_str())
+        .collect();
+    println!(
+        "wrote {} ({} files): {} exercise{} to write ({}); in it, run `cargo run --release --bin whitted -- learn`",
+        args.out.display(),
+        made.files,
+        ids.len(),
+        if ids.len() == 1 { "" } else { "s" },
+        if ids.len() == manifest.entries.len() {
+            "all".to_string()
+        } else {
+            ids.join(", ")
+        }
+    );
+    Ok(ExitCode::SUCCESS)
+}
+
+fn learn(args: &LearnArgs) -> Result<ExitCode, Error> {
+    use whitted::course::learn::{self, State, Style};
+    let root = match &args.root {
+        Some(root) => root.clone(),
+        None => find_root()?,
+    };
+    let manifest = read_manifest(&root)?;
+    let style = Style::detect();
+    match &args.what {
+        None => {
+            let run = learn::run_tests(&root, &manifest)?;
+            let states = learn::states(&manifest, &run);
+            print!("{}", learn::report(&manifest, &run, &states, style));
+            Ok(if run.build_errors.is_some() {
+                ExitCode::from(1)
+            } else {
+                ExitCode::SUCCESS
+            })
+        }
+        Some(LearnCommand::List) => {
+            let run = learn::run_tests(&root, &manifest)?;
+            let states = learn::states(&manifest, &run);
+            if let Some(errors) = &run.build_errors {
+                println!(
+                    "the project does not build, so no test ran:
+
+{errors}
+"
+                );
+            }
+            print!("{}", learn::list(&manifest, &states, style));
+            Ok(ExitCode::SUCCESS)
+        }
+        Some(LearnCommand::Hint { id }) => {
+            let index = match id {
+                Some(id) => manifest
+                    .entries
+                    .iter()
+                    .position(|e| e.exercise.id == id.trim())
+                    .ok_or_else(|| {
+                        Error::Usage(format!(
+                            "there is no exercise {id}: `whitted learn list` shows the ids"
+                        ))
+                    })?,
+                None => {
+                    let run = learn::run_tests(&root, &manifest)?;
+                    let states = learn::states(&manifest, &run);
+                    match states.iter().position(|s| *s != State::Done) {
+                        Some(i) => i,
+                        None => {
+                            println!("every exercise passes: no hint needed");
+                            return Ok(ExitCode::SUCCESS);
+                        }
+                    }
+                }
+            };
+            print!("{}", learn::next_hint(&root, &manifest, index)?);
+            Ok(ExitCode::SUCCESS)
+        }
+        Some(LearnCommand::Watch { cycles }) => {
+            learn::watch(&root, &manifest, style, *cycles)?;
+            Ok(ExitCode::SUCCESS)
+        }
+    }
 }
 
 /// The nearest directory at or above the current one that holds a Cargo.toml.

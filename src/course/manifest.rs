@@ -29,6 +29,8 @@ pub struct Manifest {
     pub file: String,
     /// How the proof finds the render paths.
     pub prove: Prove,
+    /// What a handout holds.
+    pub handout: HandoutTable,
     /// The formula functions, in the file's order; an entry's index is its number in the proof.
     pub entries: Vec<Entry>,
 }
@@ -49,6 +51,14 @@ impl Prove {
         self.filter
             .replace(CHAPTER_PLACEHOLDER, &chapter.to_string())
     }
+}
+
+/// The `[handout]` table: which test targets a student's copy keeps.
+#[derive(Clone, Debug, PartialEq)]
+pub struct HandoutTable {
+    /// The test targets (files of `tests/` without `.rs`, or directories with a `main.rs`)
+    /// that go into a handout; the others are the instructor's.
+    pub tests: Vec<String>,
 }
 
 /// One `[[formula]]` entry: a function and the formula of the notes it computes.
@@ -95,6 +105,7 @@ impl Exercise {
 #[serde(deny_unknown_fields)]
 struct RawManifest {
     prove: Spanned<RawProve>,
+    handout: Spanned<RawHandout>,
     #[serde(default)]
     formula: Vec<Spanned<RawEntry>>,
 }
@@ -104,6 +115,12 @@ struct RawManifest {
 struct RawProve {
     test: Spanned<String>,
     filter: Spanned<String>,
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct RawHandout {
+    tests: Spanned<Vec<String>>,
 }
 
 #[derive(Deserialize)]
@@ -163,6 +180,34 @@ pub fn parse(text: &str, file: &str) -> Result<Manifest, Error> {
     let prove = Prove {
         test: test.get_ref().clone(),
         filter: filter.get_ref().clone(),
+    };
+
+    let tests = &raw.handout.get_ref().tests;
+    if tests.get_ref().is_empty()
+        || tests
+            .get_ref()
+            .iter()
+            .any(|t| t.is_empty() || t.contains(['/', '\\', ' ']) || t.ends_with(".rs"))
+    {
+        return Err(err(
+            tests.span(),
+            format!(
+                "handout.tests: expected the names of test targets (files of tests/ without .rs), found {:?}",
+                tests.get_ref()
+            ),
+        ));
+    }
+    if !tests.get_ref().contains(&prove.test) {
+        return Err(err(
+            tests.span(),
+            format!(
+                "handout.tests: the render paths `{}` of [prove] must go into the handout too",
+                prove.test
+            ),
+        ));
+    }
+    let handout = HandoutTable {
+        tests: tests.get_ref().clone(),
     };
 
     if raw.formula.is_empty() {
@@ -237,6 +282,7 @@ pub fn parse(text: &str, file: &str) -> Result<Manifest, Error> {
     Ok(Manifest {
         file: file.to_string(),
         prove,
+        handout,
         entries,
     })
 }

@@ -30,6 +30,8 @@
 //! The binary `whitted` exposes them: `whitted formulas` lists the manifest with each
 //! function's `file:line`, `whitted formulas --prove` runs the proof.
 
+pub mod handout;
+pub mod learn;
 pub mod manifest;
 pub mod prove;
 pub mod source;

@@ -456,7 +456,7 @@ fn verdict(run: &TestRun, filter: &str) -> Verdict {
 
 /// The files to copy, relative to `root`: what git lists (tracked, or untracked and not
 /// ignored), or else every file outside `target/` and `.git/`.
-fn project_files(root: &Path) -> Result<Vec<PathBuf>, Error> {
+pub(crate) fn project_files(root: &Path) -> Result<Vec<PathBuf>, Error> {
     let listed = Command::new("git")
         .args([
             "ls-files",

@@ -23,13 +23,9 @@
 //!
 //! The scene decides which stops are needed: no feeler for a light with `shadows = false`, no
 //! mirror ray from a material with `reflection = 0`, no transmitted ray where
-//! `transmission = 0`.
-//!
-//! Every stop tells a [`Recorder`] what it did ([`super::recorder`]): for a plain render that
-//! is [`Stats`](super::Stats), which counts the rays of each kind and nothing else; for `--inspect X,Y` it
-//! is [`super::inspect::TreeRecorder`], which keeps the whole ray tree of the pixel.
-//!
-//! The search for the nearest hit, and for what a feeler crosses, is asked of the acceleration
+//! `transmission = 0`. Every stop tells a [`Recorder`] what it did: a plain render's
+//! [`Stats`](super::Stats) counts rays, `--inspect`'s [`super::inspect::TreeRecorder`] keeps
+//! the ray tree. The nearest hit, and what a feeler crosses, are asked of the acceleration
 //! structure ([`crate::accel`]), which gives exactly what testing every object in turn gives.
 //! Tiles ([`super::tiles`]) and packets ([`super::packets`]) sit around this road and call
 //! the same functions.
