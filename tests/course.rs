@@ -5,7 +5,7 @@
 use std::path::{Path, PathBuf};
 
 use whitted::course::Error;
-use whitted::course::manifest::{self, Entry, Prove};
+use whitted::course::manifest::{self, Entry, Exercise, Prove};
 use whitted::course::prove::{self, TestOutcome, guard, parse_libtest, poisoned_sources};
 use whitted::course::source::{self, Edit, edit_bodies, locate};
 
@@ -21,12 +21,26 @@ function = "camera::near_plane_half_height"
 chapter = 1
 section = "Principles of Ray Tracing"
 formula = "H = N·tan(θ/2)"
-
+id = "1.1"
+title = "The near plane's half height"
+task = "Return H."
+hints = ["Half the angle.", "Degrees to radians."]
+points = 2
 [[formula]]
 function = "shading::ambient"
 chapter = 3
 section = "Shading"
 formula = "I_a = ρ_a·I_m"
+id = "3.1"
+title = "Ambient light"
+task = "Return ρ_a·I_m."
+hints = ["Per channel.", "A product of two vectors."]
+points = 1
+needs = ["1.1"]
+renders = ["render_paths::ch3_"]
+
+[handout]
+tests = ["ch03_shading", "render_paths"]
 "#;
 
 /// The (line, column, message) of a manifest error; panics on success or another error.
@@ -68,13 +82,31 @@ fn a_good_manifest_reads_every_entry_in_order() {
                 section: "Principles of Ray Tracing".into(),
                 formula: "H = N·tan(θ/2)".into(),
                 line: 7,
+                exercise: Exercise {
+                    id: "1.1".into(),
+                    title: "The near plane's half height".into(),
+                    task: "Return H.".into(),
+                    hints: vec!["Half the angle.".into(), "Degrees to radians.".into()],
+                    points: 2,
+                    needs: vec![],
+                    renders: vec![],
+                },
             },
             Entry {
                 function: "shading::ambient".into(),
                 chapter: 3,
                 section: "Shading".into(),
                 formula: "I_a = ρ_a·I_m".into(),
-                line: 13,
+                line: 17,
+                exercise: Exercise {
+                    id: "3.1".into(),
+                    title: "Ambient light".into(),
+                    task: "Return ρ_a·I_m.".into(),
+                    hints: vec!["Per channel.".into(), "A product of two vectors.".into()],
+                    points: 1,
+                    needs: vec!["1.1".into()],
+                    renders: vec!["render_paths::ch3_".into()],
+                },
             },
         ]
     );
@@ -85,7 +117,7 @@ fn a_good_manifest_reads_every_entry_in_order() {
 fn an_unknown_key_is_an_error_at_its_line_and_column() {
     let text = GOOD.replace("chapter = 3\n", "chapter = 3\ncolour = \"red\"\n");
     let (line, col, message) = manifest_error(&text);
-    assert_eq!((line, col), (15, 1));
+    assert_eq!((line, col), (19, 1));
     assert!(message.starts_with("unknown field `colour`"), "{message}");
 
     let text = GOOD.replace("filter =", "jobs = 2\nfilter =");
@@ -99,7 +131,7 @@ fn an_unknown_key_is_an_error_at_its_line_and_column() {
 fn a_function_listed_twice_is_an_error_at_the_second() {
     let text = GOOD.replace("\"shading::ambient\"", "\"camera::near_plane_half_height\"");
     let (line, col, message) = manifest_error(&text);
-    assert_eq!((line, col), (13, 12));
+    assert_eq!((line, col), (17, 12));
     assert_eq!(
         message,
         "function camera::near_plane_half_height is listed twice (first on line 7)"
@@ -112,12 +144,12 @@ fn a_chapter_outside_one_to_five_is_an_error() {
     for bad in ["0", "6", "-1"] {
         let text = GOOD.replace("chapter = 3", &format!("chapter = {bad}"));
         let (line, col, message) = manifest_error(&text);
-        assert_eq!((line, col), (14, 11), "chapter = {bad}");
+        assert_eq!((line, col), (18, 11), "chapter = {bad}");
         assert_eq!(message, format!("chapter: expected 1 to 5, found {bad}"));
     }
     let text = GOOD.replace("chapter = 3", "chapter = \"three\"");
     let (line, col, _) = manifest_error(&text);
-    assert_eq!((line, col), (14, 11));
+    assert_eq!((line, col), (18, 11));
 }
 
 /// A section must be one of the notes' titles, and a function a path of at least two names.
@@ -125,7 +157,7 @@ fn a_chapter_outside_one_to_five_is_an_error() {
 fn an_unknown_section_or_a_malformed_path_is_an_error() {
     let text = GOOD.replace("section = \"Shading\"", "section = \"Shadows\"");
     let (line, col, message) = manifest_error(&text);
-    assert_eq!((line, col), (15, 11));
+    assert_eq!((line, col), (19, 11));
     assert!(
         message.starts_with("section: \"Shadows\" is not a section of the course notes"),
         "{message}"
@@ -139,7 +171,7 @@ fn an_unknown_section_or_a_malformed_path_is_an_error() {
     ] {
         let text = GOOD.replace("shading::ambient", bad);
         let (line, col, message) = manifest_error(&text);
-        assert_eq!((line, col), (13, 12), "{bad}");
+        assert_eq!((line, col), (17, 12), "{bad}");
         assert!(
             message.starts_with("function: expected a path"),
             "{message}"
@@ -151,7 +183,8 @@ fn an_unknown_section_or_a_malformed_path_is_an_error() {
 #[test]
 fn a_manifest_without_entries_or_prove_is_an_error() {
     let cut = GOOD.find("[[formula]]").unwrap();
-    let (line, _, message) = manifest_error(&GOOD[..cut]);
+    let no_entries = format!("{}[handout]\ntests = [\"render_paths\"]\n", &GOOD[..cut]);
+    let (line, _, message) = manifest_error(&no_entries);
     assert_eq!(line, 2);
     assert!(
         message.starts_with("the manifest lists no function"),
@@ -330,7 +363,7 @@ fn the_proof_refuses_a_const_fn() {
     let err = prove::locate_all(dir.path(), &m).unwrap_err().to_string();
     assert_eq!(
         err,
-        "m.toml:13: geo::fixed: is a const fn (src/geo.rs:30): its body cannot test the poison switch"
+        "m.toml:17: geo::fixed: is a const fn (src/geo.rs:30): its body cannot test the poison switch"
     );
 }
 
@@ -437,4 +470,67 @@ fn libtest_results_are_read_line_by_line() {
             ("ch2_slow".to_string(), TestOutcome::Ignored),
         ]
     );
+}
+
+// ── the exercises ───────────────────────────────────────────────────────────────────────────
+
+/// Every exercise key is required; the id must be chapter.k in the file's order; two or three
+/// hints; points 1 to 100; `needs` only names earlier exercises. Each mistake is reported at
+/// its line and column.
+#[test]
+fn the_exercise_keys_are_checked_where_they_stand() {
+    let text = GOOD.replace("points = 1\n", "");
+    let (line, _, message) = manifest_error(&text);
+    assert_eq!(line, 16, "{message}");
+    assert!(message.contains("`points` is missing"), "{message}");
+
+    let text = GOOD.replace("id = \"3.1\"", "id = \"3.2\"");
+    let (line, col, message) = manifest_error(&text);
+    assert_eq!((line, col), (21, 6));
+    assert!(message.starts_with("id: expected \"3.1\""), "{message}");
+
+    let text = GOOD.replace(
+        "hints = [\"Per channel.\", \"A product of two vectors.\"]",
+        "hints = [\"Per channel.\"]",
+    );
+    let (line, _, message) = manifest_error(&text);
+    assert_eq!(line, 24);
+    assert!(
+        message.starts_with("hints: expected two or three"),
+        "{message}"
+    );
+
+    let text = GOOD.replace("points = 2", "points = 0");
+    let (line, col, message) = manifest_error(&text);
+    assert_eq!((line, col), (15, 10));
+    assert_eq!(message, "points: expected 1 to 100, found 0");
+
+    let text = GOOD.replace("needs = [\"1.1\"]", "needs = [\"3.1\"]");
+    let (line, _, message) = manifest_error(&text);
+    assert_eq!(line, 26);
+    assert!(
+        message.starts_with("needs: \"3.1\" is not an exercise before 3.1"),
+        "{message}"
+    );
+}
+
+/// The exercise's own tests are those named after its id, and 2.1 is not a prefix of 2.10.
+#[test]
+fn an_exercises_tests_are_named_after_its_id() {
+    let m = manifest::parse(GOOD, "m.toml").unwrap();
+    assert_eq!(m.entries[1].exercise.test_prefix(), "ex3_1_");
+    let ten = Exercise {
+        id: "2.10".into(),
+        ..m.entries[1].exercise.clone()
+    };
+    assert!(
+        !"ex2_10_x".starts_with(
+            &Exercise {
+                id: "2.1".into(),
+                ..ten.clone()
+            }
+            .test_prefix()
+        )
+    );
+    assert!("ex2_10_x".starts_with(&ten.test_prefix()));
 }

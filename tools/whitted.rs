@@ -105,8 +105,16 @@ enum LearnCommand {
 struct Formulas {
     /// Run the proof: build a poisoned copy of the project once (into target/prove), check
     /// that the render paths pass unpoisoned, then poison each function in turn.
-    #[arg(long)]
+    #[arg(long, conflicts_with = "deps")]
     prove: bool,
+    /// Measure which tests of a handout depend on which exercise (poison each in turn and run
+    /// the manifest's [handout] tests), and compare with the manifest's `needs` and
+    /// `renders`; prints the lines to paste where they differ. Exit status 1 when they do.
+    #[arg(long)]
+    deps: bool,
+    /// Rewrite the "## Exercises" section of each chapter's README from the manifest.
+    #[arg(long, conflicts_with_all = ["prove", "deps"])]
+    readmes: bool,
     /// Prove only this function (a path as in the manifest, e.g. camera::viewing_basis);
     /// may be repeated.
     #[arg(long, value_name = "PATH", requires = "prove")]
@@ -152,6 +160,21 @@ fn formulas(args: &Formulas) -> Result<ExitCode, Error> {
         None => find_root()?,
     };
     let manifest = read_manifest(&root)?;
+    if args.deps {
+        return deps(&root, &manifest, args);
+    }
+    if args.readmes {
+        let changed = whitted::course::readme::write_all(&root, &manifest)?;
+        println!(
+            "{}",
+            if changed.is_empty() {
+                "the chapter READMEs' exercises are current".to_string()
+            } else {
+                format!("rewrote the exercises of {}", changed.join(", "))
+            }
+        );
+        return Ok(ExitCode::SUCCESS);
+    }
     if !args.prove {
         list(&root, &manifest)?;
         return Ok(ExitCode::SUCCESS);
@@ -278,6 +301,46 @@ fn learn(args: &LearnArgs) -> Result<ExitCode, Error> {
             Ok(ExitCode::SUCCESS)
         }
     }
+}
+
+/// `whitted formulas --deps`: measured dependencies against the manifest's.
+fn deps(root: &Path, manifest: &Manifest, args: &Formulas) -> Result<ExitCode, Error> {
+    use whitted::course::deps;
+    let options = Options {
+        keep: args.keep,
+        timeout: std::time::Duration::from_secs(args.timeout),
+        features: args.features.clone(),
+        ..Options::default()
+    };
+    let measured = deps::measure(root, manifest, &options)?;
+    let problems = deps::check(manifest, &measured);
+    for (e, failing) in manifest.entries.iter().zip(&measured.failing) {
+        println!(
+            "{:<5} {:<44} {:>3} tests fail without it",
+            e.exercise.id,
+            e.function,
+            failing.len()
+        );
+    }
+    if problems.is_empty() {
+        println!(
+            "the manifest's needs and renders agree with the {} tests measured",
+            measured.tests.len()
+        );
+        return Ok(ExitCode::SUCCESS);
+    }
+    for p in &problems {
+        println!("{p}");
+    }
+    println!(
+        "
+what the measurements say, to paste into {}:",
+        manifest.file
+    );
+    for line in deps::suggest(manifest, &measured) {
+        println!("{line}");
+    }
+    Ok(ExitCode::from(1))
 }
 
 /// The nearest directory at or above the current one that holds a Cargo.toml.

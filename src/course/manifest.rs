@@ -91,6 +91,12 @@ pub struct Exercise {
     pub hints: Vec<String>,
     /// What the exercise is worth.
     pub points: u32,
+    /// The exercises (ids) whose code this one's tests run too (it calls them): when one of
+    /// them is missing, this exercise's tests fail as well.
+    pub needs: Vec<String>,
+    /// The tests outside the exercises' own that need this one, as prefixes of
+    /// `target::test` (`render_paths::ch2_`): the render tests of the chapters it is on.
+    pub renders: Vec<String>,
 }
 
 impl Exercise {
@@ -135,6 +141,10 @@ struct RawEntry {
     task: Option<Spanned<String>>,
     hints: Option<Spanned<Vec<String>>>,
     points: Option<Spanned<i64>>,
+    #[serde(default)]
+    needs: Vec<Spanned<String>>,
+    #[serde(default)]
+    renders: Vec<Spanned<String>>,
 }
 
 /// Reads and checks the manifest at `path`; messages name the path as given.
@@ -279,6 +289,21 @@ pub fn parse(text: &str, file: &str) -> Result<Manifest, Error> {
         });
     }
 
+    // every `needs` names an exercise before it
+    for (i, (e, spanned)) in entries.iter().zip(&raw.formula).enumerate() {
+        for (need, at) in e.exercise.needs.iter().zip(&spanned.get_ref().needs) {
+            if !entries[..i].iter().any(|d| d.exercise.id == *need) {
+                return Err(err(
+                    at.span(),
+                    format!(
+                        "needs: {need:?} is not an exercise before {} (an exercise may only need earlier ones)",
+                        e.exercise.id
+                    ),
+                ));
+            }
+        }
+    }
+
     Ok(Manifest {
         file: file.to_string(),
         prove,
@@ -365,6 +390,16 @@ fn exercise(
         task,
         hints: list,
         points: value,
+        needs: raw
+            .needs
+            .iter()
+            .map(|n| n.get_ref().trim().to_string())
+            .collect(),
+        renders: raw
+            .renders
+            .iter()
+            .map(|r| r.get_ref().trim().to_string())
+            .collect(),
     })
 }
 

@@ -30,10 +30,12 @@
 //! The binary `whitted` exposes them: `whitted formulas` lists the manifest with each
 //! function's `file:line`, `whitted formulas --prove` runs the proof.
 
+pub mod deps;
 pub mod handout;
 pub mod learn;
 pub mod manifest;
 pub mod prove;
+pub mod readme;
 pub mod source;
 
 use std::path::PathBuf;

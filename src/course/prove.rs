@@ -192,14 +192,22 @@ pub const POISON_MODULE: &str = r#"
 /// The poison switch of `whitted formulas --prove`; it exists only in the proof's copy.
 #[doc(hidden)]
 pub mod __poison {
-    /// Whether formula function `k` is poisoned: `WHITTED_POISON` holds `k` (read once).
+    /// Whether formula function `k` is poisoned: `WHITTED_POISON` lists it (read once), as
+    /// numbers and ranges: `3`, `3,7`, `10-48`.
     pub fn on(k: usize) -> bool {
-        static POISONED: std::sync::OnceLock<Option<usize>> = std::sync::OnceLock::new();
-        *POISONED.get_or_init(|| {
-            std::env::var("WHITTED_POISON")
-                .ok()
-                .and_then(|v| v.trim().parse().ok())
-        }) == Some(k)
+        static POISONED: std::sync::OnceLock<Vec<(usize, usize)>> = std::sync::OnceLock::new();
+        POISONED
+            .get_or_init(|| {
+                let text = std::env::var("WHITTED_POISON").unwrap_or_default();
+                text.split(',')
+                    .filter_map(|part| {
+                        let (a, b) = part.split_once('-').unwrap_or((part, part));
+                        Some((a.trim().parse().ok()?, b.trim().parse().ok()?))
+                    })
+                    .collect()
+            })
+            .iter()
+            .any(|&(a, b)| (a..=b).contains(&k))
     }
 }
 "#;
@@ -503,7 +511,7 @@ fn walk(root: &Path, dir: &Path, files: &mut Vec<PathBuf>) -> Result<(), Error> 
 }
 
 /// Copies the project's files from `root` to `dest`; returns how many.
-fn copy_project(root: &Path, dest: &Path) -> Result<usize, Error> {
+pub(crate) fn copy_project(root: &Path, dest: &Path) -> Result<usize, Error> {
     let files = project_files(root)?;
     for file in &files {
         let to = dest.join(file);
@@ -523,9 +531,26 @@ fn build(
     test: &str,
     features: &[String],
 ) -> Result<PathBuf, Error> {
+    let mut built = build_tests(project, target_dir, &[test.to_string()], features)?;
+    built.remove(test).ok_or_else(|| {
+        Error::Proof(format!(
+            "cargo built no test executable for tests/{test}.rs"
+        ))
+    })
+}
+
+/// Builds the test targets `tests` of the project at `project` into `target_dir`; returns
+/// each one's executable, by target name.
+pub(crate) fn build_tests(
+    project: &Path,
+    target_dir: &Path,
+    tests: &[String],
+    features: &[String],
+) -> Result<BTreeMap<String, PathBuf>, Error> {
     let cargo = std::env::var_os("CARGO").unwrap_or_else(|| "cargo".into());
+    let test = tests.join(", ");
     eprintln!(
-        "proof: building the poisoned copy's tests/{test}.rs into {}{}",
+        "proof: building the poisoned copy's tests ({test}) into {}{}",
         target_dir.display(),
         if features.is_empty() {
             String::new()
@@ -533,16 +558,13 @@ fn build(
             format!(" with --features {}", features.join(","))
         }
     );
-    let mut args: Vec<String> = [
-        "test",
-        "--no-run",
-        "--locked",
-        "--test",
-        test,
-        "--message-format=json",
-    ]
-    .map(String::from)
-    .to_vec();
+    let mut args: Vec<String> = ["test", "--no-run", "--locked", "--message-format=json"]
+        .map(String::from)
+        .to_vec();
+    for t in tests {
+        args.push("--test".into());
+        args.push(t.clone());
+    }
     if !features.is_empty() {
         args.push("--features".into());
         args.push(features.join(","));
@@ -559,7 +581,7 @@ fn build(
         .stderr(Stdio::inherit())
         .output()
         .map_err(|e| Error::Proof(format!("cannot run cargo: {e}")))?;
-    let mut exe = None;
+    let mut exes = BTreeMap::new();
     let mut errors = Vec::new();
     for line in String::from_utf8_lossy(&out.stdout).lines() {
         let Ok(msg) = serde_json::from_str::<serde_json::Value>(line) else {
@@ -567,12 +589,16 @@ fn build(
         };
         match msg["reason"].as_str() {
             Some("compiler-artifact")
-                if msg["target"]["name"] == test
-                    && msg["target"]["kind"]
-                        .as_array()
-                        .is_some_and(|k| k.iter().any(|k| k == "test")) =>
+                if msg["target"]["kind"]
+                    .as_array()
+                    .is_some_and(|k| k.iter().any(|k| k == "test")) =>
             {
-                exe = msg["executable"].as_str().map(PathBuf::from);
+                if let (Some(name), Some(exe)) =
+                    (msg["target"]["name"].as_str(), msg["executable"].as_str())
+                    && tests.iter().any(|t| t == name)
+                {
+                    exes.insert(name.to_string(), PathBuf::from(exe));
+                }
             }
             Some("compiler-message") if msg["message"]["level"] == "error" => {
                 if let Some(text) = msg["message"]["rendered"].as_str() {
@@ -582,30 +608,30 @@ fn build(
             _ => {}
         }
     }
-    match exe {
-        Some(exe) if out.status.success() => Ok(exe),
+    match exes.len() == tests.len() {
+        true if out.status.success() => Ok(exes),
         _ => {
             for error in &errors {
                 eprint!("{error}");
             }
             Err(Error::Proof(format!(
-                "`cargo test --no-run --test {test}` fails in the poisoned copy; cargo's and the compiler's messages are above"
+                "`cargo test --no-run` of tests {test} fails in the poisoned copy; cargo's and the compiler's messages are above"
             )))
         }
     }
 }
 
 /// One run of the test executable.
-struct TestRun {
-    results: Vec<(String, TestOutcome)>,
-    success: bool,
+pub(crate) struct TestRun {
+    pub(crate) results: Vec<(String, TestOutcome)>,
+    pub(crate) success: bool,
     /// Why the run did not finish normally, if it did not.
-    unfinished: Option<String>,
+    pub(crate) unfinished: Option<String>,
 }
 
 /// Runs the test executable from `project`, with a test-name filter and a poisoned function
 /// (none for the baseline); its output goes to `log.out` and `log.err`.
-fn run_tests(
+pub(crate) fn run_tests(
     exe: &Path,
     project: &Path,
     filter: Option<&str>,
