@@ -464,7 +464,7 @@ fn verdict(run: &TestRun, filter: &str) -> Verdict {
 
 /// The files to copy, relative to `root`: what git lists (tracked, or untracked and not
 /// ignored), or else every file outside `target/` and `.git/`.
-pub(crate) fn project_files(root: &Path) -> Result<Vec<PathBuf>, Error> {
+pub fn project_files(root: &Path) -> Result<Vec<PathBuf>, Error> {
     let listed = Command::new("git")
         .args([
             "ls-files",
@@ -541,7 +541,7 @@ fn build(
 
 /// Builds the test targets `tests` of the project at `project` into `target_dir`; returns
 /// each one's executable, by target name.
-pub(crate) fn build_tests(
+pub fn build_tests(
     project: &Path,
     target_dir: &Path,
     tests: &[String],

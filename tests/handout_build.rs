@@ -1,0 +1,229 @@
+//! Handouts built and run, as a course uses them. These tests build copies of the project,
+//! so they are `#[ignore]`d in a plain `cargo test`; `.ci/run` runs them with
+//! `cargo test --release --test handout_build -- --ignored --test-threads 1`.
+//!
+//! - A handout of every exercise builds, and its tests fail exactly as the manifest says
+//!   (each exercise's own tests, those of the exercises that need it, and the render tests
+//!   its `renders` names) — set equality; `whitted learn` in it shows 0 of N and the first
+//!   exercise's failing test; a chapter binary says which exercise is missing, in one line.
+//! - A handout of chapter 4 alone fails exactly chapter 4's tests; putting its reference bodies
+//!   back one by one turns its exercises green in order, and `whitted learn` ends at N of N.
+//! - Across all chapters, exercise by exercise: in a copy where every exercise from the k-th
+//!   on is switched off (the poison switch of `whitted formulas --prove`, one build for all
+//!   steps), `whitted learn` shows k of N done and exercise k next, for k = 0 … N.
+
+use std::collections::BTreeSet;
+use std::path::{Path, PathBuf};
+use std::process::{Command, Output};
+
+use whitted::course::deps;
+use whitted::course::handout;
+use whitted::course::manifest::{self, Manifest};
+use whitted::course::prove::{self, TestOutcome, parse_libtest};
+
+fn root() -> PathBuf {
+    PathBuf::from(env!("CARGO_MANIFEST_DIR"))
+}
+
+fn manifest() -> Manifest {
+    manifest::load(&root().join(manifest::DEFAULT_PATH)).unwrap()
+}
+
+/// One target directory for every copy, so the dependencies are built once.
+fn target_dir() -> PathBuf {
+    root().join("target").join("handout")
+}
+
+fn cargo() -> Command {
+    let mut c = Command::new(std::env::var_os("CARGO").unwrap_or_else(|| "cargo".into()));
+    c.env("CARGO_TARGET_DIR", target_dir())
+        .env("CARGO_PROFILE_DEV_DEBUG", "0")
+        .env_remove("WHITTED_POISON");
+    c
+}
+
+fn text(o: &Output) -> String {
+    format!(
+        "{}{}",
+        String::from_utf8_lossy(&o.stdout),
+        String::from_utf8_lossy(&o.stderr)
+    )
+}
+
+/// Builds the handout's test targets in `project` and runs each: the failed and the passed
+/// tests, as `target::name`.
+fn run_tests(project: &Path, m: &Manifest) -> (BTreeSet<String>, BTreeSet<String>) {
+    let exes = prove::build_tests(project, &target_dir(), &m.handout.tests, &[]).unwrap();
+    let (mut failed, mut passed) = (BTreeSet::new(), BTreeSet::new());
+    for (target, exe) in exes {
+        let out = Command::new(&exe)
+            .args(["--test-threads", "2"])
+            .current_dir(project)
+            .env_remove("WHITTED_POISON")
+            .env_remove("WHITTED_BLESS")
+            .output()
+            .unwrap();
+        let stdout = String::from_utf8_lossy(&out.stdout);
+        assert!(stdout.contains("test result:"), "{target} crashed: {}", text(&out));
+        for (name, outcome) in parse_libtest(&stdout) {
+            let id = format!("{target}::{name}");
+            match outcome {
+                TestOutcome::Failed => failed.insert(id),
+                TestOutcome::Passed => passed.insert(id),
+                TestOutcome::Ignored => false,
+            };
+        }
+    }
+    (failed, passed)
+}
+
+/// The tests the manifest says fail when the exercises `stripped` are missing.
+fn expected(m: &Manifest, all: &BTreeSet<String>, stripped: &[usize]) -> BTreeSet<String> {
+    stripped
+        .iter()
+        .flat_map(|&i| deps::declared(m, all, i))
+        .collect()
+}
+
+/// Asserts two sets of tests are equal, listing the differences.
+#[track_caller]
+fn assert_same(failed: &BTreeSet<String>, expected: &BTreeSet<String>) {
+    let extra: Vec<_> = failed.difference(expected).collect();
+    let missing: Vec<_> = expected.difference(failed).collect();
+    assert!(
+        extra.is_empty() && missing.is_empty(),
+        "failing but not expected: {extra:?}\nexpected but passing: {missing:?}"
+    );
+}
+
+/// `whitted learn` (this build's) run on the project at `project`.
+fn learn(project: &Path, poison: Option<String>) -> String {
+    let mut c = Command::new(env!("CARGO_BIN_EXE_whitted"));
+    c.args(["learn", "--root"])
+        .arg(project)
+        .env("CARGO_TARGET_DIR", target_dir())
+        .env("CARGO_PROFILE_DEV_DEBUG", "0")
+        .env("NO_COLOR", "1")
+        .env_remove("WHITTED_POISON");
+    if let Some(p) = poison {
+        c.env("WHITTED_POISON", p);
+    }
+    let out = c.output().unwrap();
+    assert!(out.status.success(), "{}", text(&out));
+    String::from_utf8_lossy(&out.stdout).into_owned()
+}
+
+#[test]
+#[ignore = "builds a handout (minutes); .ci/run runs it"]
+fn a_full_handout_fails_exactly_the_tests_of_its_exercises() {
+    let m = manifest();
+    let n = m.entries.len();
+    let dir = tempfile::tempdir().unwrap();
+    let student = dir.path().join("student");
+    let all: Vec<usize> = (0..n).collect();
+    handout::write(&root(), &m, &all, &student).unwrap();
+
+    let built = cargo()
+        .args(["build", "--locked"])
+        .current_dir(&student)
+        .output()
+        .unwrap();
+    assert!(built.status.success(), "the handout does not build: {}", text(&built));
+
+    let (failed, passed) = run_tests(&student, &m);
+    let every: BTreeSet<String> = failed.union(&passed).cloned().collect();
+    assert_same(&failed, &expected(&m, &every, &all));
+    eprintln!("full handout: {} of {} tests fail, as the manifest says", failed.len(), every.len());
+
+    let report = learn(&student, None);
+    let first = &m.entries[0].exercise;
+    assert!(report.contains(&format!("0 of {n} exercises done")), "{report}");
+    assert!(report.contains(&format!("next: exercise {} — {}", first.id, first.title)), "{report}");
+    assert!(report.contains(&format!("failing: {}", first.test_prefix())), "{report}");
+
+    // a chapter binary over the missing exercises: one line, exit status 2
+    let exe = target_dir().join("debug").join("ch02_generic_objects");
+    let out = Command::new(exe)
+        .args(["--width", "8", "-o"])
+        .arg(dir.path().join("x.png"))
+        .output()
+        .unwrap();
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(2), "{err}");
+    assert_eq!(err.lines().count(), 1, "{err}");
+    assert!(err.starts_with("error: exercise ") && err.contains("is not written yet"), "{err}");
+    assert!(!dir.path().join("x.png").exists());
+}
+
+#[test]
+#[ignore = "builds a handout (minutes); .ci/run runs it"]
+fn a_chapter_handout_fails_its_tests_and_turns_green_as_the_bodies_come_back() {
+    let m = manifest();
+    let n = m.entries.len();
+    let chapter4 = handout::select(&m, Some((4, 4)), &[]).unwrap();
+    let dir = tempfile::tempdir().unwrap();
+    let student = dir.path().join("ch4");
+    handout::write(&root(), &m, &chapter4, &student).unwrap();
+    let (failed, passed) = run_tests(&student, &m);
+    let every: BTreeSet<String> = failed.union(&passed).cloned().collect();
+    assert_same(&failed, &expected(&m, &every, &chapter4));
+
+    // the reference bodies back, one at a time, in order
+    let regions = handout::regions(&root(), &m).unwrap();
+    let before = n - chapter4.len();
+    for (j, &i) in chapter4.iter().enumerate() {
+        let r = &regions[i];
+        let path = student.join(&r.file);
+        let now = std::fs::read_to_string(&path).unwrap();
+        let todo = format!("{}{}\n", r.indent, handout::todo_statement(&root(), &m.entries[i]));
+        let original = std::fs::read_to_string(root().join(&r.file)).unwrap();
+        let back = now.replacen(&todo, &original[r.bytes.clone()], 1);
+        assert_ne!(back, now, "exercise {}'s todo!() not found", m.entries[i].exercise.id);
+        std::fs::write(&path, back).unwrap();
+        let report = learn(&student, None);
+        let done = before + j + 1;
+        assert!(report.contains(&format!("{done} of {n} exercises done")), "{report}");
+        match chapter4.get(j + 1) {
+            Some(&next) => assert!(
+                report.contains(&format!("next: exercise {}", m.entries[next].exercise.id)),
+                "{report}"
+            ),
+            None => assert!(report.contains(&format!("all {n} exercises pass")), "{report}"),
+        }
+    }
+}
+
+#[test]
+#[ignore = "builds a poisoned copy and runs whitted learn N + 1 times (minutes); .ci/run runs it"]
+fn exercise_by_exercise_learn_counts_up_to_all_of_them() {
+    let m = manifest();
+    let n = m.entries.len();
+    let dir = tempfile::tempdir().unwrap();
+    let copy = dir.path().join("project");
+    // a copy of the project with every exercise behind the poison switch
+    for file in prove::project_files(&root()).unwrap() {
+        let to = copy.join(&file);
+        std::fs::create_dir_all(to.parent().unwrap()).unwrap();
+        std::fs::copy(root().join(&file), &to).unwrap();
+    }
+    let locations = prove::locate_all(&copy, &m).unwrap();
+    for (file, text) in prove::poisoned_sources(&copy, &m, &locations).unwrap() {
+        std::fs::write(copy.join(file), text).unwrap();
+    }
+    let lib = copy.join("src/lib.rs");
+    let lib_text = std::fs::read_to_string(&lib).unwrap() + prove::POISON_MODULE;
+    std::fs::write(&lib, lib_text).unwrap();
+
+    for k in 0..=n {
+        // exercises k … n−1 missing, those before written
+        let poison = (k < n).then(|| format!("{k}-{}", n - 1));
+        let report = learn(&copy, Some(poison.unwrap_or_default()));
+        assert!(report.contains(&format!("{k} of {n} exercises done")), "k = {k}: {report}");
+        if k < n {
+            let next = &m.entries[k].exercise;
+            assert!(report.contains(&format!("next: exercise {} —", next.id)), "k = {k}: {report}");
+        } else {
+            assert!(report.contains(&format!("all {n} exercises pass")), "{report}");
+        }
+    }
+}
