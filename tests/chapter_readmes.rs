@@ -206,3 +206,24 @@ fn the_inspected_pixel_in_each_readme_is_what_the_binary_prints() {
         }
     }
 }
+
+/// Each chapter README's "## Exercises" section is the one the manifest writes (ids, titles,
+/// functions, tasks, in order): `cargo run --bin whitted -- formulas --readmes` rewrites them.
+#[test]
+fn each_readme_lists_its_chapters_exercises_from_the_manifest() {
+    let root = root();
+    let m = manifest::load(&root.join(manifest::DEFAULT_PATH)).unwrap();
+    for n in 1..=5u8 {
+        let dir = whitted::course::handout::chapter_dir(&root, n);
+        let text = readme(n);
+        let want = whitted::course::readme::section(&m, n, &dir);
+        assert_eq!(
+            whitted::course::readme::replace_section(&text, &want),
+            text,
+            "chapter {n}'s exercises differ from the manifest: run `cargo run --bin whitted -- formulas --readmes`"
+        );
+        for e in m.entries.iter().filter(|e| e.chapter == n) {
+            assert!(text.contains(&format!("### {} {}", e.exercise.id, e.exercise.title)));
+        }
+    }
+}
