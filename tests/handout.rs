@@ -121,7 +121,7 @@ fn a_full_handout_holds_no_solution_and_no_instructor_material() {
     assert!(!files.keys().any(|p| p.starts_with("tests/extremes")));
     assert!(files.contains_key(Path::new("tests/common/mod.rs")));
     assert!(files.contains_key(Path::new("chapters/formulas.toml")));
-    assert!(files[Path::new("src/lib.rs")].contains("#![allow(unused_variables, dead_code)]"));
+    assert!(files[Path::new("src/lib.rs")].contains("#![allow(unused_variables, unused_imports, unused_mut, dead_code)]"));
 }
 
 /// The hints and tasks, which go into every handout with the manifest, never quote a line of

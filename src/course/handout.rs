@@ -33,7 +33,7 @@ pub const BEGIN: &str = "// BEGIN SOLUTION";
 pub const END: &str = "// END SOLUTION";
 
 /// The line the handout adds at the top of `src/lib.rs`, after the crate's documentation.
-pub const LIB_ALLOW: &str = "// handout: the parameters of the exercises still to write are unused until you write them\n#![allow(unused_variables, dead_code)]\n";
+pub const LIB_ALLOW: &str = "// handout: the parameters of the exercises still to write are unused until you write them\n#![allow(unused_variables, unused_imports, unused_mut, dead_code)]\n";
 
 /// A solution region of one exercise in its source file.
 #[derive(Clone, Debug, PartialEq, Eq)]
