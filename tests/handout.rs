@@ -45,10 +45,18 @@ fn every_exercise_has_one_solution_region_in_its_function() {
     let regions = handout::regions(&root(), &m).unwrap();
     assert_eq!(regions.len(), m.entries.len());
     for (r, e) in regions.iter().zip(&m.entries) {
-        assert!(!r.solution.trim().is_empty(), "{}: an empty solution", e.exercise.id);
+        assert!(
+            !r.solution.trim().is_empty(),
+            "{}: an empty solution",
+            e.exercise.id
+        );
         let text = std::fs::read_to_string(root().join(&r.file)).unwrap();
         let region = &text[r.bytes.clone()];
-        assert!(region.trim_start().starts_with(&format!("{BEGIN} {}", e.exercise.id)));
+        assert!(
+            region
+                .trim_start()
+                .starts_with(&format!("{BEGIN} {}", e.exercise.id))
+        );
         assert!(region.trim_end().ends_with(END));
     }
 }
@@ -59,7 +67,10 @@ fn unique_lines(m: &Manifest) -> Vec<(String, Vec<String>)> {
     let project = texts(&root());
     let regions = handout::regions(&root(), m).unwrap();
     let count = |line: &str| -> usize {
-        project.values().map(|t| t.lines().filter(|l| l.trim() == line).count()).sum()
+        project
+            .values()
+            .map(|t| t.lines().filter(|l| l.trim() == line).count())
+            .sum()
     };
     regions
         .iter()
@@ -89,14 +100,20 @@ fn a_full_handout_holds_no_solution_and_no_instructor_material() {
     assert_eq!(made.stripped, all);
     let files = texts(&out);
     for (id, lines) in unique_lines(&m) {
-        assert!(!lines.is_empty(), "exercise {id}: its solution has no line of its own to search for");
+        assert!(
+            !lines.is_empty(),
+            "exercise {id}: its solution has no line of its own to search for"
+        );
         for line in lines {
             let found: Vec<&PathBuf> = files
                 .iter()
                 .filter(|(_, t)| t.lines().any(|l| l.trim() == line))
                 .map(|(p, _)| p)
                 .collect();
-            assert!(found.is_empty(), "exercise {id}: `{line}` is still in {found:?}");
+            assert!(
+                found.is_empty(),
+                "exercise {id}: `{line}` is still in {found:?}"
+            );
         }
     }
     let all_text: String = files.values().cloned().collect();
@@ -108,20 +125,34 @@ fn a_full_handout_holds_no_solution_and_no_instructor_material() {
     assert!(!all_text.contains(BEGIN));
     // of tests/, the handout's targets and their helpers only; no CI
     for path in files.keys() {
-        let first = path.components().next().unwrap().as_os_str().to_string_lossy();
+        let first = path
+            .components()
+            .next()
+            .unwrap()
+            .as_os_str()
+            .to_string_lossy();
         assert_ne!(first, ".ci", "{path:?}");
         if first == "tests" && path.components().count() == 2 {
             let name = path.file_stem().unwrap().to_string_lossy();
-            assert!(m.handout.tests.iter().any(|t| *t == name), "{path:?} is not a handout target");
+            assert!(
+                m.handout.tests.iter().any(|t| *t == name),
+                "{path:?} is not a handout target"
+            );
         }
     }
     for t in &m.handout.tests {
-        assert!(files.contains_key(&PathBuf::from(format!("tests/{t}.rs"))), "{t}");
+        assert!(
+            files.contains_key(&PathBuf::from(format!("tests/{t}.rs"))),
+            "{t}"
+        );
     }
     assert!(!files.keys().any(|p| p.starts_with("tests/extremes")));
     assert!(files.contains_key(Path::new("tests/common/mod.rs")));
     assert!(files.contains_key(Path::new("chapters/formulas.toml")));
-    assert!(files[Path::new("src/lib.rs")].contains("#![allow(unused_variables, unused_imports, unused_mut, dead_code)]"));
+    assert!(
+        files[Path::new("src/lib.rs")]
+            .contains("#![allow(unused_variables, unused_imports, unused_mut, dead_code)]")
+    );
 }
 
 /// The hints and tasks, which go into every handout with the manifest, never quote a line of
@@ -129,11 +160,20 @@ fn a_full_handout_holds_no_solution_and_no_instructor_material() {
 #[test]
 fn the_hints_quote_no_line_of_a_solution() {
     let m = manifest();
-    let squash = |s: &str| s.chars().filter(|c| !c.is_whitespace() && *c != '`').collect::<String>();
+    let squash = |s: &str| {
+        s.chars()
+            .filter(|c| !c.is_whitespace() && *c != '`')
+            .collect::<String>()
+    };
     for r in handout::regions(&root(), &m).unwrap() {
         let x = &m.entries[r.entry].exercise;
         let words: Vec<String> = x.hints.iter().chain([&x.task]).map(|h| squash(h)).collect();
-        for line in r.solution.lines().map(str::trim).filter(|l| l.len() >= 12 && !l.starts_with("//")) {
+        for line in r
+            .solution
+            .lines()
+            .map(str::trim)
+            .filter(|l| l.len() >= 12 && !l.starts_with("//"))
+        {
             let line = squash(line.trim_end_matches(';'));
             assert!(
                 !words.iter().any(|w| w.contains(&line)),
@@ -171,15 +211,23 @@ fn a_chapter_handout_keeps_the_other_chapters_reference_code() {
 #[test]
 fn exercises_are_chosen_by_id_or_chapter() {
     let m = manifest();
-    assert_eq!(handout::select(&m, None, &[]).unwrap().len(), m.entries.len());
+    assert_eq!(
+        handout::select(&m, None, &[]).unwrap().len(),
+        m.entries.len()
+    );
     let two = handout::select(&m, None, &["2.3".into(), "1.1".into()]).unwrap();
     assert_eq!(
-        two.iter().map(|&i| m.entries[i].exercise.id.as_str()).collect::<Vec<_>>(),
+        two.iter()
+            .map(|&i| m.entries[i].exercise.id.as_str())
+            .collect::<Vec<_>>(),
         ["1.1", "2.3"]
     );
     let early = handout::select(&m, Some((1, 3)), &[]).unwrap();
     assert!(early.iter().all(|&i| m.entries[i].chapter <= 3));
-    assert_eq!(early.len(), m.entries.iter().filter(|e| e.chapter <= 3).count());
+    assert_eq!(
+        early.len(),
+        m.entries.iter().filter(|e| e.chapter <= 3).count()
+    );
     assert!(handout::select(&m, None, &["9.9".into()]).is_err());
     assert!(handout::select(&m, Some((0, 2)), &[]).is_err());
     assert!(handout::select(&m, Some((4, 2)), &[]).is_err());
@@ -197,10 +245,21 @@ fn a_handout_never_writes_over_a_directory_in_use() {
     let out = dir.path().join("taken");
     std::fs::create_dir(&out).unwrap();
     std::fs::write(out.join("notes.txt"), "mine").unwrap();
-    let err = handout::write(&root(), &m, &[0], &out).unwrap_err().to_string();
-    assert!(err.contains("exists and is not an empty directory"), "{err}");
-    assert_eq!(std::fs::read_to_string(out.join("notes.txt")).unwrap(), "mine");
-    let names: Vec<_> = std::fs::read_dir(dir.path()).unwrap().map(|e| e.unwrap().file_name()).collect();
+    let err = handout::write(&root(), &m, &[0], &out)
+        .unwrap_err()
+        .to_string();
+    assert!(
+        err.contains("exists and is not an empty directory"),
+        "{err}"
+    );
+    assert_eq!(
+        std::fs::read_to_string(out.join("notes.txt")).unwrap(),
+        "mine"
+    );
+    let names: Vec<_> = std::fs::read_dir(dir.path())
+        .unwrap()
+        .map(|e| e.unwrap().file_name())
+        .collect();
     assert_eq!(names.len(), 1, "{names:?}");
 }
 
@@ -236,11 +295,20 @@ fn learn_shows_progress_and_the_next_exercise() {
     let run = run_with_done(&m, 0);
     let states = learn::states(&m, &run);
     assert!(states.iter().all(|s| *s == State::ToDo));
-    let text = learn::report(&m, &run, &states, Style::plain());
+    let text = learn::report(&m, &run, &states, Style::plain(), None);
     assert!(text.contains(&format!("0 of {n} exercises done")), "{text}");
     let first = &m.entries[0];
-    assert!(text.contains(&format!("next: exercise {} — {}", first.exercise.id, first.exercise.title)), "{text}");
-    assert!(text.contains(&format!("failing: {}works", first.exercise.test_prefix())), "{text}");
+    assert!(
+        text.contains(&format!(
+            "next: exercise {} — {}",
+            first.exercise.id, first.exercise.title
+        )),
+        "{text}"
+    );
+    assert!(
+        text.contains(&format!("failing: {}works", first.exercise.test_prefix())),
+        "{text}"
+    );
     assert!(text.contains(&first.formula), "{text}");
     assert!(!text.contains('\x1b'), "no colour when asked for none");
 
@@ -248,16 +316,28 @@ fn learn_shows_progress_and_the_next_exercise() {
     let half = n / 2;
     let run = run_with_done(&m, half);
     let states = learn::states(&m, &run);
-    let text = learn::report(&m, &run, &states, Style::plain());
-    assert!(text.contains(&format!("{half} of {n} exercises done")), "{text}");
-    assert!(text.contains(&format!("next: exercise {}", m.entries[half].exercise.id)), "{text}");
+    let text = learn::report(&m, &run, &states, Style::plain(), None);
+    assert!(
+        text.contains(&format!("{half} of {n} exercises done")),
+        "{text}"
+    );
+    assert!(
+        text.contains(&format!("next: exercise {}", m.entries[half].exercise.id)),
+        "{text}"
+    );
 
     let run = run_with_done(&m, n);
     let states = learn::states(&m, &run);
-    let text = learn::report(&m, &run, &states, Style::plain());
-    assert!(text.contains(&format!("{n} of {n} exercises done")), "{text}");
+    let text = learn::report(&m, &run, &states, Style::plain(), None);
+    assert!(
+        text.contains(&format!("{n} of {n} exercises done")),
+        "{text}"
+    );
     assert!(text.contains("all"), "{text}");
-    assert_eq!(learn::newly_done(&learn::states(&m, &run_with_done(&m, 3)), &states).len(), n - 3);
+    assert_eq!(
+        learn::newly_done(&learn::states(&m, &run_with_done(&m, 3)), &states).len(),
+        n - 3
+    );
 }
 
 /// A failure that is not the todo!() is "failing", an exercise without tests "no tests", and
@@ -267,16 +347,21 @@ fn learn_tells_written_but_wrong_from_not_written() {
     let m = manifest();
     let mut run = run_with_done(&m, 0);
     let name = format!("{}works", m.entries[0].exercise.test_prefix());
-    run.failures.insert(name.clone(), "assertion `left == right` failed".into());
-    run.outcomes.remove(&format!("{}works", m.entries[1].exercise.test_prefix()));
+    run.failures
+        .insert(name.clone(), "assertion `left == right` failed".into());
+    run.outcomes
+        .remove(&format!("{}works", m.entries[1].exercise.test_prefix()));
     let states = learn::states(&m, &run);
     assert_eq!(states[0], State::Failing(vec![name]));
     assert_eq!(states[1], State::NoTests);
     let list = learn::list(&m, &states, Style::plain());
     assert!(list.contains("failing") && list.contains("no tests") && list.contains("to do"));
     run.build_errors = Some("error[E0308]: mismatched types".into());
-    let text = learn::report(&m, &run, &learn::states(&m, &run), Style::plain());
-    assert!(text.contains("does not build") && text.contains("E0308"), "{text}");
+    let text = learn::report(&m, &run, &learn::states(&m, &run), Style::plain(), None);
+    assert!(
+        text.contains("does not build") && text.contains("E0308"),
+        "{text}"
+    );
 }
 
 /// libtest's failure blocks are read per test.

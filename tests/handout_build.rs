@@ -64,7 +64,11 @@ fn run_tests(project: &Path, m: &Manifest) -> (BTreeSet<String>, BTreeSet<String
             .output()
             .unwrap();
         let stdout = String::from_utf8_lossy(&out.stdout);
-        assert!(stdout.contains("test result:"), "{target} crashed: {}", text(&out));
+        assert!(
+            stdout.contains("test result:"),
+            "{target} crashed: {}",
+            text(&out)
+        );
         for (name, outcome) in parse_libtest(&stdout) {
             let id = format!("{target}::{name}");
             match outcome {
@@ -128,18 +132,35 @@ fn a_full_handout_fails_exactly_the_tests_of_its_exercises() {
         .current_dir(&student)
         .output()
         .unwrap();
-    assert!(built.status.success(), "the handout does not build: {}", text(&built));
+    assert!(
+        built.status.success(),
+        "the handout does not build: {}",
+        text(&built)
+    );
 
     let (failed, passed) = run_tests(&student, &m);
     let every: BTreeSet<String> = failed.union(&passed).cloned().collect();
     assert_same(&failed, &expected(&m, &every, &all));
-    eprintln!("full handout: {} of {} tests fail, as the manifest says", failed.len(), every.len());
+    eprintln!(
+        "full handout: {} of {} tests fail, as the manifest says",
+        failed.len(),
+        every.len()
+    );
 
     let report = learn(&student, None);
     let first = &m.entries[0].exercise;
-    assert!(report.contains(&format!("0 of {n} exercises done")), "{report}");
-    assert!(report.contains(&format!("next: exercise {} — {}", first.id, first.title)), "{report}");
-    assert!(report.contains(&format!("failing: {}", first.test_prefix())), "{report}");
+    assert!(
+        report.contains(&format!("0 of {n} exercises done")),
+        "{report}"
+    );
+    assert!(
+        report.contains(&format!("next: exercise {} — {}", first.id, first.title)),
+        "{report}"
+    );
+    assert!(
+        report.contains(&format!("failing: {}", first.test_prefix())),
+        "{report}"
+    );
 
     // a chapter binary over the missing exercises: one line, exit status 2
     let exe = target_dir().join("debug").join("ch02_generic_objects");
@@ -151,7 +172,10 @@ fn a_full_handout_fails_exactly_the_tests_of_its_exercises() {
     let err = String::from_utf8_lossy(&out.stderr);
     assert_eq!(out.status.code(), Some(2), "{err}");
     assert_eq!(err.lines().count(), 1, "{err}");
-    assert!(err.starts_with("error: exercise ") && err.contains("is not written yet"), "{err}");
+    assert!(
+        err.starts_with("error: exercise ") && err.contains("is not written yet"),
+        "{err}"
+    );
     assert!(!dir.path().join("x.png").exists());
 }
 
@@ -175,20 +199,34 @@ fn a_chapter_handout_fails_its_tests_and_turns_green_as_the_bodies_come_back() {
         let r = &regions[i];
         let path = student.join(&r.file);
         let now = std::fs::read_to_string(&path).unwrap();
-        let todo = format!("{}{}\n", r.indent, handout::todo_statement(&root(), &m.entries[i]));
+        let todo = format!(
+            "{}{}\n",
+            r.indent,
+            handout::todo_statement(&root(), &m.entries[i])
+        );
         let original = std::fs::read_to_string(root().join(&r.file)).unwrap();
         let back = now.replacen(&todo, &original[r.bytes.clone()], 1);
-        assert_ne!(back, now, "exercise {}'s todo!() not found", m.entries[i].exercise.id);
+        assert_ne!(
+            back, now,
+            "exercise {}'s todo!() not found",
+            m.entries[i].exercise.id
+        );
         std::fs::write(&path, back).unwrap();
         let report = learn(&student, None);
         let done = before + j + 1;
-        assert!(report.contains(&format!("{done} of {n} exercises done")), "{report}");
+        assert!(
+            report.contains(&format!("{done} of {n} exercises done")),
+            "{report}"
+        );
         match chapter4.get(j + 1) {
             Some(&next) => assert!(
                 report.contains(&format!("next: exercise {}", m.entries[next].exercise.id)),
                 "{report}"
             ),
-            None => assert!(report.contains(&format!("all {n} exercises pass")), "{report}"),
+            None => assert!(
+                report.contains(&format!("all {n} exercises pass")),
+                "{report}"
+            ),
         }
     }
 }
@@ -218,12 +256,21 @@ fn exercise_by_exercise_learn_counts_up_to_all_of_them() {
         // exercises k … n−1 missing, those before written
         let poison = (k < n).then(|| format!("{k}-{}", n - 1));
         let report = learn(&copy, Some(poison.unwrap_or_default()));
-        assert!(report.contains(&format!("{k} of {n} exercises done")), "k = {k}: {report}");
+        assert!(
+            report.contains(&format!("{k} of {n} exercises done")),
+            "k = {k}: {report}"
+        );
         if k < n {
             let next = &m.entries[k].exercise;
-            assert!(report.contains(&format!("next: exercise {} —", next.id)), "k = {k}: {report}");
+            assert!(
+                report.contains(&format!("next: exercise {} —", next.id)),
+                "k = {k}: {report}"
+            );
         } else {
-            assert!(report.contains(&format!("all {n} exercises pass")), "{report}");
+            assert!(
+                report.contains(&format!("all {n} exercises pass")),
+                "{report}"
+            );
         }
     }
 }

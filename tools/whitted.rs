@@ -249,7 +249,10 @@ fn learn(args: &LearnArgs) -> Result<ExitCode, Error> {
         None => {
             let run = learn::run_tests(&root, &manifest)?;
             let states = learn::states(&manifest, &run);
-            print!("{}", learn::report(&manifest, &run, &states, style));
+            print!(
+                "{}",
+                learn::report(&manifest, &run, &states, style, Some(&root))
+            );
             Ok(if run.build_errors.is_some() {
                 ExitCode::from(1)
             } else {

@@ -228,9 +228,16 @@ pub fn bar(done: usize, total: usize, width: usize) -> String {
 }
 
 /// The progress report: exercises done per chapter with a bar, then the next exercise to
-/// write with its first failing test, or the end.
+/// write with its first failing test (and, given the project's `root`, its file:line), or the
+/// end.
 #[must_use]
-pub fn report(manifest: &Manifest, run: &TestRun, states: &[State], style: Style) -> String {
+pub fn report(
+    manifest: &Manifest,
+    run: &TestRun,
+    states: &[State],
+    style: Style,
+    root: Option<&Path>,
+) -> String {
     let mut out = String::new();
     let total = states.len();
     let done = states.iter().filter(|s| **s == State::Done).count();
@@ -271,7 +278,7 @@ pub fn report(manifest: &Manifest, run: &TestRun, states: &[State], style: Style
                 "all {total} exercises pass: the whole road of one pixel is written\n"
             ));
         }
-        Some(next) => out += &next_exercise(manifest, run, &states[next], next, style),
+        Some(next) => out += &next_exercise(manifest, run, &states[next], next, style, root),
     }
     out
 }
@@ -283,6 +290,7 @@ fn next_exercise(
     state: &State,
     index: usize,
     style: Style,
+    root: Option<&Path>,
 ) -> String {
     let e = &manifest.entries[index];
     let x = &e.exercise;
@@ -319,7 +327,10 @@ fn next_exercise(
     }
     out += &format!(
         "  write it in {}; `whitted learn hint` gives a hint\n",
-        e.function
+        match root.map(|r| super::source::locate(r, &e.function)) {
+            Some(Ok(at)) => format!("{}, {}:{}", e.function, at.file.display(), at.line),
+            _ => e.function.clone(),
+        }
     );
     out
 }
@@ -474,7 +485,7 @@ pub fn watch(
     }
     let run = run_tests(root, manifest)?;
     let mut before = states(manifest, &run);
-    print!("{}", report(manifest, &run, &before, style));
+    print!("{}", report(manifest, &run, &before, style, Some(root)));
     let mut reruns = 0;
     while cycles.is_none_or(|c| reruns < c) {
         println!(
@@ -496,7 +507,7 @@ pub fn watch(
         reruns += 1;
         let run = run_tests(root, manifest)?;
         let now = states(manifest, &run);
-        print!("\n{}", report(manifest, &run, &now, style));
+        print!("\n{}", report(manifest, &run, &now, style, Some(root)));
         let chapters: BTreeSet<u8> = newly_done(&before, &now)
             .into_iter()
             .map(|i| manifest.entries[i].chapter)
