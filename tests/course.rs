@@ -37,7 +37,10 @@ task = "Return ρ_a·I_m."
 hints = ["Per channel.", "A product of two vectors."]
 points = 1
 needs = ["1.1"]
-renders = ["render_paths::ch3_"]
+
+[[renders]]
+tests = ["render_paths::ch3_"]
+needs = ["1.*", "3.1"]
 
 [handout]
 tests = ["ch03_shading", "render_paths"]
@@ -89,7 +92,6 @@ fn a_good_manifest_reads_every_entry_in_order() {
                     hints: vec!["Half the angle.".into(), "Degrees to radians.".into()],
                     points: 2,
                     needs: vec![],
-                    renders: vec![],
                 },
             },
             Entry {
@@ -105,7 +107,6 @@ fn a_good_manifest_reads_every_entry_in_order() {
                     hints: vec!["Per channel.".into(), "A product of two vectors.".into()],
                     points: 1,
                     needs: vec!["1.1".into()],
-                    renders: vec!["render_paths::ch3_".into()],
                 },
             },
         ]
@@ -533,4 +534,23 @@ fn an_exercises_tests_are_named_after_its_id() {
         )
     );
     assert!("ex2_10_x".starts_with(&ten.test_prefix()));
+}
+
+/// `[[renders]]` tables name tests by prefix and the exercises they need by id, range or
+/// whole chapter; what they need is written back the shortest way; an id that names nothing
+/// is an error.
+#[test]
+fn render_tables_name_tests_and_the_exercises_they_need() {
+    let m = manifest::parse(GOOD, "m.toml").unwrap();
+    assert_eq!(m.renders.len(), 1);
+    assert_eq!(m.renders[0].needs, vec![0, 1]);
+    assert!(m.renders[0].matches("render_paths::ch3_road"));
+    assert!(!m.renders[0].matches("render_paths::ch4_road"));
+    assert_eq!(manifest::compress_ids(&m.entries, &[1, 0]), ["1.*", "3.*"]);
+    let text = GOOD.replace("needs = [\"1.*\", \"3.1\"]", "needs = [\"1.*\", \"3.9\"]");
+    let (_, _, message) = manifest_error(&text);
+    assert!(message.starts_with("renders.needs: \"3.9\" names no exercise"), "{message}");
+    let text = GOOD.replace("tests = [\"render_paths::ch3_\"]", "tests = [\"ch3_\"]");
+    let (_, _, message) = manifest_error(&text);
+    assert!(message.starts_with("renders.tests: expected tests as target::name"), "{message}");
 }

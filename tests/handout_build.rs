@@ -4,7 +4,7 @@
 //!
 //! - A handout of every exercise builds, and its tests fail exactly as the manifest says
 //!   (each exercise's own tests, those of the exercises that need it, and the render tests
-//!   its `renders` names) — set equality; `whitted learn` in it shows 0 of N and the first
+//!   the `[[renders]]` tables that need it) — set equality; `whitted learn` in it shows 0 of N and the first
 //!   exercise's failing test; a chapter binary says which exercise is missing, in one line.
 //! - A handout of chapter 4 alone fails exactly chapter 4's tests; putting its reference bodies
 //!   back one by one turns its exercises green in order, and `whitted learn` ends at N of N.

@@ -109,7 +109,7 @@ struct Formulas {
     prove: bool,
     /// Measure which tests of a handout depend on which exercise (poison each in turn and run
     /// the manifest's [handout] tests), and compare with the manifest's `needs` and
-    /// `renders`; prints the lines to paste where they differ. Exit status 1 when they do.
+    /// `[[renders]]`; prints the lines to paste where they differ. Exit status 1 when they do.
     #[arg(long)]
     deps: bool,
     /// Rewrite the "## Exercises" section of each chapter's README from the manifest.

@@ -9,7 +9,7 @@
 //! that depend on it.
 //!
 //! The manifest states the same dependencies (each exercise's own tests `exC_K_…`, its
-//! `needs`, and the render tests its chapter's `renders` lists); [`check`] compares the two,
+//! `needs`, and the `[[renders]]` tables that need it); [`check`] compares the two,
 //! so a test that calls an exercise the manifest does not say it needs is caught, and so is a
 //! dependency the manifest claims but the tests never exercise.
 
@@ -47,27 +47,26 @@ impl Measured {
 }
 
 /// The tests the manifest says depend on entry `index`: the own tests of the exercise and of
-/// every exercise that needs it (directly or through others), and the render tests of its
-/// chapter and the chapters after it that the manifest's `renders` names.
+/// every exercise that needs it (directly or through others), and the tests of every
+/// `[[renders]]` table that needs it.
 #[must_use]
 pub fn declared(manifest: &Manifest, tests: &BTreeSet<TestId>, index: usize) -> BTreeSet<TestId> {
     let dependents = dependents(manifest, index);
-    let mut out = BTreeSet::new();
-    for t in tests {
-        let name = test_name(t);
-        let own = dependents
-            .iter()
-            .any(|&d| name.starts_with(&manifest.entries[d].exercise.test_prefix()));
-        let render = manifest.entries[index]
-            .exercise
-            .renders
-            .iter()
-            .any(|r| t.starts_with(r.as_str()));
-        if own || render {
-            out.insert(t.clone());
-        }
-    }
-    out
+    tests
+        .iter()
+        .filter(|t| {
+            let name = test_name(t);
+            let own = dependents
+                .iter()
+                .any(|&d| name.starts_with(&manifest.entries[d].exercise.test_prefix()));
+            let render = manifest
+                .renders
+                .iter()
+                .any(|r| r.needs.contains(&index) && r.matches(t));
+            own || render
+        })
+        .cloned()
+        .collect()
 }
 
 /// Entry `index` and every entry whose `needs` reach it.
@@ -245,25 +244,33 @@ pub fn measure(root: &Path, manifest: &Manifest, options: &Options) -> Result<Me
     })
 }
 
-/// The `needs` and `renders` lines the measurements call for, one pair per exercise:
-/// `needs` lists the earlier exercises whose poisoning fails this one's own tests (minus
-/// those reached through another need), `renders` the other tests that fail without it, as
-/// whole `target::chN_` prefixes where every test of that prefix fails.
+/// The `needs` lines and `[[renders]]` tables the measurements call for. An exercise
+/// `needs` the earlier exercises whose poisoning fails one of its own tests (minus those
+/// reached through another need). The other tests are grouped by the exact set of exercises
+/// they fail without; each group is one `[[renders]]` table, its tests written as
+/// `target::chN_` prefixes where a whole prefix shares the set.
 #[must_use]
 pub fn suggest(manifest: &Manifest, measured: &Measured) -> Vec<String> {
     let n = manifest.entries.len();
-    let own =
-        |i: usize, t: &str| test_name(t).starts_with(&manifest.entries[i].exercise.test_prefix());
-    // needs[d] = the exercises i whose poisoning fails one of d's own tests
+    let own_of = |t: &str| {
+        (0..n).find(|&e| test_name(t).starts_with(&manifest.entries[e].exercise.test_prefix()))
+    };
+    // needs[d] = the exercises whose poisoning fails one of d's own tests
     let mut needs: Vec<BTreeSet<usize>> = vec![BTreeSet::new(); n];
+    // for the other tests, the exercises each fails without
+    let mut others: BTreeMap<&TestId, Vec<usize>> = BTreeMap::new();
     for (i, failing) in measured.failing.iter().enumerate() {
-        for d in 0..n {
-            if d != i && failing.iter().any(|t| own(d, t)) {
-                needs[d].insert(i);
+        for t in failing {
+            match own_of(t) {
+                Some(d) if d != i => {
+                    needs[d].insert(i);
+                }
+                Some(_) => {}
+                None => others.entry(t).or_default().push(i),
             }
         }
     }
-    let reach = |from: usize, needs: &Vec<BTreeSet<usize>>| -> BTreeSet<usize> {
+    let reach = |from: usize| -> BTreeSet<usize> {
         let mut seen = BTreeSet::new();
         let mut stack: Vec<usize> = needs[from].iter().copied().collect();
         while let Some(x) = stack.pop() {
@@ -275,53 +282,56 @@ pub fn suggest(manifest: &Manifest, measured: &Measured) -> Vec<String> {
     };
     let mut out = Vec::new();
     for d in 0..n {
-        let direct: Vec<usize> = needs[d]
+        let direct: Vec<String> = needs[d]
             .iter()
             .copied()
-            .filter(|&i| {
-                !needs[d]
-                    .iter()
-                    .any(|&j| j != i && reach(j, &needs).contains(&i))
-            })
+            .filter(|&i| !needs[d].iter().any(|&j| j != i && reach(j).contains(&i)))
+            .map(|i| format!("{:?}", manifest.entries[i].exercise.id))
             .collect();
-        let ids: Vec<String> = direct
-            .iter()
-            .map(|&i| format!("{:?}", manifest.entries[i].exercise.id))
-            .collect();
-        let others: BTreeSet<&String> = measured.failing[d]
-            .iter()
-            .filter(|t| !(0..n).any(|e| own(e, t)))
-            .collect();
-        let mut renders: Vec<String> = Vec::new();
-        let mut covered: BTreeSet<&String> = BTreeSet::new();
-        for t in &others {
+        if !direct.is_empty() {
+            out.push(format!(
+                "# {} {}\nneeds = [{}]",
+                manifest.entries[d].exercise.id,
+                manifest.entries[d].function,
+                direct.join(", ")
+            ));
+        }
+    }
+    // group the other tests by what they need
+    let mut groups: BTreeMap<Vec<usize>, Vec<&TestId>> = BTreeMap::new();
+    for (t, set) in &others {
+        groups.entry(set.clone()).or_default().push(t);
+    }
+    for (set, tests) in groups {
+        let mut written: Vec<String> = Vec::new();
+        for t in &tests {
             let (target, name) = t.split_once("::").unwrap_or(("", t));
-            let prefix = match name.split_once('_') {
-                Some((head, _)) => format!("{target}::{head}_"),
-                None => (*t).clone(),
-            };
-            let all: Vec<&String> = measured
-                .tests
-                .iter()
-                .filter(|x| x.starts_with(&prefix))
-                .collect();
-            if all.iter().all(|x| others.contains(x)) {
-                if !renders.contains(&prefix) {
-                    renders.push(prefix);
-                    covered.extend(all);
-                }
-            } else if !covered.contains(t) {
-                renders.push((*t).clone());
+            let prefix = name
+                .split_once('_')
+                .map(|(head, _)| format!("{target}::{head}_"));
+            let whole = prefix.as_ref().filter(|p| {
+                let all: Vec<&TestId> = measured
+                    .tests
+                    .iter()
+                    .filter(|x| x.starts_with(p.as_str()))
+                    .collect();
+                all.iter().all(|x| tests.contains(x))
+            });
+            let entry = whole.cloned().unwrap_or_else(|| (*t).clone());
+            if !written.contains(&entry) {
+                written.push(entry);
             }
         }
+        let ids = crate::course::manifest::compress_ids(&manifest.entries, &set);
         out.push(format!(
-            "# {} {}\nneeds = [{}]\nrenders = [{}]",
-            manifest.entries[d].exercise.id,
-            manifest.entries[d].function,
-            ids.join(", "),
-            renders
+            "[[renders]]\ntests = [{}]\nneeds = [{}]",
+            written
                 .iter()
-                .map(|r| format!("{r:?}"))
+                .map(|w| format!("{w:?}"))
+                .collect::<Vec<_>>()
+                .join(", "),
+            ids.iter()
+                .map(|i| format!("{i:?}"))
                 .collect::<Vec<_>>()
                 .join(", ")
         ));

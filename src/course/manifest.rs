@@ -33,6 +33,28 @@ pub struct Manifest {
     pub handout: HandoutTable,
     /// The formula functions, in the file's order; an entry's index is its number in the proof.
     pub entries: Vec<Entry>,
+    /// The tests besides the exercises' own (renders, whole scenes) and the exercises each
+    /// group of them needs.
+    pub renders: Vec<Renders>,
+}
+
+/// A `[[renders]]` table: tests that are no exercise's own (they render scenes, or check
+/// several exercises at once), and every exercise they run.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Renders {
+    /// The tests, as `target::name` or prefixes of it (`render_paths::ch3_`).
+    pub tests: Vec<String>,
+    /// The manifest indices of the exercises they need (from ids and ranges such as `2.1-2.12`
+    /// or `3.*`).
+    pub needs: Vec<usize>,
+}
+
+impl Renders {
+    /// Whether the test `target::name` is one of these.
+    #[must_use]
+    pub fn matches(&self, test: &str) -> bool {
+        self.tests.iter().any(|t| test.starts_with(t.as_str()))
+    }
 }
 
 /// The `[prove]` table: which tests are the render paths.
@@ -94,9 +116,6 @@ pub struct Exercise {
     /// The exercises (ids) whose code this one's tests run too (it calls them): when one of
     /// them is missing, this exercise's tests fail as well.
     pub needs: Vec<String>,
-    /// The tests outside the exercises' own that need this one, as prefixes of
-    /// `target::test` (`render_paths::ch2_`): the render tests of the chapters it is on.
-    pub renders: Vec<String>,
 }
 
 impl Exercise {
@@ -114,6 +133,15 @@ struct RawManifest {
     handout: Spanned<RawHandout>,
     #[serde(default)]
     formula: Vec<Spanned<RawEntry>>,
+    #[serde(default)]
+    renders: Vec<Spanned<RawRenders>>,
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct RawRenders {
+    tests: Spanned<Vec<String>>,
+    needs: Spanned<Vec<String>>,
 }
 
 #[derive(Deserialize)]
@@ -143,8 +171,6 @@ struct RawEntry {
     points: Option<Spanned<i64>>,
     #[serde(default)]
     needs: Vec<Spanned<String>>,
-    #[serde(default)]
-    renders: Vec<Spanned<String>>,
 }
 
 /// Reads and checks the manifest at `path`; messages name the path as given.
@@ -304,12 +330,100 @@ pub fn parse(text: &str, file: &str) -> Result<Manifest, Error> {
         }
     }
 
+    let mut renders = Vec::new();
+    for r in &raw.renders {
+        let r = r.get_ref();
+        let tests = r.tests.get_ref();
+        if tests.is_empty() || tests.iter().any(|t| !t.contains("::")) {
+            return Err(err(
+                r.tests.span(),
+                format!(
+                    "renders.tests: expected tests as target::name or prefixes of it (render_paths::ch3_), found {tests:?}"
+                ),
+            ));
+        }
+        let mut needs = Vec::new();
+        for id in r.needs.get_ref() {
+            let found = expand_ids(&entries, id);
+            if found.is_empty() {
+                return Err(err(
+                    r.needs.span(),
+                    format!(
+                        "renders.needs: {id:?} names no exercise (ids look like 2.3, ranges like 2.1-2.12, a whole chapter 3.*)"
+                    ),
+                ));
+            }
+            needs.extend(found);
+        }
+        needs.sort_unstable();
+        needs.dedup();
+        renders.push(Renders {
+            tests: tests.clone(),
+            needs,
+        });
+    }
+
     Ok(Manifest {
         file: file.to_string(),
         prove,
         handout,
         entries,
+        renders,
     })
+}
+
+/// The entries an id, a range `2.1-2.12` (within one chapter) or a chapter `3.*` names.
+fn expand_ids(entries: &[Entry], text: &str) -> Vec<usize> {
+    let text = text.trim();
+    let index = |id: &str| entries.iter().position(|e| e.exercise.id == id.trim());
+    if let Some(chapter) = text.strip_suffix(".*") {
+        return (0..entries.len())
+            .filter(|&i| entries[i].chapter.to_string() == chapter)
+            .collect();
+    }
+    if let Some((a, b)) = text.split_once('-') {
+        return match (index(a), index(b)) {
+            (Some(a), Some(b)) if a <= b && entries[a].chapter == entries[b].chapter => {
+                (a..=b).collect()
+            }
+            _ => Vec::new(),
+        };
+    }
+    index(text).into_iter().collect()
+}
+
+/// The shortest way to write the entries `set` as ids, ranges and whole chapters.
+#[must_use]
+pub fn compress_ids(entries: &[Entry], set: &[usize]) -> Vec<String> {
+    let mut sorted = set.to_vec();
+    sorted.sort_unstable();
+    sorted.dedup();
+    let mut out = Vec::new();
+    let mut i = 0;
+    while i < sorted.len() {
+        let mut j = i;
+        while j + 1 < sorted.len()
+            && sorted[j + 1] == sorted[j] + 1
+            && entries[sorted[j + 1]].chapter == entries[sorted[i]].chapter
+        {
+            j += 1;
+        }
+        let chapter = entries[sorted[i]].chapter;
+        let whole = entries.iter().filter(|e| e.chapter == chapter).count();
+        let (a, b) = (
+            &entries[sorted[i]].exercise.id,
+            &entries[sorted[j]].exercise.id,
+        );
+        out.push(if j - i + 1 == whole {
+            format!("{chapter}.*")
+        } else if i == j {
+            a.clone()
+        } else {
+            format!("{a}-{b}")
+        });
+        i = j + 1;
+    }
+    out
 }
 
 /// The most points one exercise may be worth.
@@ -394,11 +508,6 @@ fn exercise(
             .needs
             .iter()
             .map(|n| n.get_ref().trim().to_string())
-            .collect(),
-        renders: raw
-            .renders
-            .iter()
-            .map(|r| r.get_ref().trim().to_string())
             .collect(),
     })
 }
