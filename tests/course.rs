@@ -5,7 +5,7 @@
 use std::path::{Path, PathBuf};
 
 use whitted::course::Error;
-use whitted::course::manifest::{self, Entry, Prove};
+use whitted::course::manifest::{self, Entry, Exercise, Prove};
 use whitted::course::prove::{self, TestOutcome, guard, parse_libtest, poisoned_sources};
 use whitted::course::source::{self, Edit, edit_bodies, locate};
 
@@ -21,12 +21,22 @@ function = "camera::near_plane_half_height"
 chapter = 1
 section = "Principles of Ray Tracing"
 formula = "H = N·tan(θ/2)"
+id = "1.1"
+title = "Half the near plane's height"
+task = "Return H = N·tan(θ/2)."
+hints = ["Degrees to radians.", "near * (fov / 2).tan()"]
+points = 1
 
 [[formula]]
 function = "shading::ambient"
 chapter = 3
 section = "Shading"
 formula = "I_a = ρ_a·I_m"
+id = "3.1"
+title = "Ambient light"
+task = "Return I_a = ρ_a·I_m."
+hints = ["Per channel.", "material.ambient * light", "That is all."]
+points = 2
 "#;
 
 /// The (line, column, message) of a manifest error; panics on success or another error.
@@ -68,13 +78,34 @@ fn a_good_manifest_reads_every_entry_in_order() {
                 section: "Principles of Ray Tracing".into(),
                 formula: "H = N·tan(θ/2)".into(),
                 line: 7,
+                exercise: Exercise {
+                    id: "1.1".into(),
+                    title: "Half the near plane's height".into(),
+                    task: "Return H = N·tan(θ/2).".into(),
+                    hints: vec![
+                        "Degrees to radians.".into(),
+                        "near * (fov / 2).tan()".into()
+                    ],
+                    points: 1,
+                },
             },
             Entry {
                 function: "shading::ambient".into(),
                 chapter: 3,
                 section: "Shading".into(),
                 formula: "I_a = ρ_a·I_m".into(),
-                line: 13,
+                line: 18,
+                exercise: Exercise {
+                    id: "3.1".into(),
+                    title: "Ambient light".into(),
+                    task: "Return I_a = ρ_a·I_m.".into(),
+                    hints: vec![
+                        "Per channel.".into(),
+                        "material.ambient * light".into(),
+                        "That is all.".into()
+                    ],
+                    points: 2,
+                },
             },
         ]
     );
@@ -85,7 +116,7 @@ fn a_good_manifest_reads_every_entry_in_order() {
 fn an_unknown_key_is_an_error_at_its_line_and_column() {
     let text = GOOD.replace("chapter = 3\n", "chapter = 3\ncolour = \"red\"\n");
     let (line, col, message) = manifest_error(&text);
-    assert_eq!((line, col), (15, 1));
+    assert_eq!((line, col), (20, 1));
     assert!(message.starts_with("unknown field `colour`"), "{message}");
 
     let text = GOOD.replace("filter =", "jobs = 2\nfilter =");
@@ -99,7 +130,7 @@ fn an_unknown_key_is_an_error_at_its_line_and_column() {
 fn a_function_listed_twice_is_an_error_at_the_second() {
     let text = GOOD.replace("\"shading::ambient\"", "\"camera::near_plane_half_height\"");
     let (line, col, message) = manifest_error(&text);
-    assert_eq!((line, col), (13, 12));
+    assert_eq!((line, col), (18, 12));
     assert_eq!(
         message,
         "function camera::near_plane_half_height is listed twice (first on line 7)"
@@ -112,12 +143,12 @@ fn a_chapter_outside_one_to_five_is_an_error() {
     for bad in ["0", "6", "-1"] {
         let text = GOOD.replace("chapter = 3", &format!("chapter = {bad}"));
         let (line, col, message) = manifest_error(&text);
-        assert_eq!((line, col), (14, 11), "chapter = {bad}");
+        assert_eq!((line, col), (19, 11), "chapter = {bad}");
         assert_eq!(message, format!("chapter: expected 1 to 5, found {bad}"));
     }
     let text = GOOD.replace("chapter = 3", "chapter = \"three\"");
     let (line, col, _) = manifest_error(&text);
-    assert_eq!((line, col), (14, 11));
+    assert_eq!((line, col), (19, 11));
 }
 
 /// A section must be one of the notes' titles, and a function a path of at least two names.
@@ -125,7 +156,7 @@ fn a_chapter_outside_one_to_five_is_an_error() {
 fn an_unknown_section_or_a_malformed_path_is_an_error() {
     let text = GOOD.replace("section = \"Shading\"", "section = \"Shadows\"");
     let (line, col, message) = manifest_error(&text);
-    assert_eq!((line, col), (15, 11));
+    assert_eq!((line, col), (20, 11));
     assert!(
         message.starts_with("section: \"Shadows\" is not a section of the course notes"),
         "{message}"
@@ -139,7 +170,7 @@ fn an_unknown_section_or_a_malformed_path_is_an_error() {
     ] {
         let text = GOOD.replace("shading::ambient", bad);
         let (line, col, message) = manifest_error(&text);
-        assert_eq!((line, col), (13, 12), "{bad}");
+        assert_eq!((line, col), (18, 12), "{bad}");
         assert!(
             message.starts_with("function: expected a path"),
             "{message}"
@@ -330,7 +361,7 @@ fn the_proof_refuses_a_const_fn() {
     let err = prove::locate_all(dir.path(), &m).unwrap_err().to_string();
     assert_eq!(
         err,
-        "m.toml:13: geo::fixed: is a const fn (src/geo.rs:30): its body cannot test the poison switch"
+        "m.toml:18: geo::fixed: is a const fn (src/geo.rs:30): its body cannot test the poison switch"
     );
 }
 
