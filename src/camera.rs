@@ -31,13 +31,17 @@ use crate::real::{Real, Vec3};
 /// H = N·tan(θ/2): half the height of the near plane, for a vertical viewing angle θ in degrees.
 #[must_use]
 pub fn near_plane_half_height(near: Real, fov_degrees: Real) -> Real {
+    // BEGIN SOLUTION 1.2
     near * (fov_degrees.to_radians() / 2.0).tan() // H = N tan(π/180 · θ/2)
+    // END SOLUTION
 }
 
 /// W = H·A: half the width of the near plane for the aspect ratio A = width / height.
 #[must_use]
 pub fn near_plane_half_width(half_height: Real, aspect: Real) -> Real {
+    // BEGIN SOLUTION 1.3
     half_height * aspect // W = H A
+    // END SOLUTION
 }
 
 /// The notes' (u_c, v_r) = (−W + W·2c/n, −H + H·2r/m): where pixel (c, r) of an n × m window
@@ -51,11 +55,13 @@ pub fn pixel_on_near_plane(
     half_width: Real,
     half_height: Real,
 ) -> (Real, Real) {
+    // BEGIN SOLUTION 1.4
     // −W + W·2c/n written as W·(2c/n − 1): the centre column c = n/2 lands exactly on 0, so
     // the middle ray of an odd-sized image is exactly d = −N·n
     let u_c = half_width * (2.0 * c / columns - 1.0);
     let v_r = half_height * (2.0 * r / rows - 1.0);
     (u_c, v_r)
+    // END SOLUTION
 }
 
 /// Chapter 1's colour of a ray: its unit direction d̂ mapped from [−1, 1] to [0, 1] on each
@@ -63,17 +69,21 @@ pub fn pixel_on_near_plane(
 /// shows unit normals the same way.
 #[must_use]
 pub fn direction_colour(d: Vec3) -> Vec3 {
+    // BEGIN SOLUTION 1.7
     (crate::numeric::normalize(d) + Vec3::ONE) * 0.5
+    // END SOLUTION
 }
 
 /// The viewing coordinate system (u, v, n) of an eye looking at a point, with `up` as the
 /// approximate up direction. Returns `None` when the view direction is zero or parallel to `up`.
 #[must_use]
 pub fn viewing_basis(eye: Vec3, look_at: Vec3, up: Vec3) -> Option<(Vec3, Vec3, Vec3)> {
+    // BEGIN SOLUTION 1.1
     let n = (eye - look_at).try_normalize()?; // n points from the scene back to the eye
     let u = up.cross(n).try_normalize()?; // u = up × n, to the right
     let v = n.cross(u); // v = n × u, already unit
     Some((u, v, n))
+    // END SOLUTION
 }
 
 /// A pinhole camera with the notes' parameters, and the derived near-plane size. Built once
@@ -187,6 +197,7 @@ impl Camera {
     /// ([`pixel_on_near_plane`]). d reaches the near plane at t = 1.
     #[must_use]
     pub fn direction(&self, c: Real, r: Real) -> Vec3 {
+        // BEGIN SOLUTION 1.5
         let (u_c, v_r) = pixel_on_near_plane(
             c,
             r,
@@ -196,6 +207,7 @@ impl Camera {
             self.half_height,
         );
         -self.near * self.n + u_c * self.u + v_r * self.v
+        // END SOLUTION
     }
 
     /// The ray r(t) = e + d·t through the notes' pixel corner (c, r).
@@ -209,9 +221,11 @@ impl Camera {
     /// pixel, (½, ½) being its centre.
     #[must_use]
     pub fn pixel_ray(&self, x: u32, y: u32, dx: Real, dy: Real) -> Ray {
+        // BEGIN SOLUTION 1.6
         let c = x as Real + dx;
         // row r counts from the bottom: the image row y (from the top) covers r ∈ [m−1−y, m−y]
         let r = (self.rows - 1 - y) as Real + (1.0 - dy);
         self.ray(c, r)
+        // END SOLUTION
     }
 }

@@ -33,7 +33,9 @@ use crate::real::{Real, Vec3};
 /// l = d − 2(d·n)·n: the mirror direction of the incoming direction d about the unit normal n.
 #[must_use]
 pub fn reflect(d: Vec3, n: Vec3) -> Vec3 {
+    // BEGIN SOLUTION 5.4
     d - 2.0 * d.dot(n) * n
+    // END SOLUTION
 }
 
 /// The transmitted direction for the unit incoming direction `d`, the unit normal `n` facing
@@ -42,6 +44,7 @@ pub fn reflect(d: Vec3, n: Vec3) -> Vec3 {
 /// ([`critical_angle_sine`]).
 #[must_use]
 pub fn refract(d: Vec3, n: Vec3, n1: Real, n2: Real) -> Option<Vec3> {
+    // BEGIN SOLUTION 5.3
     let cos1 = -d.dot(n);
     let sin1_sq = (1.0 - cos1 * cos1).max(0.0);
     if let Some(sin_c) = critical_angle_sine(n1, n2)
@@ -53,6 +56,7 @@ pub fn refract(d: Vec3, n: Vec3, n1: Real, n2: Real) -> Option<Vec3> {
     let sin2_sq = eta * eta * sin1_sq; // sin²θ₂ = η²·sin²θ₁
     let cos2 = (1.0 - sin2_sq).max(0.0).sqrt();
     Some(eta * d + (eta * cos1 - cos2) * n)
+    // END SOLUTION
 }
 
 /// sin θc = n₂/n₁, the sine of the critical angle going from index n₁ into index n₂, where the
@@ -60,7 +64,9 @@ pub fn refract(d: Vec3, n: Vec3, n1: Real, n2: Real) -> Option<Vec3> {
 /// is possible). In the notes' speeds, (c₂/c₁)·sin θc = 1 (they print c₁/c₂: an erratum).
 #[must_use]
 pub fn critical_angle_sine(n1: Real, n2: Real) -> Option<Real> {
+    // BEGIN SOLUTION 5.2
     (n1 > n2).then(|| n2 / n1)
+    // END SOLUTION
 }
 
 /// The critical angle θc itself, in radians: asin([`critical_angle_sine`]).
@@ -73,5 +79,7 @@ pub fn critical_angle(n1: Real, n2: Real) -> Option<Real> {
 /// air into the material, leaving from the material into air.
 #[must_use]
 pub fn indices(entering: bool, ior: Real) -> (Real, Real) {
+    // BEGIN SOLUTION 5.1
     if entering { (1.0, ior) } else { (ior, 1.0) }
+    // END SOLUTION
 }

@@ -28,7 +28,9 @@ impl Ray {
     #[inline]
     #[must_use]
     pub fn at(&self, t: Real) -> Vec3 {
+        // BEGIN SOLUTION 2.5
         self.origin + self.dir * t
+        // END SOLUTION
     }
 
     /// The ray M⁻¹r(t) = M⁻¹e + M⁻¹d·t: the origin moves as a point, the direction as a vector,
@@ -36,9 +38,11 @@ impl Ray {
     #[inline]
     #[must_use]
     pub fn transformed(&self, m: &Mat4) -> Self {
+        // BEGIN SOLUTION 2.4
         Self {
             origin: m.transform_point3(self.origin),
             dir: m.transform_vector3(self.dir),
         }
+        // END SOLUTION
     }
 }

@@ -35,24 +35,31 @@ use crate::real::{Real, Vec3};
 /// The ambient term I_a = ρa·I_m, per channel.
 #[must_use]
 pub fn ambient(material: &Material, ambient_light: Vec3) -> Vec3 {
+    // BEGIN SOLUTION 3.1
     material.ambient * ambient_light
+    // END SOLUTION
 }
 
 /// r = 2(n·s)·n − s: the mirror direction of s about the unit normal n.
 #[must_use]
 pub fn mirror(s: Vec3, n: Vec3) -> Vec3 {
+    // BEGIN SOLUTION 3.4
     2.0 * n.dot(s) * n - s
+    // END SOLUTION
 }
 
 /// max(n·s, 0): the cosine law of the diffuse term, zero for a light behind the surface.
 #[must_use]
 pub fn lambert(n: Vec3, s: Vec3) -> Real {
+    // BEGIN SOLUTION 3.3
     n.dot(s).max(0.0)
+    // END SOLUTION
 }
 
 /// max(r·v, 0)^f: the specular highlight, zero when the light is behind the surface (n·s ≤ 0).
 #[must_use]
 pub fn highlight(n: Vec3, s: Vec3, v: Vec3, shininess: Real) -> Real {
+    // BEGIN SOLUTION 3.5
     if n.dot(s) <= 0.0 {
         return 0.0;
     }
@@ -61,6 +68,7 @@ pub fn highlight(n: Vec3, s: Vec3, v: Vec3, shininess: Real) -> Real {
         return 0.0; // 0^f for f > 0, without the cost of a powf (half the lit points)
     }
     cos.powf(shininess)
+    // END SOLUTION
 }
 
 /// One light's diffuse and specular contribution, per channel, before shadowing:
@@ -68,6 +76,7 @@ pub fn highlight(n: Vec3, s: Vec3, v: Vec3, shininess: Real) -> Real {
 /// normal n seen from the unit direction v.
 #[must_use]
 pub fn direct(material: &Material, light: &Light, p: Vec3, n: Vec3, v: Vec3) -> Vec3 {
+    // BEGIN SOLUTION 3.6
     let to_light = light.position - p;
     let d = to_light.length();
     if d == 0.0 {
@@ -82,4 +91,5 @@ pub fn direct(material: &Material, light: &Light, p: Vec3, n: Vec3, v: Vec3) -> 
         material.specular * highlight(n, s, v, material.shininess)
     };
     light.intensity * light.attenuation_at(d) * (diffuse + specular)
+    // END SOLUTION
 }

@@ -34,7 +34,9 @@ use crate::shapes::Hits;
 #[inline]
 #[must_use]
 pub fn feeler(p: Vec3, light: Vec3) -> Ray {
+    // BEGIN SOLUTION 4.1
     Ray::new(p, light - p)
+    // END SOLUTION
 }
 
 /// True when one of a feeler's hits lies between its start and the light: u ∈ ]u_min, 1]
@@ -43,7 +45,9 @@ pub fn feeler(p: Vec3, light: Vec3) -> Ray {
 #[inline]
 #[must_use]
 pub fn blocks(hits: &Hits, u_min: Real) -> bool {
+    // BEGIN SOLUTION 4.2
     hits.as_slice().iter().any(|h| h.t > u_min && h.t <= 1.0)
+    // END SOLUTION
 }
 
 /// The share of a light that reaches the start of a feeler, from the transmissions k_t of the
@@ -51,6 +55,7 @@ pub fn blocks(hits: &Hits, u_min: Real) -> bool {
 /// as soon as one is opaque (k_t = 0).
 #[must_use]
 pub fn transmittance(crossed: impl IntoIterator<Item = Real>) -> Real {
+    // BEGIN SOLUTION 4.3
     let mut share = 1.0;
     for k_t in crossed {
         share *= k_t;
@@ -59,4 +64,5 @@ pub fn transmittance(crossed: impl IntoIterator<Item = Real>) -> Real {
         }
     }
     share
+    // END SOLUTION
 }

@@ -43,6 +43,7 @@ impl Step {
     /// (see [`sin_cos_degrees`]), so an upright plane, cylinder or cone is placed exactly.
     #[must_use]
     pub fn matrix(&self) -> Mat4 {
+        // BEGIN SOLUTION 2.1
         match *self {
             Step::Scale(s) => Mat4::from_scale(s),
             Step::RotateX(a) => {
@@ -75,11 +76,13 @@ impl Step {
             Step::RotateAxis(axis, a) => rotation_about(axis.normalize(), sin_cos_degrees(a)),
             Step::Translate(t) => Mat4::from_translation(t),
         }
+        // END SOLUTION
     }
 
     /// The inverse step: scale 1/s, rotate −θ, translate −t.
     #[must_use]
     pub fn inverse(&self) -> Step {
+        // BEGIN SOLUTION 2.2
         match *self {
             Step::Scale(s) => Step::Scale(s.recip()),
             Step::RotateX(a) => Step::RotateX(-a),
@@ -88,6 +91,7 @@ impl Step {
             Step::RotateAxis(axis, a) => Step::RotateAxis(axis, -a),
             Step::Translate(t) => Step::Translate(-t),
         }
+        // END SOLUTION
     }
 
     /// Whether the step can be inverted: a scale needs finite non-zero factors, a rotation
@@ -190,6 +194,7 @@ impl Placement {
     /// [`Step::is_invertible`]).
     #[must_use]
     pub fn from_steps(steps: &[Step]) -> Option<Self> {
+        // BEGIN SOLUTION 2.3
         let mut m = Mat4::IDENTITY;
         let mut inv = Mat4::IDENTITY;
         for step in steps {
@@ -200,6 +205,7 @@ impl Placement {
             inv *= step.inverse().matrix();
         }
         Some(Self::from_matrices(m, inv))
+        // END SOLUTION
     }
 
     /// A placement from M and its known inverse.
@@ -237,6 +243,8 @@ impl Placement {
     #[inline]
     #[must_use]
     pub fn normal_to_world(&self, n_object: Vec3) -> Vec3 {
+        // BEGIN SOLUTION 2.26
         crate::numeric::normalize(self.normal_matrix * n_object)
+        // END SOLUTION
     }
 }

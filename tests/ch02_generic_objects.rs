@@ -1,6 +1,11 @@
 //! Chapter 2 — generic objects (notes: "Ray Tracing Process", "Generic Objects", "Surface
 //! Normals at Intersections"): every shape's miss, graze and two-hit cases with hand-computed
 //! t and normals, and the placement M, M⁻¹, (M⁻¹)ᵀ.
+//!
+//! A test named `ex2_K_…` checks exercise 2.K of `chapters/formulas.toml` and calls only it and
+//! the exercises before it: the shapes' tests call `sphere::intersect`, `cylinder::intersect` …
+//! directly (normals in object space), and leave `Object::intersect`, which also carries the
+//! normals back to the world (exercise 2.26), to the tests of placed objects.
 
 mod common;
 
@@ -10,9 +15,11 @@ use whitted::accel::Accel;
 use whitted::ray::Ray;
 use whitted::real::{Mat4, Real, Vec3, vec3};
 use whitted::render::{Options, Stage, Tracer};
-use whitted::shapes::quadratic::{Formula, Roots, discriminant, solve};
+use whitted::shapes::quadratic::{
+    Formula, Roots, discriminant, solve, solve_with_discriminant, stable_roots,
+};
 use whitted::shapes::{
-    Hits, Object, Part, Polyhedron, Shape, cone, cylinder, nearer, polyhedron, sphere,
+    Hit, Hits, Object, Part, Polyhedron, Shape, cone, cylinder, nearer, plane, polyhedron, sphere,
 };
 use whitted::transform::{Placement, Step, rotation_from_z, sin_cos_degrees};
 
@@ -20,8 +27,9 @@ fn ray(e: [f64; 3], d: [f64; 3]) -> Ray {
     Ray::new(vec3(e[0], e[1], e[2]), vec3(d[0], d[1], d[2]))
 }
 
-fn generic(shape: Shape) -> Object {
-    Object::new(shape, Placement::identity())
+/// The direction of a (non-zero) normal, to compare the cone's (x, y, 1 − z) with a unit vector.
+fn unit(n: Vec3) -> Vec3 {
+    n.normalize()
 }
 
 /// Asserts the hits' t values and parts.
@@ -42,11 +50,115 @@ fn assert_hits(hits: &Hits, expected: &[(Real, Part)]) {
     }
 }
 
+// --- placement steps and rays -----------------------------------------------------------
+
+/// "Ray Tracing Process" (q = M·q′): each kind of step has the matrix of its transformation.
+/// A scale by (2, 3, 4) takes (1, 1, 1) to (2, 3, 4). Right-handed quarter turns, exactly:
+/// about z, x goes to y; about x, y goes to z and z to −y; about y, z goes to x. By 30° about
+/// z, x goes to (cos 30°, sin 30°, 0) = (√3/2, ½, 0); by −30° about y, to (√3/2, 0, ½). A
+/// quarter turn about the axis (0, 0, 2) is the one about z; a third of a turn about
+/// (1, 1, 1) takes x to y, y to z and z to x. A translation by (1, −2, 3) moves a point, not
+/// a direction.
+#[test]
+fn ex2_1_each_step_has_the_matrix_of_its_transformation() {
+    let scale = Step::Scale(vec3(2.0, 3.0, 4.0)).matrix();
+    assert_vec_eq(scale.transform_point3(Vec3::ONE), vec3(2.0, 3.0, 4.0), TOL);
+    let turn = |step: Step, v: Vec3| step.matrix().transform_vector3(v);
+    assert_eq!(turn(Step::RotateZ(90.0), Vec3::X), Vec3::Y);
+    assert_eq!(turn(Step::RotateX(90.0), Vec3::Y), Vec3::Z);
+    assert_eq!(turn(Step::RotateX(90.0), Vec3::Z), Vec3::NEG_Y);
+    assert_eq!(turn(Step::RotateY(90.0), Vec3::Z), Vec3::X);
+    let r3 = (3.0 as Real).sqrt();
+    assert_vec_eq(
+        turn(Step::RotateZ(30.0), Vec3::X),
+        Vec3::new(r3 / 2.0, 0.5, 0.0),
+        TOL,
+    );
+    assert_vec_eq(
+        turn(Step::RotateY(-30.0), Vec3::X),
+        Vec3::new(r3 / 2.0, 0.0, 0.5),
+        TOL,
+    );
+    assert_vec_eq(
+        turn(Step::RotateAxis(vec3(0.0, 0.0, 2.0), 90.0), Vec3::X),
+        Vec3::Y,
+        TOL,
+    );
+    let third = Step::RotateAxis(Vec3::ONE, 120.0);
+    assert_vec_eq(turn(third, Vec3::X), Vec3::Y, 10.0 * TOL);
+    assert_vec_eq(turn(third, Vec3::Y), Vec3::Z, 10.0 * TOL);
+    assert_vec_eq(turn(third, Vec3::Z), Vec3::X, 10.0 * TOL);
+    let t = vec3(1.0, -2.0, 3.0);
+    let shift = Step::Translate(t).matrix();
+    assert_vec_eq(shift.transform_point3(Vec3::ZERO), t, TOL);
+    assert_vec_eq(shift.transform_point3(Vec3::ONE), vec3(2.0, -1.0, 4.0), TOL);
+    assert_vec_eq(shift.transform_vector3(Vec3::X), Vec3::X, TOL);
+}
+
+/// "Ray Tracing Process": S⁻¹ undoes S — scale by 1/s, rotate by −θ about the same axis,
+/// translate by −t — so S·S⁻¹ = I.
+#[test]
+fn ex2_2_each_step_is_undone_by_its_inverse() {
+    let axis = vec3(1.0, 2.0, -0.5);
+    let t = vec3(1.0, -2.0, 3.0);
+    let cases = [
+        (
+            Step::Scale(vec3(2.0, 4.0, 0.5)),
+            Step::Scale(vec3(0.5, 0.25, 2.0)),
+        ),
+        (Step::RotateX(30.0), Step::RotateX(-30.0)),
+        (Step::RotateY(-75.0), Step::RotateY(75.0)),
+        (Step::RotateZ(90.0), Step::RotateZ(-90.0)),
+        (Step::RotateAxis(axis, 40.0), Step::RotateAxis(axis, -40.0)),
+        (Step::Translate(t), Step::Translate(-t)),
+    ];
+    for (step, inverse) in cases {
+        assert_eq!(step.inverse(), inverse, "{step:?}");
+        let product = step.matrix() * step.inverse().matrix();
+        assert!(
+            product.abs_diff_eq(Mat4::IDENTITY, 10.0 * TOL),
+            "{step:?}: {product:?}"
+        );
+    }
+}
+
+/// "Ray Tracing Process": M⁻¹r(t) = M⁻¹e + M⁻¹d·t. With M⁻¹ a scale by (2, 1, ½) then a
+/// translation by (1, 2, 3), the origin (1, 1, 1) moves as a point, to (3, 3, 3.5), and the
+/// direction (3, 1, 0) as a vector, to (6, 1, 0), not renormalised: the point at t on the
+/// carried ray is M⁻¹ of the point at t on the world ray.
+#[test]
+fn ex2_4_a_ray_moves_its_origin_as_a_point_and_its_direction_as_a_vector() {
+    let m = Mat4::from_translation(vec3(1.0, 2.0, 3.0)) * Mat4::from_scale(vec3(2.0, 1.0, 0.5));
+    let world = ray([1.0, 1.0, 1.0], [3.0, 1.0, 0.0]);
+    let local = world.transformed(&m);
+    assert_vec_eq(local.origin, vec3(3.0, 3.0, 3.5), TOL);
+    assert_vec_eq(local.dir, vec3(6.0, 1.0, 0.0), TOL);
+    for t in [-1.0, 0.5, 2.0] {
+        let on_world = world.origin + world.dir * t;
+        assert_vec_eq(
+            local.origin + local.dir * t,
+            m.transform_point3(on_world),
+            10.0 * TOL,
+        );
+    }
+}
+
+/// "Ray Tracing Process": r(t) = e + d·t. For e = (1, 2, 3), d = (0.5, −1, 2): r(0) = e,
+/// r(1) = (1.5, 1, 5), r(2) = (2, 0, 7), r(−1) = (0.5, 3, 1).
+#[test]
+fn ex2_5_r_of_t_is_e_plus_d_t() {
+    let r = ray([1.0, 2.0, 3.0], [0.5, -1.0, 2.0]);
+    assert_vec_eq(r.at(0.0), vec3(1.0, 2.0, 3.0), TOL);
+    assert_vec_eq(r.at(1.0), vec3(1.5, 1.0, 5.0), TOL);
+    assert_vec_eq(r.at(2.0), vec3(2.0, 0.0, 7.0), TOL);
+    assert_vec_eq(r.at(-1.0), vec3(0.5, 3.0, 1.0), TOL);
+}
+
 // --- the quadratic ------------------------------------------------------------------------
 
 /// "Generic Sphere": t = −b/a ± √(b² − ac)/a; b² − ac < 0 no root, = 0 one, > 0 two.
 #[test]
-fn quadratic_has_no_one_or_two_roots_by_the_sign_of_b2_minus_ac() {
+fn ex2_9_quadratic_has_no_one_or_two_roots_by_the_sign_of_b2_minus_ac() {
     for formula in [Formula::Textbook, Formula::Robust] {
         assert_eq!(solve(1.0, 0.0, 1.0, formula), Roots::None); // t² + 1
         assert_eq!(solve(1.0, -2.0, 4.0, formula), Roots::One(2.0)); // t² − 4t + 4
@@ -62,96 +174,245 @@ fn quadratic_has_no_one_or_two_roots_by_the_sign_of_b2_minus_ac() {
     assert_eq!(discriminant(1.0, -5.0, 24.0), 1.0);
 }
 
+/// "Generic Sphere", computed without cancellation: q = −(b + sign(b)·√Δ), t₁ = q/a,
+/// t₂ = c/q, in increasing order. t² − 10t + 24 (b = −5, Δ = 1): q = 6, roots 6 and 24/6 = 4;
+/// t² + 10t + 24 (b = 5): q = −6, roots −6 and −4; t² − 4t + 4 (Δ = 0): the double root 2,
+/// twice; Δ < 0 or NaN: none. a = 0 (4t − 4 = 0, b = 2, c = −4, Δ = 4): q = −4, q/a = −∞ and
+/// c/q = 1 = −c/(2b), the line's one root; a = b = 0: 0/0, none.
+#[test]
+fn ex2_8_stable_roots_come_in_increasing_order() {
+    assert_eq!(stable_roots(1.0, -5.0, 24.0, 1.0), Some((4.0, 6.0)));
+    assert_eq!(stable_roots(1.0, 5.0, 24.0, 1.0), Some((-6.0, -4.0)));
+    assert_eq!(stable_roots(1.0, -2.0, 4.0, 0.0), Some((2.0, 2.0)));
+    assert_eq!(stable_roots(1.0, 0.0, 1.0, -1.0), None);
+    assert_eq!(stable_roots(1.0, 0.0, 1.0, Real::NAN), None);
+    assert_eq!(
+        stable_roots(0.0, 2.0, -4.0, 4.0),
+        Some((Real::NEG_INFINITY, 1.0))
+    );
+    assert_eq!(stable_roots(0.0, 0.0, 1.0, 0.0), None);
+}
+
+/// "Generic Sphere" (computational aspects): for t² − 2·10⁸·t + 1 = 0 (a = 1, b = −10⁸,
+/// c = 1) the roots are 2·10⁸ and, from the product of the roots, 1/(2·10⁸) = 5·10⁻⁹, to full
+/// precision in f64 and f32 alike: the large root q/a needs no subtraction, the small one is
+/// c/q.
+#[test]
+fn ex2_8_the_small_root_keeps_its_digits() {
+    let (a, b, c) = (1.0, -1e8, 1.0);
+    let (t1, t2) = stable_roots(a, b, c, discriminant(a, b, c)).unwrap();
+    assert_abs_diff_eq!(t1 / 5e-9, 1.0, epsilon = TOL);
+    assert_abs_diff_eq!(t2 / 2e8, 1.0, epsilon = TOL);
+}
+
+/// "Generic Sphere": the notes' t = −b/a ± √(b² − ac)/a, as printed, loses the small root of
+/// t² − 2·10⁸·t + 1 = 0 entirely (10⁸ − 10⁸ = 0), while the stable form keeps 5·10⁻⁹; both
+/// drop what is not a finite root (a = 0: the stable form keeps the line's root 1 and drops
+/// −∞) and find nothing for a NaN discriminant.
+#[test]
+fn ex2_9_textbook_roots_lose_the_small_root_and_stable_ones_keep_it() {
+    let (a, b, c) = (1.0, -1e8, 1.0);
+    assert_eq!(solve(a, b, c, Formula::Textbook), Roots::Two(0.0, 2e8));
+    match solve(a, b, c, Formula::Robust) {
+        Roots::Two(t1, t2) => {
+            assert_abs_diff_eq!(t1 / 5e-9, 1.0, epsilon = TOL);
+            assert_abs_diff_eq!(t2 / 2e8, 1.0, epsilon = TOL);
+        }
+        r => panic!("{r:?}"),
+    }
+    assert_eq!(
+        solve_with_discriminant(0.0, 2.0, -4.0, 4.0, Formula::Robust),
+        Roots::One(1.0)
+    );
+    for formula in [Formula::Textbook, Formula::Robust] {
+        assert_eq!(
+            solve_with_discriminant(1.0, 0.0, 1.0, Real::NAN, formula),
+            Roots::None
+        );
+    }
+}
+
 // --- sphere -------------------------------------------------------------------------------
 
 /// "Generic Sphere": a = |d|², b = e·d, c = |e|² − 1.
 #[test]
-fn sphere_coefficients_are_d_squared_e_dot_d_and_e_squared_minus_one() {
+fn ex2_6_sphere_coefficients_are_d_squared_e_dot_d_and_e_squared_minus_one() {
     let (a, b, c) = sphere::coefficients(&ray([1.0, 2.0, 3.0], [0.5, -1.0, 2.0]));
     assert_abs_diff_eq!(a, 5.25, epsilon = TOL); // 0.25 + 1 + 4
     assert_abs_diff_eq!(b, 4.5, epsilon = TOL); // 0.5 − 2 + 6
     assert_abs_diff_eq!(c, 13.0, epsilon = TOL); // 1 + 4 + 9 − 1
+    // from (0, 0, 5) along −z: (1, −5, 24), the roots 4 and 6 of t² − 10t + 24
+    let (a, b, c) = sphere::coefficients(&ray([0.0, 0.0, 5.0], [0.0, 0.0, -1.0]));
+    assert_abs_diff_eq!(a, 1.0, epsilon = TOL);
+    assert_abs_diff_eq!(b, -5.0, epsilon = TOL);
+    assert_abs_diff_eq!(c, 24.0, epsilon = TOL);
+}
+
+/// "Generic Sphere": b² − ac computed as a·(1 − ‖e − (b/a)·d‖²). Along −z from (0, 0, 5):
+/// 25 − 24 = 1; from (0, 2, 5): 25 − 28 = −3 (a miss); from (0, 1, 5): 0 (a graze); with
+/// d = (0, 0, −2), a = 4, b = −10: 100 − 96 = 4. From (0, ½, 10⁴) the closest point of the line
+/// is (0, ½, 0) and the discriminant exactly 1 − ¼ = ¾, in f32 too, where b² − ac =
+/// 10⁸ − (10⁸ + ¼ − 1) rounds to 0.
+#[test]
+fn ex2_7_sphere_discriminant_is_b2_minus_ac_without_cancellation() {
+    for (e, d, expected) in [
+        ([0.0, 0.0, 5.0], [0.0, 0.0, -1.0], 1.0),
+        ([0.0, 2.0, 5.0], [0.0, 0.0, -1.0], -3.0),
+        ([0.0, 1.0, 5.0], [0.0, 0.0, -1.0], 0.0),
+        ([0.0, 0.0, 5.0], [0.0, 0.0, -2.0], 4.0),
+        ([0.0, 0.5, 1e4], [0.0, 0.0, -1.0], 0.75),
+    ] {
+        let r = ray(e, d);
+        let (a, b, _) = sphere::coefficients(&r);
+        assert_abs_diff_eq!(sphere::discriminant(&r, a, b), expected, epsilon = TOL);
+    }
+    #[cfg(feature = "f32")]
+    {
+        let (a, b, c) = sphere::coefficients(&ray([0.0, 0.5, 1e4], [0.0, 0.0, -1.0]));
+        assert_eq!(
+            discriminant(a, b, c),
+            0.0,
+            "the textbook b² − ac loses it all"
+        );
+    }
+}
+
+/// "Surface Normals at Intersections": the generic sphere's normal at P is P.
+#[test]
+fn ex2_10_sphere_normal_is_the_point() {
+    for p in [
+        vec3(0.6, 0.0, 0.8),
+        vec3(0.0, 0.0, -1.0),
+        vec3(0.48, 0.6, 0.64),
+    ] {
+        assert_eq!(sphere::normal(p), p);
+    }
 }
 
 /// "Generic Sphere": a ray through the centre enters at t = 4 and leaves at t = 6, with normals
 /// equal to the hit points ("Surface Normals at Intersections").
 #[test]
-fn sphere_two_hits_with_the_point_as_normal() {
-    let hits =
-        generic(Shape::Sphere).intersect(&ray([0.0, 0.0, 5.0], [0.0, 0.0, -1.0]), Formula::Robust);
+fn ex2_11_sphere_two_hits_with_the_point_as_normal() {
+    let hits = sphere::intersect(&ray([0.0, 0.0, 5.0], [0.0, 0.0, -1.0]), Formula::Robust);
     assert_hits(&hits, &[(4.0, Part::Surface), (6.0, Part::Surface)]);
     let [h1, h2] = [hits.as_slice()[0], hits.as_slice()[1]];
     assert_vec_eq(h1.normal, Vec3::Z, TOL);
     assert_vec_eq(h2.normal, Vec3::NEG_Z, TOL);
     assert!(h1.entering && !h2.entering);
     // an oblique ray: e = (0.6, 0, 5), d = (0, 0, −1) meets z = ±0.8
-    let hits =
-        generic(Shape::Sphere).intersect(&ray([0.6, 0.0, 5.0], [0.0, 0.0, -1.0]), Formula::Robust);
+    let hits = sphere::intersect(&ray([0.6, 0.0, 5.0], [0.0, 0.0, -1.0]), Formula::Robust);
     assert_hits(&hits, &[(4.2, Part::Surface), (5.8, Part::Surface)]);
     assert_vec_eq(hits.as_slice()[0].normal, vec3(0.6, 0.0, 0.8), 10.0 * TOL);
 }
 
 /// "Generic Sphere": b² − ac = 0 grazes (one hit), b² − ac < 0 misses.
 #[test]
-fn sphere_tangent_ray_grazes_once_and_outside_ray_misses() {
-    let s = generic(Shape::Sphere);
+fn ex2_11_sphere_tangent_ray_grazes_once_and_outside_ray_misses() {
     for formula in [Formula::Textbook, Formula::Robust] {
-        let graze = s.intersect(&ray([1.0, 0.0, 5.0], [0.0, 0.0, -1.0]), formula);
+        let graze = sphere::intersect(&ray([1.0, 0.0, 5.0], [0.0, 0.0, -1.0]), formula);
         assert_hits(&graze, &[(5.0, Part::Surface)]);
         assert_vec_eq(graze.as_slice()[0].normal, Vec3::X, TOL);
-        assert!(
-            s.intersect(&ray([1.5, 0.0, 5.0], [0.0, 0.0, -1.0]), formula)
-                .is_empty()
-        );
+        assert!(sphere::intersect(&ray([1.5, 0.0, 5.0], [0.0, 0.0, -1.0]), formula).is_empty());
+        // along −z from (0, 1, 5) it grazes at t = 5, from (0, 2, 5) it misses (b² − ac < 0)
+        let graze = sphere::intersect(&ray([0.0, 1.0, 5.0], [0.0, 0.0, -1.0]), formula);
+        assert_hits(&graze, &[(5.0, Part::Surface)]);
+        assert!(sphere::intersect(&ray([0.0, 2.0, 5.0], [0.0, 0.0, -1.0]), formula).is_empty());
     }
+    // a degenerate direction hits nothing
+    assert!(sphere::intersect(&ray([0.0, 0.0, 5.0], [0.0, 0.0, 0.0]), Formula::Robust).is_empty());
 }
 
 // --- plane --------------------------------------------------------------------------------
 
 /// "Generic Plane": t = −e_z/d_z, normal (0, 0, 1).
 #[test]
-fn plane_is_hit_at_minus_ez_over_dz() {
-    let p = generic(Shape::Plane);
-    let hits = p.intersect(&ray([3.0, -1.0, 2.0], [1.0, 0.0, -0.5]), Formula::Robust);
+fn ex2_13_plane_is_hit_at_minus_ez_over_dz() {
+    let hits = plane::intersect(&ray([3.0, -1.0, 2.0], [1.0, 0.0, -0.5]));
     assert_hits(&hits, &[(4.0, Part::Surface)]);
     assert_vec_eq(hits.as_slice()[0].normal, Vec3::Z, TOL);
     assert!(hits.as_slice()[0].entering); // from the +z side
-    let below = p.intersect(&ray([0.0, 0.0, -2.0], [0.0, 0.0, 4.0]), Formula::Robust);
+    let below = plane::intersect(&ray([0.0, 0.0, -2.0], [0.0, 0.0, 4.0]));
     assert_hits(&below, &[(0.5, Part::Surface)]);
     assert!(!below.as_slice()[0].entering);
 }
 
 /// "Generic Plane": a ray with d_z = 0 is parallel and misses — never ±∞ or NaN, for +0 and −0,
-/// whether it starts off the plane or on it.
+/// whether it starts off the plane or on it; so does one whose −e_z/d_z overflows.
 #[test]
-fn ray_parallel_to_the_plane_misses() {
-    let p = generic(Shape::Plane);
+fn ex2_13_ray_parallel_to_the_plane_misses() {
     for dz in [0.0, -0.0] {
         for ez in [1.0, 0.0, -1.0] {
-            let hits = p.intersect(&ray([0.0, 0.0, ez], [1.0, 2.0, dz]), Formula::Robust);
+            let hits = plane::intersect(&ray([0.0, 0.0, ez], [1.0, 2.0, dz]));
             assert!(hits.is_empty(), "d_z = {dz}, e_z = {ez}: {hits:?}");
         }
     }
+    // a d_z so small that −e_z/d_z overflows: the hit is beyond every number, so none
+    let far = Ray::new(
+        Vec3::new(0.0, 0.0, Real::MAX),
+        Vec3::new(1.0, 0.0, -Real::MIN_POSITIVE),
+    );
+    assert!(plane::intersect(&far).is_empty());
 }
 
 // --- cylinder -----------------------------------------------------------------------------
 
 /// "Generic Cylinder": a = d_x² + d_y², b = e_x d_x + e_y d_y, c = e_x² + e_y² − 1.
 #[test]
-fn cylinder_coefficients_follow_the_notes() {
+fn ex2_14_cylinder_coefficients_follow_the_notes() {
     let (a, b, c) = cylinder::coefficients(&ray([1.0, 2.0, 3.0], [0.5, -1.0, 2.0]));
     assert_abs_diff_eq!(a, 1.25, epsilon = TOL);
     assert_abs_diff_eq!(b, -1.5, epsilon = TOL);
     assert_abs_diff_eq!(c, 4.0, epsilon = TOL);
 }
 
+/// "Generic Cylinder": b² − ac as a·(1 − ‖f‖²), f the x, y of e − (b/a)·d. Along +y from
+/// (0, −5, ½): a = 1, b = −5, c = 24, so 25 − 24 = 1; from (1.5, −5, 0): 25 − 26.25 = −1.25
+/// (a miss); with d = (0, 2, 7) (z plays no part): a = 4, b = −10, 100 − 96 = 4. From
+/// (½, 10⁴, 3) along −y the line passes ½ from the axis: exactly ¾, in f32 too.
+#[test]
+fn ex2_15_cylinder_discriminant_is_b2_minus_ac_of_the_wall() {
+    for (e, d, expected) in [
+        ([0.0, -5.0, 0.5], [0.0, 1.0, 0.0], 1.0),
+        ([1.5, -5.0, 0.0], [0.0, 1.0, 0.0], -1.25),
+        ([0.0, -5.0, 0.5], [0.0, 2.0, 7.0], 4.0),
+        ([0.5, 1e4, 3.0], [0.0, -1.0, 0.0], 0.75),
+    ] {
+        let r = ray(e, d);
+        let (a, b, _) = cylinder::coefficients(&r);
+        assert_abs_diff_eq!(cylinder::discriminant(&r, a, b), expected, epsilon = TOL);
+    }
+}
+
+/// "Surface Normals at Intersections": the cylinder's wall normal is (x, y, 0), its top cap's
+/// (0, 0, 1) and its bottom cap's (0, 0, −1), wherever on the cap.
+#[test]
+fn ex2_16_cylinder_normals_are_x_y_0_on_the_wall_and_plus_minus_z_on_the_caps() {
+    assert_vec_eq(
+        cylinder::normal(Part::Wall, vec3(0.6, 0.8, 0.3)),
+        vec3(0.6, 0.8, 0.0),
+        TOL,
+    );
+    assert_vec_eq(
+        cylinder::normal(Part::Wall, vec3(-1.0, 0.0, -0.9)),
+        Vec3::NEG_X,
+        TOL,
+    );
+    assert_eq!(
+        cylinder::normal(Part::TopCap, vec3(0.2, -0.3, 1.0)),
+        Vec3::Z
+    );
+    assert_eq!(
+        cylinder::normal(Part::BottomCap, vec3(0.2, -0.3, -1.0)),
+        Vec3::NEG_Z
+    );
+}
+
 /// "Generic Cylinder" and "Surface Normals at Intersections": a ray across the wall hits at
 /// y = ∓1 with normals (x, y, 0).
 #[test]
-fn cylinder_wall_two_hits_with_normals_x_y_0() {
+fn ex2_17_cylinder_wall_two_hits_with_normals_x_y_0() {
     for formula in [Formula::Textbook, Formula::Robust] {
-        let hits =
-            generic(Shape::Cylinder).intersect(&ray([0.0, -5.0, 0.5], [0.0, 1.0, 0.0]), formula);
+        let hits = cylinder::intersect(&ray([0.0, -5.0, 0.5], [0.0, 1.0, 0.0]), formula);
         assert_hits(&hits, &[(4.0, Part::Wall), (6.0, Part::Wall)]);
         assert_vec_eq(hits.as_slice()[0].normal, Vec3::NEG_Y, TOL);
         assert_vec_eq(hits.as_slice()[1].normal, Vec3::Y, TOL);
@@ -160,18 +421,11 @@ fn cylinder_wall_two_hits_with_normals_x_y_0() {
 
 /// "Generic Cylinder": roots with z outside [−1, 1] do not count, and a tangent ray grazes once.
 #[test]
-fn cylinder_miss_beyond_the_caps_and_tangent_graze() {
+fn ex2_17_cylinder_miss_beyond_the_caps_and_tangent_graze() {
     for formula in [Formula::Textbook, Formula::Robust] {
-        let c = generic(Shape::Cylinder);
-        assert!(
-            c.intersect(&ray([0.0, -5.0, 2.0], [0.0, 1.0, 0.0]), formula)
-                .is_empty()
-        );
-        assert!(
-            c.intersect(&ray([1.5, -5.0, 0.0], [0.0, 1.0, 0.0]), formula)
-                .is_empty()
-        );
-        let graze = c.intersect(&ray([1.0, -5.0, 0.0], [0.0, 1.0, 0.0]), formula);
+        assert!(cylinder::intersect(&ray([0.0, -5.0, 2.0], [0.0, 1.0, 0.0]), formula).is_empty());
+        assert!(cylinder::intersect(&ray([1.5, -5.0, 0.0], [0.0, 1.0, 0.0]), formula).is_empty());
+        let graze = cylinder::intersect(&ray([1.0, -5.0, 0.0], [0.0, 1.0, 0.0]), formula);
         assert_hits(&graze, &[(5.0, Part::Wall)]);
         assert_vec_eq(graze.as_slice()[0].normal, Vec3::X, TOL);
     }
@@ -181,10 +435,9 @@ fn cylinder_miss_beyond_the_caps_and_tangent_graze() {
 /// (a = 0) enters through the top cap, normal (0, 0, 1), and leaves through the bottom cap,
 /// normal (0, 0, −1).
 #[test]
-fn cylinder_ray_along_the_axis_crosses_both_caps() {
+fn ex2_17_cylinder_ray_along_the_axis_crosses_both_caps() {
     for formula in [Formula::Textbook, Formula::Robust] {
-        let hits =
-            generic(Shape::Cylinder).intersect(&ray([0.3, 0.2, 5.0], [0.0, 0.0, -1.0]), formula);
+        let hits = cylinder::intersect(&ray([0.3, 0.2, 5.0], [0.0, 0.0, -1.0]), formula);
         assert_hits(&hits, &[(4.0, Part::TopCap), (6.0, Part::BottomCap)]);
         assert_vec_eq(hits.as_slice()[0].normal, Vec3::Z, TOL);
         assert_vec_eq(hits.as_slice()[1].normal, Vec3::NEG_Z, TOL);
@@ -194,11 +447,10 @@ fn cylinder_ray_along_the_axis_crosses_both_caps() {
 /// "Generic Cylinder": a slanted ray enters through the top cap (inside the unit circle) and
 /// leaves through the wall.
 #[test]
-fn cylinder_ray_from_cap_to_wall() {
+fn ex2_17_cylinder_ray_from_cap_to_wall() {
     // e = (0, 0, 2), d = (0.5, 0, −1): z = 1 at t = 1 (x = 0.5, inside); x = 1 at t = 2 (z = 0)
     for formula in [Formula::Textbook, Formula::Robust] {
-        let hits =
-            generic(Shape::Cylinder).intersect(&ray([0.0, 0.0, 2.0], [0.5, 0.0, -1.0]), formula);
+        let hits = cylinder::intersect(&ray([0.0, 0.0, 2.0], [0.5, 0.0, -1.0]), formula);
         assert_hits(&hits, &[(1.0, Part::TopCap), (2.0, Part::Wall)]);
         assert_vec_eq(hits.as_slice()[1].normal, Vec3::X, TOL);
     }
@@ -209,23 +461,74 @@ fn cylinder_ray_from_cap_to_wall() {
 /// "Generic Cone": a = d_x² + d_y² − d_z², b = e_x d_x + e_y d_y + d_z(1 − e_z),
 /// c = e_x² + e_y² − (1 − e_z)².
 #[test]
-fn cone_coefficients_follow_the_notes() {
+fn ex2_18_cone_coefficients_follow_the_notes() {
     let (a, b, c) = cone::coefficients(&ray([1.0, 2.0, 3.0], [0.5, -1.0, 2.0]));
     assert_abs_diff_eq!(a, -2.75, epsilon = TOL); // 0.25 + 1 − 4
     assert_abs_diff_eq!(b, -5.5, epsilon = TOL); // 0.5 − 2 + 2·(1 − 3)
     assert_abs_diff_eq!(c, 1.0, epsilon = TOL); // 1 + 4 − 4
 }
 
-/// "Generic Cone" and "Surface Normals at Intersections": across the wall at z = 0 the radius
-/// is 1 − z = 1, hits at y = ∓1 with normals (x, y, 1 − z), renormalised.
+/// "Generic Cone": b² − ac = w_x² + w_y² − w_z² with w = d × (e − (0, 0, 1)). For e = (1, 2, 3),
+/// d = (0.5, −1, 2): u = (1, 2, 2), w = (−6, 1, 2), 36 + 1 − 4 = 33 = (−5.5)² − (−2.75)·1.
+/// Across the wall at z = 0 along +y from (0, −5, 0): w = (−1, 0, 0), 1 = 25 − 24. Touching it
+/// from (1, −5, 0): w = (−1, 0, −1), 0, a graze.
 #[test]
-fn cone_wall_two_hits_with_normals_x_y_one_minus_z() {
+fn ex2_19_cone_discriminant_is_b2_minus_ac() {
+    for (e, d, expected) in [
+        ([1.0, 2.0, 3.0], [0.5, -1.0, 2.0], 33.0),
+        ([0.0, -5.0, 0.0], [0.0, 1.0, 0.0], 1.0),
+        ([1.0, -5.0, 0.0], [0.0, 1.0, 0.0], 0.0),
+    ] {
+        let r = ray(e, d);
+        let (a, b, c) = cone::coefficients(&r);
+        assert_abs_diff_eq!(b * b - a * c, expected, epsilon = 10.0 * TOL);
+        assert_abs_diff_eq!(cone::discriminant(&r), expected, epsilon = 10.0 * TOL);
+    }
+}
+
+/// "Surface Normals at Intersections": the cone's wall normal is (x, y, 1 − z), not unit; its
+/// base's (0, 0, −1). At the apex, where (x, y, 1 − z) = 0, the axis (0, 0, 1) (an erratum:
+/// the notes give no normal there).
+#[test]
+fn ex2_20_cone_normals_are_x_y_one_minus_z_on_the_wall_and_minus_z_on_the_base() {
+    assert_vec_eq(
+        cone::normal(Part::Wall, vec3(0.5, 0.0, 0.5)),
+        vec3(0.5, 0.0, 0.5),
+        TOL,
+    );
+    assert_vec_eq(
+        cone::normal(Part::Wall, vec3(0.0, -1.0, 0.0)),
+        vec3(0.0, -1.0, 1.0),
+        TOL,
+    );
+    assert_vec_eq(
+        cone::normal(Part::Wall, vec3(1.2, -1.6, -1.0)),
+        vec3(1.2, -1.6, 2.0),
+        TOL,
+    );
+    assert_eq!(cone::normal(Part::Base, vec3(0.3, 0.4, -1.0)), Vec3::NEG_Z);
+    assert_eq!(cone::normal(Part::Apex, Vec3::Z), Vec3::Z);
+    assert_eq!(cone::normal(Part::Wall, Vec3::Z), Vec3::Z);
+}
+
+/// "Generic Cone" and "Surface Normals at Intersections": across the wall at z = 0 the radius
+/// is 1 − z = 1, hits at y = ∓1 with normals along (x, y, 1 − z).
+#[test]
+fn ex2_21_cone_wall_two_hits_with_normals_x_y_one_minus_z() {
     let k = 1.0 / (2.0 as Real).sqrt();
     for formula in [Formula::Textbook, Formula::Robust] {
-        let hits = generic(Shape::Cone).intersect(&ray([0.0, -5.0, 0.0], [0.0, 1.0, 0.0]), formula);
+        let hits = cone::intersect(&ray([0.0, -5.0, 0.0], [0.0, 1.0, 0.0]), formula);
         assert_hits(&hits, &[(4.0, Part::Wall), (6.0, Part::Wall)]);
-        assert_vec_eq(hits.as_slice()[0].normal, vec3(0.0, -1.0, 1.0) * k, TOL);
-        assert_vec_eq(hits.as_slice()[1].normal, vec3(0.0, 1.0, 1.0) * k, TOL);
+        assert_vec_eq(
+            unit(hits.as_slice()[0].normal),
+            vec3(0.0, -1.0, 1.0) * k,
+            TOL,
+        );
+        assert_vec_eq(
+            unit(hits.as_slice()[1].normal),
+            vec3(0.0, 1.0, 1.0) * k,
+            TOL,
+        );
     }
 }
 
@@ -234,22 +537,26 @@ fn cone_wall_two_hits_with_normals_x_y_one_minus_z() {
 /// from below at x = 0.5 the ray enters the base at t = 2 and leaves the wall where
 /// (1 − z)² = 0.25, z = 0.5, t = 3.5.
 #[test]
-fn cone_base_then_wall() {
+fn ex2_21_cone_base_then_wall() {
     let k = 1.0 / (2.0 as Real).sqrt();
     for formula in [Formula::Textbook, Formula::Robust] {
-        let hits = generic(Shape::Cone).intersect(&ray([0.5, 0.0, -3.0], [0.0, 0.0, 1.0]), formula);
+        let hits = cone::intersect(&ray([0.5, 0.0, -3.0], [0.0, 0.0, 1.0]), formula);
         assert_hits(&hits, &[(2.0, Part::Base), (3.5, Part::Wall)]);
         assert_vec_eq(hits.as_slice()[0].normal, Vec3::NEG_Z, TOL);
-        assert_vec_eq(hits.as_slice()[1].normal, vec3(1.0, 0.0, 1.0) * k, TOL);
+        assert_vec_eq(
+            unit(hits.as_slice()[1].normal),
+            vec3(1.0, 0.0, 1.0) * k,
+            TOL,
+        );
     }
 }
 
 /// "Generic Cone": the implicit equation also holds on the upper nappe (z > 1), which is not
 /// part of the cone: a ray crossing it misses.
 #[test]
-fn upper_nappe_of_the_double_cone_is_not_hit() {
+fn ex2_21_upper_nappe_of_the_double_cone_is_not_hit() {
     for formula in [Formula::Textbook, Formula::Robust] {
-        let hits = generic(Shape::Cone).intersect(&ray([0.0, -5.0, 1.5], [0.0, 1.0, 0.0]), formula);
+        let hits = cone::intersect(&ray([0.0, -5.0, 1.5], [0.0, 1.0, 0.0]), formula);
         assert!(hits.is_empty(), "{formula:?}: {hits:?}");
     }
 }
@@ -258,9 +565,8 @@ fn upper_nappe_of_the_double_cone_is_not_hit() {
 /// where (x, y, 1 − z) = 0; whitted returns the finite unit normal (0, 0, 1) there, then
 /// leaves through the base.
 #[test]
-fn cone_apex_has_a_finite_unit_normal() {
-    let hits =
-        generic(Shape::Cone).intersect(&ray([0.0, 0.0, 3.0], [0.0, 0.0, -1.0]), Formula::Robust);
+fn ex2_21_cone_apex_has_a_finite_unit_normal() {
+    let hits = cone::intersect(&ray([0.0, 0.0, 3.0], [0.0, 0.0, -1.0]), Formula::Robust);
     assert_eq!(hits.len(), 2, "{hits:?}");
     let (apex, base) = (hits.as_slice()[0], hits.as_slice()[1]);
     assert_abs_diff_eq!(apex.t, 2.0, epsilon = 10.0 * TOL);
@@ -275,7 +581,7 @@ fn cone_apex_has_a_finite_unit_normal() {
 /// "Convex Polyhedra" (erratum): the notes print t = d − n·e / n·d; by precedence that is
 /// d − (n·e)/(n·d), whose point is not on the facet. t = (d − n·e)/(n·d) is.
 #[test]
-fn facet_t_is_d_minus_n_dot_e_all_over_n_dot_d() {
+fn ex2_22_facet_t_is_d_minus_n_dot_e_all_over_n_dot_d() {
     let facet = polyhedron::Facet::new(Vec3::Z, 1.0).unwrap(); // the plane z = 1
     let r = ray([0.0, 0.0, 5.0], [0.0, 0.0, -2.0]);
     let as_printed = facet.d() - facet.normal().dot(r.origin) / facet.normal().dot(r.dir); // 1 − 5/(−2) = 3.5
@@ -289,9 +595,8 @@ fn facet_t_is_d_minus_n_dot_e_all_over_n_dot_d() {
 /// "Convex Polyhedra": the cube [−1, 1]³ along z: enters facet +z (index 4) at t = 4, leaves
 /// facet −z (index 5) at t = 6, each with its facet's outward normal.
 #[test]
-fn cube_entering_and_leaving_facets() {
-    let hits = generic(Shape::Polyhedron(Polyhedron::cube()))
-        .intersect(&ray([0.2, 0.3, 5.0], [0.0, 0.0, -1.0]), Formula::Robust);
+fn ex2_23_cube_entering_and_leaving_facets() {
+    let hits = Polyhedron::cube().intersect(&ray([0.2, 0.3, 5.0], [0.0, 0.0, -1.0]));
     assert_hits(&hits, &[(4.0, Part::Facet(4)), (6.0, Part::Facet(5))]);
     assert_vec_eq(hits.as_slice()[0].normal, Vec3::Z, TOL);
     assert_vec_eq(hits.as_slice()[1].normal, Vec3::NEG_Z, TOL);
@@ -301,8 +606,8 @@ fn cube_entering_and_leaving_facets() {
 /// own rule (Q·n < d is inside) makes d − n·e < 0 *outside* — a miss — and d − n·e > 0 inside,
 /// where the facet does not stop the ray. The notes' table says the opposite.
 #[test]
-fn ray_parallel_to_a_facet_misses_outside_and_passes_inside() {
-    let cube = generic(Shape::Polyhedron(Polyhedron::cube()));
+fn ex2_23_ray_parallel_to_a_facet_misses_outside_and_passes_inside() {
+    let cube = Polyhedron::cube();
     // parallel to the facet y = 1 (index 2), at y = 2: d − n·e = 1 − 2 < 0, outside
     let facet = Polyhedron::cube().facets()[2];
     let e = vec3(0.0, 2.0, 5.0);
@@ -312,20 +617,19 @@ fn ray_parallel_to_a_facet_misses_outside_and_passes_inside() {
         "Q·n > d: outside, by the notes' rule"
     );
     assert!(
-        cube.intersect(&ray([0.0, 2.0, 5.0], [0.0, 0.0, -1.0]), Formula::Robust)
+        cube.intersect(&ray([0.0, 2.0, 5.0], [0.0, 0.0, -1.0]))
             .is_empty()
     );
     // parallel to it at y = 0.5 (inside its half-space)
-    let hits = cube.intersect(&ray([0.0, 0.5, 5.0], [0.0, 0.0, -1.0]), Formula::Robust);
+    let hits = cube.intersect(&ray([0.0, 0.5, 5.0], [0.0, 0.0, -1.0]));
     assert_hits(&hits, &[(4.0, Part::Facet(4)), (6.0, Part::Facet(5))]);
 }
 
 /// "Convex Polyhedra": the octahedron |x| + |y| + |z| ≤ 1 along x at y = 0.25, z = 0.1 spans
 /// |x| ≤ 0.65: t = 4.35 through the facet with normal (1, 1, 1)/√3.
 #[test]
-fn octahedron_hits_through_its_facets() {
-    let hits = generic(Shape::Polyhedron(Polyhedron::octahedron()))
-        .intersect(&ray([5.0, 0.25, 0.1], [-1.0, 0.0, 0.0]), Formula::Robust);
+fn ex2_23_octahedron_hits_through_its_facets() {
+    let hits = Polyhedron::octahedron().intersect(&ray([5.0, 0.25, 0.1], [-1.0, 0.0, 0.0]));
     assert_eq!(hits.len(), 2);
     assert_abs_diff_eq!(hits.as_slice()[0].t, 4.35, epsilon = 10.0 * TOL);
     assert_abs_diff_eq!(hits.as_slice()[1].t, 5.65, epsilon = 10.0 * TOL);
@@ -337,9 +641,8 @@ fn octahedron_hits_through_its_facets() {
 /// "Convex Polyhedra": the tetrahedron with vertices (1,1,1), (1,−1,−1), (−1,1,−1), (−1,−1,1),
 /// along z at x = 0.2, spans z ∈ [−0.8, 0.8].
 #[test]
-fn tetrahedron_hits_through_its_facets() {
-    let hits = generic(Shape::Polyhedron(Polyhedron::tetrahedron()))
-        .intersect(&ray([0.2, 0.0, 5.0], [0.0, 0.0, -1.0]), Formula::Robust);
+fn ex2_23_tetrahedron_hits_through_its_facets() {
+    let hits = Polyhedron::tetrahedron().intersect(&ray([0.2, 0.0, 5.0], [0.0, 0.0, -1.0]));
     let k = 1.0 / (3.0 as Real).sqrt();
     assert_hits(&hits, &[(4.2, Part::Facet(2)), (5.8, Part::Facet(3))]);
     assert_vec_eq(hits.as_slice()[0].normal, vec3(1.0, -1.0, 1.0) * k, TOL);
@@ -375,7 +678,7 @@ fn ellipsoid() -> Object {
 
 /// "Ray Tracing Process": M⁻¹ is built from the inverse steps; M·M⁻¹ = I.
 #[test]
-fn inverse_from_inverse_steps_undoes_the_placement() {
+fn ex2_3_inverse_from_inverse_steps_undoes_the_placement() {
     let o = ellipsoid();
     let product = o.placement.m() * o.placement.inv();
     assert!(
@@ -392,10 +695,11 @@ fn inverse_from_inverse_steps_undoes_the_placement() {
     );
 }
 
-/// "Ray Tracing Process": M⁻¹d is not renormalised, so the t found in object space gives the
-/// same point in world space: M·(M⁻¹e + M⁻¹d·t) = e + d·t, under a non-uniform scale.
+/// "Ray Tracing Process": M⁻¹d is not renormalised, so the t that `Shape::intersect_placed`
+/// finds in object space gives the same point in world space: M·(M⁻¹e + M⁻¹d·t) = e + d·t,
+/// under a non-uniform scale.
 #[test]
-fn t_is_the_same_in_world_and_object_space() {
+fn ex2_12_t_is_the_same_in_world_and_object_space() {
     let o = ellipsoid();
     let world = ray([-4.0, -1.0, 2.5], [3.0, -0.5, 0.2]);
     let local = world.transformed(o.placement.inv());
@@ -403,7 +707,7 @@ fn t_is_the_same_in_world_and_object_space() {
         (local.dir.length() - world.dir.length()).abs() > 0.1,
         "the scale changes |d|"
     );
-    let hits = o.intersect(&world, Formula::Robust);
+    let hits = o.intersect_object_space(&world, Formula::Robust); // Shape::intersect_placed
     assert_eq!(hits.len(), 2);
     for h in hits.as_slice() {
         let p_world = world.at(h.t);
@@ -425,11 +729,61 @@ fn t_is_the_same_in_world_and_object_space() {
     );
 }
 
+/// "Ray Tracing Process": a sphere of radius 2 centred at (0, 0, −10) (scale 2, then translate)
+/// seen from the origin along d = (0, 0, −2): the world points (0, 0, −8) and (0, 0, −12) are
+/// at the world ray's t = 4 and 6, and their object-space normals are (0, 0, ±1).
+#[test]
+fn ex2_12_a_placed_shape_is_hit_at_the_world_rays_t() {
+    let placement = Placement::from_steps(&[
+        Step::Scale(Vec3::splat(2.0)),
+        Step::Translate(vec3(0.0, 0.0, -10.0)),
+    ])
+    .unwrap();
+    let world = ray([0.0, 0.0, 0.0], [0.0, 0.0, -2.0]);
+    let hits = Shape::Sphere.intersect_placed(placement.inv(), &world, Formula::Robust);
+    assert_hits(&hits, &[(4.0, Part::Surface), (6.0, Part::Surface)]);
+    assert_vec_eq(hits.as_slice()[0].normal, Vec3::Z, TOL);
+    assert_vec_eq(hits.as_slice()[1].normal, Vec3::NEG_Z, TOL);
+}
+
+/// "Surface Normals at Intersections": n = (M⁻¹)ᵀ·n′, made unit. Under the scale (2, 1, 1),
+/// (M⁻¹)ᵀ = diag(½, 1, 1): n′ = (1, 1, 0)/√2 gives (½, 1, 0) ∝ (1, 2, 0)/√5, and a translation
+/// after it changes nothing; a quarter turn about z turns (1, 0, 0) into (0, 1, 0); the identity
+/// makes the cone's (0, −1, 1) unit.
+#[test]
+fn ex2_26_normals_go_back_by_the_inverse_transpose() {
+    let s = (2.0 as Real).sqrt();
+    let stretched = Placement::from_steps(&[Step::Scale(vec3(2.0, 1.0, 1.0))]).unwrap();
+    let expected = vec3(1.0, 2.0, 0.0) / (5.0 as Real).sqrt();
+    assert_vec_eq(
+        stretched.normal_to_world(vec3(1.0, 1.0, 0.0) / s),
+        expected,
+        TOL,
+    );
+    let moved = Placement::from_steps(&[
+        Step::Scale(vec3(2.0, 1.0, 1.0)),
+        Step::Translate(vec3(5.0, -3.0, 2.0)),
+    ])
+    .unwrap();
+    assert_vec_eq(
+        moved.normal_to_world(vec3(1.0, 1.0, 0.0) / s),
+        expected,
+        TOL,
+    );
+    let turned = Placement::from_steps(&[Step::RotateZ(90.0)]).unwrap();
+    assert_vec_eq(turned.normal_to_world(Vec3::X), Vec3::Y, TOL);
+    assert_vec_eq(
+        Placement::identity().normal_to_world(vec3(0.0, -1.0, 1.0)),
+        vec3(0.0, -1.0, 1.0) / s,
+        TOL,
+    );
+}
+
 /// "Surface Normals at Intersections" and "Ray Tracing Process": under the non-uniform scale
 /// (2, 1, 1), the object-space normal n′ = (1, 1, 0)/√2 at P′ = n′ becomes (M⁻¹)ᵀn′ ∝ (1, 2, 0),
 /// perpendicular to the surface; M·n′ ∝ (2, 1, 0) is not.
 #[test]
-fn normal_under_non_uniform_scale_uses_inverse_transpose() {
+fn ex2_26_normal_under_non_uniform_scale_uses_inverse_transpose() {
     let o = Object::new(
         Shape::Sphere,
         Placement::from_steps(&[Step::Scale(vec3(2.0, 1.0, 1.0))]).unwrap(),
@@ -478,7 +832,7 @@ fn placed_cylinder_from_base_top_radius() {
 
 /// "Ray Tracing Process": a zero scale has no inverse; the placement refuses it.
 #[test]
-fn zero_scale_is_not_invertible() {
+fn ex2_3_zero_scale_is_not_invertible() {
     assert!(Placement::from_steps(&[Step::Scale(vec3(1.0, 0.0, 1.0))]).is_none());
     assert!(Placement::from_steps(&[Step::Scale(Vec3::new(1.0, Real::NAN, 1.0))]).is_none());
     assert!(Placement::from_steps(&[Step::Scale(vec3(1.0, 2.0, 1.0))]).is_some());
@@ -487,33 +841,33 @@ fn zero_scale_is_not_invertible() {
 /// "Generic Cone": a ray touching the wall at z = 0 (radius 1) has b² − ac = 0 and grazes once,
 /// with the wall normal (x, y, 1 − z) there.
 #[test]
-fn cone_tangent_ray_grazes_once() {
+fn ex2_21_cone_tangent_ray_grazes_once() {
     let r = ray([1.0, -5.0, 0.0], [0.0, 1.0, 0.0]);
     let (a, b, c) = cone::coefficients(&r);
     assert_abs_diff_eq!(b * b - a * c, 0.0, epsilon = TOL);
     let k = 1.0 / (2.0 as Real).sqrt();
     for formula in [Formula::Textbook, Formula::Robust] {
-        let hits = generic(Shape::Cone).intersect(&r, formula);
+        let hits = cone::intersect(&r, formula);
         assert_hits(&hits, &[(5.0, Part::Wall)]);
-        assert_vec_eq(hits.as_slice()[0].normal, vec3(1.0, 0.0, 1.0) * k, TOL);
+        assert_vec_eq(
+            unit(hits.as_slice()[0].normal),
+            vec3(1.0, 0.0, 1.0) * k,
+            TOL,
+        );
     }
-    assert!(
-        generic(Shape::Cone)
-            .intersect(&ray([1.2, -5.0, 0.0], [0.0, 1.0, 0.0]), Formula::Robust)
-            .is_empty()
-    );
+    assert!(cone::intersect(&ray([1.2, -5.0, 0.0], [0.0, 1.0, 0.0]), Formula::Robust).is_empty());
 }
 
 /// "Convex Polyhedra": a ray across an edge of the cube enters (facet +z) and leaves (facet +x)
 /// at the same t: t_near = t_far, one grazing hit; a little further out it misses
 /// (t_near > t_far).
 #[test]
-fn polyhedron_ray_across_an_edge_grazes_once() {
-    let cube = generic(Shape::Polyhedron(Polyhedron::cube()));
-    let hits = cube.intersect(&ray([0.0, 0.0, 2.0], [1.0, 0.0, -1.0]), Formula::Robust);
+fn ex2_23_polyhedron_ray_across_an_edge_grazes_once() {
+    let cube = Polyhedron::cube();
+    let hits = cube.intersect(&ray([0.0, 0.0, 2.0], [1.0, 0.0, -1.0]));
     assert_hits(&hits, &[(1.0, Part::Facet(4))]);
     assert!(
-        cube.intersect(&ray([0.5, 0.0, 2.5], [1.0, 0.0, -1.0]), Formula::Robust)
+        cube.intersect(&ray([0.5, 0.0, 2.5], [1.0, 0.0, -1.0]))
             .is_empty()
     );
 }
@@ -586,18 +940,18 @@ fn open_empty_or_flat_facet_sets_are_not_polyhedra() {
 /// so the base it closes on has radius 2. A ray from below at x = 1.5 enters through the base
 /// (a unit disc would let it into a hole) and leaves through the wall where 1 − z = 1.5.
 #[test]
-fn cone_base_has_radius_two() {
+fn ex2_21_cone_base_has_radius_two() {
     let k = 1.0 / (2.0 as Real).sqrt();
     for formula in [Formula::Textbook, Formula::Robust] {
-        let hits = generic(Shape::Cone).intersect(&ray([1.5, 0.0, -3.0], [0.0, 0.0, 1.0]), formula);
+        let hits = cone::intersect(&ray([1.5, 0.0, -3.0], [0.0, 0.0, 1.0]), formula);
         assert_hits(&hits, &[(2.0, Part::Base), (2.5, Part::Wall)]);
-        assert_vec_eq(hits.as_slice()[1].normal, vec3(1.0, 0.0, 1.0) * k, TOL);
-        // just outside the radius-2 base: a miss
-        assert!(
-            generic(Shape::Cone)
-                .intersect(&ray([2.01, 0.0, -3.0], [0.0, 0.0, 1.0]), formula)
-                .is_empty()
+        assert_vec_eq(
+            unit(hits.as_slice()[1].normal),
+            vec3(1.0, 0.0, 1.0) * k,
+            TOL,
         );
+        // just outside the radius-2 base: a miss
+        assert!(cone::intersect(&ray([2.01, 0.0, -3.0], [0.0, 0.0, 1.0]), formula).is_empty());
     }
 }
 
@@ -669,10 +1023,31 @@ fn nearest_hit_has_the_smallest_positive_t() {
     assert_vec_eq(c, vec3(1.0, 0.0, 0.0), 0.0);
 }
 
+/// "Ray Tracing Process", step 5 for one object: of its hits at t = 2 (entering) and t = 5
+/// (leaving), a ray from t_min sees the first one past t_min: the one at 2 from t_min = −10 or
+/// 0, the one at 5 from 2 (a hit at exactly t_min does not count) or 3, none from 5 on.
+#[test]
+fn ex2_24_the_visible_hit_is_the_first_after_t_min() {
+    let at = |t: Real, entering: bool| Hit {
+        t,
+        normal: Vec3::Z,
+        part: Part::Surface,
+        entering,
+    };
+    let hits = Hits::two(at(2.0, true), at(5.0, false));
+    assert_eq!(hits.first_after(-10.0), Some(at(2.0, true)));
+    assert_eq!(hits.first_after(0.0), Some(at(2.0, true)));
+    assert_eq!(hits.first_after(2.0), Some(at(5.0, false)));
+    assert_eq!(hits.first_after(3.0), Some(at(5.0, false)));
+    assert_eq!(hits.first_after(5.0), None);
+    assert_eq!(Hits::one(at(-1.0, true)).first_after(0.0), None);
+    assert_eq!(Hits::none().first_after(0.0), None);
+}
+
 /// "Ray Tracing Process", step 5 (the tie rule of `shapes::nearer`): a smaller t wins whatever
 /// the order; of two hits at the same t, the object listed first.
 #[test]
-fn equal_t_goes_to_the_object_listed_first() {
+fn ex2_25_equal_t_goes_to_the_object_listed_first() {
     assert!(nearer(2.0, 0, 2.0, 1));
     assert!(!nearer(2.0, 1, 2.0, 0));
     assert!(!nearer(2.0, 3, 2.0, 3));
@@ -729,7 +1104,7 @@ fn coincident_objects_show_the_first_listed_for_every_accel() {
 /// - from inside, e = (0.5, 0.5, 0), d = (1, 0, 0): entering through facet 2 behind the origin
 ///   at t = (2 − 0)/(−1) = −2 (x = −1.5), leaving through facet 1 at t = (2 − 1)/1 = 1.
 #[test]
-fn polyhedron_enters_where_n_dot_d_is_negative_and_leaves_where_positive() {
+fn ex2_23_polyhedron_enters_where_n_dot_d_is_negative_and_leaves_where_positive() {
     let facet =
         |n: [f64; 3], d: f64| polyhedron::Facet::new(vec3(n[0], n[1], n[2]), d as Real).unwrap();
     let prism = Polyhedron::new(vec![
@@ -740,7 +1115,6 @@ fn polyhedron_enters_where_n_dot_d_is_negative_and_leaves_where_positive() {
         facet([0.0, 0.0, -1.0], 1.0),
     ]);
     assert_eq!(prism.check(), Ok(()));
-    let prism = generic(Shape::Polyhedron(prism));
     let k = 1.0 / (2.0 as Real).sqrt();
     let (n1, n2) = (vec3(1.0, 1.0, 0.0) * k, vec3(-1.0, 1.0, 0.0) * k);
     let cases = [
@@ -758,7 +1132,7 @@ fn polyhedron_enters_where_n_dot_d_is_negative_and_leaves_where_positive() {
         ),
     ];
     for (r, expected) in cases {
-        let hits = prism.intersect(&r, Formula::Robust);
+        let hits = prism.intersect(&r);
         assert_hits(
             &hits,
             &[
@@ -789,7 +1163,7 @@ fn entries_are_exactly_0_or_1(m: &Mat4) -> bool {
 /// 180° → (0, −1); 270° → (−1, 0); 450° = 360° + 90° → (1, 0). Turning +z onto ±x, ±y and −z
 /// gives such matrices, which carry +z exactly onto the target and multiply to I exactly.
 #[test]
-fn rotations_by_multiples_of_90_degrees_are_exact() {
+fn ex2_3_rotations_by_multiples_of_90_degrees_are_exact() {
     assert_eq!(sin_cos_degrees(90.0), (1.0, 0.0));
     assert_eq!(sin_cos_degrees(-90.0), (-1.0, 0.0));
     assert_eq!(sin_cos_degrees(180.0), (0.0, -1.0));

@@ -1,5 +1,10 @@
 //! Chapter 3 — shading (notes: "Shading"): ambient, diffuse and specular per RGB channel,
 //! attenuation, several lights, and the rays a shaded render casts.
+//!
+//! A test named `ex3_K_…` checks exercise 3.K of `chapters/formulas.toml`. The local light
+//! (3.7) is seen only through the renderer, which also asks `Tracer::feeler` (4.4) for a
+//! feeler and hands the colour to `Tracer::reflect_and_refract` (5.5): before stage 4 and 5
+//! they give nothing and return it unchanged, but they must not be `todo!()`.
 
 mod common;
 
@@ -8,7 +13,7 @@ use common::{TOL, assert_vec_eq, centre, render_at, scene};
 use whitted::light::Light;
 use whitted::material::Material;
 use whitted::real::{Real, Vec3, vec3};
-use whitted::render::Stage;
+use whitted::render::{Options, Stage, Tracer};
 use whitted::shading::{ambient, direct, highlight, lambert, mirror};
 
 /// A unit sphere at the origin seen from (0, 0, 5), with one light at `light` (a TOML array).
@@ -24,7 +29,7 @@ fn sphere_scene(light: &str, extra: &str) -> String {
 /// "Shading": with the light straight behind the eye, s = v = n at the nearest point, r·v = 1,
 /// so I = ρa·I_m + I_p(ρd + ρs) in every channel.
 #[test]
-fn light_behind_the_eye_gives_ambient_plus_full_diffuse_and_specular() {
+fn ex3_7_light_behind_the_eye_gives_ambient_plus_full_diffuse_and_specular() {
     let s = scene(&sphere_scene("[0.0, 0.0, 10.0]", ""));
     let (c, _) = centre(&s, Stage::Shading);
     let expected = vec3(0.1 * 0.5, 0.2 * 0.4, 0.3 * 0.3)
@@ -34,32 +39,56 @@ fn light_behind_the_eye_gives_ambient_plus_full_diffuse_and_specular() {
 
 /// "Shading": a light behind the surface (n·s < 0) adds nothing: ambient only.
 #[test]
-fn light_behind_the_surface_gives_ambient_only() {
+fn ex3_7_light_behind_the_surface_gives_ambient_only() {
     let s = scene(&sphere_scene("[0.0, 0.0, -10.0]", ""));
     let (c, stats) = centre(&s, Stage::Shading);
     assert_vec_eq(c, vec3(0.05, 0.08, 0.09), 10.0 * TOL);
     assert_eq!(stats.shadow, 0);
 }
 
-/// "Shading" (erratum: negative dot products): unclamped, the notes' formula would subtract
-/// light for n·s < 0 and add a highlight from (r·v)^f with an even f. whitted clamps.
+/// "Shading" (erratum: negative dot products): unclamped, the notes' n·s would subtract light
+/// for a light behind the surface. whitted clamps: max(n·s, 0) is 1 for s = n, cos 60° = ½ at
+/// 60°, 0 at 90° and 0 — not −1 — for a light straight behind.
 #[test]
-fn negative_dot_products_are_clamped() {
+fn ex3_3_negative_dot_products_are_clamped() {
+    let n = Vec3::Z;
+    let a = (60.0 as Real).to_radians();
+    assert_abs_diff_eq!(lambert(n, n), 1.0, epsilon = TOL);
+    assert_abs_diff_eq!(
+        lambert(n, Vec3::new(a.sin(), 0.0, a.cos())),
+        0.5,
+        epsilon = TOL
+    );
+    assert_eq!(lambert(n, Vec3::X), 0.0);
+    let s = Vec3::NEG_Z; // light exactly behind
+    assert_eq!(lambert(n, s), 0.0);
+    assert_abs_diff_eq!(n.dot(s), -1.0, epsilon = TOL); // the notes' n·s
+}
+
+/// "Shading" (erratum: negative dot products): unclamped, the notes' (r·v)^f would add a
+/// highlight from a negative r·v with an even f, and a light behind the surface could still
+/// shine on a viewer along r. whitted's highlight is 0 in both cases.
+#[test]
+fn ex3_5_negative_dot_products_are_clamped() {
     let n = Vec3::Z;
     let s = Vec3::NEG_Z; // light exactly behind
     let v = Vec3::NEG_Z; // viewer on the far side too (e.g. seen through glass)
-    assert_eq!(lambert(n, s), 0.0);
     assert_eq!(highlight(n, s, v, 2.0), 0.0);
-    // the notes' expressions, unclamped, give −1 and +1 here
-    let notes_diffuse = n.dot(s);
+    // the notes' expression, unclamped, gives +1 here: r = −z is along v
     let notes_specular = (mirror(s, n).dot(v)).powf(2.0);
-    assert_abs_diff_eq!(notes_diffuse, -1.0, epsilon = TOL);
     assert_abs_diff_eq!(notes_specular, 1.0, epsilon = TOL);
+    // a light in front, a viewer more than 90° from r: r·v < 0, and f = 2 must not square it
+    let k = 1.0 / (2.0 as Real).sqrt();
+    let s = vec3(1.0, 0.0, 1.0) * k; // r = (−1, 0, 1)/√2
+    assert_eq!(highlight(n, s, Vec3::X, 2.0), 0.0);
+    assert_abs_diff_eq!(mirror(s, n).dot(Vec3::X).powf(2.0), 0.5, epsilon = TOL);
+    // a light grazing the surface (n·s = 0) gives no highlight even to a viewer along r
+    assert_eq!(highlight(n, Vec3::X, Vec3::NEG_X, 5.0), 0.0);
 }
 
 /// "Shading": r is the mirror of s about n, r = 2(n·s)n − s.
 #[test]
-fn mirror_direction_of_the_light() {
+fn ex3_4_mirror_direction_of_the_light() {
     let k = 1.0 / (2.0 as Real).sqrt();
     assert_vec_eq(
         mirror(vec3(1.0, 0.0, 1.0) * k, Vec3::Z),
@@ -67,7 +96,23 @@ fn mirror_direction_of_the_light() {
         TOL,
     );
     assert_vec_eq(mirror(Vec3::Z, Vec3::Z), Vec3::Z, TOL);
-    // highlight: with v on r the term is 1, at 60° from r it is cos(60°)^f
+    // for unit s and n: r is unit, n·r = n·s, and r + s is parallel to n
+    let n = vec3(1.0, 2.0, 2.0) / 3.0;
+    let s = vec3(0.6, 0.0, 0.8);
+    let r = mirror(s, n);
+    assert_abs_diff_eq!(r.length(), 1.0, epsilon = TOL);
+    assert_abs_diff_eq!(n.dot(r), n.dot(s), epsilon = TOL);
+    assert_vec_eq((r + s).cross(n), Vec3::ZERO, TOL);
+    // by hand: n·s = (0.6 + 1.6)/3 = 2.2/3, r = 2·(2.2/3)·(1, 2, 2)/3 − s
+    let h = 4.4 / 9.0;
+    assert_vec_eq(r, vec3(h - 0.6, 2.0 * h, 2.0 * h - 0.8), TOL);
+}
+
+/// "Shading": the highlight (r·v)^f is 1 with v along r, cos(60°)^f = ½^f with v 60° away
+/// from r, and smaller for a larger f at the same v ≠ r.
+#[test]
+fn ex3_5_highlight_is_one_along_r_and_falls_with_the_angle() {
+    let k = 1.0 / (2.0 as Real).sqrt();
     let s = vec3(1.0, 0.0, 1.0) * k;
     let r = vec3(-1.0, 0.0, 1.0) * k;
     assert_abs_diff_eq!(highlight(Vec3::Z, s, r, 50.0), 1.0, epsilon = TOL);
@@ -79,11 +124,17 @@ fn mirror_direction_of_the_light() {
         (0.5 as Real).powi(3),
         epsilon = 10.0 * TOL
     );
+    assert_abs_diff_eq!(
+        highlight(Vec3::Z, s, v, 10.0),
+        (0.5 as Real).powi(10),
+        epsilon = 10.0 * TOL
+    );
+    assert!(highlight(Vec3::Z, s, v, 10.0) < highlight(Vec3::Z, s, v, 3.0));
 }
 
 /// "Shading": the diffuse term follows the cosine law ρd·I_p·(n·s).
 #[test]
-fn diffuse_follows_the_cosine_law() {
+fn ex3_6_diffuse_follows_the_cosine_law() {
     let m = Material {
         ambient: Vec3::ZERO,
         diffuse: Vec3::splat(0.8),
@@ -97,18 +148,67 @@ fn diffuse_follows_the_cosine_law() {
     let light = Light::white(Vec3::new(2.0 * a.sin(), 2.0 * a.cos(), 0.0));
     let i = direct(&m, &light, p, n, Vec3::Y);
     assert_vec_eq(i, Vec3::splat(0.8 * 0.5), 10.0 * TOL);
+}
+
+/// "Shading": I_a = ρa·I_m, channel by channel: ρa = (0.1, 0.2, 0.3) under I_m = (0.5, 0.4, 0.3)
+/// gives (0.05, 0.08, 0.09); the default material (ρa = 0.1) under 0.5 gives 0.05.
+#[test]
+fn ex3_1_ambient_is_rho_a_times_i_m_per_channel() {
+    let m = Material {
+        ambient: vec3(0.1, 0.2, 0.3),
+        ..Material::default()
+    };
+    assert_vec_eq(
+        ambient(&m, vec3(0.5, 0.4, 0.3)),
+        vec3(0.05, 0.08, 0.09),
+        TOL,
+    );
     assert_vec_eq(
         ambient(&Material::default(), Vec3::splat(0.5)),
         Vec3::splat(0.05),
         TOL,
     );
+    assert_eq!(ambient(&m, Vec3::ZERO), Vec3::ZERO);
+}
+
+/// "Shading", one light per RGB channel: a light straight above a surface facing up, seen from
+/// v = n, gives I_p·(ρd + ρs) in each channel (n·s = r·v = 1); a red light (1, 0, 0) leaves
+/// green and blue at 0; the light moved below the surface gives (0, 0, 0), and so does a light
+/// at the point itself.
+#[test]
+fn ex3_6_one_light_three_channels() {
+    let m = Material {
+        ambient: vec3(0.3, 0.3, 0.3),
+        diffuse: vec3(0.5, 0.4, 0.3),
+        specular: vec3(0.2, 0.3, 0.4),
+        shininess: 10.0,
+        ..Material::default()
+    };
+    let (p, n) = (vec3(1.0, 0.0, -2.0), Vec3::Y);
+    let mut light = Light {
+        position: vec3(1.0, 3.0, -2.0),
+        intensity: vec3(0.9, 0.8, 0.7),
+        attenuation: [1.0, 0.0, 0.0],
+        shadows: true,
+    };
+    assert_vec_eq(
+        direct(&m, &light, p, n, n),
+        vec3(0.9 * 0.7, 0.8 * 0.7, 0.7 * 0.7),
+        10.0 * TOL,
+    );
+    light.intensity = vec3(1.0, 0.0, 0.0);
+    assert_vec_eq(direct(&m, &light, p, n, n), vec3(0.7, 0.0, 0.0), 10.0 * TOL);
+    light.position = vec3(1.0, -3.0, -2.0);
+    assert_eq!(direct(&m, &light, p, n, n), Vec3::ZERO);
+    light.position = p;
+    assert_eq!(direct(&m, &light, p, n, n), Vec3::ZERO);
 }
 
 /// The shortcuts that skip `powf` leave the numbers as they were: a viewer beyond 90° of r
 /// gets exactly 0 (0^f, f > 0), f = 0 still gives 0^0 = 1, and a matte material (ρs = 0)
 /// gets exactly its diffuse term, bit for bit, whatever the highlight would have been.
 #[test]
-fn skipping_the_highlight_changes_no_number() {
+fn ex3_6_skipping_the_highlight_changes_no_number() {
     let k = 1.0 / (2.0 as Real).sqrt();
     let s = vec3(1.0, 0.0, 1.0) * k; // r = (−1, 0, 1)/√2
     let beyond = vec3(1.0, 0.0, 0.0); // r·v = −1/√2 < 0
@@ -135,15 +235,34 @@ fn skipping_the_highlight_changes_no_number() {
     assert_eq!(direct(&matte, &light, p, n, v), expected);
 }
 
-/// "Shading": I_p/(a0 + a1·d + a2·d²): at d = 2 with (1, 0.5, 0.25), the light is divided by 3.
+/// "Shading": I_p/(a0 + a1·d + a2·d²): at d = 2 with (1, 0.5, 0.25), the light is divided by 3;
+/// (1, 0, 0) divides by nothing at any distance, (0, 0, 1) is the inverse square (¼ at d = 2,
+/// 1/16 at d = 4), (1, 1, 0) gives ⅓ at d = 2, and (0, 1, 0) stays finite at d = 0.
 #[test]
-fn attenuation_divides_by_a0_plus_a1_d_plus_a2_d_squared() {
+fn ex3_2_attenuation_divides_by_a0_plus_a1_d_plus_a2_d_squared() {
     let mut light = Light::white(vec3(0.0, 2.0, 0.0));
     light.attenuation = [1.0, 0.5, 0.25];
     assert_abs_diff_eq!(light.attenuation_at(2.0), 1.0 / 3.0, epsilon = TOL);
     assert_abs_diff_eq!(light.attenuation_at(0.0), 1.0, epsilon = TOL);
+    light.attenuation = [1.0, 0.0, 0.0];
+    for d in [0.0, 1.0, 7.5, 1e6] {
+        assert_abs_diff_eq!(light.attenuation_at(d), 1.0, epsilon = TOL);
+    }
     light.attenuation = [0.0, 0.0, 1.0]; // inverse square
+    assert_abs_diff_eq!(light.attenuation_at(2.0), 0.25, epsilon = TOL);
     assert_abs_diff_eq!(light.attenuation_at(4.0), 1.0 / 16.0, epsilon = TOL);
+    light.attenuation = [1.0, 1.0, 0.0];
+    assert_abs_diff_eq!(light.attenuation_at(2.0), 1.0 / 3.0, epsilon = TOL);
+    light.attenuation = [0.0, 1.0, 0.0];
+    assert!(light.attenuation_at(0.0).is_finite());
+    assert_abs_diff_eq!(light.attenuation_at(0.5), 2.0, epsilon = TOL);
+}
+
+/// "Shading": `direct` divides the light by its attenuation: a white light 2 above a white
+/// diffuse surface facing it, with (1, 0.5, 0.25), gives 1/3 in every channel.
+#[test]
+fn ex3_6_direct_light_is_divided_by_the_attenuation() {
+    let mut light = Light::white(vec3(0.0, 2.0, 0.0));
     let m = Material {
         ambient: Vec3::ZERO,
         diffuse: Vec3::ONE,
@@ -153,7 +272,12 @@ fn attenuation_divides_by_a0_plus_a1_d_plus_a2_d_squared() {
     light.attenuation = [1.0, 0.5, 0.25];
     let i = direct(&m, &light, Vec3::ZERO, Vec3::Y, Vec3::Y);
     assert_vec_eq(i, Vec3::splat(1.0 / 3.0), 10.0 * TOL);
-    // in a scene: the same light through the renderer
+}
+
+/// "Shading": through the renderer, the light at (0, 0, 10) with (1, 0.5, 0.25) reaches the
+/// sphere's nearest point (0, 0, 1) from d = 9 away, divided by 1 + 4.5 + 20.25 = 25.75.
+#[test]
+fn ex3_7_attenuated_light_through_the_renderer() {
     let s = scene(&sphere_scene(
         "[0.0, 0.0, 10.0]",
         "attenuation = [1.0, 0.5, 0.25]",
@@ -167,7 +291,7 @@ fn attenuation_divides_by_a0_plus_a1_d_plus_a2_d_squared() {
 
 /// "Shading": with several lights, each adds its own diffuse and specular terms.
 #[test]
-fn several_lights_add_up() {
+fn ex3_7_several_lights_add_up() {
     let one = scene(&sphere_scene("[0.0, 0.0, 10.0]", ""));
     let two = scene(&sphere_scene(
         "[0.0, 0.0, 10.0]",
@@ -271,4 +395,35 @@ fn phong_with_both_cosines_between_zero_and_one() {
     let (c, stats) = centre(&scene(text), Stage::Shading);
     assert_vec_eq(c, i, 10.0 * TOL);
     assert_eq!(stats.shadow, 0);
+}
+
+/// "Shading", as the inspector sees it: the local light tells the recorder each term it adds.
+/// The sphere scene with a second light behind the sphere, at (0, 0, −10): at the nearest point
+/// the recorder hears I_a = ρa·I_m = (0.05, 0.08, 0.09), the first light's unshadowed
+/// I_p·(ρd + ρs) = (0.9, 0.8, 0.7)·0.7 arriving whole (no feeler before chapter 4), the second
+/// light's zero, and the local light, their sum, which is the pixel's colour at stage 3.
+#[test]
+fn ex3_7_the_recorder_hears_the_ambient_term_each_light_and_the_local_light() {
+    let s = scene(&sphere_scene(
+        "[0.0, 0.0, 10.0]",
+        "[[lights]]\nposition = [0.0, 0.0, -10.0]",
+    ));
+    let mut o = Options::for_scene(&s, Stage::Shading);
+    (o.width, o.height) = (1, 1);
+    let tree = Tracer::new(&s, &o).inspect(0, 0);
+    let hit = tree.samples[0].ray.hit.as_ref().expect("the sphere is hit");
+    let i_a = vec3(0.05, 0.08, 0.09);
+    let lit = vec3(0.9, 0.8, 0.7) * 0.7;
+    assert_vec_eq(hit.ambient.unwrap(), i_a, TOL);
+    assert_eq!(hit.lights.len(), 2);
+    let (front, back) = (&hit.lights[0], &hit.lights[1]);
+    assert_eq!((front.index, back.index), (0, 1));
+    assert_vec_eq(front.unshadowed, lit, 10.0 * TOL);
+    assert_eq!((front.feeler.is_none(), front.share), (true, 1.0));
+    assert_vec_eq(front.arriving, lit, 10.0 * TOL);
+    assert_eq!(back.unshadowed, Vec3::ZERO);
+    assert_eq!((back.feeler.is_none(), back.share), (true, 1.0));
+    assert_vec_eq(hit.local.unwrap(), i_a + lit, 10.0 * TOL);
+    assert_eq!(hit.local.unwrap(), tree.colour);
+    assert_eq!(tree.rays, 1, "no feeler at stage 3");
 }

@@ -1,5 +1,10 @@
 //! Chapter 4 — shadows (notes: "Shadowing"): feeler rays S(u) = P + (L − P)u, occluders with
 //! u ∈ ]0, 1], translucent occluders, and no self-shadowing ("acne").
+//!
+//! A test named `ex4_K_…` checks exercise 4.K of `chapters/formulas.toml`. `Tracer::feeler`
+//! (4.4) is seen only through the renderer, which hands each colour to
+//! `Tracer::reflect_and_refract` (5.5): before stage 5 it returns the colour unchanged, but it
+//! must not be `todo!()`.
 
 mod common;
 
@@ -9,7 +14,7 @@ use whitted::camera::Camera;
 use whitted::material::Material;
 use whitted::offset::Offset;
 use whitted::real::{Real, Vec3, vec3};
-use whitted::render::{Options, Stage};
+use whitted::render::{Options, Stage, Tracer};
 use whitted::shadow;
 use whitted::shapes::{Formula, Hit, Hits, Object, Shape};
 use whitted::transform::{Placement, Step};
@@ -44,41 +49,75 @@ fn share(objects: &[Object], light: Vec3) -> Real {
 }
 const L: Vec3 = Vec3::new(0.0, 10.0, 0.0);
 
-/// "Shadowing": an opaque sphere between P and L (u ≈ 0.5) puts P in shadow.
+/// Whether `object` blocks the feeler from P to `light`: `shadow::blocks` on its hits.
+fn blocks(object: &Object, light: Vec3) -> bool {
+    shadow::blocks(
+        &object.intersect(&shadow::feeler(P, light), Formula::Robust),
+        0.0,
+    )
+}
+
+/// "Shadowing": a sphere between P and L (u ≈ 0.5) blocks the feeler.
 #[test]
-fn opaque_sphere_between_point_and_light_shadows_it() {
-    let objects = [ball(vec3(0.0, 5.0, 0.0), 0)];
-    assert_eq!(share(&objects, L), 0.0);
+fn ex4_2_opaque_sphere_between_point_and_light_shadows_it() {
+    assert!(blocks(&ball(vec3(0.0, 5.0, 0.0), 0), L));
 }
 
 /// "Shadowing": a sphere beyond the light (u > 1) casts no shadow on P.
 #[test]
-fn sphere_beyond_the_light_casts_no_shadow() {
-    let objects = [ball(vec3(0.0, 15.0, 0.0), 0)];
-    assert_eq!(share(&objects, L), 1.0);
+fn ex4_2_sphere_beyond_the_light_casts_no_shadow() {
+    let beyond = ball(vec3(0.0, 15.0, 0.0), 0);
+    assert!(!blocks(&beyond, L));
     // the same sphere with the light moved behind it does
-    let far = vec3(0.0, 20.0, 0.0);
-    assert_eq!(share(&objects, far), 0.0);
+    assert!(blocks(&beyond, vec3(0.0, 20.0, 0.0)));
 }
 
 /// "Shadowing": a sphere behind the point (u ≤ 0) casts no shadow on P.
 #[test]
-fn sphere_behind_the_point_casts_no_shadow() {
-    let objects = [ball(vec3(0.0, -5.0, 0.0), 0)];
-    assert_eq!(share(&objects, L), 1.0);
+fn ex4_2_sphere_behind_the_point_casts_no_shadow() {
+    assert!(!blocks(&ball(vec3(0.0, -5.0, 0.0), 0), L));
 }
 
 /// "Shadowing": u ∈ ]0, 1] — an occluder whose surface touches the light (u = 1) counts.
 #[test]
-fn occluder_reaching_the_light_counts() {
-    let objects = [ball(vec3(0.0, 11.0, 0.0), 0)]; // surface at y = 10: u = 1 exactly
-    assert_eq!(share(&objects, L), 0.0);
+fn ex4_2_occluder_reaching_the_light_counts() {
+    assert!(blocks(&ball(vec3(0.0, 11.0, 0.0), 0), L)); // surface at y = 10: u = 1 exactly
+}
+
+/// "Shadowing", through every object in turn: an opaque sphere between P and L lets nothing
+/// through (share 0), and so does one the light sits on; one beyond the light or behind P
+/// lets everything through (share 1), and so does an empty scene.
+#[test]
+fn ex4_3_an_opaque_occluder_lets_nothing_through() {
+    assert_eq!(share(&[ball(vec3(0.0, 5.0, 0.0), 0)], L), 0.0);
+    assert_eq!(share(&[ball(vec3(0.0, 11.0, 0.0), 0)], L), 0.0);
+    assert_eq!(share(&[ball(vec3(0.0, 15.0, 0.0), 0)], L), 1.0);
+    assert_eq!(share(&[ball(vec3(0.0, -5.0, 0.0), 0)], L), 1.0);
+    assert_eq!(share(&[], L), 1.0);
+}
+
+/// "Shadowing" (extended to translucent objects): the share is the product of the crossed
+/// objects' transmissions k_t: 1 for none, 0.5·0.5 = 0.25, 0.5·0.8·0.25 = 0.1, and 0 as soon as
+/// one is opaque — after which no other is even looked at.
+#[test]
+fn ex4_3_transmittance_multiplies_the_shares() {
+    assert_eq!(shadow::transmittance([]), 1.0);
+    assert_eq!(shadow::transmittance([0.6]), 0.6);
+    assert_eq!(shadow::transmittance([0.5, 0.5]), 0.25);
+    assert!((shadow::transmittance([0.5, 0.8, 0.25]) - 0.1).abs() <= TOL);
+    assert_eq!(shadow::transmittance([0.5, 0.0, 0.7]), 0.0);
+    let after_opaque = [0.5, 0.0]
+        .into_iter()
+        .chain(std::iter::from_fn(|| -> Option<Real> {
+            panic!("an object after an opaque one was looked at")
+        }));
+    assert_eq!(shadow::transmittance(after_opaque), 0.0);
 }
 
 /// "Shadowing" (extended): a translucent occluder lets its transmission share through; two of
 /// them, the product.
 #[test]
-fn translucent_occluders_let_their_transmission_through() {
+fn ex4_3_translucent_occluders_let_their_transmission_through() {
     let one = [ball(vec3(0.0, 3.0, 0.0), 1)];
     let t1 = share(&one, L);
     assert!((t1 - 0.6).abs() <= TOL);
@@ -92,7 +131,7 @@ fn translucent_occluders_let_their_transmission_through() {
 /// A floor lit from above with a sphere hovering over it: the point under the sphere is in
 /// shadow at stage 4 (ambient only) and lit at stage 3.
 #[test]
-fn point_under_a_sphere_is_lit_at_stage_3_and_shadowed_at_stage_4() {
+fn ex4_4_point_under_a_sphere_is_lit_at_stage_3_and_shadowed_at_stage_4() {
     let s = scene(
         "[camera]\neye = [0.0, 6.0, 0.001]\nlook_at = [0.0, 0.0, 0.0]\n[ambient]\nintensity = 1.0\n\
          [[lights]]\nposition = [0.0, 10.0, 0.0]\n\
@@ -160,7 +199,7 @@ const LIT_PLANE: &str = "[camera]\neye = [0.0, 3.0, 6.0]\nlook_at = [0.0, 0.0, -
 /// no wrongly shadowed pixel, while feelers started exactly at the hit point (no offset at
 /// all) shadow a good share of them — which is why the offset exists.
 #[test]
-fn lit_sphere_and_plane_show_no_shadow_acne() {
+fn ex4_4_lit_sphere_and_plane_show_no_shadow_acne() {
     for text in [LIT_SPHERE, LIT_PLANE] {
         let (bad, lit) = wrongly_shadowed(text, Offset::default());
         assert!(lit > 1000, "the test scene must show lit pixels ({lit})");
@@ -176,7 +215,7 @@ fn lit_sphere_and_plane_show_no_shadow_acne() {
 /// "Shadowing": feelers are cast only where needed — one per light facing the point, none for
 /// a light with `shadows = false`, none in a scene without lights.
 #[test]
-fn feelers_only_where_a_scene_needs_them() {
+fn ex4_4_feelers_only_where_a_scene_needs_them() {
     let base = "[camera]\neye = [0.0, 0.0, 5.0]\n[[objects]]\nsphere = {}\n";
     let (_, none) = render_at(&scene(base), Stage::Shadows, 16, 16);
     assert_eq!(none.shadow, 0, "no lights, no feelers");
@@ -194,13 +233,14 @@ fn feelers_only_where_a_scene_needs_them() {
 /// Hand values for P = (1, 2, 3), L = (−4, 6, 0.5): L − P = (−5, 4, −2.5), S(0) = P,
 /// S(1) = L, S(½) = (−1.5, 4, 1.75), the midpoint.
 #[test]
-fn feeler_starts_at_the_point_and_reaches_the_light_at_u_one() {
+fn ex4_1_feeler_starts_at_the_point_and_reaches_the_light_at_u_one() {
     let (p, l) = (vec3(1.0, 2.0, 3.0), vec3(-4.0, 6.0, 0.5));
     let s = shadow::feeler(p, l);
     assert_vec_eq(s.dir, vec3(-5.0, 4.0, -2.5), TOL);
     assert_vec_eq(s.at(0.0), p, TOL);
     assert_vec_eq(s.at(1.0), l, TOL);
     assert_vec_eq(s.at(0.5), vec3(-1.5, 4.0, 1.75), TOL);
+    assert_vec_eq(s.origin, p, 0.0);
 }
 
 /// A hit at u alone, for `shadow::blocks`.
@@ -217,7 +257,7 @@ fn at_u(u: Real) -> Hits {
 /// −0.2, and the floor y = 0 where 10u = 0. A sphere centred at (0, 1, 0) is met at u = 0 and
 /// u = 0.2: the feeler goes through it, so it does shadow.
 #[test]
-fn occluder_at_u_zero_does_not_shadow() {
+fn ex4_2_occluder_at_u_zero_does_not_shadow() {
     let l = vec3(0.0, 10.0, 0.0);
     let feeler = shadow::feeler(P, l);
     let under = ball(vec3(0.0, -1.0, 0.0), 0);
@@ -234,14 +274,27 @@ fn occluder_at_u_zero_does_not_shadow() {
     assert_eq!(floor.len(), 1);
     assert_eq!(floor.as_slice()[0].t, 0.0);
     assert!(!shadow::blocks(&floor, 0.0));
+    // the same point on the underside of a sphere above it: the feeler crosses it, u = 0.2
+    assert!(blocks(&ball(vec3(0.0, 1.0, 0.0), 0), l));
+}
+
+/// "Shadowing": the floor and the sphere under P, both met at u = 0, let the whole light
+/// through, whether the objects are tested one by one or through the acceleration structure;
+/// the sphere over P, crossed at u = 0.2, lets none through.
+#[test]
+fn ex4_3_occluders_at_u_zero_let_the_light_through() {
+    let l = vec3(0.0, 10.0, 0.0);
+    let feeler = shadow::feeler(P, l);
+    let s = scene(
+        "[[objects]]\nplane = { point = [0.0, 0.0, 0.0], normal = [0.0, 1.0, 0.0] }\n\
+         [[objects]]\nsphere = { center = [0.0, -1.0, 0.0] }\n",
+    );
     assert_eq!(
         common::brute_share(&s.objects, &s.materials, &feeler, 0.0, Formula::Robust),
         1.0
     );
     assert_eq!(share(&s.objects, l), 1.0);
-    // the same point on the underside of a sphere above it: the feeler crosses it, u = 0.2
-    let over = [ball(vec3(0.0, 1.0, 0.0), 0)];
-    assert_eq!(share(&over, l), 0.0);
+    assert_eq!(share(&[ball(vec3(0.0, 1.0, 0.0), 0)], l), 0.0);
 }
 
 /// "Shadowing" with the start left on the surface: a hit at u ≤ u_min is the surface the
@@ -250,7 +303,7 @@ fn occluder_at_u_zero_does_not_shadow() {
 /// block; the plane y = 2.51, at u = 0.251, does. u = 1 (the light) still counts, u just above
 /// 1 does not.
 #[test]
-fn hit_at_or_before_u_min_does_not_count_and_just_after_does() {
+fn ex4_2_hit_at_or_before_u_min_does_not_count_and_just_after_does() {
     let u_min: Real = 0.25;
     assert!(!shadow::blocks(&at_u(0.25), u_min));
     assert!(!shadow::blocks(&at_u(0.1), u_min));
@@ -268,14 +321,30 @@ fn hit_at_or_before_u_min_does_not_count_and_just_after_does() {
     let hits = on.objects[0].intersect(&feeler, Formula::Robust);
     assert_eq!(hits.as_slice()[0].t, 0.25);
     assert!(!shadow::blocks(&hits, u_min));
+    let above = plane_at(2.51);
+    let hits = above.objects[0].intersect(&feeler, Formula::Robust);
+    assert!((hits.as_slice()[0].t - 0.251).abs() <= TOL);
+    assert!(shadow::blocks(&hits, u_min));
+}
+
+/// "Shadowing" with the start left on the surface, in the share of the light: with
+/// u_min = 0.25 the plane y = 2.5, met at u = 0.25, lets the whole light through, the plane
+/// y = 2.51 none of it.
+#[test]
+fn ex4_3_a_plane_at_u_min_lets_the_light_through_and_one_just_after_does_not() {
+    let u_min: Real = 0.25;
+    let feeler = shadow::feeler(P, L);
+    let plane_at = |y: f64| {
+        scene(&format!(
+            "[[objects]]\nplane = {{ point = [0.0, {y}, 0.0], normal = [0.0, 1.0, 0.0] }}\n"
+        ))
+    };
+    let on = plane_at(2.5);
     assert_eq!(
         common::brute_share(&on.objects, &on.materials, &feeler, u_min, Formula::Robust),
         1.0
     );
     let above = plane_at(2.51);
-    let hits = above.objects[0].intersect(&feeler, Formula::Robust);
-    assert!((hits.as_slice()[0].t - 0.251).abs() <= TOL);
-    assert!(shadow::blocks(&hits, u_min));
     assert_eq!(
         common::brute_share(
             &above.objects,
@@ -286,4 +355,62 @@ fn hit_at_or_before_u_min_does_not_count_and_just_after_does() {
         ),
         0.0
     );
+}
+
+/// The floor under a light at (0, 10, 0), seen straight down at P = (0, 0, 0), with an opaque
+/// sphere of radius ½ at (0, 8, 0) in between.
+const FLOOR_UNDER_A_BALL: &str = "[camera]\neye = [0.0, 6.0, 0.001]\nlook_at = [0.0, 0.0, 0.0]\n\
+    [[lights]]\nposition = [0.0, 10.0, 0.0]\n[materials.m]\nambient = 0.1\ndiffuse = 0.6\nspecular = 0.0\n\
+    [[objects]]\nplane = { normal = [0.0, 1.0, 0.0] }\nmaterial = \"m\"\n\
+    [[objects]]\nsphere = { center = [0.0, 8.0, 0.0], radius = 0.5 }\n";
+
+/// "Shadowing", as the inspector sees it: the feeler starts where the offset strategy puts it
+/// and runs to the light, S(u) = P′ + (L − P′)·u. With `Offset::Scaled(0.01)` the start is P
+/// moved 0.01 towards the light, P′ = (0, 0.01, 0), u_min = 0, and the sphere y ∈ [7.5, 8.5]
+/// is crossed at u = 7.49/9.99 and 8.49/9.99; with `Offset::Fixed(0.01)` the start is P itself
+/// and u_min = 0.01/‖L − P‖ = 0.001, the sphere crossed at u = 0.75 and 0.85. Either way no
+/// light arrives: the pixel is ambient only, 0.1. At stage 3 there is no feeler at all.
+#[test]
+fn ex4_4_the_feeler_leaves_from_the_offset_start_towards_the_light() {
+    let s = scene(FLOOR_UNDER_A_BALL);
+    let cases = [
+        (
+            Offset::Scaled(0.01),
+            vec3(0.0, 0.01, 0.0),
+            0.0,
+            [7.49 / 9.99, 8.49 / 9.99],
+        ),
+        (Offset::Fixed(0.01), Vec3::ZERO, 0.001, [0.75, 0.85]),
+    ];
+    for (offset, start, u_min, u) in cases {
+        let mut o = Options::for_scene(&s, Stage::Shadows);
+        (o.width, o.height, o.offset) = (1, 1, offset);
+        let tree = Tracer::new(&s, &o).inspect(0, 0);
+        let hit = tree.samples[0].ray.hit.as_ref().expect("the floor is hit");
+        let light = &hit.lights[0];
+        let feeler = light.feeler.as_ref().expect("a feeler towards the light");
+        assert_vec_eq(feeler.origin, start, 10.0 * TOL);
+        assert!((feeler.u_min - u_min).abs() <= 10.0 * TOL, "{offset:?}");
+        assert_eq!(feeler.crossings.len(), 1, "{offset:?}");
+        let crossed = &feeler.crossings[0];
+        assert_eq!(crossed.object, 1);
+        assert_eq!(crossed.u.len(), 2);
+        assert!(
+            (crossed.u[0] - u[0]).abs() <= 10.0 * TOL,
+            "{offset:?}: {crossed:?}"
+        );
+        assert!(
+            (crossed.u[1] - u[1]).abs() <= 10.0 * TOL,
+            "{offset:?}: {crossed:?}"
+        );
+        assert_eq!(light.share, 0.0);
+        assert_vec_eq(tree.colour, Vec3::splat(0.1), TOL);
+        assert_eq!(tree.rays, 2, "the camera ray and one feeler");
+    }
+    let mut o = Options::for_scene(&s, Stage::Shading);
+    (o.width, o.height) = (1, 1);
+    let tree = Tracer::new(&s, &o).inspect(0, 0);
+    let hit = tree.samples[0].ray.hit.as_ref().unwrap();
+    assert!(hit.lights[0].feeler.is_none());
+    assert_eq!(tree.rays, 1);
 }

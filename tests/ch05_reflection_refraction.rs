@@ -1,13 +1,18 @@
 //! Chapter 5 — reflection and refraction (notes: "Reflection and Refraction", "Lighting
 //! Equations"): the mirror direction, Snell's law, total internal reflection, recursion.
+//!
+//! A test named `ex5_K_…` checks exercise 5.K of `chapters/formulas.toml`;
+//! `Tracer::reflect_and_refract` (5.5) is seen through the renderer and the inspector.
 
 mod common;
 
 use approx::assert_abs_diff_eq;
 use common::{TOL, assert_vec_eq, centre, render_at, render_both_ways, scene};
+use whitted::offset::Offset;
 use whitted::optics::{critical_angle, critical_angle_sine, indices, reflect, refract};
 use whitted::real::{Real, Vec3, real, vec3};
-use whitted::render::{Options, Stage, render};
+use whitted::render::inspect::RayTree;
+use whitted::render::{Options, RayKind, Stage, Stop, Tracer, render};
 
 fn deg(x: Real) -> Real {
     x.to_radians()
@@ -23,7 +28,7 @@ fn incoming(angle: Real) -> Vec3 {
 /// (1, −1, 0)/√2 on the floor y = 0 leaves as (1, 1, 0)/√2. The notes' r(t₀) − 2(r(t₀)·n)n,
 /// built from the hit point, depends on where the floor is hit — it is not a direction.
 #[test]
-fn reflection_of_a_45_degree_ray() {
+fn ex5_4_reflection_of_a_45_degree_ray() {
     let k = 1.0 / (2.0 as Real).sqrt();
     let d = vec3(1.0, -1.0, 0.0) * k;
     assert_vec_eq(reflect(d, Vec3::Y), vec3(1.0, 1.0, 0.0) * k, TOL);
@@ -37,13 +42,22 @@ fn reflection_of_a_45_degree_ray() {
         assert_abs_diff_eq!(l.length(), 1.0, epsilon = TOL);
         assert_abs_diff_eq!(l.dot(Vec3::Y), deg(a).cos(), epsilon = TOL);
     }
+    // for any d: ‖l‖ = ‖d‖, l·n = −(d·n), and −n gives the same l
+    let n = vec3(2.0, -1.0, 2.0) / 3.0;
+    let d = vec3(0.3, -4.0, 1.2);
+    let l = reflect(d, n);
+    assert_abs_diff_eq!(l.length(), d.length(), epsilon = 10.0 * TOL);
+    assert_abs_diff_eq!(l.dot(n), -d.dot(n), epsilon = 10.0 * TOL);
+    assert_vec_eq(reflect(d, -n), l, 10.0 * TOL);
+    // by hand: d·n = (0.6 + 4 + 2.4)/3 = 7/3, l = d − (14/3)·n
+    assert_vec_eq(l, d - (14.0 / 3.0) * n, 10.0 * TOL);
 }
 
 /// "Reflection and Refraction": Snell's law air → glass (n = 1.5) at 30°:
 /// sin θ₂ = sin 30°/1.5 = 1/3, θ₂ ≈ 19.47°; the ray bends towards the normal and stays in the
 /// plane of incidence.
 #[test]
-fn snell_air_to_glass_at_30_degrees() {
+fn ex5_3_snell_air_to_glass_at_30_degrees() {
     let t = refract(incoming(30.0), Vec3::Y, 1.0, 1.5).unwrap();
     assert_abs_diff_eq!(t.length(), 1.0, epsilon = TOL);
     let sin2 = t.x; // the tangential component of a unit vector is sin θ₂
@@ -61,7 +75,7 @@ fn snell_air_to_glass_at_30_degrees() {
 /// glass → air gives sin θc = 1/1.5, θc ≈ 41.81°. The notes' (c₁/c₂)·sin θc = 1 asks for
 /// sin θc = 1.5, which no angle has.
 #[test]
-fn critical_angle_from_glass_to_air() {
+fn ex5_2_critical_angle_from_glass_to_air() {
     let theta_c = critical_angle(1.5, 1.0).unwrap();
     assert_abs_diff_eq!(theta_c.sin(), 1.0 / 1.5, epsilon = TOL);
     assert_abs_diff_eq!(
@@ -86,7 +100,7 @@ fn critical_angle_from_glass_to_air() {
 /// "Reflection and Refraction": glass → air just below the critical angle still refracts,
 /// grazing out (sin θ₂ close to 1); just above it, total internal reflection.
 #[test]
-fn glass_to_air_just_below_and_just_above_the_critical_angle() {
+fn ex5_3_glass_to_air_just_below_and_just_above_the_critical_angle() {
     let theta_c = critical_angle(1.5, 1.0).unwrap().to_degrees();
     let below = refract(incoming(theta_c - 0.1), Vec3::Y, 1.5, 1.0).unwrap();
     assert_abs_diff_eq!(below.length(), 1.0, epsilon = 10.0 * TOL);
@@ -110,7 +124,7 @@ fn glass_sphere_scene(max_depth: u32) -> String {
 /// normal incidence and leaves undeflected: it reaches the wall straight behind, dimmed by
 /// the transmission share twice.
 #[test]
-fn ray_along_the_axis_of_a_glass_sphere_leaves_undeflected() {
+fn ex5_5_ray_along_the_axis_of_a_glass_sphere_leaves_undeflected() {
     assert_vec_eq(
         refract(Vec3::NEG_Z, Vec3::Z, 1.0, 1.5).unwrap(),
         Vec3::NEG_Z,
@@ -125,7 +139,7 @@ fn ray_along_the_axis_of_a_glass_sphere_leaves_undeflected() {
 /// "Lighting Equations": recursion stops at max_depth — a refracted ray needs depth 2 to get
 /// through the sphere; with max_depth = 1 it is stopped inside.
 #[test]
-fn recursion_depth_limits_the_refracted_path() {
+fn ex5_5_recursion_depth_limits_the_refracted_path() {
     let (c, stats) = centre(&scene(&glass_sphere_scene(1)), Stage::ReflectionRefraction);
     assert_eq!(stats.refracted, 1);
     assert_vec_eq(c, Vec3::ZERO, TOL); // the inner hit has no local light and may recurse no more
@@ -146,7 +160,7 @@ fn facing_mirrors(max_depth: u32, reflection: f64) -> String {
 /// "Lighting Equations": between two facing mirrors the recursion stops at max_depth: one
 /// reflected ray per level, and the colour is the geometric sum ρa·Σ kᵢ for i = 0…max_depth.
 #[test]
-fn two_facing_mirrors_stop_at_max_depth() {
+fn ex5_5_two_facing_mirrors_stop_at_max_depth() {
     for depth in [0, 1, 3, 5, 8] {
         let (c, stats) = centre(
             &scene(&facing_mirrors(depth, 0.5)),
@@ -163,7 +177,7 @@ fn two_facing_mirrors_stop_at_max_depth() {
 /// "Lighting Equations": a ray whose weight (product of shares) falls below the threshold is
 /// not traced, whatever max_depth says: 0.5^k < 10⁻³ from k = 10 on.
 #[test]
-fn recursion_stops_when_the_weight_falls_below_the_threshold() {
+fn ex5_5_recursion_stops_when_the_weight_falls_below_the_threshold() {
     let s = scene(&facing_mirrors(50, 0.5));
     let (_, stats) = centre(&s, Stage::ReflectionRefraction);
     assert_eq!(stats.reflected, 9, "0.5^9 ≥ 1e-3 > 0.5^10");
@@ -174,7 +188,7 @@ fn recursion_stops_when_the_weight_falls_below_the_threshold() {
 /// critical angle is totally reflected: no refracted ray, the transmitted share goes to the
 /// mirror ray, and it stays trapped until max_depth.
 #[test]
-fn total_internal_reflection_sends_the_transmitted_share_into_reflection() {
+fn ex5_5_total_internal_reflection_sends_the_transmitted_share_into_reflection() {
     // the eye inside a glass ball of radius 10, near its wall, looking along it
     let text = "[camera]\neye = [0.0, 9.5, 0.0]\nlook_at = [1.0, 9.5, 0.0]\n[render]\nmax_depth = 4\n\
         [ambient]\nintensity = 1.0\n\
@@ -192,7 +206,7 @@ fn total_internal_reflection_sends_the_transmitted_share_into_reflection() {
 /// "Lighting Equations" and "model only what a scene requires": matte scenes cast no secondary
 /// rays at stage 5; a mirror adds reflected rays only; glass adds refracted ones.
 #[test]
-fn secondary_rays_only_for_mirror_and_glass_materials() {
+fn ex5_5_secondary_rays_only_for_mirror_and_glass_materials() {
     let matte = "[camera]\neye = [0.0, 0.0, 5.0]\n[[lights]]\nposition = [3.0, 3.0, 5.0]\n[[objects]]\nsphere = {}\n";
     let (_, stats) = render_at(&scene(matte), Stage::ReflectionRefraction, 24, 24);
     assert_eq!((stats.reflected, stats.refracted), (0, 0));
@@ -234,7 +248,7 @@ fn supersampling_is_the_same_every_run() {
 /// relative to medium 1 is n₂₁ = c₁/c₂; with speeds c = c₀/n it is (c₀/n₁)/(c₀/n₂) = n₂/n₁:
 /// air → water c₁/c₂ = 1.33, water → air 1/1.33 ≈ 0.7519.
 #[test]
-fn indices_go_from_air_into_the_material_and_back() {
+fn ex5_1_indices_go_from_air_into_the_material_and_back() {
     assert_eq!(indices(true, 1.5), (1.0, 1.5));
     assert_eq!(indices(false, 1.5), (1.5, 1.0));
     assert_eq!(indices(true, 1.33), (1.0, 1.33));
@@ -251,13 +265,70 @@ fn indices_go_from_air_into_the_material_and_back() {
     );
 }
 
+/// "Reflection and Refraction" (erratum): sin θc = n₂/n₁, from (c₂/c₁)·sin θc = 1. Glass to
+/// air, (1.5, 1): ⅔; diamond to water, (2.42, 1.33): 1.33/2.42 ≈ 0.549587; none from air into
+/// glass or between equal indices, where no angle reflects totally.
+#[test]
+fn ex5_2_critical_angle_sine_is_n2_over_n1() {
+    assert_abs_diff_eq!(
+        critical_angle_sine(1.5, 1.0).unwrap(),
+        2.0 / 3.0,
+        epsilon = TOL
+    );
+    assert_abs_diff_eq!(
+        critical_angle_sine(2.42, 1.33).unwrap(),
+        real(0.549_586_776_859_504_1),
+        epsilon = TOL
+    );
+    assert_eq!(critical_angle_sine(1.0, 1.5), None);
+    assert_eq!(critical_angle_sine(1.5, 1.5), None);
+}
+
+/// "Reflection and Refraction": at normal incidence the ray goes on unbent, whatever the
+/// indices; between equal indices it goes on unbent at any angle; otherwise it bends towards
+/// the normal going into the denser medium (sin θ₂ < sin θ₁) and away from it going out.
+#[test]
+fn ex5_3_refraction_bends_only_between_different_indices() {
+    for (n1, n2) in [(1.0, 1.5), (1.5, 1.0), (1.33, 2.42)] {
+        assert_vec_eq(
+            refract(Vec3::NEG_Y, Vec3::Y, n1, n2).unwrap(),
+            Vec3::NEG_Y,
+            TOL,
+        );
+    }
+    for a in [10.0, 45.0, 80.0] {
+        let d = incoming(a);
+        assert_vec_eq(refract(d, Vec3::Y, 1.5, 1.5).unwrap(), d, 10.0 * TOL);
+        let into = refract(d, Vec3::Y, 1.0, 1.5).unwrap();
+        assert!(into.x < d.x, "{a}°: towards the normal");
+    }
+    let out = refract(incoming(30.0), Vec3::Y, 1.5, 1.0).unwrap();
+    assert!(out.x > incoming(30.0).x, "away from the normal");
+}
+
+/// "Reflection and Refraction": through a glass slab with parallel faces a ray comes out
+/// parallel to the way it went in: into the glass through the top face (air to glass, the
+/// normal (0, 1, 0) facing the ray), out through the bottom face (glass to air, the normal
+/// facing the ray is (0, 1, 0) again).
+#[test]
+fn ex5_3_a_slab_with_parallel_faces_lets_the_ray_out_parallel() {
+    for a in [0.0, 20.0, 55.0, 85.0] {
+        let d = incoming(a);
+        let (n1, n2) = indices(true, 1.5);
+        let inside = refract(d, Vec3::Y, n1, n2).unwrap();
+        let (n1, n2) = indices(false, 1.5);
+        let out = refract(inside, Vec3::Y, n1, n2).unwrap();
+        assert_vec_eq(out, d, 10.0 * TOL);
+    }
+}
+
 /// "Reflection and Refraction": Snell's law sin θ₁/c₁ = sin θ₂/c₂, i.e. n₁·sin θ₁ = n₂·sin θ₂,
 /// on `refract`'s output (for a unit t, sin θ₂ is its component along the surface). At 30°
 /// from air into water: sin θ₂ = 0.5/1.33 = 50/133 ≈ 0.375940, bent towards the normal; from
 /// water into air: sin θ₂ = 1.33·0.5 = 0.665, bent away. At 45° into water: sin θ₂ =
 /// (√2/2)/1.33 ≈ 0.531659.
 #[test]
-fn refracted_ray_obeys_n1_sin_theta1_equals_n2_sin_theta2() {
+fn ex5_3_refracted_ray_obeys_n1_sin_theta1_equals_n2_sin_theta2() {
     for (entering, angle, sin2) in [
         (true, 30.0, 0.375_939_849_624_060_13),
         (false, 30.0, 0.665),
@@ -279,7 +350,7 @@ fn refracted_ray_obeys_n1_sin_theta1_equals_n2_sin_theta2() {
 /// glass 1.9, asin(0.526316) = 31.7569°. 0.01° short of θc a ray still gets out, with
 /// n·sin θ₁ = sin θ₂ just under 1; 0.01° past it, total internal reflection.
 #[test]
-fn critical_angles_of_the_notes_table() {
+fn ex5_3_critical_angles_of_the_notes_table() {
     for (n, sin_c, theta_c_deg) in [
         (1.33, 0.751_879_699_248_120_3, 48.753_466_631_327_235),
         (2.42, 0.413_223_140_495_867_8, 24.407_468_917_986_588),
@@ -338,7 +409,7 @@ const FIVE_TERMS: &str = "[camera]\neye = [0.0, 2.0, 0.0]\nlook_at = [0.0, 0.0, 
 /// I = (0.545, 0.53, 0.555): one feeler, one mirror ray, one transmitted ray. Exchanging k_r
 /// and k_t would give (0.585, 0.51, 0.455), and dropping any term changes the sum.
 #[test]
-fn five_terms_of_the_lighting_equation_add_up() {
+fn ex5_5_five_terms_of_the_lighting_equation_add_up() {
     let s = scene(FIVE_TERMS);
     let (c, stats) = centre(&s, Stage::ReflectionRefraction);
     assert_vec_eq(c, vec3(0.545, 0.53, 0.555), 10.0 * TOL);
@@ -354,4 +425,108 @@ fn five_terms_of_the_lighting_equation_add_up() {
     // the local part alone, at stage 4: I_a + I_d + I_s
     let (local, _) = centre(&s, Stage::Shadows);
     assert_vec_eq(local, vec3(0.325, 0.24, 0.225), 10.0 * TOL);
+}
+
+/// "Lighting Equations": between two facing mirrors of k_r = 0.5, the number of reflected rays
+/// never decreases as `max_depth` grows, stops growing at 9 (the weight limit: 0.5⁹ ≥ 10⁻³ >
+/// 0.5¹⁰) whatever larger depth is allowed, and `max_depth = 0` casts none and gives the image
+/// of chapter 4.
+#[test]
+fn ex5_5_the_recursion_stops_at_max_depth_or_at_the_weight_limit() {
+    let mut last = 0;
+    for depth in 0..=14 {
+        let (_, stats) = render_at(
+            &scene(&facing_mirrors(depth, 0.5)),
+            Stage::ReflectionRefraction,
+            6,
+            4,
+        );
+        let per_pixel = stats.reflected / 24;
+        assert_eq!(stats.reflected % 24, 0, "every pixel sees the mirrors");
+        assert!(per_pixel >= last, "max_depth {depth}");
+        assert_eq!(per_pixel, u64::from(depth.min(9)), "max_depth {depth}");
+        last = per_pixel;
+    }
+    let s = scene(&facing_mirrors(0, 0.5));
+    let (at_5, stats) = render_at(&s, Stage::ReflectionRefraction, 6, 4);
+    assert_eq!(stats.reflected, 0);
+    let (at_4, _) = render_at(&s, Stage::Shadows, 6, 4);
+    assert_eq!(at_5, at_4);
+}
+
+/// "Lighting Equations", as the inspector sees it: the floor of [`FIVE_TERMS`] sends its
+/// transmitted ray first (k_t = 0.5, weight 0.5, depth 1), which brings back the background
+/// (0.2, 0.4, 0.6), then its mirror ray (k_r = 0.3), which brings back the ceiling's ambient
+/// light (0.4, 0.3, 0.1); with `Offset::Scaled(0.01)` they start 0.01 off the surface, each
+/// on its own side, and nothing is stopped. Inside the glass ball of the total-internal-reflection scene the transmitted
+/// branch is reported stopped by total internal reflection and the mirror ray carries
+/// k_r + k_t = 0 + 0.5; at `max_depth` the branches are reported stopped by the depth, and
+/// between the facing mirrors the tenth mirror ray by its weight.
+#[test]
+fn ex5_5_the_recorder_hears_each_branch_and_why_one_stopped() {
+    let inspect_with = |text: &str, offset: Offset| {
+        let s = scene(text);
+        let mut o = Options::for_scene(&s, Stage::ReflectionRefraction);
+        (o.width, o.height, o.offset) = (1, 1, offset);
+        Tracer::new(&s, &o).inspect(0, 0)
+    };
+    let inspect = |text: &str| inspect_with(text, Offset::default());
+    let tree = inspect_with(FIVE_TERMS, Offset::Scaled(0.01));
+    let floor = tree.samples[0].ray.hit.as_ref().unwrap();
+    assert!(floor.stopped.is_empty(), "{:?}", floor.stopped);
+    assert_eq!(floor.branches.len(), 2);
+    let (through, mirror) = (&floor.branches[0], &floor.branches[1]);
+    assert_eq!(
+        (through.kind, mirror.kind),
+        (RayKind::Transmitted, RayKind::Mirror)
+    );
+    assert_eq!((through.depth, mirror.depth), (1, 1));
+    assert_abs_diff_eq!(through.k, 0.5, epsilon = TOL);
+    assert_abs_diff_eq!(through.weight, 0.5, epsilon = TOL);
+    assert_abs_diff_eq!(mirror.k, 0.3, epsilon = TOL);
+    assert_abs_diff_eq!(mirror.weight, 0.3, epsilon = TOL);
+    assert_vec_eq(through.direction, Vec3::NEG_Y, TOL);
+    assert_vec_eq(mirror.direction, Vec3::Y, TOL);
+    assert_vec_eq(through.origin, vec3(0.0, -0.01, 0.0), 10.0 * TOL);
+    assert_vec_eq(mirror.origin, vec3(0.0, 0.01, 0.0), 10.0 * TOL);
+    assert!(through.hit.is_none());
+    assert_vec_eq(through.colour, vec3(0.2, 0.4, 0.6), TOL);
+    assert_vec_eq(mirror.colour, vec3(0.4, 0.3, 0.1), 10.0 * TOL);
+
+    let tir = "[camera]\neye = [0.0, 9.5, 0.0]\nlook_at = [1.0, 9.5, 0.0]\n[render]\nmax_depth = 1\n\
+        [materials.glass]\nambient = 0.1\ndiffuse = 0.0\nspecular = 0.0\ntransmission = 0.5\nreflection = 0.0\nior = 1.5\n\
+        [[objects]]\nsphere = { radius = 10.0 }\nmaterial = \"glass\"\n";
+    let tree = inspect(tir);
+    let wall = tree.samples[0].ray.hit.as_ref().unwrap();
+    assert_eq!(
+        wall.stopped,
+        vec![(RayKind::Transmitted, Stop::TotalInternalReflection)]
+    );
+    assert_eq!(wall.branches.len(), 1);
+    assert_eq!(wall.branches[0].kind, RayKind::Mirror);
+    assert_abs_diff_eq!(wall.branches[0].k, 0.5, epsilon = TOL);
+    let next = wall.branches[0].hit.as_ref().unwrap();
+    assert_eq!(
+        next.stopped,
+        vec![(RayKind::Transmitted, Stop::MaxDepth)],
+        "glass asks for a transmitted ray only"
+    );
+
+    // the last hit down the chain of mirror rays, and how many mirror rays lead to it
+    let deepest = |tree: &RayTree| {
+        let mut hit = tree.samples[0].ray.hit.clone().unwrap();
+        let mut mirrors = 0;
+        while let Some(branch) = hit.branches.first() {
+            assert_eq!(branch.kind, RayKind::Mirror);
+            mirrors += 1;
+            hit = branch.hit.clone().unwrap();
+        }
+        (hit, mirrors)
+    };
+    let (last, mirrors) = deepest(&inspect(&facing_mirrors(50, 0.5)));
+    assert_eq!(mirrors, 9);
+    assert_eq!(last.stopped, vec![(RayKind::Mirror, Stop::Weight)]);
+    let (last, mirrors) = deepest(&inspect(&facing_mirrors(2, 0.5)));
+    assert_eq!(mirrors, 2);
+    assert_eq!(last.stopped, vec![(RayKind::Mirror, Stop::MaxDepth)]);
 }

@@ -255,6 +255,7 @@ impl<'a> Tracer<'a> {
         mut share: impl FnMut(usize, &Feeler) -> Real,
         rec: &mut impl Recorder,
     ) -> Vec3 {
+        // BEGIN SOLUTION 3.7
         let i_a = shading::ambient(s.material, self.scene.ambient); // I_a
         rec.ambient(i_a);
         let mut color = i_a;
@@ -279,18 +280,21 @@ impl<'a> Tracer<'a> {
         }
         rec.local(color);
         color
+        // END SOLUTION
     }
 
     /// From stage 4, the feeler towards `light` (if it casts shadows and lies in front of the
     /// surface, n·(L − P) > 0): S(u) = P′ + (L − P′)·u from P′, the hit point moved off the
     /// surface by the offset strategy ([`crate::offset`]).
     pub(crate) fn feeler(&self, s: &Surface, light: &Light) -> Option<Feeler> {
+        // BEGIN SOLUTION 4.4
         let o = self.options;
         if o.stage < Stage::Shadows || !light.shadows || s.n.dot(light.position - s.p) <= 0.0 {
             return None;
         }
         let (start, u_min) = o.offset.spawn(&s.spawn, light.position - s.p);
         Some((shadow::feeler(start, light.position), u_min))
+        // END SOLUTION
     }
 
     /// The share of its light that a feeler lets through: the product of the transmissions of
@@ -319,6 +323,7 @@ impl<'a> Tracer<'a> {
         weight: Real,
         rec: &mut impl Recorder,
     ) -> Vec3 {
+        // BEGIN SOLUTION 5.5
         let o = self.options;
         if o.stage < Stage::ReflectionRefraction {
             return color;
@@ -374,6 +379,7 @@ impl<'a> Tracer<'a> {
             }
         }
         color
+        // END SOLUTION
     }
 
     /// Traces a mirror or transmitted ray, telling `rec` that it leaves and what it brings

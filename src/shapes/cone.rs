@@ -32,12 +32,14 @@ use crate::real::{Real, Vec3};
 /// The cone's quadratic coefficients (a, b, c) for a·t² + 2b·t + c = 0.
 #[must_use]
 pub fn coefficients(ray: &Ray) -> (Real, Real, Real) {
+    // BEGIN SOLUTION 2.18
     let (e, d) = (ray.origin, ray.dir);
     (
         d.x * d.x + d.y * d.y - d.z * d.z,                 // a
         e.x * d.x + e.y * d.y + d.z * (1.0 - e.z),         // b
         e.x * e.x + e.y * e.y - (1.0 - e.z) * (1.0 - e.z), // c
     )
+    // END SOLUTION
 }
 
 /// The discriminant b² − ac of the cone's quadratic, computed without squaring distances.
@@ -49,13 +51,16 @@ pub fn coefficients(ray: &Ray) -> (Real, Real, Real) {
 /// cone's counterpart of the sphere's Ray Tracing Gems form).
 #[must_use]
 pub fn discriminant(ray: &Ray) -> Real {
+    // BEGIN SOLUTION 2.19
     let w = ray.dir.cross(ray.origin - Vec3::Z); // w = d × u
     w.x * w.x + w.y * w.y - w.z * w.z
+    // END SOLUTION
 }
 
 /// The object-space normal of `part` at the point p.
 #[must_use]
 pub fn normal(part: Part, p: Vec3) -> Vec3 {
+    // BEGIN SOLUTION 2.20
     match part {
         Part::Base => Vec3::NEG_Z,
         Part::Apex => Vec3::Z,
@@ -64,94 +69,100 @@ pub fn normal(part: Part, p: Vec3) -> Vec3 {
             if n == Vec3::ZERO { Vec3::Z } else { n }
         }
     }
+    // END SOLUTION
 }
 
 /// Intersects an object-space ray with the closed generic cone.
 #[must_use]
 pub fn intersect(ray: &Ray, formula: Formula) -> Hits {
+    // BEGIN SOLUTION 2.21
+    // The notes' method: roots kept when z ∈ [−1, 1], and the base plane z = −1 kept when the
+    // point lies inside the base circle (radius 2, not the notes' 1).
+    fn intersect_textbook(ray: &Ray) -> Hits {
+        let (a, b, c) = coefficients(ray);
+        let mut found = Extremes::default();
+        for t in solve(a, b, c, Formula::Textbook).iter() {
+            let p = ray.at(t);
+            if (-1.0..=1.0).contains(&p.z) {
+                found.add(Hit {
+                    t,
+                    normal: normal(Part::Wall, p),
+                    part: Part::Wall,
+                    entering: true,
+                });
+            }
+        }
+        if ray.dir.z != 0.0 {
+            let t = (-1.0 - ray.origin.z) / ray.dir.z;
+            let p = ray.at(t);
+            if t.is_finite() && p.x * p.x + p.y * p.y <= 4.0 {
+                // the base disc at z = −1 has radius 1 − (−1) = 2 (the notes say 1: an erratum)
+                found.add(Hit {
+                    t,
+                    normal: Vec3::NEG_Z,
+                    part: Part::Base,
+                    entering: true,
+                });
+            }
+        }
+        found.hits()
+    }
+
+    // The set where a·t² + 2b·t + c ≤ 0 (inside the double cone), clipped to the slab
+    // z ∈ [−1, 1], which keeps only the lower nappe.
+    fn intersect_robust(ray: &Ray) -> Hits {
+        let (a, b, c) = coefficients(ray);
+        let wall = |lo: Real, hi: Real| Span {
+            lo,
+            lo_part: Part::Wall,
+            hi,
+            hi_part: Part::Wall,
+        };
+        // The stretches of the line inside the double cone (a·t² + 2b·t + c ≤ 0): one, or two
+        // half-lines when a < 0.
+        let mut pieces: [Option<Span>; 2] = [None, None];
+        if a == 0.0 {
+            // linear: 2b·t + c ≤ 0
+            pieces[0] = if b > 0.0 {
+                Some(wall(Real::NEG_INFINITY, -c / (2.0 * b)))
+            } else if b < 0.0 {
+                Some(wall(-c / (2.0 * b), Real::INFINITY))
+            } else if c <= 0.0 {
+                Some(Span::ALL)
+            } else {
+                None
+            };
+        } else {
+            match stable_roots(a, b, c, discriminant(ray)) {
+                Some((t1, t2)) if a > 0.0 => pieces[0] = Some(wall(t1, t2)),
+                Some((t1, t2)) => {
+                    pieces[0] = Some(wall(Real::NEG_INFINITY, t1));
+                    pieces[1] = Some(wall(t2, Real::INFINITY));
+                }
+                // a < 0 without a real root: the whole line is inside the double cone
+                None if a < 0.0 => pieces[0] = Some(Span::ALL),
+                None => {}
+            }
+        }
+        let Some(slab) = Span::slab(ray.origin.z, ray.dir.z, -1.0, Part::Base, 1.0, Part::Apex)
+        else {
+            return Hits::none();
+        };
+        // Within the slab only the lower nappe remains; keep the longest clipped piece.
+        let best = pieces
+            .into_iter()
+            .flatten()
+            .filter_map(|p| p.clip(slab))
+            .max_by(|p, q| (p.hi - p.lo).total_cmp(&(q.hi - q.lo)));
+        match best {
+            Some(span) => span.hits(|part, t| normal(part, ray.at(t))),
+            None => Hits::none(),
+        }
+    }
+
     match formula {
         Formula::Textbook => intersect_textbook(ray),
         Formula::Robust => intersect_robust(ray),
     }
-}
-
-fn intersect_robust(ray: &Ray) -> Hits {
-    let (a, b, c) = coefficients(ray);
-    let wall = |lo: Real, hi: Real| Span {
-        lo,
-        lo_part: Part::Wall,
-        hi,
-        hi_part: Part::Wall,
-    };
-    // The stretches of the line inside the double cone (a·t² + 2b·t + c ≤ 0): one, or two
-    // half-lines when a < 0.
-    let mut pieces: [Option<Span>; 2] = [None, None];
-    if a == 0.0 {
-        // linear: 2b·t + c ≤ 0
-        pieces[0] = if b > 0.0 {
-            Some(wall(Real::NEG_INFINITY, -c / (2.0 * b)))
-        } else if b < 0.0 {
-            Some(wall(-c / (2.0 * b), Real::INFINITY))
-        } else if c <= 0.0 {
-            Some(Span::ALL)
-        } else {
-            None
-        };
-    } else {
-        match stable_roots(a, b, c, discriminant(ray)) {
-            Some((t1, t2)) if a > 0.0 => pieces[0] = Some(wall(t1, t2)),
-            Some((t1, t2)) => {
-                pieces[0] = Some(wall(Real::NEG_INFINITY, t1));
-                pieces[1] = Some(wall(t2, Real::INFINITY));
-            }
-            // a < 0 without a real root: the whole line is inside the double cone
-            None if a < 0.0 => pieces[0] = Some(Span::ALL),
-            None => {}
-        }
-    }
-    let Some(slab) = Span::slab(ray.origin.z, ray.dir.z, -1.0, Part::Base, 1.0, Part::Apex) else {
-        return Hits::none();
-    };
-    // Within the slab only the lower nappe remains; keep the longest clipped piece.
-    let best = pieces
-        .into_iter()
-        .flatten()
-        .filter_map(|p| p.clip(slab))
-        .max_by(|p, q| (p.hi - p.lo).total_cmp(&(q.hi - q.lo)));
-    match best {
-        Some(span) => span.hits(|part, t| normal(part, ray.at(t))),
-        None => Hits::none(),
-    }
-}
-
-/// The notes' method: roots kept when z ∈ [−1, 1], and the base plane z = −1 kept when the point
-/// lies inside the base circle (radius 2, not the notes' 1).
-fn intersect_textbook(ray: &Ray) -> Hits {
-    let (a, b, c) = coefficients(ray);
-    let mut found = Extremes::default();
-    for t in solve(a, b, c, Formula::Textbook).iter() {
-        let p = ray.at(t);
-        if (-1.0..=1.0).contains(&p.z) {
-            found.add(Hit {
-                t,
-                normal: normal(Part::Wall, p),
-                part: Part::Wall,
-                entering: true,
-            });
-        }
-    }
-    if ray.dir.z != 0.0 {
-        let t = (-1.0 - ray.origin.z) / ray.dir.z;
-        let p = ray.at(t);
-        if t.is_finite() && p.x * p.x + p.y * p.y <= 4.0 {
-            // the base disc at z = −1 has radius 1 − (−1) = 2 (the notes say 1: an erratum)
-            found.add(Hit {
-                t,
-                normal: Vec3::NEG_Z,
-                part: Part::Base,
-                entering: true,
-            });
-        }
-    }
-    found.hits()
+    // END SOLUTION
 }

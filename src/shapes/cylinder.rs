@@ -20,12 +20,14 @@ use crate::real::{Real, Vec3};
 /// The wall's quadratic coefficients (a, b, c) for a·t² + 2b·t + c = 0.
 #[must_use]
 pub fn coefficients(ray: &Ray) -> (Real, Real, Real) {
+    // BEGIN SOLUTION 2.14
     let (e, d) = (ray.origin, ray.dir);
     (
         d.x * d.x + d.y * d.y,       // a = d_x² + d_y²
         e.x * d.x + e.y * d.y,       // b = e_x d_x + e_y d_y
         e.x * e.x + e.y * e.y - 1.0, // c = e_x² + e_y² − 1
     )
+    // END SOLUTION
 }
 
 /// The wall's discriminant b² − ac, computed as a·(1 − |f|²) with f = (e − (b/a)·d) in x and
@@ -33,93 +35,101 @@ pub fn coefficients(ray: &Ray) -> (Real, Real, Real) {
 /// taken between numbers of the size of the radius, not of |e|², as for the sphere.
 #[must_use]
 pub fn discriminant(ray: &Ray, a: Real, b: Real) -> Real {
+    // BEGIN SOLUTION 2.15
     let f = ray.origin.truncate() - ray.dir.truncate() * (b / a);
     a * (1.0 - f.dot(f))
+    // END SOLUTION
 }
 
 /// The object-space normal of `part` at the point p.
 #[must_use]
 pub fn normal(part: Part, p: Vec3) -> Vec3 {
+    // BEGIN SOLUTION 2.16
     match part {
         Part::TopCap => Vec3::Z,
         Part::BottomCap => Vec3::NEG_Z,
         _ => Vec3::new(p.x, p.y, 0.0), // the wall: (x, y, 0)
     }
+    // END SOLUTION
 }
 
 /// Intersects an object-space ray with the closed unit cylinder.
 #[must_use]
 pub fn intersect(ray: &Ray, formula: Formula) -> Hits {
+    // BEGIN SOLUTION 2.17
+    // The notes' method as written: roots of the wall quadratic kept when z ∈ [−1, 1], cap
+    // planes kept when the point lies inside the unit circle.
+    fn intersect_textbook(ray: &Ray) -> Hits {
+        let (a, b, c) = coefficients(ray);
+        let mut found = Extremes::default();
+        let mut keep = |t: Real, part: Part| {
+            let p = ray.at(t);
+            found.add(Hit {
+                t,
+                normal: normal(part, p),
+                part,
+                entering: true,
+            });
+        };
+        for t in solve(a, b, c, Formula::Textbook).iter() {
+            let z = ray.origin.z + ray.dir.z * t;
+            if (-1.0..=1.0).contains(&z) {
+                keep(t, Part::Wall);
+            }
+        }
+        if ray.dir.z != 0.0 {
+            for (z, part) in [(-1.0, Part::BottomCap), (1.0, Part::TopCap)] {
+                let t = (z - ray.origin.z) / ray.dir.z;
+                let p = ray.at(t);
+                if t.is_finite() && p.x * p.x + p.y * p.y <= 1.0 {
+                    keep(t, part);
+                }
+            }
+        }
+        found.hits()
+    }
+
+    // The line clipped twice, as the notes clip a polyhedron: the stretch inside the infinite
+    // tube, then the stretch between the cap planes.
+    fn intersect_robust(ray: &Ray) -> Hits {
+        let (a, b, c) = coefficients(ray);
+        let tube = if a == 0.0 {
+            // parallel to the axis: inside the tube for every t, or never
+            if c <= 0.0 {
+                Span::ALL
+            } else {
+                return Hits::none();
+            }
+        } else {
+            match stable_roots(a, b, c, discriminant(ray, a, b)) {
+                Some((t1, t2)) => Span {
+                    lo: t1,
+                    lo_part: Part::Wall,
+                    hi: t2,
+                    hi_part: Part::Wall,
+                },
+                None => return Hits::none(),
+            }
+        };
+        let slab = Span::slab(
+            ray.origin.z,
+            ray.dir.z,
+            -1.0,
+            Part::BottomCap,
+            1.0,
+            Part::TopCap,
+        );
+        match slab.and_then(|s| tube.clip(s)) {
+            Some(span) => span.hits(|part, t| normal(part, ray.at(t))),
+            None => Hits::none(),
+        }
+    }
+
     match formula {
         Formula::Textbook => intersect_textbook(ray),
         Formula::Robust => intersect_robust(ray),
     }
-}
-
-fn intersect_robust(ray: &Ray) -> Hits {
-    let (a, b, c) = coefficients(ray);
-    let tube = if a == 0.0 {
-        // parallel to the axis: inside the tube for every t, or never
-        if c <= 0.0 {
-            Span::ALL
-        } else {
-            return Hits::none();
-        }
-    } else {
-        match stable_roots(a, b, c, discriminant(ray, a, b)) {
-            Some((t1, t2)) => Span {
-                lo: t1,
-                lo_part: Part::Wall,
-                hi: t2,
-                hi_part: Part::Wall,
-            },
-            None => return Hits::none(),
-        }
-    };
-    let slab = Span::slab(
-        ray.origin.z,
-        ray.dir.z,
-        -1.0,
-        Part::BottomCap,
-        1.0,
-        Part::TopCap,
-    );
-    match slab.and_then(|s| tube.clip(s)) {
-        Some(span) => span.hits(|part, t| normal(part, ray.at(t))),
-        None => Hits::none(),
-    }
-}
-
-/// The notes' method as written: roots of the wall quadratic kept when z ∈ [−1, 1], cap
-/// planes kept when the point lies inside the unit circle.
-fn intersect_textbook(ray: &Ray) -> Hits {
-    let (a, b, c) = coefficients(ray);
-    let mut found = Extremes::default();
-    let mut keep = |t: Real, part: Part| {
-        let p = ray.at(t);
-        found.add(Hit {
-            t,
-            normal: normal(part, p),
-            part,
-            entering: true,
-        });
-    };
-    for t in solve(a, b, c, Formula::Textbook).iter() {
-        let z = ray.origin.z + ray.dir.z * t;
-        if (-1.0..=1.0).contains(&z) {
-            keep(t, Part::Wall);
-        }
-    }
-    if ray.dir.z != 0.0 {
-        for (z, part) in [(-1.0, Part::BottomCap), (1.0, Part::TopCap)] {
-            let t = (z - ray.origin.z) / ray.dir.z;
-            let p = ray.at(t);
-            if t.is_finite() && p.x * p.x + p.y * p.y <= 1.0 {
-                keep(t, part);
-            }
-        }
-    }
-    found.hits()
+    // END SOLUTION
 }
 
 /// For a convex shape: the first and last of the candidate hits, kept as they come (no

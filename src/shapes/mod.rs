@@ -149,7 +149,9 @@ impl Hits {
     /// hits come in increasing t).
     #[must_use]
     pub fn first_after(&self, t_min: Real) -> Option<Hit> {
+        // BEGIN SOLUTION 2.24
         self.as_slice().iter().copied().find(|h| h.t > t_min)
+        // END SOLUTION
     }
 }
 
@@ -171,7 +173,9 @@ pub struct Nearest {
 #[inline]
 #[must_use]
 pub fn nearer(t: Real, object: usize, best_t: Real, best_object: usize) -> bool {
+    // BEGIN SOLUTION 2.25
     t < best_t || (t == best_t && object < best_object)
+    // END SOLUTION
 }
 
 /// The closed set of generic shapes.
@@ -199,7 +203,9 @@ impl Shape {
     #[inline]
     #[must_use]
     pub fn intersect_placed(&self, inv: &Mat4, ray: &Ray, formula: Formula) -> Hits {
+        // BEGIN SOLUTION 2.12
         self.intersect_local(&ray.transformed(inv), formula)
+        // END SOLUTION
     }
 
     /// Intersects an object-space ray with the generic shape. Normals are in object space.

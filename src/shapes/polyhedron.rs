@@ -62,7 +62,9 @@ impl Facet {
 #[inline]
 #[must_use]
 pub fn facet_t(facet: &Facet, ray: &Ray) -> Real {
+    // BEGIN SOLUTION 2.22
     (facet.d() - facet.normal().dot(ray.origin)) / facet.normal().dot(ray.dir)
+    // END SOLUTION
 }
 
 /// A convex polyhedron given by its facets.
@@ -156,6 +158,7 @@ impl Polyhedron {
     /// Clips the object-space ray against every facet (the notes' "Convex Polyhedra").
     #[must_use]
     pub fn intersect(&self, ray: &Ray) -> Hits {
+        // BEGIN SOLUTION 2.23
         let mut t_near = Real::NEG_INFINITY;
         let mut t_far = Real::INFINITY;
         let (mut near_facet, mut far_facet) = (0, 0);
@@ -194,6 +197,7 @@ impl Polyhedron {
             }),
             (false, false) => Hits::none(),
         }
+        // END SOLUTION
     }
 }
 

@@ -88,6 +88,24 @@ pub fn discriminant(a: Real, b: Real, c: Real) -> Real {
 /// are dropped.
 #[must_use]
 pub fn solve_with_discriminant(a: Real, b: Real, c: Real, disc: Real, formula: Formula) -> Roots {
+    // BEGIN SOLUTION 2.9
+    // The notes' t = −b/a ± √(b² − ac)/a, as printed.
+    fn textbook_roots(a: Real, b: Real, disc: Real) -> Roots {
+        if disc.is_nan() || disc < 0.0 {
+            return Roots::None;
+        }
+        if disc == 0.0 {
+            let t = -b / a;
+            return if t.is_finite() {
+                Roots::One(t)
+            } else {
+                Roots::None
+            };
+        }
+        let root = disc.sqrt();
+        Roots::from_pair(-b / a - root / a, -b / a + root / a)
+    }
+
     match formula {
         Formula::Textbook => textbook_roots(a, b, disc),
         Formula::Robust => match stable_roots(a, b, c, disc) {
@@ -95,23 +113,7 @@ pub fn solve_with_discriminant(a: Real, b: Real, c: Real, disc: Real, formula: F
             None => Roots::None,
         },
     }
-}
-
-/// The notes' t = −b/a ± √(b² − ac)/a, as printed.
-fn textbook_roots(a: Real, b: Real, disc: Real) -> Roots {
-    if disc.is_nan() || disc < 0.0 {
-        return Roots::None;
-    }
-    if disc == 0.0 {
-        let t = -b / a;
-        return if t.is_finite() {
-            Roots::One(t)
-        } else {
-            Roots::None
-        };
-    }
-    let root = disc.sqrt();
-    Roots::from_pair(-b / a - root / a, -b / a + root / a)
+    // END SOLUTION
 }
 
 /// The roots of at² + 2bt + c = 0 with the notes' discriminant b² − ac.
@@ -133,6 +135,7 @@ pub fn solve(a: Real, b: Real, c: Real, formula: Formula) -> Roots {
 /// `None` when Δ < 0, or when a root is NaN (a = b = 0).
 #[must_use]
 pub fn stable_roots(a: Real, b: Real, c: Real, disc: Real) -> Option<(Real, Real)> {
+    // BEGIN SOLUTION 2.8
     if disc.is_nan() || disc < 0.0 {
         return None;
     }
@@ -146,4 +149,5 @@ pub fn stable_roots(a: Real, b: Real, c: Real, disc: Real) -> Option<(Real, Real
         return None;
     }
     Some((t1.min(t2), t1.max(t2)))
+    // END SOLUTION
 }

@@ -16,27 +16,34 @@ use crate::real::{Real, Vec3};
 /// The sphere's quadratic coefficients (a, b, c) for a·t² + 2b·t + c = 0.
 #[must_use]
 pub fn coefficients(ray: &Ray) -> (Real, Real, Real) {
+    // BEGIN SOLUTION 2.6
     let (e, d) = (ray.origin, ray.dir);
     (d.dot(d), e.dot(d), e.dot(e) - 1.0) // a = |d|², b = e·d, c = |e|² − 1
+    // END SOLUTION
 }
 
 /// The robust discriminant b² − ac = a·(1 − |f|²), with f = e − (b/a)·d the point of the line
 /// closest to the centre (Ray Tracing Gems, ch. 7): both terms are of the size of the radius.
 #[must_use]
 pub fn discriminant(ray: &Ray, a: Real, b: Real) -> Real {
+    // BEGIN SOLUTION 2.7
     let f = ray.origin - ray.dir * (b / a);
     a * (1.0 - f.dot(f))
+    // END SOLUTION
 }
 
 /// The normal at the point P of the generic sphere: P itself.
 #[must_use]
 pub fn normal(p: Vec3) -> Vec3 {
+    // BEGIN SOLUTION 2.10
     p
+    // END SOLUTION
 }
 
 /// Intersects an object-space ray with the unit sphere.
 #[must_use]
 pub fn intersect(ray: &Ray, formula: Formula) -> Hits {
+    // BEGIN SOLUTION 2.11
     let (a, b, c) = coefficients(ray);
     if a == 0.0 || !a.is_finite() {
         return Hits::none();
@@ -56,4 +63,5 @@ pub fn intersect(ray: &Ray, formula: Formula) -> Hits {
         Roots::One(t) => Hits::one(hit(t)),
         Roots::Two(t1, t2) => entering_leaving(hit(t1), hit(t2)),
     }
+    // END SOLUTION
 }
