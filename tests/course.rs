@@ -549,8 +549,14 @@ fn render_tables_name_tests_and_the_exercises_they_need() {
     assert_eq!(manifest::compress_ids(&m.entries, &[1, 0]), ["1.*", "3.*"]);
     let text = GOOD.replace("needs = [\"1.*\", \"3.1\"]", "needs = [\"1.*\", \"3.9\"]");
     let (_, _, message) = manifest_error(&text);
-    assert!(message.starts_with("renders.needs: \"3.9\" names no exercise"), "{message}");
+    assert!(
+        message.starts_with("renders.needs: \"3.9\" names no exercise"),
+        "{message}"
+    );
     let text = GOOD.replace("tests = [\"render_paths::ch3_\"]", "tests = [\"ch3_\"]");
     let (_, _, message) = manifest_error(&text);
-    assert!(message.starts_with("renders.tests: expected tests as target::name"), "{message}");
+    assert!(
+        message.starts_with("renders.tests: expected tests as target::name"),
+        "{message}"
+    );
 }

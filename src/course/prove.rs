@@ -32,7 +32,7 @@ use std::time::{Duration, Instant};
 
 use super::Error;
 use super::manifest::Manifest;
-use super::source::{self, Edit, Location};
+use super::source::{self, Location};
 
 /// The environment variable that names the poisoned function's number.
 pub const POISON_VAR: &str = "WHITTED_POISON";
@@ -243,29 +243,76 @@ pub fn locate_all(root: &Path, manifest: &Manifest) -> Result<Vec<Location>, Err
 }
 
 /// The poisoned text of each source file that holds manifest functions: every body at
-/// `locations` (in manifest order) gets its guard. Files are read under `root`.
+/// `locations` (in manifest order) gets its guard — first thing in the exercise's solution
+/// region when the body has one (so that poisoning a function does what a handout's
+/// `todo!()` does, and code before the region, such as a chapter's stage check, still runs),
+/// else first thing in the body. Files are read under `root`.
 pub fn poisoned_sources(
     root: &Path,
     manifest: &Manifest,
     locations: &[Location],
 ) -> Result<BTreeMap<PathBuf, String>, Error> {
-    let mut by_file: BTreeMap<PathBuf, Vec<(std::ops::Range<usize>, Edit)>> = BTreeMap::new();
-    for (index, (entry, at)) in manifest.entries.iter().zip(locations).enumerate() {
-        by_file.entry(at.file.clone()).or_default().push((
-            at.body.clone(),
-            Edit::Prepend(guard(index, &entry.function)),
-        ));
+    let mut by_file: BTreeMap<PathBuf, Vec<(usize, &Location)>> = BTreeMap::new();
+    for (index, at) in locations.iter().enumerate() {
+        by_file
+            .entry(at.file.clone())
+            .or_default()
+            .push((index, at));
     }
     by_file
         .into_iter()
-        .map(|(file, edits)| {
+        .map(|(file, found)| {
             let path = root.join(&file);
             let text = std::fs::read_to_string(&path).map_err(|e| Error::io(&path, e))?;
-            let edited = source::edit_bodies(&text, &edits)
-                .map_err(|m| Error::Proof(format!("{}: {m}", file.display())))?;
+            let mut inserts: Vec<(usize, String)> = Vec::new();
+            for (index, at) in found {
+                let entry = &manifest.entries[index];
+                let guard = guard(index, &entry.function);
+                if text
+                    .get(at.body.clone())
+                    .is_none_or(|b| !b.starts_with('{'))
+                {
+                    return Err(Error::Proof(format!(
+                        "{}: bytes {:?} are not the body of {}",
+                        file.display(),
+                        at.body,
+                        entry.function
+                    )));
+                }
+                inserts.push(match region_start(&text, at, &entry.exercise.id) {
+                    Some((offset, indent)) => (offset, format!("{indent}{}\n", guard.trim_start())),
+                    // no region: right after the body's opening brace
+                    None => (at.body.start + 1, guard),
+                });
+            }
+            // from the end, so that the offsets before each insertion stay right
+            let mut edited = text;
+            inserts.sort_by_key(|(offset, _)| std::cmp::Reverse(*offset));
+            for (offset, line) in inserts {
+                edited.insert_str(offset, &line);
+            }
             Ok((file, edited))
         })
         .collect()
+}
+
+/// Where the solution region `// BEGIN SOLUTION id` of the body at `at` starts its code: the
+/// byte after the marker line, and the marker's indentation.
+fn region_start(text: &str, at: &Location, id: &str) -> Option<(usize, String)> {
+    let body = text.get(at.body.clone())?;
+    let mut offset = at.body.start;
+    for line in body.split_inclusive('\n') {
+        let trimmed = line.trim();
+        if trimmed
+            .strip_prefix(super::handout::BEGIN)
+            .is_some_and(|rest| rest.trim() == id)
+        {
+            let indent = line[..line.len() - line.trim_start().len()].to_string();
+            return Some((offset + line.len(), indent));
+        }
+        offset += line.len();
+    }
+    None
 }
 
 /// Runs the proof for the project at `root` (the directory of `Cargo.toml`). Progress goes to

@@ -13,15 +13,31 @@ pub const HEADING: &str = "## Exercises";
 /// The section for chapter `chapter`, heading included, ending with a newline.
 #[must_use]
 pub fn section(manifest: &Manifest, chapter: u8, chapter_dir: &str) -> String {
+    let commands = [
+        (
+            "cargo run --release --bin whitted -- learn".to_string(),
+            "progress, the next exercise, its failing test",
+        ),
+        (
+            "cargo run --release --bin whitted -- learn hint".to_string(),
+            "a hint, then a stronger one",
+        ),
+        (
+            format!("cargo test --test {chapter_dir} ex{chapter}_"),
+            "this chapter's exercise tests (--features f32: in single precision)",
+        ),
+    ];
+    let width = commands.iter().map(|(c, _)| c.len()).max().unwrap_or(0);
+    let lines: String = commands
+        .iter()
+        .map(|(c, what)| format!("{c:<width$}  # {what}\n"))
+        .collect();
     let mut out = format!(
         "{HEADING}\n\n\
          Each exercise is one function of the library, the one the renderer calls for that formula.\n\
-         In a handout (`whitted handout`) its body is `todo!()`; write it, then run\n\n\
-         ```text\n\
-         cargo run --release --bin whitted -- learn          # progress, the next exercise, its failing test\n\
-         cargo run --release --bin whitted -- learn hint     # a hint, then a stronger one\n\
-         cargo test --test {chapter_dir} ex{chapter}_         # this chapter's exercise tests\n\
-         ```\n\n\
+         In a handout (`whitted handout`, see `docs/student-guide.md`) its body is `todo!()`; write\n\
+         it, then run\n\n\
+         ```text\n{lines}```\n\n\
          An exercise's tests are named after it (`ex{chapter}_1_…` for {chapter}.1) and may use \
          the exercises before it.\n"
     );

@@ -287,9 +287,12 @@ impl<'a> Tracer<'a> {
     /// surface, n·(L − P) > 0): S(u) = P′ + (L − P′)·u from P′, the hit point moved off the
     /// surface by the offset strategy ([`crate::offset`]).
     pub(crate) fn feeler(&self, s: &Surface, light: &Light) -> Option<Feeler> {
-        // BEGIN SOLUTION 4.4
         let o = self.options;
-        if o.stage < Stage::Shadows || !light.shadows || s.n.dot(light.position - s.p) <= 0.0 {
+        if o.stage < Stage::Shadows {
+            return None; // no feelers before chapter 4 (given: not part of the exercise)
+        }
+        // BEGIN SOLUTION 4.4
+        if !light.shadows || s.n.dot(light.position - s.p) <= 0.0 {
             return None;
         }
         let (start, u_min) = o.offset.spawn(&s.spawn, light.position - s.p);
@@ -323,11 +326,11 @@ impl<'a> Tracer<'a> {
         weight: Real,
         rec: &mut impl Recorder,
     ) -> Vec3 {
-        // BEGIN SOLUTION 5.5
         let o = self.options;
         if o.stage < Stage::ReflectionRefraction {
-            return color;
+            return color; // no secondary rays before chapter 5 (given: not part of the exercise)
         }
+        // BEGIN SOLUTION 5.5
         let (material, d, n) = (s.material, s.d, s.n);
         if depth >= o.max_depth {
             if material.is_translucent() {

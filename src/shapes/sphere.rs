@@ -36,6 +36,7 @@ pub fn discriminant(ray: &Ray, a: Real, b: Real) -> Real {
 #[must_use]
 pub fn normal(p: Vec3) -> Vec3 {
     // BEGIN SOLUTION 2.10
+    // on the unit sphere about the origin, the point is its own outward unit normal: n = P
     p
     // END SOLUTION
 }
