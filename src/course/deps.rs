@@ -281,18 +281,18 @@ pub fn suggest(manifest: &Manifest, measured: &Measured) -> Vec<String> {
         seen
     };
     let mut out = Vec::new();
-    for d in 0..n {
-        let direct: Vec<String> = needs[d]
+    for (entry, own) in manifest.entries.iter().zip(&needs) {
+        let direct: Vec<String> = own
             .iter()
             .copied()
-            .filter(|&i| !needs[d].iter().any(|&j| j != i && reach(j).contains(&i)))
+            .filter(|&i| !own.iter().any(|&j| j != i && reach(j).contains(&i)))
             .map(|i| format!("{:?}", manifest.entries[i].exercise.id))
             .collect();
         if !direct.is_empty() {
             out.push(format!(
                 "# {} {}\nneeds = [{}]",
-                manifest.entries[d].exercise.id,
-                manifest.entries[d].function,
+                entry.exercise.id,
+                entry.function,
                 direct.join(", ")
             ));
         }
