@@ -36,11 +36,6 @@ title = "Ambient light"
 task = "Return ρ_a·I_m."
 hints = ["Per channel.", "A product of two vectors."]
 points = 1
-needs = ["1.1"]
-
-[[renders]]
-tests = ["render_paths::ch3_"]
-needs = ["1.*", "3.1"]
 
 [handout]
 tests = ["ch03_shading", "render_paths"]
@@ -91,7 +86,6 @@ fn a_good_manifest_reads_every_entry_in_order() {
                     task: "Return H.".into(),
                     hints: vec!["Half the angle.".into(), "Degrees to radians.".into()],
                     points: 2,
-                    needs: vec![],
                 },
             },
             Entry {
@@ -106,7 +100,6 @@ fn a_good_manifest_reads_every_entry_in_order() {
                     task: "Return ρ_a·I_m.".into(),
                     hints: vec!["Per channel.".into(), "A product of two vectors.".into()],
                     points: 1,
-                    needs: vec!["1.1".into()],
                 },
             },
         ]
@@ -505,14 +498,6 @@ fn the_exercise_keys_are_checked_where_they_stand() {
     let (line, col, message) = manifest_error(&text);
     assert_eq!((line, col), (15, 10));
     assert_eq!(message, "points: expected 1 to 100, found 0");
-
-    let text = GOOD.replace("needs = [\"1.1\"]", "needs = [\"3.1\"]");
-    let (line, _, message) = manifest_error(&text);
-    assert_eq!(line, 26);
-    assert!(
-        message.starts_with("needs: \"3.1\" is not an exercise before 3.1"),
-        "{message}"
-    );
 }
 
 /// The exercise's own tests are those named after its id, and 2.1 is not a prefix of 2.10.
@@ -536,27 +521,40 @@ fn an_exercises_tests_are_named_after_its_id() {
     assert!("ex2_10_x".starts_with(&ten.test_prefix()));
 }
 
-/// `[[renders]]` tables name tests by prefix and the exercises they need by id, range or
-/// whole chapter; what they need is written back the shortest way; an id that names nothing
-/// is an error.
+/// The map of tests to exercises (chapters/exercise-tests.toml) names tests by prefix and
+/// the exercises they need by id, range or whole chapter; a handout of some exercises is
+/// expected to fail the tests that need one of them; an id that names nothing is an error.
 #[test]
-fn render_tables_name_tests_and_the_exercises_they_need() {
+fn the_test_map_names_tests_and_the_exercises_they_need() {
+    use whitted::course::deps;
     let m = manifest::parse(GOOD, "m.toml").unwrap();
-    assert_eq!(m.renders.len(), 1);
-    assert_eq!(m.renders[0].needs, vec![0, 1]);
-    assert!(m.renders[0].matches("render_paths::ch3_road"));
-    assert!(!m.renders[0].matches("render_paths::ch4_road"));
+    let map = deps::parse_map(
+        "[[tests]]\ntests = [\"render_paths::ch3_\"]\nneeds = [\"1.*\", \"3.1\"]\n\n[[tests]]\ntests = [\"ch03_shading::ex3_1_\"]\nneeds = [\"3.1\"]\n",
+        "map.toml",
+        &m,
+    )
+    .unwrap();
+    assert_eq!(map[0].needs, vec![0, 1]);
+    assert!(map[0].matches("render_paths::ch3_road") && !map[0].matches("render_paths::ch4_road"));
+    let tests = [
+        "render_paths::ch3_road",
+        "ch03_shading::ex3_1_works",
+        "render_paths::ch4_road",
+    ]
+    .map(String::from)
+    .into_iter()
+    .collect();
+    assert_eq!(deps::expected(&map, &tests, &[0]).len(), 1);
+    assert_eq!(deps::expected(&map, &tests, &[1]).len(), 2);
     assert_eq!(manifest::compress_ids(&m.entries, &[1, 0]), ["1.*", "3.*"]);
-    let text = GOOD.replace("needs = [\"1.*\", \"3.1\"]", "needs = [\"1.*\", \"3.9\"]");
-    let (_, _, message) = manifest_error(&text);
-    assert!(
-        message.starts_with("renders.needs: \"3.9\" names no exercise"),
-        "{message}"
+    let bad = deps::parse_map(
+        "[[tests]]\ntests = [\"x::y\"]\nneeds = [\"3.9\"]\n",
+        "map.toml",
+        &m,
     );
-    let text = GOOD.replace("tests = [\"render_paths::ch3_\"]", "tests = [\"ch3_\"]");
-    let (_, _, message) = manifest_error(&text);
     assert!(
-        message.starts_with("renders.tests: expected tests as target::name"),
-        "{message}"
+        bad.unwrap_err()
+            .to_string()
+            .starts_with("map.toml:3:9: needs: \"3.9\" names no exercise")
     );
 }

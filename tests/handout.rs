@@ -420,3 +420,39 @@ fn watch_ignores_editor_files() {
         assert!(!learn::is_source_change(Path::new(f)), "{f}");
     }
 }
+
+/// Working in order works: each exercise's own tests run only that exercise and the ones
+/// before it (by chapters/exercise-tests.toml, which CI checks against measurements), so
+/// when a student reaches an exercise, the failing test points at it.
+#[test]
+fn an_exercises_own_tests_run_only_it_and_exercises_before_it() {
+    let m = manifest();
+    let map = whitted::course::deps::load_map(&root(), &m).unwrap();
+    for (i, e) in m.entries.iter().enumerate() {
+        let prefix = e.exercise.test_prefix();
+        let own: Vec<&String> = map
+            .iter()
+            .flat_map(|g| g.tests.iter())
+            .filter(|t| learn::test_name(t).starts_with(&prefix))
+            .collect();
+        assert!(
+            !own.is_empty(),
+            "exercise {} has no test of its own in the map",
+            e.exercise.id
+        );
+        for t in own {
+            let needs = whitted::course::deps::needs_of(&map, t);
+            assert!(
+                needs.contains(&i),
+                "{t} does not even need exercise {}",
+                e.exercise.id
+            );
+            let later: Vec<&str> = needs
+                .iter()
+                .filter(|&&j| j > i)
+                .map(|&j| m.entries[j].exercise.id.as_str())
+                .collect();
+            assert!(later.is_empty(), "{t} needs later exercises {later:?}");
+        }
+    }
+}

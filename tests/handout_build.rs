@@ -2,9 +2,9 @@
 //! so they are `#[ignore]`d in a plain `cargo test`; `.ci/run` runs them with
 //! `cargo test --release --test handout_build -- --ignored --test-threads 1`.
 //!
-//! - A handout of every exercise builds, and its tests fail exactly as the manifest says
-//!   (each exercise's own tests, those of the exercises that need it, and the render tests
-//!   the `[[renders]]` tables that need it) — set equality; `whitted learn` in it shows 0 of N and the first
+//! - A handout of every exercise builds, and its tests fail exactly as
+//!   `chapters/exercise-tests.toml` says (each exercise's own tests, and the render tests
+//!   that need it) — set equality; `whitted learn` in it shows 0 of N and the first
 //!   exercise's failing test; a chapter binary says which exercise is missing, in one line.
 //! - A handout of chapter 4 alone fails exactly chapter 4's tests; putting its reference bodies
 //!   back one by one turns its exercises green in order, and `whitted learn` ends at N of N.
@@ -81,12 +81,11 @@ fn run_tests(project: &Path, m: &Manifest) -> (BTreeSet<String>, BTreeSet<String
     (failed, passed)
 }
 
-/// The tests the manifest says fail when the exercises `stripped` are missing.
+/// The tests the map (chapters/exercise-tests.toml) says fail when the exercises `stripped`
+/// are missing.
 fn expected(m: &Manifest, all: &BTreeSet<String>, stripped: &[usize]) -> BTreeSet<String> {
-    stripped
-        .iter()
-        .flat_map(|&i| deps::declared(m, all, i))
-        .collect()
+    let map = deps::load_map(&root(), m).unwrap();
+    deps::expected(&map, all, stripped)
 }
 
 /// Asserts two sets of tests are equal, listing the differences.

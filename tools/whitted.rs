@@ -108,10 +108,13 @@ struct Formulas {
     #[arg(long, conflicts_with = "deps")]
     prove: bool,
     /// Measure which tests of a handout depend on which exercise (poison each in turn and run
-    /// the manifest's [handout] tests), and compare with the manifest's `needs` and
-    /// `[[renders]]`; prints the lines to paste where they differ. Exit status 1 when they do.
+    /// the manifest's [handout] tests), and check chapters/exercise-tests.toml against it.
+    /// Exit status 1 when it is out of date.
     #[arg(long)]
     deps: bool,
+    /// With --deps: write chapters/exercise-tests.toml from the measurements.
+    #[arg(long, requires = "deps")]
+    write: bool,
     /// Rewrite the "## Exercises" section of each chapter's README from the manifest.
     #[arg(long, conflicts_with_all = ["prove", "deps"])]
     readmes: bool,
@@ -306,7 +309,8 @@ fn learn(args: &LearnArgs) -> Result<ExitCode, Error> {
     }
 }
 
-/// `whitted formulas --deps`: measured dependencies against the manifest's.
+/// `whitted formulas --deps [--write]`: the measured dependencies, checked against the map
+/// (or written to it).
 fn deps(root: &Path, manifest: &Manifest, args: &Formulas) -> Result<ExitCode, Error> {
     use whitted::course::deps;
     let options = Options {
@@ -316,18 +320,28 @@ fn deps(root: &Path, manifest: &Manifest, args: &Formulas) -> Result<ExitCode, E
         ..Options::default()
     };
     let measured = deps::measure(root, manifest, &options)?;
-    let problems = deps::check(manifest, &measured);
     for (e, failing) in manifest.entries.iter().zip(&measured.failing) {
         println!(
-            "{:<5} {:<44} {:>3} tests fail without it",
+            "{:<5} {:<44} {:>3} of {} tests fail without it",
             e.exercise.id,
             e.function,
-            failing.len()
+            failing.len(),
+            measured.tests.len()
         );
     }
+    if args.write {
+        let path = root.join(deps::MAP_PATH);
+        whitted::output::write_file(&path, deps::map_text(manifest, &measured).as_bytes())
+            .map_err(|e| Error::Proof(e.to_string()))?;
+        println!("wrote {}", deps::MAP_PATH);
+        return Ok(ExitCode::SUCCESS);
+    }
+    let map = deps::load_map(root, manifest)?;
+    let problems = deps::check(manifest, &map, &measured);
     if problems.is_empty() {
         println!(
-            "the manifest's needs and renders agree with the {} tests measured",
+            "{} says what the {} tests measure",
+            deps::MAP_PATH,
             measured.tests.len()
         );
         return Ok(ExitCode::SUCCESS);
@@ -336,13 +350,9 @@ fn deps(root: &Path, manifest: &Manifest, args: &Formulas) -> Result<ExitCode, E
         println!("{p}");
     }
     println!(
-        "
-what the measurements say, to paste into {}:",
-        manifest.file
+        "\n{} is out of date: `cargo run --release --bin whitted -- formulas --deps --write` rewrites it",
+        deps::MAP_PATH
     );
-    for line in deps::suggest(manifest, &measured) {
-        println!("{line}");
-    }
     Ok(ExitCode::from(1))
 }
 

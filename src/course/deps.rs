@@ -1,17 +1,19 @@
-//! Which tests of a handout depend on which exercises, measured.
+//! Which tests of a handout depend on which exercises: measured, and written down.
 //!
 //! A handout replaces an exercise's body by `todo!()`; a test fails then exactly when it runs
 //! that body. The same happens when the body is *poisoned* (`if poisoned { todo!() }` first
-//! thing, see [`super::prove`]), and poisoning needs one build for every exercise at once. So
-//! [`measure`] copies the project, poisons every exercise behind the switch
-//! `WHITTED_POISON`, builds the handout's test targets once, checks they all pass unpoisoned,
-//! and then runs them with one exercise poisoned at a time: the tests that fail are the tests
-//! that depend on it.
+//! thing in its solution region, see [`super::prove`]), and poisoning needs one build for
+//! every exercise at once. So [`measure`] copies the project, poisons every exercise behind
+//! the switch `WHITTED_POISON`, builds the handout's test targets once, checks they all pass
+//! unpoisoned, and then runs them with one exercise poisoned at a time: the tests that fail
+//! are the tests that depend on it.
 //!
-//! The manifest states the same dependencies (each exercise's own tests `exC_K_…`, its
-//! `needs`, and the `[[renders]]` tables that need it); [`check`] compares the two,
-//! so a test that calls an exercise the manifest does not say it needs is caught, and so is a
-//! dependency the manifest claims but the tests never exercise.
+//! The result is written down in [`MAP_PATH`], `chapters/exercise-tests.toml`, next to the
+//! manifest: each `[[tests]]` table names tests (as `target::name`, or a prefix of it) and
+//! the exercises they run. `whitted formulas --deps --write` writes it; `whitted formulas
+//! --deps` measures again and [`check`]s the file, which CI does, so the list of what a
+//! handout fails cannot drift from the tests. A handout of the exercises S fails exactly the
+//! tests whose table names one of S ([`expected`]).
 
 use std::collections::{BTreeMap, BTreeSet};
 use std::path::Path;
@@ -19,7 +21,6 @@ use std::sync::Mutex;
 use std::sync::atomic::{AtomicUsize, Ordering};
 
 use super::Error;
-use super::learn::test_name;
 use super::manifest::Manifest;
 use super::prove::{self, Options, TestOutcome};
 
@@ -46,76 +47,147 @@ impl Measured {
     }
 }
 
-/// The tests the manifest says depend on entry `index`: the own tests of the exercise and of
-/// every exercise that needs it (directly or through others), and the tests of every
-/// `[[renders]]` table that needs it.
+/// Where the map of tests to exercises lives, relative to the project's root.
+pub const MAP_PATH: &str = "chapters/exercise-tests.toml";
+
+/// One `[[tests]]` table of the map: tests and the exercises (manifest indices) they run.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Group {
+    /// The tests, as `target::name` or prefixes of it (`render_paths::ch3_`).
+    pub tests: Vec<String>,
+    /// The exercises they need, as manifest indices.
+    pub needs: Vec<usize>,
+}
+
+impl Group {
+    /// Whether the test `target::name` is one of these.
+    #[must_use]
+    pub fn matches(&self, test: &str) -> bool {
+        self.tests.iter().any(|t| test.starts_with(t.as_str()))
+    }
+}
+
+#[derive(serde::Deserialize)]
+#[serde(deny_unknown_fields)]
+struct RawMap {
+    #[serde(default)]
+    tests: Vec<toml::Spanned<RawGroup>>,
+}
+
+#[derive(serde::Deserialize)]
+#[serde(deny_unknown_fields)]
+struct RawGroup {
+    tests: toml::Spanned<Vec<String>>,
+    needs: toml::Spanned<Vec<String>>,
+}
+
+/// Reads the map text `text` (`file` names it in messages) against the manifest's exercises.
+pub fn parse_map(text: &str, file: &str, manifest: &Manifest) -> Result<Vec<Group>, Error> {
+    let err = |span: std::ops::Range<usize>, message: String| {
+        let (line, col) = crate::error::line_col(text, span.start);
+        Error::Manifest {
+            file: file.to_string(),
+            line,
+            col,
+            message,
+        }
+    };
+    let raw: RawMap = toml::from_str(text).map_err(|e| {
+        err(
+            e.span().unwrap_or(0..0),
+            e.message().trim().replace('\n', " "),
+        )
+    })?;
+    let mut groups = Vec::new();
+    for g in &raw.tests {
+        let g = g.get_ref();
+        if g.tests.get_ref().is_empty() || g.tests.get_ref().iter().any(|t| !t.contains("::")) {
+            return Err(err(
+                g.tests.span(),
+                "tests: expected tests as target::name or prefixes of it (render_paths::ch3_)"
+                    .into(),
+            ));
+        }
+        let mut needs = Vec::new();
+        for id in g.needs.get_ref() {
+            let found = super::manifest::expand_ids(&manifest.entries, id);
+            if found.is_empty() {
+                return Err(err(
+                    g.needs.span(),
+                    format!(
+                        "needs: {id:?} names no exercise of {} (ids look like 2.3, ranges 2.1-2.12, a chapter 3.*)",
+                        manifest.file
+                    ),
+                ));
+            }
+            needs.extend(found);
+        }
+        needs.sort_unstable();
+        needs.dedup();
+        groups.push(Group {
+            tests: g.tests.get_ref().clone(),
+            needs,
+        });
+    }
+    Ok(groups)
+}
+
+/// Reads [`MAP_PATH`] under `root`.
+pub fn load_map(root: &Path, manifest: &Manifest) -> Result<Vec<Group>, Error> {
+    let path = root.join(MAP_PATH);
+    let text = std::fs::read_to_string(&path).map_err(|e| Error::io(&path, e))?;
+    parse_map(&text, MAP_PATH, manifest)
+}
+
+/// The exercises the test `target::name` needs, by the map.
 #[must_use]
-pub fn declared(manifest: &Manifest, tests: &BTreeSet<TestId>, index: usize) -> BTreeSet<TestId> {
-    let dependents = dependents(manifest, index);
+pub fn needs_of(map: &[Group], test: &str) -> BTreeSet<usize> {
+    map.iter()
+        .filter(|g| g.matches(test))
+        .flat_map(|g| g.needs.iter().copied())
+        .collect()
+}
+
+/// Of `tests`, those the map says fail when the exercises `stripped` (manifest indices) are
+/// missing.
+#[must_use]
+pub fn expected(map: &[Group], tests: &BTreeSet<TestId>, stripped: &[usize]) -> BTreeSet<TestId> {
     tests
         .iter()
-        .filter(|t| {
-            let name = test_name(t);
-            let own = dependents
-                .iter()
-                .any(|&d| name.starts_with(&manifest.entries[d].exercise.test_prefix()));
-            let render = manifest
-                .renders
-                .iter()
-                .any(|r| r.needs.contains(&index) && r.matches(t));
-            own || render
-        })
+        .filter(|t| needs_of(map, t).iter().any(|i| stripped.contains(i)))
         .cloned()
         .collect()
 }
 
-/// Entry `index` and every entry whose `needs` reach it.
+/// The differences between what was measured and what the map says, one line per exercise
+/// that disagrees, and one per test the map does not name (empty when they agree).
 #[must_use]
-pub fn dependents(manifest: &Manifest, index: usize) -> BTreeSet<usize> {
-    let mut out = BTreeSet::from([index]);
-    loop {
-        let before = out.len();
-        for (i, e) in manifest.entries.iter().enumerate() {
-            if e.exercise
-                .needs
-                .iter()
-                .any(|id| out.iter().any(|&j| manifest.entries[j].exercise.id == *id))
-            {
-                out.insert(i);
-            }
-        }
-        if out.len() == before {
-            return out;
+pub fn check(manifest: &Manifest, map: &[Group], measured: &Measured) -> Vec<String> {
+    let mut out = Vec::new();
+    for t in &measured.tests {
+        if !map.iter().any(|g| g.matches(t)) {
+            out.push(format!("test {t} is not in {MAP_PATH}"));
         }
     }
-}
-
-/// The differences between what was measured and what the manifest declares, one line per
-/// exercise that disagrees (empty when they agree).
-#[must_use]
-pub fn check(manifest: &Manifest, measured: &Measured) -> Vec<String> {
-    let mut out = Vec::new();
     for (i, e) in manifest.entries.iter().enumerate() {
-        let declared = declared(manifest, &measured.tests, i);
+        let said = expected(map, &measured.tests, &[i]);
         let failing = &measured.failing[i];
-        let undeclared: Vec<&String> = failing.difference(&declared).collect();
-        let unneeded: Vec<&String> = declared.difference(failing).collect();
-        if !undeclared.is_empty() || !unneeded.is_empty() {
+        let unsaid: Vec<&String> = failing.difference(&said).collect();
+        let wrong: Vec<&String> = said.difference(failing).collect();
+        if !unsaid.is_empty() || !wrong.is_empty() {
             out.push(format!(
                 "exercise {} ({}): {}{}",
                 e.exercise.id,
                 e.function,
-                if undeclared.is_empty() {
+                if unsaid.is_empty() {
                     String::new()
                 } else {
-                    format!("fail without the manifest saying so: {undeclared:?}; ")
+                    format!("fail without it, the map does not say so: {unsaid:?}; ")
                 },
-                if unneeded.is_empty() {
+                if wrong.is_empty() {
                     String::new()
                 } else {
-                    format!(
-                        "the manifest says they need it, yet they pass without it: {unneeded:?}"
-                    )
+                    format!("the map says they need it, yet they pass without it: {wrong:?}")
                 }
             ));
         }
@@ -244,97 +316,63 @@ pub fn measure(root: &Path, manifest: &Manifest, options: &Options) -> Result<Me
     })
 }
 
-/// The `needs` lines and `[[renders]]` tables the measurements call for. An exercise
-/// `needs` the earlier exercises whose poisoning fails one of its own tests (minus those
-/// reached through another need). The other tests are grouped by the exact set of exercises
-/// they fail without; each group is one `[[renders]]` table, its tests written as
-/// `target::chN_` prefixes where a whole prefix shares the set.
+/// The map's text for the measurements: every test, grouped by the exact set of exercises
+/// it fails without, each group written with `target::prefix_` where a whole prefix shares
+/// the set.
 #[must_use]
-pub fn suggest(manifest: &Manifest, measured: &Measured) -> Vec<String> {
-    let n = manifest.entries.len();
-    let own_of = |t: &str| {
-        (0..n).find(|&e| test_name(t).starts_with(&manifest.entries[e].exercise.test_prefix()))
-    };
-    // needs[d] = the exercises whose poisoning fails one of d's own tests
-    let mut needs: Vec<BTreeSet<usize>> = vec![BTreeSet::new(); n];
-    // for the other tests, the exercises each fails without
-    let mut others: BTreeMap<&TestId, Vec<usize>> = BTreeMap::new();
+pub fn map_text(manifest: &Manifest, measured: &Measured) -> String {
+    let mut needs: BTreeMap<&TestId, Vec<usize>> =
+        measured.tests.iter().map(|t| (t, Vec::new())).collect();
     for (i, failing) in measured.failing.iter().enumerate() {
         for t in failing {
-            match own_of(t) {
-                Some(d) if d != i => {
-                    needs[d].insert(i);
-                }
-                Some(_) => {}
-                None => others.entry(t).or_default().push(i),
+            if let Some(n) = needs.get_mut(t) {
+                n.push(i);
             }
         }
     }
-    let reach = |from: usize| -> BTreeSet<usize> {
-        let mut seen = BTreeSet::new();
-        let mut stack: Vec<usize> = needs[from].iter().copied().collect();
-        while let Some(x) = stack.pop() {
-            if seen.insert(x) {
-                stack.extend(needs[x].iter().copied());
-            }
-        }
-        seen
-    };
-    let mut out = Vec::new();
-    for (entry, own) in manifest.entries.iter().zip(&needs) {
-        let direct: Vec<String> = own
-            .iter()
-            .copied()
-            .filter(|&i| !own.iter().any(|&j| j != i && reach(j).contains(&i)))
-            .map(|i| format!("{:?}", manifest.entries[i].exercise.id))
-            .collect();
-        if !direct.is_empty() {
-            out.push(format!(
-                "# {} {}\nneeds = [{}]",
-                entry.exercise.id,
-                entry.function,
-                direct.join(", ")
-            ));
-        }
-    }
-    // group the other tests by what they need
     let mut groups: BTreeMap<Vec<usize>, Vec<&TestId>> = BTreeMap::new();
-    for (t, set) in &others {
+    for (t, set) in &needs {
         groups.entry(set.clone()).or_default().push(t);
     }
-    for (set, tests) in groups {
+    let mut out = String::from(
+        "# Which exercises each test of a handout runs: without any one of them, the test fails.\n\
+         # Measured by `whitted formulas --deps --write` (each exercise poisoned in turn); do not\n\
+         # edit. CI measures again and checks this file (`whitted formulas --deps`).\n",
+    );
+    // the groups in the order of their first exercise, tests that need none last
+    let mut ordered: Vec<(Vec<usize>, Vec<&TestId>)> = groups.into_iter().collect();
+    ordered.sort_by_key(|(set, _)| (set.is_empty(), set.clone()));
+    for (set, tests) in ordered {
         let mut written: Vec<String> = Vec::new();
         for t in &tests {
             let (target, name) = t.split_once("::").unwrap_or(("", t));
             let prefix = name
                 .split_once('_')
                 .map(|(head, _)| format!("{target}::{head}_"));
-            let whole = prefix.as_ref().filter(|p| {
-                let all: Vec<&TestId> = measured
+            let whole = prefix.filter(|p| {
+                measured
                     .tests
                     .iter()
                     .filter(|x| x.starts_with(p.as_str()))
-                    .collect();
-                all.iter().all(|x| tests.contains(x))
+                    .all(|x| tests.contains(&x))
             });
-            let entry = whole.cloned().unwrap_or_else(|| (*t).clone());
+            let entry = whole.unwrap_or_else(|| (*t).clone());
             if !written.contains(&entry) {
                 written.push(entry);
             }
         }
         let ids = crate::course::manifest::compress_ids(&manifest.entries, &set);
-        out.push(format!(
-            "[[renders]]\ntests = [{}]\nneeds = [{}]",
+        out += &format!(
+            "\n[[tests]]\ntests = [\n{}]\nneeds = [{}]\n",
             written
                 .iter()
-                .map(|w| format!("{w:?}"))
-                .collect::<Vec<_>>()
-                .join(", "),
+                .map(|w| format!("    {w:?},\n"))
+                .collect::<String>(),
             ids.iter()
                 .map(|i| format!("{i:?}"))
                 .collect::<Vec<_>>()
                 .join(", ")
-        ));
+        );
     }
     out
 }

@@ -33,28 +33,6 @@ pub struct Manifest {
     pub handout: HandoutTable,
     /// The formula functions, in the file's order; an entry's index is its number in the proof.
     pub entries: Vec<Entry>,
-    /// The tests besides the exercises' own (renders, whole scenes) and the exercises each
-    /// group of them needs.
-    pub renders: Vec<Renders>,
-}
-
-/// A `[[renders]]` table: tests that are no exercise's own (they render scenes, or check
-/// several exercises at once), and every exercise they run.
-#[derive(Clone, Debug, PartialEq)]
-pub struct Renders {
-    /// The tests, as `target::name` or prefixes of it (`render_paths::ch3_`).
-    pub tests: Vec<String>,
-    /// The manifest indices of the exercises they need (from ids and ranges such as `2.1-2.12`
-    /// or `3.*`).
-    pub needs: Vec<usize>,
-}
-
-impl Renders {
-    /// Whether the test `target::name` is one of these.
-    #[must_use]
-    pub fn matches(&self, test: &str) -> bool {
-        self.tests.iter().any(|t| test.starts_with(t.as_str()))
-    }
 }
 
 /// The `[prove]` table: which tests are the render paths.
@@ -113,9 +91,6 @@ pub struct Exercise {
     pub hints: Vec<String>,
     /// What the exercise is worth.
     pub points: u32,
-    /// The exercises (ids) whose code this one's tests run too (it calls them): when one of
-    /// them is missing, this exercise's tests fail as well.
-    pub needs: Vec<String>,
 }
 
 impl Exercise {
@@ -133,15 +108,6 @@ struct RawManifest {
     handout: Spanned<RawHandout>,
     #[serde(default)]
     formula: Vec<Spanned<RawEntry>>,
-    #[serde(default)]
-    renders: Vec<Spanned<RawRenders>>,
-}
-
-#[derive(Deserialize)]
-#[serde(deny_unknown_fields)]
-struct RawRenders {
-    tests: Spanned<Vec<String>>,
-    needs: Spanned<Vec<String>>,
 }
 
 #[derive(Deserialize)]
@@ -169,8 +135,6 @@ struct RawEntry {
     task: Option<Spanned<String>>,
     hints: Option<Spanned<Vec<String>>>,
     points: Option<Spanned<i64>>,
-    #[serde(default)]
-    needs: Vec<Spanned<String>>,
 }
 
 /// Reads and checks the manifest at `path`; messages name the path as given.
@@ -315,65 +279,17 @@ pub fn parse(text: &str, file: &str) -> Result<Manifest, Error> {
         });
     }
 
-    // every `needs` names an exercise before it
-    for (i, (e, spanned)) in entries.iter().zip(&raw.formula).enumerate() {
-        for (need, at) in e.exercise.needs.iter().zip(&spanned.get_ref().needs) {
-            if !entries[..i].iter().any(|d| d.exercise.id == *need) {
-                return Err(err(
-                    at.span(),
-                    format!(
-                        "needs: {need:?} is not an exercise before {} (an exercise may only need earlier ones)",
-                        e.exercise.id
-                    ),
-                ));
-            }
-        }
-    }
-
-    let mut renders = Vec::new();
-    for r in &raw.renders {
-        let r = r.get_ref();
-        let tests = r.tests.get_ref();
-        if tests.is_empty() || tests.iter().any(|t| !t.contains("::")) {
-            return Err(err(
-                r.tests.span(),
-                format!(
-                    "renders.tests: expected tests as target::name or prefixes of it (render_paths::ch3_), found {tests:?}"
-                ),
-            ));
-        }
-        let mut needs = Vec::new();
-        for id in r.needs.get_ref() {
-            let found = expand_ids(&entries, id);
-            if found.is_empty() {
-                return Err(err(
-                    r.needs.span(),
-                    format!(
-                        "renders.needs: {id:?} names no exercise (ids look like 2.3, ranges like 2.1-2.12, a whole chapter 3.*)"
-                    ),
-                ));
-            }
-            needs.extend(found);
-        }
-        needs.sort_unstable();
-        needs.dedup();
-        renders.push(Renders {
-            tests: tests.clone(),
-            needs,
-        });
-    }
-
     Ok(Manifest {
         file: file.to_string(),
         prove,
         handout,
         entries,
-        renders,
     })
 }
 
 /// The entries an id, a range `2.1-2.12` (within one chapter) or a chapter `3.*` names.
-fn expand_ids(entries: &[Entry], text: &str) -> Vec<usize> {
+#[must_use]
+pub fn expand_ids(entries: &[Entry], text: &str) -> Vec<usize> {
     let text = text.trim();
     let index = |id: &str| entries.iter().position(|e| e.exercise.id == id.trim());
     if let Some(chapter) = text.strip_suffix(".*") {
@@ -504,11 +420,6 @@ fn exercise(
         task,
         hints: list,
         points: value,
-        needs: raw
-            .needs
-            .iter()
-            .map(|n| n.get_ref().trim().to_string())
-            .collect(),
     })
 }
 
