@@ -117,6 +117,7 @@ pub fn run_tests(root: &Path, manifest: &Manifest) -> Result<TestRun, Error> {
     let out = command
         .current_dir(root)
         .env_remove("WHITTED_BLESS")
+        .env("RUST_BACKTRACE", "0") // the failing line, not the stack, is what a student needs
         .stdin(Stdio::null())
         .output()
         .map_err(|e| Error::Proof(format!("cannot run cargo test: {e}")))?;
