@@ -11,6 +11,7 @@
 //! - Across all chapters, exercise by exercise: in a copy where every exercise from the k-th
 //!   on is switched off (the poison switch of `whitted formulas --prove`, one build for all
 //!   steps), `whitted learn` shows k of N done and exercise k next, for k = 0 … N.
+//! - `whitted learn watch` reruns when a file is saved by renaming, and draws the chapter.
 
 use std::collections::BTreeSet;
 use std::path::{Path, PathBuf};
@@ -294,4 +295,67 @@ fn exercise_by_exercise_learn_counts_up_to_all_of_them() {
             );
         }
     }
+}
+
+#[test]
+#[ignore = "builds a handout and watches it (a minute); .ci/run runs it"]
+fn learn_watch_reruns_on_a_save_by_renaming_and_draws_the_chapter() {
+    let m = manifest();
+    let i = m
+        .entries
+        .iter()
+        .position(|e| e.exercise.id == "3.1")
+        .unwrap();
+    let dir = tempfile::tempdir().unwrap();
+    let student = dir.path().join("w");
+    handout::write(&root(), &m, &[i], &student).unwrap();
+    let out = dir.path().join("watch.out");
+    let mut child = Command::new(env!("CARGO_BIN_EXE_whitted"))
+        .args(["learn", "watch", "--cycles", "1", "--root"])
+        .arg(&student)
+        .env("CARGO_TARGET_DIR", target_dir())
+        .env("CARGO_PROFILE_DEV_DEBUG", "0")
+        .env("NO_COLOR", "1")
+        .env_remove("WHITTED_POISON")
+        .stdout(std::fs::File::create(&out).unwrap())
+        .spawn()
+        .unwrap();
+    let text = || std::fs::read_to_string(&out).unwrap_or_default();
+    let started = std::time::Instant::now();
+    while !text().contains("watching src/") {
+        assert!(
+            started.elapsed().as_secs() < 600,
+            "no first report: {}",
+            text()
+        );
+        std::thread::sleep(std::time::Duration::from_millis(200));
+    }
+    assert!(text().contains("next: exercise 3.1"), "{}", text());
+    // the reference body back, saved as many editors save: a new file renamed over the old
+    let r = &handout::regions(&root(), &m).unwrap()[i];
+    let path = student.join(&r.file);
+    let now = std::fs::read_to_string(&path).unwrap();
+    let todo = format!(
+        "{}{}\n",
+        r.indent,
+        handout::todo_statement(&root(), &m.entries[i])
+    );
+    let original = std::fs::read_to_string(root().join(&r.file)).unwrap();
+    let back = now.replacen(&todo, &original[r.bytes.clone()], 1);
+    std::fs::write(path.with_extension("tmp"), back).unwrap();
+    std::fs::rename(path.with_extension("tmp"), &path).unwrap();
+    let status = child.wait().unwrap();
+    let report = text();
+    assert!(status.success(), "{report}");
+    let n = m.entries.len();
+    assert!(
+        report.contains(&format!("{n} of {n} exercises done")),
+        "{report}"
+    );
+    assert!(
+        report.contains("chapter 3's scene, as your code draws it now"),
+        "{report}"
+    );
+    let png = student.join(".whitted").join("ch03_shading.png");
+    assert!(image::open(&png).is_ok(), "{png:?}");
 }

@@ -457,6 +457,32 @@ pub fn is_source_change(path: &Path) -> bool {
 /// The directories `watch` watches.
 pub const WATCHED: [&str; 4] = ["src", "tests", "chapters", "scenes"];
 
+/// Each file under the watched directories with its modification time and size: what a save
+/// changes. (The file watcher also reports files being read, as the compiler reads them; a
+/// rerun happens only when this snapshot differs.)
+#[must_use]
+pub fn snapshot(root: &Path) -> BTreeMap<PathBuf, (std::time::SystemTime, u64)> {
+    let mut out = BTreeMap::new();
+    let mut stack: Vec<PathBuf> = WATCHED.iter().map(|d| root.join(d)).collect();
+    while let Some(dir) = stack.pop() {
+        let Ok(entries) = std::fs::read_dir(&dir) else {
+            continue;
+        };
+        for entry in entries.flatten() {
+            let path = entry.path();
+            let Ok(meta) = entry.metadata() else { continue };
+            if meta.is_dir() {
+                stack.push(path);
+            } else if is_source_change(&path)
+                && let Ok(modified) = meta.modified()
+            {
+                out.insert(path, (modified, meta.len()));
+            }
+        }
+    }
+    out
+}
+
 /// `whitted learn watch`: reports, then reruns the tests after every save (changes in
 /// [`WATCHED`], debounced by 300 ms), and renders the chapter of each exercise that turns
 /// green. Stops after `cycles` reruns when given (for scripts and tests), else runs until
@@ -484,6 +510,7 @@ pub fn watch(
                 .map_err(fail)?;
         }
     }
+    let mut files = snapshot(root);
     let run = run_tests(root, manifest)?;
     let mut before = states(manifest, &run);
     print!("{}", report(manifest, &run, &before, style, Some(root)));
@@ -493,18 +520,20 @@ pub fn watch(
             "\nwatching {} for changes (Ctrl-C to stop)",
             WATCHED.map(|d| format!("{d}/")).join(", ")
         );
-        let changed = match rx.recv() {
-            Ok(Ok(events)) => events.iter().any(|e| is_source_change(&e.path)),
-            Ok(Err(e)) => {
-                eprintln!("warning: while watching: {e}");
-                false
+        let mut changed = false;
+        while !changed {
+            match rx.recv() {
+                Ok(Ok(events)) if events.iter().any(|e| is_source_change(&e.path)) => {
+                    while rx.try_recv().is_ok() {} // one rerun for a burst of saves
+                    let now = snapshot(root);
+                    changed = now != files; // a save, not a read
+                    files = now;
+                }
+                Ok(Ok(_)) => {}
+                Ok(Err(e)) => eprintln!("warning: while watching: {e}"),
+                Err(_) => return Ok(()), // the watcher is gone
             }
-            Err(_) => break, // the watcher is gone
-        };
-        if !changed {
-            continue;
         }
-        while rx.try_recv().is_ok() {} // one rerun for a burst of saves
         reruns += 1;
         let run = run_tests(root, manifest)?;
         let now = states(manifest, &run);
