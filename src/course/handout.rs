@@ -199,8 +199,13 @@ pub fn select(
 ) -> Result<Vec<usize>, Error> {
     if let Some((lo, hi)) = chapters {
         if !(1..=5).contains(&lo) || !(1..=5).contains(&hi) || lo > hi {
+            let given = if lo == hi {
+                lo.to_string()
+            } else {
+                format!("{lo}-{hi}")
+            };
             return Err(Error::Usage(format!(
-                "--chapters {lo}-{hi}: expected chapters from 1 to 5, the first not after the last"
+                "--chapters {given}: expected chapters from 1 to 5, the first not after the last"
             )));
         }
         return Ok((0..manifest.entries.len())
