@@ -73,8 +73,7 @@ pub struct Surface<'s> {
     pub spawn: SpawnPoint,
 }
 
-/// A feeler: the ray S(u) = P′ + (L − P′)·u from the offset start P′, and the smallest u that
-/// counts as "between" (0 unless the offset strategy keeps the start on the surface).
+/// A feeler S(u) = P′ + (L − P′)·u from the offset start P′, and the smallest u that counts.
 pub type Feeler = (Ray, Real);
 
 impl<'a> Tracer<'a> {
@@ -283,9 +282,8 @@ impl<'a> Tracer<'a> {
         // END SOLUTION
     }
 
-    /// From stage 4, the feeler towards `light` (if it casts shadows and lies in front of the
-    /// surface, n·(L − P) > 0): S(u) = P′ + (L − P′)·u from P′, the hit point moved off the
-    /// surface by the offset strategy ([`crate::offset`]).
+    /// From stage 4, the feeler S(u) = P′ + (L − P′)·u towards a `light` that casts shadows
+    /// and lies in front, n·(L − P) > 0, from P moved off the surface to P′ ([`crate::offset`]).
     pub(crate) fn feeler(&self, s: &Surface, light: &Light) -> Option<Feeler> {
         let o = self.options;
         if o.stage < Stage::Shadows {
@@ -385,8 +383,7 @@ impl<'a> Tracer<'a> {
         // END SOLUTION
     }
 
-    /// Traces a mirror or transmitted ray, telling `rec` that it leaves and what it brings
-    /// back.
+    /// Traces a mirror or transmitted ray, telling `rec` it leaves and what it brings back.
     fn follow(
         &self,
         kind: RayKind,
