@@ -10,7 +10,7 @@
 //! }
 //! ```
 //!
-//! and [`write`] copies the project with the chosen regions replaced by
+//! and [`write()`] copies the project with the chosen regions replaced by
 //! `todo!("exercise 2.3: The sphere's discriminant — see chapters/ch02_generic_objects/README.md")`.
 //! Exercises not chosen keep their reference code, so a course can hand out one chapter alone
 //! on top of working earlier chapters. The copy holds no solution of a chosen exercise, and
@@ -275,7 +275,7 @@ pub fn in_handout(file: &Path, tests: &[String], root: &Path) -> bool {
     }
 }
 
-/// What [`write`] did.
+/// What [`write()`] did.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct Handout {
     /// The exercises taken out (manifest indices).
