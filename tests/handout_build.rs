@@ -258,26 +258,16 @@ fn a_chapter_handout_fails_its_tests_and_turns_green_as_the_bodies_come_back() {
 fn exercise_by_exercise_learn_counts_up_to_all_of_them() {
     let m = manifest();
     let n = m.entries.len();
-    let dir = tempfile::tempdir().unwrap();
-    let copy = dir.path().join("project");
     // a copy of the project with every exercise behind the poison switch
-    for file in prove::project_files(&root()).unwrap() {
-        let to = copy.join(&file);
-        std::fs::create_dir_all(to.parent().unwrap()).unwrap();
-        std::fs::copy(root().join(&file), &to).unwrap();
-    }
-    let locations = prove::locate_all(&copy, &m).unwrap();
-    for (file, text) in prove::poisoned_sources(&copy, &m, &locations).unwrap() {
-        std::fs::write(copy.join(file), text).unwrap();
-    }
-    let lib = copy.join("src/lib.rs");
-    let lib_text = std::fs::read_to_string(&lib).unwrap() + prove::POISON_MODULE;
-    std::fs::write(&lib, lib_text).unwrap();
+    let locations = prove::locate_all(&root(), &m).unwrap();
+    let poisoned =
+        prove::PoisonedCopy::new(&root(), &m, &locations, "whitted-learn-", false).unwrap();
+    let copy = &poisoned.project;
 
     for k in 0..=n {
         // exercises k … n−1 missing, those before written
         let poison = (k < n).then(|| format!("{k}-{}", n - 1));
-        let report = learn(&copy, Some(poison.unwrap_or_default()));
+        let report = learn(copy, Some(poison.unwrap_or_default()));
         assert!(
             report.contains(&format!("{k} of {n} exercises done")),
             "k = {k}: {report}"

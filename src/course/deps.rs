@@ -200,29 +200,15 @@ pub fn check(manifest: &Manifest, map: &[Group], measured: &Measured) -> Vec<Str
 /// runs go on at once.
 pub fn measure(root: &Path, manifest: &Manifest, options: &Options) -> Result<Measured, Error> {
     let locations = prove::locate_all(root, manifest)?;
-    let mut temp = tempfile::Builder::new()
-        .prefix("whitted-deps-")
-        .tempdir()
-        .map_err(|e| Error::io(std::env::temp_dir(), e))?;
-    temp.disable_cleanup(options.keep);
-    let copy = temp.path().join("project");
-    let runs = temp.path().join("runs");
-    std::fs::create_dir_all(&runs).map_err(|e| Error::io(&runs, e))?;
-    prove::copy_project(root, &copy)?;
-    for (file, text) in prove::poisoned_sources(&copy, manifest, &locations)? {
-        let path = copy.join(file);
-        std::fs::write(&path, text).map_err(|e| Error::io(&path, e))?;
-    }
-    let lib = copy.join("src/lib.rs");
-    let mut lib_text = std::fs::read_to_string(&lib).map_err(|e| Error::io(&lib, e))?;
-    lib_text.push_str(prove::POISON_MODULE);
-    std::fs::write(&lib, lib_text).map_err(|e| Error::io(&lib, e))?;
+    let poisoned =
+        prove::PoisonedCopy::new(root, manifest, &locations, "whitted-deps-", options.keep)?;
+    let (copy, runs) = (&poisoned.project, &poisoned.runs);
     let target_dir = options
         .target_dir
         .clone()
         .unwrap_or_else(|| root.join("target").join("prove"));
     let exes = prove::build_tests(
-        &copy,
+        copy,
         &target_dir,
         &manifest.handout.tests,
         &options.features,
@@ -236,7 +222,7 @@ pub fn measure(root: &Path, manifest: &Manifest, options: &Options) -> Result<Me
                 "{target}-{}",
                 poison.map_or("none".into(), |k| k.to_string())
             ));
-            let run = prove::run_tests(exe, &copy, None, poison, &log, options.timeout)?;
+            let run = prove::run_tests(exe, copy, None, poison, &log, options.timeout)?;
             if let Some(why) = run.unfinished {
                 return Err(Error::Proof(format!(
                     "tests/{target} with exercise {} poisoned did not finish: {why}",

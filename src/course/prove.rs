@@ -315,6 +315,57 @@ fn region_start(text: &str, at: &Location, id: &str) -> Option<(usize, String)> 
     None
 }
 
+/// A copy of the project in a temporary directory, every manifest function behind the poison
+/// switch (see [`poisoned_sources`] and [`POISON_MODULE`]), and a directory for test runs'
+/// output beside it.
+pub struct PoisonedCopy {
+    /// The temporary directory (removed when dropped, unless kept).
+    pub temp: tempfile::TempDir,
+    /// The copy of the project.
+    pub project: PathBuf,
+    /// Where the test runs' output goes.
+    pub runs: PathBuf,
+    /// How many files were copied.
+    pub files: usize,
+}
+
+impl PoisonedCopy {
+    /// Copies the project at `root` into a new temporary directory named `prefix…`, poisons
+    /// the functions at `locations` (in manifest order) and adds the switch to `src/lib.rs`.
+    /// `keep` keeps the directory, even when a later step fails.
+    pub fn new(
+        root: &Path,
+        manifest: &Manifest,
+        locations: &[Location],
+        prefix: &str,
+        keep: bool,
+    ) -> Result<Self, Error> {
+        let mut temp = tempfile::Builder::new()
+            .prefix(prefix)
+            .tempdir()
+            .map_err(|e| Error::io(std::env::temp_dir(), e))?;
+        temp.disable_cleanup(keep);
+        let project = temp.path().join("project");
+        let runs = temp.path().join("runs");
+        std::fs::create_dir_all(&runs).map_err(|e| Error::io(&runs, e))?;
+        let files = copy_project(root, &project)?;
+        for (file, text) in poisoned_sources(&project, manifest, locations)? {
+            let path = project.join(file);
+            std::fs::write(&path, text).map_err(|e| Error::io(&path, e))?;
+        }
+        let lib = project.join("src/lib.rs");
+        let mut lib_text = std::fs::read_to_string(&lib).map_err(|e| Error::io(&lib, e))?;
+        lib_text.push_str(POISON_MODULE);
+        std::fs::write(&lib, lib_text).map_err(|e| Error::io(&lib, e))?;
+        Ok(Self {
+            temp,
+            project,
+            runs,
+            files,
+        })
+    }
+}
+
 /// Runs the proof for the project at `root` (the directory of `Cargo.toml`). Progress goes to
 /// stderr; the table is the caller's to print with [`Report::write_table`].
 pub fn prove(root: &Path, manifest: &Manifest, options: &Options) -> Result<Report, Error> {
@@ -323,43 +374,28 @@ pub fn prove(root: &Path, manifest: &Manifest, options: &Options) -> Result<Repo
     let locations = locate_all(root, manifest)?;
 
     // the copy, poisoned
-    let mut temp = tempfile::Builder::new()
-        .prefix("whitted-prove-")
-        .tempdir()
-        .map_err(|e| Error::io(std::env::temp_dir(), e))?;
-    // kept on request even when the proof stops with an error (a build that fails …)
-    temp.disable_cleanup(options.keep);
-    let copy = temp.path().join("project");
-    let runs = temp.path().join("runs");
-    std::fs::create_dir_all(&runs).map_err(|e| Error::io(&runs, e))?;
-    let files = copy_project(root, &copy)?;
+    let poisoned = PoisonedCopy::new(root, manifest, &locations, "whitted-prove-", options.keep)?;
+    let (temp, copy, runs) = (&poisoned.temp, &poisoned.project, &poisoned.runs);
     eprintln!(
-        "proof: {files} files copied to {}; poisoning {} functions",
+        "proof: {} files copied to {}; poisoning {} functions",
+        poisoned.files,
         copy.display(),
         manifest.entries.len()
     );
-    for (file, text) in poisoned_sources(&copy, manifest, &locations)? {
-        let path = copy.join(file);
-        std::fs::write(&path, text).map_err(|e| Error::io(&path, e))?;
-    }
-    let lib = copy.join("src/lib.rs");
-    let mut lib_text = std::fs::read_to_string(&lib).map_err(|e| Error::io(&lib, e))?;
-    lib_text.push_str(POISON_MODULE);
-    std::fs::write(&lib, lib_text).map_err(|e| Error::io(&lib, e))?;
 
     // one build
     let target_dir = options
         .target_dir
         .clone()
         .unwrap_or_else(|| root.join("target").join("prove"));
-    let exe = build(&copy, &target_dir, &manifest.prove.test, &options.features)?;
+    let exe = build(copy, &target_dir, &manifest.prove.test, &options.features)?;
     let build_time = started.elapsed();
 
     // the baseline, then each function
     let ran = Instant::now();
     let baseline = run_tests(
         &exe,
-        &copy,
+        copy,
         None,
         None,
         &runs.join("baseline"),
@@ -420,7 +456,7 @@ pub fn prove(root: &Path, manifest: &Manifest, options: &Options) -> Result<Repo
                     let log = runs.join(index.to_string());
                     let verdict = match run_tests(
                         &exe,
-                        &copy,
+                        copy,
                         Some(&filter),
                         Some(index),
                         &log,
