@@ -456,3 +456,15 @@ fn an_exercises_own_tests_run_only_it_and_exercises_before_it() {
         }
     }
 }
+
+/// Colour only on a terminal, and never with NO_COLOR set to something.
+#[test]
+fn colour_only_on_a_terminal_without_no_color() {
+    use std::ffi::OsStr;
+    let painted = |s: Style| s.good("x").contains('\x1b');
+    assert!(painted(Style::choose(true, None)));
+    assert!(painted(Style::choose(true, Some(OsStr::new("")))));
+    assert!(!painted(Style::choose(true, Some(OsStr::new("1")))));
+    assert!(!painted(Style::choose(false, None)));
+    assert!(!painted(Style::plain()));
+}

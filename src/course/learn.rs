@@ -182,9 +182,17 @@ impl Style {
     /// Colour when stdout is a terminal and `NO_COLOR` is unset or empty.
     #[must_use]
     pub fn detect() -> Self {
-        let no_color = std::env::var_os("NO_COLOR").is_some_and(|v| !v.is_empty());
+        Self::choose(
+            std::io::stdout().is_terminal(),
+            std::env::var_os("NO_COLOR").as_deref(),
+        )
+    }
+
+    /// Colour on a terminal, unless `NO_COLOR` holds something (<https://no-color.org>).
+    #[must_use]
+    pub fn choose(terminal: bool, no_color: Option<&std::ffi::OsStr>) -> Self {
         Self {
-            on: std::io::stdout().is_terminal() && !no_color,
+            on: terminal && no_color.is_none_or(|v| v.is_empty()),
         }
     }
 
