@@ -17,8 +17,6 @@
 
 use std::collections::{BTreeMap, BTreeSet};
 use std::path::Path;
-use std::sync::Mutex;
-use std::sync::atomic::{AtomicUsize, Ordering};
 
 use super::Error;
 use super::manifest::Manifest;
@@ -257,49 +255,15 @@ pub fn measure(root: &Path, manifest: &Manifest, options: &Options) -> Result<Me
         manifest.entries.len()
     );
 
-    let next = AtomicUsize::new(0);
-    let results: Mutex<BTreeMap<usize, BTreeSet<TestId>>> = Mutex::new(BTreeMap::new());
-    let failure: Mutex<Option<Error>> = Mutex::new(None);
-    std::thread::scope(|scope| {
-        for _ in 0..options.jobs.max(1) {
-            scope.spawn(|| {
-                loop {
-                    let k = next.fetch_add(1, Ordering::SeqCst);
-                    if k >= manifest.entries.len() {
-                        break;
-                    }
-                    match run_all(Some(k)) {
-                        Ok(run) => {
-                            let failed = run
-                                .into_iter()
-                                .filter(|(_, o)| *o == TestOutcome::Failed)
-                                .map(|(n, _)| n)
-                                .collect();
-                            results
-                                .lock()
-                                .unwrap_or_else(|p| p.into_inner())
-                                .insert(k, failed);
-                        }
-                        Err(e) => {
-                            failure
-                                .lock()
-                                .unwrap_or_else(|p| p.into_inner())
-                                .get_or_insert(e);
-                            break;
-                        }
-                    }
-                }
-            });
-        }
-    });
-    if let Some(e) = failure.into_inner().unwrap_or_else(|p| p.into_inner()) {
-        return Err(e);
-    }
-    let results = results.into_inner().unwrap_or_else(|p| p.into_inner());
-    Ok(Measured {
-        tests,
-        failing: results.into_values().collect(),
-    })
+    let all: Vec<usize> = (0..manifest.entries.len()).collect();
+    let failing = prove::in_parallel(&all, options.jobs, |k| {
+        Ok(run_all(Some(k))?
+            .into_iter()
+            .filter(|(_, o)| *o == TestOutcome::Failed)
+            .map(|(n, _)| n)
+            .collect())
+    })?;
+    Ok(Measured { tests, failing })
 }
 
 /// The map's text for the measurements: every test, grouped by the exact set of exercises

@@ -441,50 +441,24 @@ pub fn prove(root: &Path, manifest: &Manifest, options: &Options) -> Result<Repo
         options.jobs.max(1)
     );
 
-    let next = AtomicUsize::new(0);
     let done = AtomicUsize::new(0);
-    let rows: Mutex<Vec<Row>> = Mutex::new(Vec::new());
-    let failure: Mutex<Option<Error>> = Mutex::new(None);
-    std::thread::scope(|scope| {
-        for _ in 0..options.jobs.max(1) {
-            scope.spawn(|| {
-                loop {
-                    let i = next.fetch_add(1, Ordering::SeqCst);
-                    let Some(&index) = selected.get(i) else { break };
-                    let entry = &manifest.entries[index];
-                    let filter = manifest.prove.filter_for(entry.chapter);
-                    let log = runs.join(index.to_string());
-                    let verdict = match run_tests(
-                        &exe,
-                        copy,
-                        Some(&filter),
-                        Some(index),
-                        &log,
-                        options.timeout,
-                    ) {
-                        Ok(run) => verdict(&run, &filter),
-                        Err(e) => {
-                            failure
-                                .lock()
-                                .unwrap_or_else(|p| p.into_inner())
-                                .get_or_insert(e);
-                            break;
-                        }
-                    };
-                    let n = done.fetch_add(1, Ordering::SeqCst) + 1;
-                    eprintln!("[{n}/{}] {}: {verdict}", selected.len(), entry.function);
-                    rows.lock()
-                        .unwrap_or_else(|p| p.into_inner())
-                        .push(Row { index, verdict });
-                }
-            });
-        }
-    });
-    if let Some(e) = failure.into_inner().unwrap_or_else(|p| p.into_inner()) {
-        return Err(e);
-    }
-    let mut rows = rows.into_inner().unwrap_or_else(|p| p.into_inner());
-    rows.sort_by_key(|r| r.index);
+    let rows = in_parallel(&selected, options.jobs, |index| {
+        let entry = &manifest.entries[index];
+        let filter = manifest.prove.filter_for(entry.chapter);
+        let log = runs.join(index.to_string());
+        let run = run_tests(
+            &exe,
+            copy,
+            Some(&filter),
+            Some(index),
+            &log,
+            options.timeout,
+        )?;
+        let verdict = verdict(&run, &filter);
+        let n = done.fetch_add(1, Ordering::SeqCst) + 1;
+        eprintln!("[{n}/{}] {}: {verdict}", selected.len(), entry.function);
+        Ok(Row { index, verdict })
+    })?;
 
     let kept = options.keep.then(|| temp.path().to_path_buf());
     Ok(Report {
@@ -493,6 +467,48 @@ pub fn prove(root: &Path, manifest: &Manifest, options: &Options) -> Result<Repo
         build_time,
         run_time: ran.elapsed(),
     })
+}
+
+/// Runs `job` on every item, `jobs` at a time, and returns the results in the items' order.
+/// The first error stops the workers (each finishes the job it is on) and is returned.
+pub(crate) fn in_parallel<T: Send>(
+    items: &[usize],
+    jobs: usize,
+    job: impl Fn(usize) -> Result<T, Error> + Sync,
+) -> Result<Vec<T>, Error> {
+    let next = AtomicUsize::new(0);
+    let results: Mutex<Vec<(usize, T)>> = Mutex::new(Vec::new());
+    let failure: Mutex<Option<Error>> = Mutex::new(None);
+    std::thread::scope(|scope| {
+        for _ in 0..jobs.max(1) {
+            scope.spawn(|| {
+                while let Some(&item) = items.get(next.fetch_add(1, Ordering::SeqCst)) {
+                    if failure.lock().unwrap_or_else(|p| p.into_inner()).is_some() {
+                        break;
+                    }
+                    match job(item) {
+                        Ok(t) => results
+                            .lock()
+                            .unwrap_or_else(|p| p.into_inner())
+                            .push((item, t)),
+                        Err(e) => {
+                            failure
+                                .lock()
+                                .unwrap_or_else(|p| p.into_inner())
+                                .get_or_insert(e);
+                            break;
+                        }
+                    }
+                }
+            });
+        }
+    });
+    if let Some(e) = failure.into_inner().unwrap_or_else(|p| p.into_inner()) {
+        return Err(e);
+    }
+    let mut results = results.into_inner().unwrap_or_else(|p| p.into_inner());
+    results.sort_by_key(|(item, _)| items.iter().position(|i| i == item));
+    Ok(results.into_iter().map(|(_, t)| t).collect())
 }
 
 /// The indices of the entries to prove: those named by `only`, or all.
