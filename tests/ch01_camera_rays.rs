@@ -180,12 +180,9 @@ fn ex1_5_direction_at_the_four_corners() {
     assert_vec_eq(cam.direction(2.0, 1.0), vec3(0.0, 0.0, -1.0), TOL); // the centre looks along −n
 }
 
-/// "Principles of Ray Tracing": e + d is the pixel's point on the near plane, at distance N in
-/// front of the eye: d·(−n) = N for every pixel, and the middle of the image, (n/2, m/2),
-/// looks straight along −n, d = −N·n (a tilted camera, N = 2.5, 320 × 200).
-#[test]
-fn ex1_5_every_direction_reaches_the_near_plane() {
-    let cam = Camera::new(
+/// A camera looking down and sideways from (1, 2, 3): θ = 50°, N = 2.5, 320 × 200 pixels.
+fn tilted_camera() -> Camera {
+    Camera::new(
         vec3(1.0, 2.0, 3.0),
         vec3(-1.0, 0.5, 0.0),
         Vec3::Y,
@@ -194,7 +191,15 @@ fn ex1_5_every_direction_reaches_the_near_plane() {
         320,
         200,
     )
-    .unwrap();
+    .unwrap()
+}
+
+/// "Principles of Ray Tracing": e + d is the pixel's point on the near plane, at distance N in
+/// front of the eye: d·(−n) = N for every pixel, and the middle of the image, (n/2, m/2),
+/// looks straight along −n, d = −N·n (a tilted camera, N = 2.5, 320 × 200).
+#[test]
+fn ex1_5_every_direction_reaches_the_near_plane() {
+    let cam = tilted_camera();
     for (c, r) in [
         (0.0, 0.0),
         (320.0, 200.0),
@@ -212,16 +217,7 @@ fn ex1_5_every_direction_reaches_the_near_plane() {
 /// at the world point u_c·u + v_r·v − N·n + e.
 #[test]
 fn ex1_5_ray_reaches_the_near_plane_pixel_at_t_equal_one() {
-    let cam = Camera::new(
-        vec3(1.0, 2.0, 3.0),
-        vec3(-1.0, 0.5, 0.0),
-        Vec3::Y,
-        50.0,
-        2.5,
-        320,
-        200,
-    )
-    .unwrap();
+    let cam = tilted_camera();
     let (c, r) = (37.0, 150.0);
     let (u_c, v_r) = pixel_on_near_plane(c, r, 320.0, 200.0, cam.half_width(), cam.half_height());
     let world = u_c * cam.u() + v_r * cam.v() - cam.near() * cam.n() + cam.eye();

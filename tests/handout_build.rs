@@ -100,6 +100,27 @@ fn assert_same(failed: &BTreeSet<String>, expected: &BTreeSet<String>) {
     );
 }
 
+/// Asserts that a `whitted learn` report counts `done` exercises done and names exercise
+/// `next` (a manifest index) as the next one, or, with `None`, says that all of them pass.
+#[track_caller]
+fn assert_progress(report: &str, m: &Manifest, done: usize, next: Option<usize>) {
+    let n = m.entries.len();
+    assert!(
+        report.contains(&format!("{done} of {n} exercises done")),
+        "{report}"
+    );
+    match next {
+        Some(i) => assert!(
+            report.contains(&format!("next: exercise {} —", m.entries[i].exercise.id)),
+            "{report}"
+        ),
+        None => assert!(
+            report.contains(&format!("all {n} exercises pass")),
+            "{report}"
+        ),
+    }
+}
+
 /// A test's name without its target.
 fn learn_name(t: &str) -> &str {
     whitted::course::learn::test_name(t)
@@ -235,21 +256,12 @@ fn a_chapter_handout_fails_its_tests_and_turns_green_as_the_bodies_come_back() {
         );
         std::fs::write(&path, back).unwrap();
         let report = learn(&student, None);
-        let done = done_with(&chapter4[j + 1..]);
-        assert!(
-            report.contains(&format!("{done} of {n} exercises done")),
-            "{report}"
+        assert_progress(
+            &report,
+            &m,
+            done_with(&chapter4[j + 1..]),
+            chapter4.get(j + 1).copied(),
         );
-        match chapter4.get(j + 1) {
-            Some(&next) => assert!(
-                report.contains(&format!("next: exercise {}", m.entries[next].exercise.id)),
-                "{report}"
-            ),
-            None => assert!(
-                report.contains(&format!("all {n} exercises pass")),
-                "{report}"
-            ),
-        }
     }
 }
 
@@ -268,22 +280,7 @@ fn exercise_by_exercise_learn_counts_up_to_all_of_them() {
         // exercises k … n−1 missing, those before written
         let poison = (k < n).then(|| format!("{k}-{}", n - 1));
         let report = learn(copy, Some(poison.unwrap_or_default()));
-        assert!(
-            report.contains(&format!("{k} of {n} exercises done")),
-            "k = {k}: {report}"
-        );
-        if k < n {
-            let next = &m.entries[k].exercise;
-            assert!(
-                report.contains(&format!("next: exercise {} —", next.id)),
-                "k = {k}: {report}"
-            );
-        } else {
-            assert!(
-                report.contains(&format!("all {n} exercises pass")),
-                "{report}"
-            );
-        }
+        assert_progress(&report, &m, k, (k < n).then_some(k));
     }
 }
 
