@@ -2,7 +2,7 @@
 //!
 //! ```text
 //! chNN [SCENE] [-o OUT.png] [--width W] [--height H]      every chapter
-//!      [--quiet]                                           every chapter
+//!      [--quiet] [--window]                                every chapter
 //!      [--view color|flat|normals|depth|shadows|rays]      chapters 2–5
 //!      [--inspect X,Y [--json]]                            chapters 2–5
 //!      [--accel none|boxes|extents|octree|bvh] [--no-packets]   chapters 2–5
@@ -30,7 +30,10 @@ use clap::Args;
 use clap::builder::PossibleValue;
 
 use crate::accel::Accel;
-use crate::error::Error;
+/// The one line of an exercise not written yet (it lives in [`crate::error`], where the live
+/// window finds it too).
+pub use crate::error::missing_exercise;
+use crate::error::{Error, MISSING, panic_text};
 use crate::offset::OffsetKind;
 use crate::output;
 use crate::real::Real;
@@ -114,6 +117,13 @@ pub struct Common {
     /// No progress bar and no statistics line (errors and warnings are still printed).
     #[arg(short, long)]
     pub quiet: bool,
+    /// Open a live window instead of writing a file: the image refines coarse to fine, keys
+    /// move the camera (WASD, Q/E, arrows) and switch stage (1-5), view (V) and depth (+/-),
+    /// a click prints and draws the pixel's ray tree, P saves the PNG (to -o), R or saving the
+    /// scene file reloads it, H lists the keys, Esc quits. Without --width/--height the image
+    /// is the scene's size, shrunk to fit 1280×960.
+    #[arg(long)]
+    pub window: bool,
 }
 
 /// The view switch of chapters 2–5.
@@ -232,6 +242,20 @@ pub fn image_size(scene: &Scene, width: Option<u32>, height: Option<u32>) -> (u3
     }
 }
 
+/// The largest image `--window` opens without `--width` or `--height`.
+pub const WINDOW_FIT: (u32, u32) = (1280, 960);
+
+/// `width` × `height` shrunk, keeping its aspect ratio, to fit in `bound` (unchanged if it
+/// fits already).
+#[must_use]
+pub fn fit(width: u32, height: u32, bound: (u32, u32)) -> (u32, u32) {
+    let scale = (f64::from(bound.0) / f64::from(width))
+        .min(f64::from(bound.1) / f64::from(height))
+        .min(1.0);
+    let side = |x: u32| ((f64::from(x) * scale).round() as u32).max(1);
+    (side(width), side(height))
+}
+
 /// Runs a chapter: read, render, write. Each chapter passes the argument groups it has
 /// (`None` for the others). Returns the exit status (0, or 2 after printing the error).
 pub fn run(
@@ -260,26 +284,6 @@ pub fn run(
     }
 }
 
-/// The prefix of the panic a handout's `todo!("exercise 2.3: …")` raises.
-const MISSING: &str = "not yet implemented: exercise ";
-
-/// The message of a panic, when it is a string.
-fn panic_text(payload: &(dyn std::any::Any + Send)) -> Option<&str> {
-    payload
-        .downcast_ref::<String>()
-        .map(String::as_str)
-        .or_else(|| payload.downcast_ref::<&str>().copied())
-}
-
-/// For the panic of an exercise not written yet (a handout's `todo!()`), the one line that
-/// says which: `exercise 2.3 is not written yet: The sphere's discriminant — see …`.
-#[must_use]
-pub fn missing_exercise(payload: &(dyn std::any::Any + Send)) -> Option<String> {
-    let rest = panic_text(payload)?.strip_prefix(MISSING)?;
-    let (id, what) = rest.split_once(": ").unwrap_or((rest, ""));
-    Some(format!("exercise {id} is not written yet: {what}"))
-}
-
 /// Keeps the panics of exercises not written yet quiet (no message, no backtrace, on any
 /// thread): [`run`] turns the first into one line. Other panics are reported as usual.
 fn quiet_missing_exercises() {
@@ -300,6 +304,12 @@ fn run_inner(
     accuracy: Option<&Accuracy>,
 ) -> Result<(), Error> {
     let inspect = view.and_then(|v| v.inspect);
+    if common.window && inspect.is_some() {
+        return Err(Error::Usage(
+            "--window and --inspect do not go together: click a pixel in the window to inspect it"
+                .into(),
+        ));
+    }
     let out = common
         .output
         .clone()
@@ -329,6 +339,22 @@ fn run_inner(
     if let (Some(pixel), Some(v)) = (inspect, view) {
         return print_tree(&scene, &options, pixel, v.json);
     }
+    if common.window {
+        if common.width.is_none() && common.height.is_none() {
+            (options.width, options.height) = fit(options.width, options.height, WINDOW_FIT);
+        }
+        render::check_size(options.width, options.height)?;
+        return crate::window::run(crate::window::Setup {
+            binary: binary.to_string(),
+            scene_path: common.scene.clone(),
+            scene,
+            options,
+            max_stage: stage,
+            encoding: output::Encoding::default(),
+            save_to: out,
+            quiet: common.quiet,
+        });
+    }
     render::check_size(options.width, options.height)?;
     let start = Instant::now();
     let accel = render::build_accel(&scene, &options);
@@ -339,7 +365,7 @@ fn run_inner(
     let (fb, stats) = render::render_with(&scene, &options, &accel, &|n| progress.advance(n));
     progress.finish();
     let seconds = start.elapsed().as_secs_f64();
-    output::save(&fb, &out)?;
+    output::save(&fb, &out, output::Encoding::default())?;
     if !common.quiet {
         eprintln!("wrote {} ({}×{})", out.display(), fb.width, fb.height);
         if tracing.is_some_and(|t| t.stats) {

@@ -1,5 +1,7 @@
 //! Errors for people: every failure a user can cause (a bad scene, flag or path) becomes one
-//! of these, printed by the binaries as a single line `error: …` with exit status 2.
+//! of these, printed by the binaries as a single line `error: …` with exit status 2. A
+//! handout's exercise not written yet panics (`todo!`); [`missing_exercise`] turns that panic
+//! into the same kind of line.
 
 use std::path::PathBuf;
 
@@ -37,6 +39,9 @@ pub enum Error {
     /// A command-line value is out of range (clap catches the rest).
     #[error("{0}")]
     Usage(String),
+    /// The live window could not open (no display, no X library).
+    #[error("cannot open a window ({0}): render to a file with -o FILE instead")]
+    Window(String),
 }
 
 /// The 1-based line and column (in characters) of a byte offset in `text`.
@@ -48,4 +53,30 @@ pub fn line_col(text: &str, offset: usize) -> (usize, usize) {
     let line_start = before.rfind('\n').map_or(0, |i| i + 1);
     let col = before[line_start..].chars().count() + 1;
     (line, col)
+}
+
+/// The prefix of the panic a handout's `todo!("exercise 2.3: …")` raises.
+pub(crate) const MISSING: &str = "not yet implemented: exercise ";
+
+/// The message of a panic, when it is a string.
+pub(crate) fn panic_text(payload: &(dyn std::any::Any + Send)) -> Option<&str> {
+    payload
+        .downcast_ref::<String>()
+        .map(String::as_str)
+        .or_else(|| payload.downcast_ref::<&str>().copied())
+}
+
+/// The message of a panic, for a report: its text, or a note that it carried none.
+#[must_use]
+pub fn panic_message(payload: &(dyn std::any::Any + Send)) -> &str {
+    panic_text(payload).unwrap_or("(no message)")
+}
+
+/// For the panic of an exercise not written yet (a handout's `todo!()`), the one line that
+/// says which: `exercise 2.3 is not written yet: The sphere's discriminant — see …`.
+#[must_use]
+pub fn missing_exercise(payload: &(dyn std::any::Any + Send)) -> Option<String> {
+    let rest = panic_text(payload)?.strip_prefix(MISSING)?;
+    let (id, what) = rest.split_once(": ").unwrap_or((rest, ""));
+    Some(format!("exercise {id} is not written yet: {what}"))
 }

@@ -21,6 +21,10 @@
 //! binary shares). Everything computes with [`real::Real`], `f64` by default and `f32` under
 //! the `f32` feature.
 //!
+//! The live window (`--window` on every chapter binary) lives in [`window`]: the image refined
+//! coarse to fine as you watch, keys for the camera, stage, view and depth, and the ray tree of
+//! a clicked pixel drawn over the image.
+//!
 //! The course tools live in [`course`]: the manifest of the functions that compute the notes'
 //! formulas, and the proof that every render path calls them (`whitted formulas --prove`).
 //!
@@ -48,3 +52,4 @@ pub mod shading;
 pub mod shadow;
 pub mod shapes;
 pub mod transform;
+pub mod window;

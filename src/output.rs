@@ -132,6 +132,40 @@ pub fn write_file(path: &Path, bytes: &[u8]) -> Result<(), Error> {
 }
 
 /// Writes the framebuffer as a PNG, atomically.
-pub fn save(fb: &Framebuffer, path: &Path) -> Result<(), Error> {
-    write_png(path, fb.width, fb.height, &to_rgb8(fb))
+pub fn save(fb: &Framebuffer, path: &Path, encoding: Encoding) -> Result<(), Error> {
+    let rgb: Vec<u8> = fb
+        .pixels
+        .iter()
+        .flat_map(|p| [encoding.byte(p.x), encoding.byte(p.y), encoding.byte(p.z)])
+        .collect();
+    write_png(path, fb.width, fb.height, &rgb)
+}
+
+/// TEMPORARY (replaced by the encoding branch): how intensities become bytes.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub enum Encoding {
+    /// sRGB.
+    #[default]
+    Srgb,
+    /// Linear.
+    Linear,
+}
+
+impl Encoding {
+    /// The byte of `x`.
+    #[must_use]
+    pub fn byte(self, x: crate::real::Real) -> u8 {
+        match self {
+            Self::Linear => to_byte(x),
+            Self::Srgb => {
+                let x = if x.is_nan() { 0.0 } else { x.clamp(0.0, 1.0) };
+                let e = if x <= 0.003_130_8 {
+                    12.92 * x
+                } else {
+                    1.055 * x.powf(1.0 / 2.4) - 0.055
+                };
+                (e * 255.0).round() as u8
+            }
+        }
+    }
 }

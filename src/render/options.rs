@@ -2,9 +2,10 @@
 //! the accuracy and speed settings.
 
 use crate::accel::Accel;
+use crate::camera::Camera;
 use crate::offset::Offset;
 use crate::real::Real;
-use crate::scene::Scene;
+use crate::scene::{CameraSettings, Scene};
 use crate::shapes::Formula;
 
 /// Which chapter's renderer runs.
@@ -98,6 +99,8 @@ pub struct Options {
     /// (one sample a pixel, a BVH or an octree; see [`super::packets`]). The image is the
     /// same bit for bit either way; `false` renders every pixel by the plain road alone.
     pub packets: bool,
+    /// The camera, when it is not the scene's own `[camera]`: the live window moves it.
+    pub camera: Option<CameraSettings>,
 }
 
 impl Options {
@@ -123,7 +126,18 @@ impl Options {
             seed: 0x5eed,
             accel: Accel::default(),
             packets: true,
+            camera: None,
         }
+    }
+
+    /// The camera of this render: [`Options::camera`] if set, else the scene's, at the
+    /// options' image size.
+    #[must_use]
+    pub fn camera(&self, scene: &Scene) -> Camera {
+        self.camera
+            .as_ref()
+            .unwrap_or(&scene.camera)
+            .camera(self.width, self.height)
     }
 
     /// The default weight threshold: a contribution below 1/1000 (a quarter of one 8-bit step)

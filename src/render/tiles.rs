@@ -55,7 +55,7 @@ const _: () = assert!((BLOCK * BLOCK) as usize <= crate::accel::PACKET);
 /// Builds the acceleration structure `options.accel` for the scene seen at the options' size.
 #[must_use]
 pub fn build_accel(scene: &Scene, options: &Options) -> Accelerator {
-    let camera = scene.camera.camera(options.width, options.height);
+    let camera = options.camera(scene);
     // chapter 1 intersects nothing
     let kind = if options.stage == Stage::CameraRays {
         Accel::None

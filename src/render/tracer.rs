@@ -93,7 +93,7 @@ impl<'a> Tracer<'a> {
         let mut tracer = Self {
             scene,
             options,
-            camera: scene.camera.camera(options.width, options.height),
+            camera: options.camera(scene),
             accel,
             scales: views::Scales::default(),
         };
