@@ -1,5 +1,8 @@
 //! The framebuffer: the rendered image in linear RGB, the byte each intensity becomes in the
-//! PNG, and the limit on the image's size.
+//! PNG ([`Encoding`]: sRGB or linear, see [`crate::output`] for why), and the limit on the
+//! image's size.
+
+use std::sync::LazyLock;
 
 use crate::error::Error;
 use crate::real::{Real, Vec3};
@@ -33,8 +36,9 @@ impl Framebuffer {
     }
 }
 
-/// One linear intensity as the byte the PNG holds: clamp to [0, 1], scale by 255, round; NaN
-/// becomes 0 (see [`crate::output`]).
+/// One linear intensity as a byte, without any encoding curve: clamp to [0, 1], scale by 255,
+/// round; NaN becomes 0. The byte of `--encoding linear`; the default PNG is sRGB-encoded
+/// (see [`Encoding`]).
 #[must_use]
 pub fn to_byte(x: Real) -> u8 {
     if x.is_nan() {
@@ -42,6 +46,85 @@ pub fn to_byte(x: Real) -> u8 {
     }
     (x.clamp(0.0, 1.0) * 255.0).round() as u8
 }
+
+/// How the PNG's bytes stand for the framebuffer's linear intensities.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub enum Encoding {
+    /// The sRGB transfer function (IEC 61966-2-1), what screens and image viewers expect:
+    /// linear 0.5 is the byte 188.
+    #[default]
+    Srgb,
+    /// The linear intensities as bytes ([`to_byte`]): 0.5 is the byte 128. Looks too dark in
+    /// a viewer, but each byte is the notes' I times 255.
+    Linear,
+}
+
+impl Encoding {
+    /// Every encoding, the default first.
+    pub const ALL: [Encoding; 2] = [Encoding::Srgb, Encoding::Linear];
+
+    /// The encoding's name on the command line (`--encoding`) and in reports.
+    #[must_use]
+    pub fn name(self) -> &'static str {
+        match self {
+            Encoding::Srgb => "srgb",
+            Encoding::Linear => "linear",
+        }
+    }
+
+    /// One linear intensity as the byte the PNG holds: clamped to [0, 1], encoded, times 255,
+    /// rounded; NaN becomes 0.
+    ///
+    /// For sRGB the byte is exactly that of the transfer function (IEC 61966-2-1, written out
+    /// in [`crate::output`]), found without a power: it is the number of the 255 thresholds
+    /// t₀ < t₁ < … < t₂₅₄ that x reaches, t_k being the smallest intensity whose encoding
+    /// rounds to k + 1 (a binary search in a table computed once; `tests/encoding.rs` checks
+    /// it against the formula).
+    #[must_use]
+    pub fn byte(self, x: Real) -> u8 {
+        match self {
+            Encoding::Linear => to_byte(x),
+            // NaN reaches no threshold (every comparison with it is false): 0
+            Encoding::Srgb => SRGB_THRESHOLDS.partition_point(|&t| t <= x) as u8,
+        }
+    }
+}
+
+/// The sRGB byte of a linear intensity by the formula itself: with x clamped to [0, 1],
+/// V = 12.92·x up to x = 0.0031308, V = 1.055·x^(1/2.4) − 0.055 above, byte = round(255·V);
+/// NaN → 0. The definition [`SRGB_THRESHOLDS`] is computed from.
+fn srgb_byte_by_formula(x: Real) -> u8 {
+    if x.is_nan() {
+        return 0;
+    }
+    let x = x.clamp(0.0, 1.0);
+    let v = if x <= 0.003_130_8 {
+        12.92 * x
+    } else {
+        1.055 * x.powf(1.0 / 2.4) - 0.055
+    };
+    (v * 255.0).round() as u8
+}
+
+/// t_k for k = 0 … 254: the smallest intensity whose sRGB byte (by the formula) exceeds k.
+/// Each is found by bisection over the bit patterns of the non-negative floats in [0, 1],
+/// which are ordered as the numbers are.
+static SRGB_THRESHOLDS: LazyLock<[Real; 255]> = LazyLock::new(|| {
+    std::array::from_fn(|k| {
+        let above = |bits| usize::from(srgb_byte_by_formula(Real::from_bits(bits))) > k;
+        // invariant: `lo` is not above k, `hi` is (the byte of 0 is 0, that of 1 is 255)
+        let (mut lo, mut hi) = (Real::to_bits(0.0), Real::to_bits(1.0));
+        while hi - lo > 1 {
+            let mid = lo + (hi - lo) / 2;
+            if above(mid) {
+                hi = mid;
+            } else {
+                lo = mid;
+            }
+        }
+        Real::from_bits(hi)
+    })
+});
 
 /// The largest framebuffer a render may allocate: 4 GiB, that is width × height × 3 ×
 /// `size_of::<Real>()` bytes (f64: 178 956 970 pixels, e.g. 13 377 × 13 377; f32: twice as
