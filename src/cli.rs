@@ -2,7 +2,7 @@
 //!
 //! ```text
 //! chNN [SCENE] [-o OUT.png] [--width W] [--height H]      every chapter
-//!      [--quiet] [--window]                                every chapter
+//!      [--encoding srgb|linear] [--quiet] [--window]       every chapter
 //!      [--view color|flat|normals|depth|shadows|rays]      chapters 2–5
 //!      [--inspect X,Y [--json]]                            chapters 2–5
 //!      [--accel none|boxes|extents|octree|bvh] [--no-packets]   chapters 2–5
@@ -11,7 +11,9 @@
 //!      [--offset fixed|scaled|error-bound]                 chapters 4–5
 //! ```
 //!
-//! Without SCENE the embedded default scene `scenes/showcase.toml` is rendered. Every failure
+//! Without SCENE the embedded default scene `scenes/showcase.toml` is rendered. The PNG is
+//! sRGB-encoded, as viewers expect; `--encoding linear` writes the linear intensities as bytes
+//! (see [`output`]). Every failure
 //! is one line on stderr, `error: …`, and exit status 2; nothing is written unless the whole
 //! image was rendered. An image whose framebuffer would pass
 //! [`render::MAX_FRAMEBUFFER_BYTES`] is refused before any work starts.
@@ -35,7 +37,7 @@ use crate::accel::Accel;
 pub use crate::error::missing_exercise;
 use crate::error::{Error, MISSING, panic_text};
 use crate::offset::OffsetKind;
-use crate::output;
+use crate::output::{self, Encoding};
 use crate::real::Real;
 use crate::render::{self, Options, Stage, View};
 use crate::scene::load::{MAX_DEPTH, MAX_SAMPLES, MAX_SIDE};
@@ -95,6 +97,11 @@ cli_values!(OffsetKind {
     OffsetKind::ErrorBound => "error-bound": "move the origin by a bound on the hit point's rounding error (default)",
 });
 
+cli_values!(Encoding {
+    Encoding::Srgb => "srgb": "encode for screens and image viewers (default)",
+    Encoding::Linear => "linear": "the linear intensities as bytes, 0.5 → 128",
+});
+
 cli_values!(Layout {
     Layout::Field => "field": "constant size and density over a square of side 2√N (default)",
     Layout::Fog => "fog": "a fixed square; the radius shrinks as 1/√N",
@@ -114,6 +121,10 @@ pub struct Common {
     /// Image height in pixels; alone, the width follows the scene's aspect ratio.
     #[arg(long, value_name = "H", value_parser = clap::value_parser!(u32).range(1..=MAX_SIDE as i64))]
     pub height: Option<u32>,
+    /// How the PNG's bytes encode the linear intensities: sRGB, as screens and viewers expect,
+    /// or the intensities themselves (clamped, times 255). `--inspect` prints the same bytes.
+    #[arg(long, value_enum, default_value_t = Encoding::default())]
+    pub encoding: Encoding,
     /// No progress bar and no statistics line (errors and warnings are still printed).
     #[arg(short, long)]
     pub quiet: bool,
@@ -337,7 +348,7 @@ fn run_inner(
         options.offset = a.offset.offset();
     }
     if let (Some(pixel), Some(v)) = (inspect, view) {
-        return print_tree(&scene, &options, pixel, v.json);
+        return print_tree(&scene, &options, pixel, common.encoding, v.json);
     }
     if common.window {
         if common.width.is_none() && common.height.is_none() {
@@ -350,7 +361,7 @@ fn run_inner(
             scene,
             options,
             max_stage: stage,
-            encoding: output::Encoding::default(),
+            encoding: common.encoding,
             save_to: out,
             quiet: common.quiet,
         });
@@ -365,7 +376,7 @@ fn run_inner(
     let (fb, stats) = render::render_with(&scene, &options, &accel, &|n| progress.advance(n));
     progress.finish();
     let seconds = start.elapsed().as_secs_f64();
-    output::save(&fb, &out, output::Encoding::default())?;
+    output::save(&fb, &out, common.encoding)?;
     if !common.quiet {
         eprintln!("wrote {} ({}×{})", out.display(), fb.width, fb.height);
         if tracing.is_some_and(|t| t.stats) {
@@ -386,11 +397,13 @@ fn run_inner(
     Ok(())
 }
 
-/// `--inspect X,Y [--json]`: prints the ray tree of one pixel on stdout.
+/// `--inspect X,Y [--json]`: prints the ray tree of one pixel on stdout, its bytes in
+/// `encoding` (those the PNG would hold).
 fn print_tree(
     scene: &Scene,
     options: &Options,
     (x, y): (u32, u32),
+    encoding: Encoding,
     json: bool,
 ) -> Result<(), Error> {
     let (w, h) = (options.width, options.height);
@@ -401,7 +414,8 @@ fn print_tree(
             h - 1
         )));
     }
-    let tree = render::Tracer::new(scene, options).inspect(x, y);
+    let mut tree = render::Tracer::new(scene, options).inspect(x, y);
+    tree.encoding = encoding;
     let text = if json {
         let json = serde_json::to_string_pretty(&tree.to_json())
             .map_err(|e| Error::Usage(format!("cannot write the tree as JSON: {e}")))?;

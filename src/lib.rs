@@ -17,9 +17,9 @@
 //! file, [`render::tracer`]; [`render::Stage`] decides how far along it a chapter goes.
 //!
 //! Around the road: [`render`] (tiles in parallel, packets, the framebuffer, statistics),
-//! [`numeric`], [`error`], [`output`] (atomic PNG writing) and [`cli`] (the arguments every
-//! binary shares). Everything computes with [`real::Real`], `f64` by default and `f32` under
-//! the `f32` feature.
+//! [`numeric`], [`error`], [`output`] (sRGB-encoded PNGs, written atomically) and [`cli`] (the
+//! arguments every binary shares). Everything computes with [`real::Real`], `f64` by default
+//! and `f32` under the `f32` feature.
 //!
 //! The live window (`--window` on every chapter binary) lives in [`window`]: the image refined
 //! coarse to fine as you watch, keys for the camera, stage, view and depth, and the ray tree of

@@ -1,8 +1,23 @@
-//! Writing images: linear RGB → 8-bit PNG, atomically.
+//! Writing images: linear RGB → 8-bit PNG, sRGB-encoded by default, atomically.
 //!
-//! Intensities are written as they are (clamped to [0, 1], times 255, rounded): the notes
-//! compute display intensities directly and whitted applies no gamma curve, so a value of 0.5
-//! is the byte 128.
+//! The framebuffer holds linear intensities, the notes' I: twice the light is twice the
+//! number. Screens and image viewers do not read a PNG's bytes that way: they assume the
+//! bytes are sRGB-encoded (IEC 61966-2-1), a curve that spends more of the 256 steps on dark
+//! values, where the eye tells them apart best. Written as bytes directly, linear values look
+//! too dark: 0.5 becomes 128, which a viewer shows as about a fifth of full light, not half.
+//! (POV-Ray, whose default output is gamma-corrected, gives brighter images of the same scene
+//! for the same reason.) So [`save`] encodes each channel with the sRGB transfer function by
+//! default, and 0.5 becomes 188:
+//!
+//! ```text
+//! V = 12.92·I                      for I ≤ 0.0031308
+//! V = 1.055·I^(1/2.4) − 0.055      otherwise            byte = round(255·V), I clamped to [0, 1]
+//! ```
+//!
+//! [`Encoding::Linear`] (`--encoding linear`) writes the intensities as they are (clamped to
+//! [0, 1], times 255, rounded: [`to_byte`]). Either way the encoding happens only here, on the
+//! way out: the renderer, the framebuffer and the tests of values all work with linear
+//! intensities, and the golden images the tests compare with are linear bytes.
 //!
 //! The PNG is first written to a temporary file in the destination directory and then renamed
 //! over the destination, so an interrupted run never leaves a truncated image behind.
@@ -17,19 +32,19 @@ use rayon::prelude::*;
 use crate::error::Error;
 use crate::render::Framebuffer;
 
-pub use crate::render::framebuffer::to_byte;
+pub use crate::render::framebuffer::{Encoding, to_byte};
 
-/// The framebuffer as RGB bytes, row by row from the top (converted in parallel chunks: on a
-/// large image this is otherwise the slowest serial step after the render).
+/// The framebuffer as RGB bytes in `encoding`, row by row from the top (converted in parallel
+/// chunks: on a large image this is otherwise the slowest serial step after the render).
 #[must_use]
-pub fn to_rgb8(fb: &Framebuffer) -> Vec<u8> {
+pub fn to_rgb8(fb: &Framebuffer, encoding: Encoding) -> Vec<u8> {
     const CHUNK: usize = 4096;
     let mut out = vec![0u8; fb.pixels.len() * 3];
     out.par_chunks_mut(3 * CHUNK)
         .zip(fb.pixels.par_chunks(CHUNK))
         .for_each(|(bytes, pixels)| {
             for (b, p) in bytes.chunks_exact_mut(3).zip(pixels) {
-                b.copy_from_slice(&[to_byte(p.x), to_byte(p.y), to_byte(p.z)]);
+                b.copy_from_slice(&p.to_array().map(|x| encoding.byte(x)));
             }
         });
     out
@@ -131,41 +146,7 @@ pub fn write_file(path: &Path, bytes: &[u8]) -> Result<(), Error> {
     })
 }
 
-/// Writes the framebuffer as a PNG, atomically.
+/// Writes the framebuffer as a PNG in `encoding`, atomically.
 pub fn save(fb: &Framebuffer, path: &Path, encoding: Encoding) -> Result<(), Error> {
-    let rgb: Vec<u8> = fb
-        .pixels
-        .iter()
-        .flat_map(|p| [encoding.byte(p.x), encoding.byte(p.y), encoding.byte(p.z)])
-        .collect();
-    write_png(path, fb.width, fb.height, &rgb)
-}
-
-/// TEMPORARY (replaced by the encoding branch): how intensities become bytes.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
-pub enum Encoding {
-    /// sRGB.
-    #[default]
-    Srgb,
-    /// Linear.
-    Linear,
-}
-
-impl Encoding {
-    /// The byte of `x`.
-    #[must_use]
-    pub fn byte(self, x: crate::real::Real) -> u8 {
-        match self {
-            Self::Linear => to_byte(x),
-            Self::Srgb => {
-                let x = if x.is_nan() { 0.0 } else { x.clamp(0.0, 1.0) };
-                let e = if x <= 0.003_130_8 {
-                    12.92 * x
-                } else {
-                    1.055 * x.powf(1.0 / 2.4) - 0.055
-                };
-                (e * 255.0).round() as u8
-            }
-        }
-    }
+    write_png(path, fb.width, fb.height, &to_rgb8(fb, encoding))
 }

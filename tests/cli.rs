@@ -405,4 +405,8 @@ fn command_line_names_are_the_library_names() {
         names::<whitted::render::View>(),
         whitted::render::View::ALL.map(|v| v.name().to_string())
     );
+    assert_eq!(
+        names::<whitted::output::Encoding>(),
+        whitted::output::Encoding::ALL.map(|e| e.name().to_string())
+    );
 }

@@ -1,11 +1,12 @@
 //! `--inspect X,Y [--json]` on chapters 2–5, as a student runs it: the tree printed for a
-//! pixel of each chapter's scene has the colour of that pixel in the `-o` render, no image is
-//! written, and a pixel outside the image is one line of error with exit status 2.
+//! pixel of each chapter's scene has the colour and the bytes of that pixel in the `-o` render
+//! (in either `--encoding`), no image is written, and a pixel outside the image is one line
+//! of error with exit status 2.
 
 use std::path::Path;
 use std::process::{Command, Output};
 
-use whitted::output::to_byte;
+use whitted::output::Encoding;
 use whitted::real::Real;
 
 /// Chapters 2–5 and their scenes.
@@ -43,64 +44,90 @@ fn scene_path(rel: &str) -> String {
         .to_string()
 }
 
-/// For a few pixels of each chapter's scene, the colour `--inspect X,Y --json` prints, encoded
-/// as the PNG encodes it, is that pixel of the `-o` render; the text form names the same
-/// pixel and chapter; neither writes a file.
+/// For a few pixels of each chapter's scene, in the default sRGB encoding and with
+/// `--encoding linear`: the bytes `--inspect X,Y --json` prints, and its colour encoded as
+/// the PNG encodes it, are that pixel of the `-o` render; the text form names the same pixel,
+/// chapter and bytes; neither writes a file.
 #[test]
 fn the_inspected_colour_is_the_rendered_pixel_in_every_chapter() {
     let dir = tempfile::tempdir().unwrap();
-    for (n, (bin, scene)) in CHAPTERS.iter().enumerate() {
-        let scene = scene_path(scene);
-        let png = dir.path().join("out.png");
-        let size = ["--width", "80"];
-        let o = run(
-            bin,
-            &[&scene, "-o", png.to_str().unwrap(), size[0], size[1], "-q"],
-            dir.path(),
-        );
-        assert!(
-            o.status.success(),
-            "{bin}: {}",
-            String::from_utf8_lossy(&o.stderr)
-        );
-        let image = image::open(&png).unwrap().to_rgb8();
-        std::fs::remove_file(&png).unwrap();
-        let (w, h) = image.dimensions();
-        for (x, y) in [(w / 2, h / 2), (3, h - 2), (w - 5, 4), (w / 3, 2 * h / 3)] {
-            let pixel = format!("{x},{y}");
-            let o = run(
-                bin,
-                &[&scene, size[0], size[1], "--inspect", &pixel, "--json"],
-                dir.path(),
-            );
+    for encoding in [Encoding::Srgb, Encoding::Linear] {
+        // the default is sRGB: no flag for it
+        let flag: &[&str] = match encoding {
+            Encoding::Srgb => &[],
+            Encoding::Linear => &["--encoding", "linear"],
+        };
+        for (n, (bin, scene)) in CHAPTERS.iter().enumerate() {
+            let scene = scene_path(scene);
+            let png = dir.path().join("out.png");
+            let size = ["--width", "80"];
+            let mut args = vec![
+                scene.as_str(),
+                "-o",
+                png.to_str().unwrap(),
+                size[0],
+                size[1],
+            ];
+            args.extend(flag);
+            args.push("-q");
+            let o = run(bin, &args, dir.path());
             assert!(
                 o.status.success(),
                 "{bin}: {}",
                 String::from_utf8_lossy(&o.stderr)
             );
-            let v: serde_json::Value = serde_json::from_slice(&o.stdout).expect("JSON");
-            assert_eq!(v["chapter"], n + 2);
-            assert_eq!(v["pixel"], serde_json::json!([x, y]));
-            let rgb: Vec<u8> = v["colour"]
-                .as_array()
-                .unwrap()
-                .iter()
-                .map(|c| to_byte(c.as_f64().unwrap() as Real))
-                .collect();
-            assert_eq!(rgb, image.get_pixel(x, y).0, "{bin} pixel ({x}, {y})");
+            let image = image::open(&png).unwrap().to_rgb8();
+            std::fs::remove_file(&png).unwrap();
+            let (w, h) = image.dimensions();
+            for (x, y) in [(w / 2, h / 2), (3, h - 2), (w - 5, 4), (w / 3, 2 * h / 3)] {
+                let pixel = format!("{x},{y}");
+                let inspect = |json: bool| {
+                    let mut args = vec![scene.as_str(), size[0], size[1], "--inspect", &pixel];
+                    args.extend(flag);
+                    if json {
+                        args.push("--json");
+                    }
+                    let o = run(bin, &args, dir.path());
+                    assert!(
+                        o.status.success(),
+                        "{bin}: {}",
+                        String::from_utf8_lossy(&o.stderr)
+                    );
+                    o.stdout
+                };
+                let png_bytes = image.get_pixel(x, y).0;
+                let v: serde_json::Value = serde_json::from_slice(&inspect(true)).expect("JSON");
+                assert_eq!(v["chapter"], n + 2);
+                assert_eq!(v["pixel"], serde_json::json!([x, y]));
+                assert_eq!(v["encoding"], encoding.name());
+                let rgb: Vec<u8> = v["colour"]
+                    .as_array()
+                    .unwrap()
+                    .iter()
+                    .map(|c| encoding.byte(c.as_f64().unwrap() as Real))
+                    .collect();
+                let what = format!("{bin} pixel ({x}, {y}), {}", encoding.name());
+                assert_eq!(rgb, png_bytes, "{what}");
+                assert_eq!(v["bytes"], serde_json::json!(png_bytes), "{what}");
 
-            let o = run(
-                bin,
-                &[&scene, size[0], size[1], "--inspect", &pixel],
-                dir.path(),
-            );
-            let text = String::from_utf8(o.stdout).unwrap();
-            let head = format!("pixel ({x}, {y}), chapter {}", n + 2);
-            assert!(text.starts_with(&head), "{text}");
-            assert!(text.contains("camera ray r(t) = e + d·t"), "{text}");
+                let text = String::from_utf8(inspect(false)).unwrap();
+                let head = format!("pixel ({x}, {y}), chapter {}", n + 2);
+                assert!(text.starts_with(&head), "{text}");
+                let shown = format!("{png_bytes:?} in the {} PNG", shown_name(encoding));
+                assert!(text.lines().next().unwrap().contains(&shown), "{text}");
+                assert!(text.contains("camera ray r(t) = e + d·t"), "{text}");
+            }
+            let left: Vec<_> = std::fs::read_dir(dir.path()).unwrap().collect();
+            assert!(left.is_empty(), "--inspect wrote {left:?}");
         }
-        let left: Vec<_> = std::fs::read_dir(dir.path()).unwrap().collect();
-        assert!(left.is_empty(), "--inspect wrote {left:?}");
+    }
+}
+
+/// How the text of `--inspect` names the encoding of the PNG.
+fn shown_name(encoding: Encoding) -> &'static str {
+    match encoding {
+        Encoding::Srgb => "sRGB",
+        Encoding::Linear => "linear",
     }
 }
 

@@ -1,6 +1,7 @@
 //! Every render path draws each chapter's image: the plain road of one pixel, each `--accel`,
 //! packets on and off. Each test renders one chapter's scene (`scenes/chNN_*.toml`) through
-//! one path at a reduced size and compares it with the committed PNG in `tests/golden/`: at
+//! one path at a reduced size and compares it with the committed PNG in `tests/golden/` (linear
+//! bytes, `Encoding::Linear`: the framebuffer's values, not what a viewer shows): at
 //! most 0.5% of the pixels may differ by more than 2/255 in any channel (room for f32 and for
 //! rounding across platforms, none for a changed formula). The paths must also agree with one
 //! another bit for bit.
@@ -17,7 +18,7 @@
 use std::path::PathBuf;
 
 use whitted::accel::Accel;
-use whitted::output::{to_rgb8, write_png};
+use whitted::output::{Encoding, to_rgb8, write_png};
 use whitted::render::{Framebuffer, Options, Stage, render};
 use whitted::scene::{Scene, load};
 
@@ -119,7 +120,8 @@ fn render_path(scene: &Scene, options: &Options, path: Path) -> Framebuffer {
 fn check(n: u32, path: Path) {
     let (scene, options, golden_name) = load_chapter(n);
     let fb = render_path(&scene, &options, path);
-    let actual = to_rgb8(&fb);
+    // the references hold linear bytes: the test is about the framebuffer, not the encoding
+    let actual = to_rgb8(&fb, Encoding::Linear);
     let golden = root()
         .join("tests/golden")
         .join(format!("{golden_name}.png"));

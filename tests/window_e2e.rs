@@ -146,7 +146,10 @@ impl Session {
     /// Presses `key` (an xdotool key name) for 100 ms, the pointer over the window (with no
     /// window manager, the keyboard goes to the window under the pointer).
     fn key(&self, key: &str) {
-        xdotool(&self.x.display, &["mousemove", "--window", &self.window, "4", "4"]);
+        xdotool(
+            &self.x.display,
+            &["mousemove", "--window", &self.window, "4", "4"],
+        );
         xdotool(&self.x.display, &["keydown", key]);
         std::thread::sleep(Duration::from_millis(100));
         xdotool(&self.x.display, &["keyup", key]);

@@ -14,12 +14,14 @@ OUT="${OUT:-/tmp/whitted-povray}"
 mkdir -p "$OUT"
 export CARGO_TARGET_DIR="${CARGO_TARGET_DIR:-$root/target}"
 cargo build --release --quiet --manifest-path "$root/Cargo.toml" --bin ch05_reflection_refraction
+# both write linear intensities (POV-Ray File_Gamma=1.0, whitted --encoding linear), so the two
+# images compare directly, as in the runs logged in docs/performance-log.md
 w="$CARGO_TARGET_DIR/release/ch05_reflection_refraction"
 pov="povray +I$here/showcase.pov +O$OUT/pov.png +W1920 +H1080 -D +FN File_Gamma=1.0 -GA"
 hyperfine --warmup 1 --runs "$runs" --export-json "$OUT/times.json" --export-markdown "$OUT/times.md" \
   -n "povray (all cores)" "$pov >/dev/null 2>&1" \
-  -n "whitted f64 (2 threads)" "$w -o $OUT/whitted.png --width 1920 --height 1080 -q" \
-  -n "whitted f64 (1 thread)" "RAYON_NUM_THREADS=1 $w -o $OUT/whitted1.png --width 1920 --height 1080 -q"
+  -n "whitted f64 (2 threads)" "$w --encoding linear -o $OUT/whitted.png --width 1920 --height 1080 -q" \
+  -n "whitted f64 (1 thread)" "RAYON_NUM_THREADS=1 $w --encoding linear -o $OUT/whitted1.png --width 1920 --height 1080 -q"
 python3 - "$OUT/times.json" <<'PY'
 import json, statistics, sys
 r = json.load(open(sys.argv[1]))["results"]
@@ -30,5 +32,5 @@ names = list(med)
 print(f"POV-Ray / whitted (2 threads): {med[names[0]] / med[names[1]]:.2f}x")
 print(f"speed-up 1 -> 2 threads:       {med[names[2]] / med[names[1]]:.2f}x")
 PY
-"$w" -o "$OUT/whitted.png" --width 1920 --height 1080 2>&1 | tail -1
-RAYON_NUM_THREADS=1 "$w" -o "$OUT/whitted1.png" --width 1920 --height 1080 2>&1 | tail -1
+"$w" --encoding linear -o "$OUT/whitted.png" --width 1920 --height 1080 2>&1 | tail -1
+RAYON_NUM_THREADS=1 "$w" --encoding linear -o "$OUT/whitted1.png" --width 1920 --height 1080 2>&1 | tail -1

@@ -26,6 +26,7 @@ use std::fmt;
 
 use serde_json::{Value, json};
 
+use super::framebuffer::Encoding;
 use super::recorder::{RayKind, Recorder, Stop};
 use super::tracer::{Feeler, Surface};
 use super::{Stage, Stats, Tracer, View};
@@ -51,6 +52,9 @@ pub struct RayTree {
     pub view: View,
     /// The pixel's colour: exactly what the render writes in the framebuffer (linear RGB).
     pub colour: Vec3,
+    /// The encoding of the PNG the tree's bytes are shown for ([`RayTree::bytes`]); sRGB
+    /// unless set otherwise (`--inspect` sets it from `--encoding`).
+    pub encoding: Encoding,
     /// Every ray the pixel cast: camera, feeler, mirror and transmitted.
     pub rays: u64,
     /// The samples, in order.
@@ -187,6 +191,7 @@ impl Tracer<'_> {
             stage: self.options.stage,
             view: self.options.view,
             colour,
+            encoding: Encoding::default(),
             rays: count.total(),
             samples: tree.samples,
         }
@@ -461,14 +466,17 @@ impl fmt::Display for RayTree {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         let (x, y) = self.pixel;
         let n = self.samples.len();
-        let byte = self.colour.to_array().map(super::framebuffer::to_byte);
+        let png = match self.encoding {
+            Encoding::Srgb => "sRGB",
+            Encoding::Linear => "linear",
+        };
         writeln!(
             f,
-            "pixel ({x}, {y}), chapter {}, view {}: colour I = {} (linear RGB; {:?} in the PNG), {} ray{}, {n} sample{}",
+            "pixel ({x}, {y}), chapter {}, view {}: colour I = {} (linear RGB; {:?} in the {png} PNG), {} ray{}, {n} sample{}",
             self.stage as u8,
             self.view.name(),
             V(self.colour),
-            byte,
+            self.bytes(),
             self.rays,
             if self.rays == 1 { "" } else { "s" },
             if n == 1 { "" } else { "s" },
@@ -660,6 +668,12 @@ fn num(x: Real) -> Value {
 }
 
 impl RayTree {
+    /// The pixel's bytes as the PNG holds them in the tree's [`encoding`](RayTree::encoding).
+    #[must_use]
+    pub fn bytes(&self) -> [u8; 3] {
+        self.colour.to_array().map(|x| self.encoding.byte(x))
+    }
+
     /// The tree as JSON (the shape is documented in `docs/inspect.md`).
     #[must_use]
     pub fn to_json(&self) -> Value {
@@ -669,6 +683,8 @@ impl RayTree {
             "chapter": self.stage as u8,
             "view": self.view.name(),
             "colour": v(self.colour),
+            "encoding": self.encoding.name(),
+            "bytes": self.bytes(),
             "rays": self.rays,
             "samples": self.samples.iter().map(|s| json!({
                 "index": s.index,

@@ -7,7 +7,7 @@
 //! | [`tiles`] | the image in parallel tiles: [`render`], [`render_with`]; a [`Rect`] of it, cancellable between tiles, for the live window: [`render_rect`] |
 //! | [`packets`] | blocks of pixels traced together, the same image bit for bit |
 //! | [`sampling`] | where the samples of a pixel go |
-//! | [`framebuffer`] | the image in linear RGB ([`Framebuffer`]) |
+//! | [`framebuffer`] | the image in linear RGB ([`Framebuffer`]) and the bytes of its PNG ([`framebuffer::Encoding`]) |
 //! | [`stats`] | rays cast by kind ([`Stats`]) |
 //! | [`recorder`] | what the road tells as it goes ([`Recorder`]): [`Stats`] counts, the inspector keeps the tree |
 //! | [`inspect`] | the ray tree of one pixel (`--inspect X,Y`) as text and JSON |

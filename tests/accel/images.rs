@@ -83,9 +83,10 @@ fn one_thread_and_four_render_the_same_image() {
     };
     let (one, s1) = run(1);
     let (four, s4) = run(4);
+    let srgb = whitted::output::Encoding::Srgb;
     assert_eq!(
-        whitted::output::to_rgb8(&one),
-        whitted::output::to_rgb8(&four)
+        whitted::output::to_rgb8(&one, srgb),
+        whitted::output::to_rgb8(&four, srgb)
     );
     assert_eq!(one, four);
     assert_eq!(s1, s4);
