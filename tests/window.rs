@@ -40,7 +40,7 @@ fn every_pixel_is_traced_in_exactly_one_pass() {
     for (w, h) in [(1, 1), (8, 8), (17, 9), (37, 23), (640, 480)] {
         let mut seen = vec![0u8; (w * h) as usize];
         for pass in 0..PASSES {
-            for tile in schedule::tiles(w, h) {
+            for tile in schedule::tiles(pass, w, h) {
                 for (x, y) in schedule::pixels(pass, tile) {
                     assert!(tile.contains(x, y));
                     assert!(schedule::traced_in(pass, x, y));
@@ -70,14 +70,26 @@ fn each_pass_traces_the_new_points_of_its_grid() {
     assert!(schedule::traced_in(3, 3, 2) && !schedule::traced_in(3, 2, 2));
 }
 
-/// Tiles cover the image once, on the grid of TILE, cut at the edges.
+/// Each pass's tiles cover the image once, 32 × its step on a side, cut at the edges.
 #[test]
 fn tiles_cover_the_image_once() {
-    let tiles = schedule::tiles(37, 20);
+    let tiles = schedule::tiles(3, 70, 40);
     assert_eq!(tiles.len(), 3 * 2);
-    assert_eq!(tiles.last(), Some(&Rect::new(32, 16, 37, 20)));
-    let total: u64 = tiles.iter().map(Rect::pixels).sum();
-    assert_eq!(total, 37 * 20);
+    assert_eq!(tiles.last(), Some(&Rect::new(64, 32, 70, 40)));
+    for pass in 0..PASSES {
+        let tiles = schedule::tiles(pass, 700, 300);
+        let total: u64 = tiles.iter().map(Rect::pixels).sum();
+        assert_eq!(total, 700 * 300);
+        assert_eq!(
+            tiles[0],
+            Rect::new(0, 0, 32 * STEPS[pass], 32 * STEPS[pass])
+        );
+    }
+    // a full tile of every pass holds about the same work
+    let work: Vec<usize> = (0..PASSES)
+        .map(|p| schedule::pixels(p, schedule::tiles(p, 1024, 1024)[0]).count())
+        .collect();
+    assert_eq!(work, [1024, 768, 768, 768]);
 }
 
 /// The canvas after all four passes holds every pixel's own colour; after the first pass,
@@ -89,7 +101,7 @@ fn passes_paint_blocks_and_the_last_pass_leaves_each_pixel_its_own_colour() {
     let mut canvas = Canvas::new(w, h, whitted::output::Encoding::Linear);
     canvas.expect(7);
     for pass in 0..PASSES {
-        for rect in schedule::tiles(w, h) {
+        for rect in schedule::tiles(pass, w, h) {
             let colours = schedule::pixels(pass, rect)
                 .map(|(x, y)| colour(x, y))
                 .collect();
@@ -177,9 +189,9 @@ fn the_progressive_render_equals_the_whole_image_render() {
 #[test]
 fn a_cancelled_pass_traces_only_the_tiles_started_before_the_stop() {
     let scene = showcase();
-    let o = options(&scene, Stage::Shading, 160, 120); // 10 × 8 tiles
+    let o = options(&scene, Stage::Shading, 160, 128); // 5 × 4 tiles of 32 in pass 4
     let tracer = Tracer::new(&scene, &o);
-    for allowed in [0, 1, 5, 33] {
+    for allowed in [0, 1, 5, 13] {
         let asked = AtomicUsize::new(0);
         let traced = AtomicUsize::new(0);
         let finished = render_pass(
@@ -192,8 +204,8 @@ fn a_cancelled_pass_traces_only_the_tiles_started_before_the_stop() {
         );
         assert!(matches!(finished, Finished::Cancelled(_)));
         assert_eq!(traced.load(Ordering::SeqCst), allowed);
-        // pass 4 traces 3/4 of each full 16 × 16 tile's pixels
-        assert_eq!(finished.stats().primary, allowed as u64 * 192);
+        // pass 4 traces 3/4 of each full 32 × 32 tile's pixels
+        assert_eq!(finished.stats().primary, allowed as u64 * 768);
     }
 }
 

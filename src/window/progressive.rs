@@ -106,7 +106,7 @@ pub fn render_pass(
 ) -> Finished {
     let (w, h) = (tracer.options.width, tracer.options.height);
     let stopped = AtomicBool::new(false);
-    let stats = schedule::tiles(w, h)
+    let stats = schedule::tiles(pass, w, h)
         .into_par_iter()
         .map(|tile| {
             let mut stats = Stats::default();

@@ -16,8 +16,9 @@
 //!          . . . . b . . . .
 //! ```
 //!
-//! Passes run tile by tile on the image's grid of [`TILE`](crate::render::TILE) tiles, so a
-//! pass can be abandoned between tiles the moment the camera moves.
+//! Passes run tile by tile ([`tiles`]), so a pass can be abandoned between tiles the moment
+//! the camera moves; a coarse pass takes larger tiles, so that each tile is about the same
+//! work.
 
 use crate::render::Rect;
 
@@ -62,15 +63,30 @@ pub fn block(pass: usize, x: u32, y: u32, width: u32, height: u32) -> Rect {
     )
 }
 
-/// The tiles of an image of `width` × `height`, row by row: the image's grid of
-/// [`TILE`](crate::render::TILE) tiles, the last row and column cut to the image.
+/// The side of the square tiles of pass `pass`: 32 × its step (256, 128, 64, 32 pixels), so
+/// that a tile of every pass holds about the same work (768 pixels traced in a full tile of
+/// passes 2 to 4, 1024 in pass 1). Equal tiles of 16 pixels would give pass 1 only 4 pixels
+/// a tile, and the window a message for each.
 #[must_use]
-pub fn tiles(width: u32, height: u32) -> Vec<Rect> {
-    let t = crate::render::TILE;
+pub fn tile_side(pass: usize) -> u32 {
+    32 * STEPS[pass]
+}
+
+/// The tiles of pass `pass` over an image of `width` × `height`, row by row: a grid of
+/// [`tile_side`] squares from the top left, the last row and column cut to the image. Their
+/// sides are multiples of every step, so each block a pass paints lies inside its tile.
+#[must_use]
+pub fn tiles(pass: usize, width: u32, height: u32) -> Vec<Rect> {
+    let t = tile_side(pass);
     let mut out = Vec::new();
     for y in (0..height).step_by(t as usize) {
         for x in (0..width).step_by(t as usize) {
-            out.push(Rect::new(x, y, (x + t).min(width), (y + t).min(height)));
+            out.push(Rect::new(
+                x,
+                y,
+                x.saturating_add(t).min(width),
+                y.saturating_add(t).min(height),
+            ));
         }
     }
     out
