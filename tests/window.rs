@@ -76,14 +76,11 @@ fn tiles_cover_the_image_once() {
     let tiles = schedule::tiles(3, 70, 40);
     assert_eq!(tiles.len(), 3 * 2);
     assert_eq!(tiles.last(), Some(&Rect::new(64, 32, 70, 40)));
-    for pass in 0..PASSES {
+    for (pass, step) in STEPS.into_iter().enumerate() {
         let tiles = schedule::tiles(pass, 700, 300);
         let total: u64 = tiles.iter().map(Rect::pixels).sum();
         assert_eq!(total, 700 * 300);
-        assert_eq!(
-            tiles[0],
-            Rect::new(0, 0, 32 * STEPS[pass], 32 * STEPS[pass])
-        );
+        assert_eq!(tiles[0], Rect::new(0, 0, 32 * step, 32 * step));
     }
     // a full tile of every pass holds about the same work
     let work: Vec<usize> = (0..PASSES)

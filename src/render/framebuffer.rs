@@ -78,8 +78,9 @@ impl Encoding {
     /// For sRGB the byte is exactly that of the transfer function (IEC 61966-2-1, written out
     /// in [`crate::output`]), found without a power: it is the number of the 255 thresholds
     /// t₀ < t₁ < … < t₂₅₄ that x reaches, t_k being the smallest intensity whose encoding
-    /// rounds to k + 1 (tables computed once, see [`srgb_byte`]; `tests/encoding.rs` checks
-    /// it against the formula).
+    /// rounds to k + 1. Two tables, computed once: the byte at the lower end of each bucket of
+    /// 1/4096, and the thresholds, of which x is compared with the one or two above that byte
+    /// (`tests/encoding.rs` checks it against the formula).
     #[must_use]
     pub fn byte(self, x: Real) -> u8 {
         match self {
@@ -132,8 +133,8 @@ static SRGB: LazyLock<SrgbTables> = LazyLock::new(|| {
 /// from the byte of the lower end of x's bucket and count the thresholds x also reaches (at
 /// most a couple). NaN and x ≤ 0 give 0, x ≥ 1 gives 255.
 fn srgb_byte(x: Real) -> u8 {
-    if !(x > 0.0) {
-        return 0; // NaN fails every comparison
+    if x.is_nan() || x <= 0.0 {
+        return 0;
     }
     if x >= 1.0 {
         return 255;
