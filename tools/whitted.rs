@@ -8,6 +8,9 @@
 //! whitted handout --out DIR [--chapters 1-3 | --exercises 2.3,2.4]
 //!                                                   a student's copy, the exercises as todo!()
 //! whitted learn [list | hint [ID] | watch]          progress, the next exercise, hints, rerun on save
+//! whitted grade [DIR] [--chapter N] [--hidden DIR] [--json F] [--junit F] [--csv F]
+//!                                                   a student's copy graded with the instructor's tests
+//! whitted grade --class DIR --out REPORTS           every submission of a class
 //! ```
 //!
 //! Exit status: 0 when everything asked for is fine, 1 when some function is not proven,
@@ -55,6 +58,65 @@ enum Command {
     /// test, the formula it checks and the notes' section. Colour only on a terminal, and not
     /// with NO_COLOR set.
     Learn(LearnArgs),
+    /// Grades a student's copy (DIR, default the current project) with this project's tests.
+    ///
+    /// Only the student's exercise bodies (between `// BEGIN SOLUTION ID` and `// END
+    /// SOLUTION` in DIR's src/) are taken; they go into a fresh copy of this project, so the
+    /// tests, the manifest and the code around the exercises are the instructor's. A body that
+    /// does not compile is graded as not written, and the others still count. Each test runs in
+    /// its own process under --timeout (cargo-nextest), so a panic, a stack overflow or an
+    /// endless loop costs only its own tests. An exercise's points (chapters/formulas.toml) are
+    /// shared by its tests. Exit status 0 once graded, whatever the score; 2 on an error.
+    Grade(GradeArgs),
+}
+
+#[derive(clap::Args)]
+struct GradeArgs {
+    /// The student's copy of the project [default: the current project].
+    #[arg(value_name = "DIR", conflicts_with = "class")]
+    submission: Option<PathBuf>,
+    /// Grade only this chapter's exercises (1-5).
+    #[arg(long, value_name = "N", value_parser = clap::value_parser!(u8).range(1..=5))]
+    chapter: Option<u8>,
+    /// The instructor's hidden tests: a directory of .rs test files, each added as a test
+    /// target; their tests are named after the exercise they check (ex2_3_…), like the public
+    /// ones. Students' reports show their points, not their names.
+    #[arg(long, value_name = "DIR")]
+    hidden: Option<PathBuf>,
+    /// Write Gradescope's results.json here.
+    #[arg(long, value_name = "FILE")]
+    json: Option<PathBuf>,
+    /// Write a JUnit XML report here.
+    #[arg(long, value_name = "FILE")]
+    junit: Option<PathBuf>,
+    /// Write the gradebook's header and this submission's row here (CSV).
+    #[arg(long, value_name = "FILE")]
+    csv: Option<PathBuf>,
+    /// The time limit of one test, in seconds.
+    #[arg(long, value_name = "SECONDS", default_value_t = 20,
+          value_parser = clap::value_parser!(u64).range(1..=3600))]
+    timeout: u64,
+    /// Grade every submission of a class: each subdirectory of DIR.
+    #[arg(long, value_name = "DIR", requires = "out")]
+    class: Option<PathBuf>,
+    /// With --class: where the reports go (one directory per student, and class.csv).
+    #[arg(long, value_name = "DIR", requires = "class")]
+    out: Option<PathBuf>,
+    /// With --class: submissions graded at a time [default: the cores].
+    #[arg(long, value_name = "N", requires = "class",
+          value_parser = clap::value_parser!(u64).range(1..=64))]
+    jobs: Option<u64>,
+    /// Where cargo builds [default: a shared directory under --out for a class, the graded
+    /// copy's own target/ for one submission].
+    #[arg(long, value_name = "DIR")]
+    target_dir: Option<PathBuf>,
+    /// Keep each graded copy (its path is printed).
+    #[arg(long)]
+    keep: bool,
+    /// The instructor's project, whose tests and manifest grade [default: the nearest
+    /// Cargo.toml at or above the current directory].
+    #[arg(long, value_name = "DIR")]
+    root: Option<PathBuf>,
 }
 
 #[derive(clap::Args)]
@@ -147,6 +209,7 @@ fn main() -> ExitCode {
         Command::Formulas(f) => formulas(&f),
         Command::Handout(h) => handout(&h),
         Command::Learn(l) => learn(&l),
+        Command::Grade(g) => grade(&g),
     };
     match result {
         Ok(code) => code,
@@ -368,6 +431,145 @@ fn find_root() -> Result<PathBuf, Error> {
                 here.display()
             ))
         })
+}
+
+/// `whitted grade`: one submission, or a class.
+fn grade(args: &GradeArgs) -> Result<ExitCode, Error> {
+    use whitted::course::{grade, report};
+    let root = match &args.root {
+        Some(root) => root.clone(),
+        None => find_root()?,
+    };
+    let manifest = read_manifest(&root)?;
+    let mut options = grade::Options {
+        chapter: args.chapter,
+        hidden: args.hidden.clone(),
+        timeout: std::time::Duration::from_secs(args.timeout),
+        target_dir: args.target_dir.clone(),
+        keep: args.keep,
+    };
+    if let Some(hidden) = &args.hidden
+        && !hidden.is_dir()
+    {
+        return Err(Error::Usage(format!(
+            "--hidden {}: not a directory",
+            hidden.display()
+        )));
+    }
+    if let (Some(class), Some(out)) = (&args.class, &args.out) {
+        std::fs::create_dir_all(out).map_err(|e| Error::io(out, e))?;
+        let out = out.canonicalize().map_err(|e| Error::io(out, e))?;
+        options
+            .target_dir
+            .get_or_insert_with(|| out.join(".target"));
+        let jobs = args.jobs.map_or_else(
+            || std::thread::available_parallelism().map_or(1, usize::from),
+            |j| j as usize,
+        );
+        let start = std::time::Instant::now();
+        let entries = grade::grade_class(&root, &manifest, class, &options, jobs, &|e| match &e
+            .grade
+        {
+            Ok(g) => eprintln!(
+                "graded {}: {} / {} points in {:.0} s",
+                e.student,
+                report::points(g.score()),
+                report::points(g.max()),
+                g.elapsed.as_secs_f64()
+            ),
+            Err(why) => eprintln!("could not grade {}: {why}", e.student),
+        })?;
+        let chapters: Vec<u8> = args.chapter.map_or_else(|| (1..=5).collect(), |c| vec![c]);
+        let mut csv = report::csv_header(&manifest, &chapters) + "\n";
+        for e in &entries {
+            match &e.grade {
+                Ok(g) => {
+                    let dir = out.join(&e.student);
+                    std::fs::create_dir_all(&dir).map_err(|err| Error::io(&dir, err))?;
+                    write_reports(
+                        g,
+                        &manifest,
+                        Some(&dir.join("report.txt")),
+                        Some(&dir.join("results.json")),
+                        Some(&dir.join("junit.xml")),
+                        None,
+                    )?;
+                    csv += &report::csv_row(g, &manifest);
+                }
+                Err(why) => {
+                    csv += &format!("{},0,,\"not graded: {}\"", e.student, why.replace('"', "'"))
+                }
+            }
+            csv.push('\n');
+        }
+        write(&out.join("class.csv"), csv.as_bytes())?;
+        let graded = entries.iter().filter(|e| e.grade.is_ok()).count();
+        let mut times: Vec<f64> = entries
+            .iter()
+            .filter_map(|e| e.grade.as_ref().ok().map(|g| g.elapsed.as_secs_f64()))
+            .collect();
+        times.sort_by(f64::total_cmp);
+        let median = times.get(times.len() / 2).copied().unwrap_or(0.0);
+        println!(
+            "graded {graded} of {} submissions in {:.0} s ({jobs} at a time; median {:.0} s each); reports in {}, the gradebook in {}",
+            entries.len(),
+            start.elapsed().as_secs_f64(),
+            median,
+            out.display(),
+            out.join("class.csv").display()
+        );
+        return Ok(ExitCode::SUCCESS);
+    }
+    let submission = args.submission.clone().unwrap_or_else(|| root.clone());
+    let g = grade::grade(&root, &manifest, &submission, &options)?;
+    print!("{}", report::table(&g, &manifest));
+    write_reports(
+        &g,
+        &manifest,
+        None,
+        args.json.as_deref(),
+        args.junit.as_deref(),
+        args.csv.as_deref(),
+    )?;
+    Ok(ExitCode::SUCCESS)
+}
+
+/// Writes the reports asked for, each atomically.
+fn write_reports(
+    g: &whitted::course::grade::Grade,
+    manifest: &Manifest,
+    text: Option<&Path>,
+    json: Option<&Path>,
+    junit: Option<&Path>,
+    csv: Option<&Path>,
+) -> Result<(), Error> {
+    use whitted::course::report;
+    if let Some(path) = text {
+        write(path, report::table(g, manifest).as_bytes())?;
+    }
+    if let Some(path) = json {
+        let value = report::gradescope(g, manifest);
+        let text = serde_json::to_string_pretty(&value)
+            .map_err(|e| Error::Usage(format!("cannot write JSON: {e}")))?;
+        write(path, (text + "\n").as_bytes())?;
+    }
+    if let Some(path) = junit {
+        write(path, report::junit(g, manifest).as_bytes())?;
+    }
+    if let Some(path) = csv {
+        let text = format!(
+            "{}\n{}\n",
+            report::csv_header(manifest, &g.chapters),
+            report::csv_row(g, manifest)
+        );
+        write(path, text.as_bytes())?;
+    }
+    Ok(())
+}
+
+/// Writes a file atomically (a temporary file renamed into place).
+fn write(path: &Path, bytes: &[u8]) -> Result<(), Error> {
+    whitted::output::write_file(path, bytes).map_err(|e| Error::Usage(e.to_string()))
 }
 
 /// Reads the manifest of the project at `root`, named relative to the current directory

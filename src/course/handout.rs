@@ -10,8 +10,10 @@
 //! }
 //! ```
 //!
-//! and [`write()`] copies the project with the chosen regions replaced by
-//! `todo!("exercise 2.3: The sphere's discriminant — see chapters/ch02_generic_objects/README.md")`.
+//! and [`write()`] copies the project with the chosen regions' bodies replaced by
+//! `todo!("exercise 2.3: The sphere's discriminant — see chapters/ch02_generic_objects/README.md")`,
+//! between the same two marker lines: the student writes the body there, and `whitted grade`
+//! takes what is between them.
 //! Exercises not chosen keep their reference code, so a course can hand out one chapter alone
 //! on top of working earlier chapters. The copy holds no solution of a chosen exercise, and
 //! no instructor material: of `tests/`, only the targets the manifest's `[handout] tests`
@@ -357,17 +359,21 @@ pub fn write(
     })
 }
 
-/// `text` with each region replaced by its exercise's `todo!()`.
+/// `text` with each region's body replaced by its exercise's `todo!()`, between the same
+/// marker lines.
 fn strip(text: &str, regions: &[&Region], root: &Path, manifest: &Manifest) -> String {
     let mut sorted: Vec<&&Region> = regions.iter().collect();
     sorted.sort_by_key(|r| r.bytes.start);
     let mut out = String::with_capacity(text.len());
     let mut at = 0;
     for r in sorted {
+        let e = &manifest.entries[r.entry];
         out.push_str(&text[at..r.bytes.start]);
-        out.push_str(&r.indent);
-        out.push_str(&todo_statement(root, &manifest.entries[r.entry]));
-        out.push('\n');
+        // the markers stay: the student writes between them, and `whitted grade` takes
+        // exactly what is there
+        out.push_str(&format!("{}{BEGIN} {}\n", r.indent, e.exercise.id));
+        out.push_str(&format!("{}{}\n", r.indent, todo_statement(root, e)));
+        out.push_str(&format!("{}{END}\n", r.indent));
         at = r.bytes.end;
     }
     out.push_str(&text[at..]);

@@ -40,17 +40,22 @@
 //! - [`deps`] measures which tests each exercise's absence fails, and keeps the result in
 //!   `chapters/exercise-tests.toml`: what a handout fails, exactly;
 //! - [`learn`] is the student's loop: progress, the next exercise, hints, rerun on save;
-//! - [`readme`] writes each chapter README's exercises from the manifest.
+//! - [`readme`] writes each chapter README's exercises from the manifest;
+//! - [`grade`] grades a student's copy, or a class, with the instructor's tests (public and
+//!   hidden), each test in its own process under a time limit; [`report`] writes the table,
+//!   Gradescope's `results.json`, JUnit XML and gradebook CSV.
 //!
 //! The binary `whitted` exposes them: `whitted formulas [--prove | --deps [--write] |
-//! --readmes]`, `whitted handout`, `whitted learn [list | hint | watch]`.
+//! --readmes]`, `whitted handout`, `whitted learn [list | hint | watch]`, `whitted grade`.
 
 pub mod deps;
+pub mod grade;
 pub mod handout;
 pub mod learn;
 pub mod manifest;
 pub mod prove;
 pub mod readme;
+pub mod report;
 pub mod source;
 
 use std::path::PathBuf;
