@@ -287,3 +287,45 @@ fn a_failures_message_is_its_panic() {
             .starts_with("not written")
     );
 }
+
+/// Runs `whitted` with `args` in the project.
+fn whitted(args: &[&str]) -> std::process::Output {
+    std::process::Command::new(env!("CARGO_BIN_EXE_whitted"))
+        .args(args)
+        .current_dir(root())
+        .output()
+        .unwrap()
+}
+
+/// A directory that is not a copy of the project, a chapter out of range, hidden tests that
+/// are not a directory: one line of error each, exit status 2, before anything is built.
+#[test]
+fn grading_something_that_cannot_be_graded_is_one_line_of_error() {
+    let empty = tempfile::tempdir().unwrap();
+    let dir = empty.path().to_str().unwrap();
+    for (args, says) in [
+        (
+            vec!["grade", dir],
+            "is not a copy of the project: it has no src/ directory",
+        ),
+        (vec!["grade", "--chapter", "7"], "--chapter"),
+        (
+            vec!["grade", "--hidden", "Cargo.toml"],
+            "--hidden Cargo.toml: not a directory",
+        ),
+        (
+            vec!["grade", "--class", dir, "--out", dir],
+            "no submission directory in it",
+        ),
+        (vec!["grade", "--class", dir], "--out"),
+    ] {
+        let out = whitted(&args);
+        let err = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(out.status.code(), Some(2), "{args:?}: {err}");
+        assert_eq!(err.lines().count(), 1, "{args:?}: {err}");
+        assert!(
+            err.starts_with("error: ") && err.contains(says),
+            "{args:?}: {err}"
+        );
+    }
+}

@@ -106,8 +106,9 @@ struct GradeArgs {
     #[arg(long, value_name = "N", requires = "class",
           value_parser = clap::value_parser!(u64).range(1..=64))]
     jobs: Option<u64>,
-    /// Where cargo builds [default: a shared directory under --out for a class, the graded
-    /// copy's own target/ for one submission].
+    /// Where cargo builds, kept between gradings so the dependencies are built once (a class
+    /// gives each of its --jobs its own directory in it) [default: target/grade in the
+    /// instructor's project].
     #[arg(long, value_name = "DIR")]
     target_dir: Option<PathBuf>,
     /// Keep each graded copy (its path is printed).
@@ -441,11 +442,16 @@ fn grade(args: &GradeArgs) -> Result<ExitCode, Error> {
         None => find_root()?,
     };
     let manifest = read_manifest(&root)?;
-    let mut options = grade::Options {
+    let options = grade::Options {
         chapter: args.chapter,
         hidden: args.hidden.clone(),
         timeout: std::time::Duration::from_secs(args.timeout),
-        target_dir: args.target_dir.clone(),
+        // kept between gradings: the dependencies are built once
+        target_dir: Some(
+            args.target_dir
+                .clone()
+                .unwrap_or_else(|| root.join("target").join("grade")),
+        ),
         keep: args.keep,
     };
     if let Some(hidden) = &args.hidden
@@ -459,9 +465,6 @@ fn grade(args: &GradeArgs) -> Result<ExitCode, Error> {
     if let (Some(class), Some(out)) = (&args.class, &args.out) {
         std::fs::create_dir_all(out).map_err(|e| Error::io(out, e))?;
         let out = out.canonicalize().map_err(|e| Error::io(out, e))?;
-        options
-            .target_dir
-            .get_or_insert_with(|| out.join(".target"));
         let jobs = args.jobs.map_or_else(
             || std::thread::available_parallelism().map_or(1, usize::from),
             |j| j as usize,

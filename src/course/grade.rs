@@ -52,8 +52,9 @@ pub struct Options {
     pub hidden: Option<PathBuf>,
     /// The time limit of each test.
     pub timeout: Duration,
-    /// Where cargo builds (shared by a class, so the dependencies are built once); the copy's
-    /// own `target/` when `None`.
+    /// Where cargo builds, kept from one grading to the next so the dependencies are built
+    /// once (a class gives each worker its own directory under it); the copy's own `target/`
+    /// when `None`. Never to be used by two gradings at once.
     pub target_dir: Option<PathBuf>,
     /// Keep the graded copy (its path is printed) instead of removing it.
     pub keep: bool,
@@ -755,10 +756,12 @@ pub struct ClassEntry {
 }
 
 /// Grades every submission of a class: each subdirectory of `dir`, in name order, `jobs` at
-/// a time, each in its own copy. With `options.target_dir` set, every copy builds into it, so
-/// the dependencies are built once for the class (cargo takes turns on the directory's lock;
-/// the tests of one submission run while the next one builds). A submission that cannot be
-/// graded is reported and the others go on.
+/// a time, each in its own copy. With `options.target_dir` set, each of the `jobs` workers
+/// builds into its own directory under it (`slot-0`, `slot-1` …), kept from one submission
+/// to the next, so the dependencies are built once per worker. (One shared directory would
+/// not do: every copy of the crate builds its tests to the same file names, and one
+/// submission's tests would run another's code.) A submission that cannot be graded is
+/// reported and the others go on.
 pub fn grade_class(
     root: &Path,
     manifest: &Manifest,
@@ -786,15 +789,35 @@ pub fn grade_class(
         )));
     }
     let items: Vec<usize> = (0..submissions.len()).collect();
+    // one build directory per worker: two copies of the crate build to the same file names,
+    // so two submissions must never share one at the same time
+    let slots: std::sync::Mutex<Vec<Option<PathBuf>>> = std::sync::Mutex::new(
+        (0..jobs.max(1))
+            .map(|i| {
+                options
+                    .target_dir
+                    .as_ref()
+                    .map(|t| t.join(format!("slot-{i}")))
+            })
+            .collect(),
+    );
     prove::in_parallel(&items, jobs, |i| {
         let path = &submissions[i];
+        let slot = slots
+            .lock()
+            .unwrap_or_else(|p| p.into_inner())
+            .pop()
+            .flatten();
+        let mut own = options.clone();
+        own.target_dir.clone_from(&slot);
         let entry = ClassEntry {
             student: path.file_name().map_or_else(
                 || path.display().to_string(),
                 |n| n.to_string_lossy().into_owned(),
             ),
-            grade: grade(root, manifest, path, options).map_err(|e| e.to_string()),
+            grade: grade(root, manifest, path, &own).map_err(|e| e.to_string()),
         };
+        slots.lock().unwrap_or_else(|p| p.into_inner()).push(slot);
         done(&entry);
         Ok(entry)
     })
