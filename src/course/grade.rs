@@ -460,9 +460,20 @@ fn write_profile(project: &Path, timeout: Duration) -> Result<(), Error> {
 /// A compiler error: the file and line of its primary span, and its message with its place.
 type CompileError = ((PathBuf, usize), String);
 
-/// The cargo command, as the environment names it.
-fn cargo() -> std::ffi::OsString {
-    std::env::var_os("CARGO").unwrap_or_else(|| "cargo".into())
+/// `cargo ARGS --test T…` in the copy, building into `target_dir` without debug information
+/// (the grader reads messages, not backtraces: builds twice as fast), no input.
+fn cargo_in(project: &Path, target_dir: &Path, args: &[&str], targets: &[String]) -> Command {
+    let mut command = Command::new(std::env::var_os("CARGO").unwrap_or_else(|| "cargo".into()));
+    command.args(args);
+    for t in targets {
+        command.args(["--test", t]);
+    }
+    command
+        .current_dir(project)
+        .env("CARGO_TARGET_DIR", target_dir)
+        .env("CARGO_PROFILE_DEV_DEBUG", "0")
+        .stdin(Stdio::null());
+    command
 }
 
 /// Builds the test targets; returns the compiler's errors, each as the primary span's file
@@ -472,19 +483,14 @@ fn build(
     target_dir: &Path,
     targets: &[String],
 ) -> Result<Vec<CompileError>, Error> {
-    let mut command = Command::new(cargo());
-    command.args(["test", "--no-run", "--locked", "--message-format=json"]);
-    for t in targets {
-        command.args(["--test", t]);
-    }
-    let out = command
-        .current_dir(project)
-        .env("CARGO_TARGET_DIR", target_dir)
-        .env("CARGO_PROFILE_DEV_DEBUG", "0")
-        .stdin(Stdio::null())
-        .stderr(Stdio::piped())
-        .output()
-        .map_err(|e| Error::Proof(format!("cannot run cargo: {e}")))?;
+    let out = cargo_in(
+        project,
+        target_dir,
+        &["test", "--no-run", "--locked", "--message-format=json"],
+        targets,
+    )
+    .output()
+    .map_err(|e| Error::Proof(format!("cannot run cargo: {e}")))?;
     if out.status.success() {
         return Ok(Vec::new());
     }
@@ -579,28 +585,24 @@ fn run(
     // in the copy, not the (perhaps shared) target directory: one report per copy
     let junit = project.join(STORE).join(NEXTEST_PROFILE).join("junit.xml");
     let _ = std::fs::remove_file(&junit);
-    let mut command = Command::new(cargo());
-    command.args([
-        "nextest",
-        "run",
-        "--locked",
-        "--profile",
-        NEXTEST_PROFILE,
-        "--no-fail-fast",
-        "--no-tests=pass",
-    ]);
-    for t in targets {
-        command.args(["--test", t]);
-    }
-    let out = command
-        .current_dir(project)
-        .env("CARGO_TARGET_DIR", target_dir)
-        .env("CARGO_PROFILE_DEV_DEBUG", "0")
-        .env("RUST_BACKTRACE", "0")
-        .env("NO_COLOR", "1")
-        .stdin(Stdio::null())
-        .output()
-        .map_err(|e| Error::Proof(format!("cannot run cargo nextest: {e}")))?;
+    let out = cargo_in(
+        project,
+        target_dir,
+        &[
+            "nextest",
+            "run",
+            "--locked",
+            "--profile",
+            NEXTEST_PROFILE,
+            "--no-fail-fast",
+            "--no-tests=pass",
+        ],
+        targets,
+    )
+    .env("RUST_BACKTRACE", "0")
+    .env("NO_COLOR", "1")
+    .output()
+    .map_err(|e| Error::Proof(format!("cannot run cargo nextest: {e}")))?;
     let text = std::fs::read_to_string(&junit).map_err(|_| {
         let stderr = String::from_utf8_lossy(&out.stderr);
         let why = if stderr.contains("no such command: `nextest`") {

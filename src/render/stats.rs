@@ -27,6 +27,13 @@ impl Stats {
         self.primary + self.shadow + self.reflected + self.refracted
     }
 
+    /// Two counts added together (for a parallel reduce).
+    #[must_use]
+    pub(crate) fn sum(mut self, o: Stats) -> Stats {
+        self.add(&o);
+        self
+    }
+
     /// Adds another render's (or another tile's) counts to these.
     pub(crate) fn add(&mut self, o: &Stats) {
         self.primary += o.primary;

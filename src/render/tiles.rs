@@ -181,6 +181,15 @@ impl Finished {
         }
     }
 
+    /// A render's end: [`Finished::Cancelled`] if it was stopped, else [`Finished::Done`].
+    pub(crate) fn new(cancelled: bool, stats: Stats) -> Self {
+        if cancelled {
+            Self::Cancelled(stats)
+        } else {
+            Self::Done(stats)
+        }
+    }
+
     /// Whether the render was cancelled before its last tile.
     #[must_use]
     pub fn is_cancelled(&self) -> bool {
@@ -289,15 +298,8 @@ fn tile_loop(
             stats.work = crate::accel::counters::take();
             stats
         })
-        .reduce(Stats::default, |mut a, b| {
-            a.add(&b);
-            a
-        });
-    if stopped.into_inner() {
-        Finished::Cancelled(stats)
-    } else {
-        Finished::Done(stats)
-    }
+        .reduce(Stats::default, Stats::sum);
+    Finished::new(stopped.into_inner(), stats)
 }
 
 /// Renders one tile (a part of one band of an image `w` pixels wide) into the band's pixels

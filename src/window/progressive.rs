@@ -120,15 +120,8 @@ pub fn render_pass(
             sink(tile, colours);
             stats
         })
-        .reduce(Stats::default, |mut a, b| {
-            a.add(&b);
-            a
-        });
-    if stopped.into_inner() {
-        Finished::Cancelled(stats)
-    } else {
-        Finished::Done(stats)
-    }
+        .reduce(Stats::default, Stats::sum);
+    Finished::new(stopped.into_inner(), stats)
 }
 
 /// The render thread and its rayon pool.
