@@ -143,6 +143,25 @@ fn learn(project: &Path, poison: Option<String>) -> String {
     String::from_utf8_lossy(&out.stdout).into_owned()
 }
 
+/// Exercise `i`'s file in the handout at `student`: its path, its text now, and its text with
+/// the `todo!()` between the markers replaced by the reference body of region `r`.
+fn reference_body_back(
+    student: &Path,
+    m: &Manifest,
+    r: &handout::Region,
+    i: usize,
+) -> (PathBuf, String, String) {
+    let path = student.join(&r.file);
+    let now = std::fs::read_to_string(&path).unwrap();
+    let todo = format!(
+        "{}{}\n",
+        r.indent,
+        handout::todo_statement(&root(), &m.entries[i])
+    );
+    let back = now.replacen(&todo, &r.solution, 1);
+    (path, now, back)
+}
+
 #[test]
 #[ignore = "builds a handout (minutes); .ci/run runs it"]
 fn a_full_handout_fails_exactly_the_tests_of_its_exercises() {
@@ -239,15 +258,7 @@ fn a_chapter_handout_fails_its_tests_and_turns_green_as_the_bodies_come_back() {
     );
     let regions = handout::regions(&root(), &m).unwrap();
     for (j, &i) in chapter4.iter().enumerate() {
-        let r = &regions[i];
-        let path = student.join(&r.file);
-        let now = std::fs::read_to_string(&path).unwrap();
-        let todo = format!(
-            "{}{}\n",
-            r.indent,
-            handout::todo_statement(&root(), &m.entries[i])
-        );
-        let back = now.replacen(&todo, &r.solution, 1);
+        let (path, now, back) = reference_body_back(&student, &m, &regions[i], i);
         assert_ne!(
             back, now,
             "exercise {}'s todo!() not found",
@@ -319,14 +330,7 @@ fn learn_watch_reruns_on_a_save_by_renaming_and_draws_the_chapter() {
     assert!(text().contains("next: exercise 3.1"), "{}", text());
     // the reference body back, saved as many editors save: a new file renamed over the old
     let r = &handout::regions(&root(), &m).unwrap()[i];
-    let path = student.join(&r.file);
-    let now = std::fs::read_to_string(&path).unwrap();
-    let todo = format!(
-        "{}{}\n",
-        r.indent,
-        handout::todo_statement(&root(), &m.entries[i])
-    );
-    let back = now.replacen(&todo, &r.solution, 1);
+    let (path, _, back) = reference_body_back(&student, &m, r, i);
     std::fs::write(path.with_extension("tmp"), back).unwrap();
     std::fs::rename(path.with_extension("tmp"), &path).unwrap();
     let status = child.wait().unwrap();

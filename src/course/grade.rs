@@ -203,6 +203,10 @@ pub fn student_body(submission: &Path, r: &Region, id: &str) -> Result<String, S
     ))
 }
 
+/// An exercise's body in a spliced file: its manifest entry, and the first and last line
+/// (from 1) an error in it may be reported on.
+type BodyLines = (usize, usize, usize);
+
 /// A source file of the graded copy and the lines each exercise's body holds in it.
 struct Spliced {
     /// The file, relative to the project.
@@ -217,7 +221,7 @@ impl Spliced {
     /// The text with every region's body in place, and for each region the lines (from 1,
     /// inclusive) an error in its body may be reported on: from its BEGIN line to the line
     /// after its END line.
-    fn text(&self) -> (String, Vec<(usize, usize, usize)>) {
+    fn text(&self) -> (String, Vec<BodyLines>) {
         let mut out = String::new();
         let mut lines = Vec::new();
         let mut at = 0;
@@ -302,16 +306,19 @@ pub fn grade(
     let mut whole = Vec::new();
     // build; an exercise that does not compile goes back to its todo!() and the build again
     loop {
+        // each file's body lines, as written, for placing the compiler's errors
+        let mut placed = Vec::with_capacity(files.len());
         for f in &files {
-            let (text, _) = f.text();
+            let (text, lines) = f.text();
             let path = project.join(&f.file);
             std::fs::write(&path, text).map_err(|e| Error::io(&path, e))?;
+            placed.push((f.file.clone(), lines));
         }
         let errors = build(&project, &target_dir, &targets)?;
         if errors.is_empty() {
             break;
         }
-        let mut broken = blame(&files, &errors);
+        let mut broken = blame(&placed, &errors);
         if broken.is_empty() {
             // not on a body's lines (an unclosed brace is reported at the end of the file):
             // every student body of the files with errors goes back to its todo!()
@@ -533,16 +540,13 @@ fn build(
     Ok(errors)
 }
 
-/// The exercises whose bodies hold the errors, each with its first error.
-fn blame(files: &[Spliced], errors: &[CompileError]) -> BTreeMap<usize, String> {
+/// The exercises whose bodies hold the errors, each with its first error; `placed` gives
+/// each file's body lines as [`Spliced::text`] wrote them.
+fn blame(placed: &[(PathBuf, Vec<BodyLines>)], errors: &[CompileError]) -> BTreeMap<usize, String> {
     let mut out = BTreeMap::new();
     for ((file, line), message) in errors {
-        for f in files {
-            if &f.file != file {
-                continue;
-            }
-            let (_, lines) = f.text();
-            for (entry, first, last) in lines {
+        for (_, lines) in placed.iter().filter(|(f, _)| f == file) {
+            for &(entry, first, last) in lines {
                 if (first..=last).contains(line) {
                     out.entry(entry).or_insert_with(|| message.clone());
                 }
