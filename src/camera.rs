@@ -24,6 +24,8 @@
 //! fov = 60.0
 //! near = 1.0
 //! ```
+//!
+//! Course book: [Chapter 1, camera rays](../../../../docs/book/ch01-camera-rays.html) (`docs/src/ch01-camera-rays.md`).
 
 use crate::ray::Ray;
 use crate::real::{Real, Vec3};
@@ -103,6 +105,7 @@ pub struct Camera {
 }
 
 impl Camera {
+    // ANCHOR: ch1_camera_new
     /// Builds the camera. Returns `None` when the basis is degenerate (see [`viewing_basis`]).
     #[must_use]
     pub fn new(
@@ -131,6 +134,7 @@ impl Camera {
             half_width,
         })
     }
+    // ANCHOR_END: ch1_camera_new
 
     /// The eye e, origin of the viewing coordinates.
     #[must_use]
@@ -192,11 +196,13 @@ impl Camera {
         self.half_width
     }
 
+    // ANCHOR: ch1_direction_sig
     /// The notes' direction d = −N·n + u_c·u + v_r·v towards the point (u_c, v_r) where the
     /// (possibly fractional) column c and row r counted from the bottom land on the near plane
     /// ([`pixel_on_near_plane`]). d reaches the near plane at t = 1.
     #[must_use]
     pub fn direction(&self, c: Real, r: Real) -> Vec3 {
+        // ANCHOR_END: ch1_direction_sig
         // BEGIN SOLUTION 1.5
         let (u_c, v_r) = pixel_on_near_plane(
             c,
@@ -210,17 +216,21 @@ impl Camera {
         // END SOLUTION
     }
 
+    // ANCHOR: ch1_ray
     /// The ray r(t) = e + d·t through the notes' pixel corner (c, r).
     #[must_use]
     pub fn ray(&self, c: Real, r: Real) -> Ray {
         Ray::new(self.eye, self.direction(c, r))
     }
+    // ANCHOR_END: ch1_ray
 
+    // ANCHOR: ch1_pixel_ray_sig
     /// The ray through a point of an image pixel, addressed as images are stored: column `x`
     /// from the left, row `y` from the *top*; (`dx`, `dy`) ∈ [0, 1)² is the position inside the
     /// pixel, (½, ½) being its centre.
     #[must_use]
     pub fn pixel_ray(&self, x: u32, y: u32, dx: Real, dy: Real) -> Ray {
+        // ANCHOR_END: ch1_pixel_ray_sig
         // BEGIN SOLUTION 1.6
         let c = x as Real + dx;
         // row r counts from the bottom: the image row y (from the top) covers r ∈ [m−1−y, m−y]

@@ -21,6 +21,8 @@
 //! A render that lasts more than a second shows a progress bar on stderr (only when stderr
 //! is a terminal, and not with `--quiet`). Unless `--quiet`, the last line on stderr gives the
 //! resolution, the rays cast by kind, the time and the millions of rays per second.
+//!
+//! Course book: [Introduction](../../../../docs/book/introduction.html) (`docs/src/introduction.md`).
 
 use std::io::IsTerminal;
 use std::path::{Path, PathBuf};
@@ -155,7 +157,7 @@ pub struct ViewArg {
     /// light's I_a, I_d, I_s and feeler, mirror and transmitted rays — and exit, writing no image.
     #[arg(long, value_name = "X,Y", value_parser = parse_pixel, conflicts_with = "output", allow_hyphen_values = true)]
     pub inspect: Option<(u32, u32)>,
-    /// With --inspect: print the tree as JSON (its shape: docs/inspect.md).
+    /// With --inspect: print the tree as JSON (its shape: docs/src/inspect.md).
     #[arg(long, requires = "inspect")]
     pub json: bool,
 }

@@ -2,6 +2,8 @@
 //! of these, printed by the binaries as a single line `error: …` with exit status 2. A
 //! handout's exercise not written yet panics (`todo!`); [`missing_exercise`] turns that panic
 //! into the same kind of line.
+//!
+//! Course book: [The scene file](../../../../docs/book/scene-format.html) (`docs/src/scene-format.md`).
 
 use std::path::PathBuf;
 

@@ -31,7 +31,11 @@
 //! Speed (the notes' "Computational Aspects") lives in [`accel`]: bounding boxes, projection
 //! extents, an octree and a BVH, chosen with `--accel`. They decide which objects a ray is
 //! tested against, never how, so no choice changes a pixel. Measurements:
-//! `docs/performance.md`.
+//! `docs/src/performance.md`.
+//!
+//! Course book: [Introduction](../../../docs/book/introduction.html) (`docs/src/introduction.md`).
+
+#![deny(missing_docs)]
 
 pub mod accel;
 pub mod camera;

@@ -10,6 +10,8 @@
 //! attenuation = [1.0, 0.0, 0.0]
 //! shadows = true
 //! ```
+//!
+//! Course book: [Chapter 3, shading](../../../../docs/book/ch03-shading.html) (`docs/src/ch03-shading.md`).
 
 use crate::real::{Real, Vec3};
 

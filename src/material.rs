@@ -14,6 +14,8 @@
 //! transmission = 0.85
 //! ior = 1.5
 //! ```
+//!
+//! Course book: [Chapter 3, shading](../../../../docs/book/ch03-shading.html) (`docs/src/ch03-shading.md`).
 
 use crate::real::{Real, Vec3};
 

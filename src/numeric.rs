@@ -4,6 +4,8 @@
 //! large as 1e30 or as small as 1e-30 (in f32, where their squared length would overflow or
 //! underflow) still come out unit length. The naive form `v / |v|` is kept as
 //! [`normalize_naive`] so its failure can be shown.
+//!
+//! Course book: [The speed–accuracy trade](../../../../docs/book/tradeoff.html) (`docs/src/tradeoff.md`).
 
 use crate::real::{Real, Vec3};
 

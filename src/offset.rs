@@ -21,6 +21,8 @@
 //! and k = [`ERROR_OPS`] roundings. The push is tiny near the origin and grows with the scene's
 //! coordinates, so it works at 1e-3 and at 1e4 units alike, without the camera's distance
 //! inflating it.
+//!
+//! Course book: [Chapter 4, shadows](../../../../docs/book/ch04-shadows.html) (`docs/src/ch04-shadows.md`).
 
 use crate::ray::Ray;
 use crate::real::{Real, Vec3};
@@ -44,6 +46,7 @@ impl Offset {
     /// The relative ε of [`Offset::Scaled`].
     pub const SCALED_EPSILON: Real = 1e-4;
 
+    // ANCHOR: ch4_spawn
     /// The origin and the smallest accepted t of a ray leaving the point `p` (computed as
     /// `e + d·t` from a ray of origin `e`, direction `d`, at parameter `t`) of a surface with
     /// unit normal `n`, along `dir`.
@@ -66,6 +69,7 @@ impl Offset {
             }
         }
     }
+    // ANCHOR_END: ch4_spawn
 }
 
 /// The three strategies by name (`--offset fixed|scaled|error-bound`), each with its

@@ -27,6 +27,8 @@
 //! reflection = 0.1
 //! ior = 1.5
 //! ```
+//!
+//! Course book: [Chapter 5, reflection and refraction](../../../../docs/book/ch05-reflection-refraction.html) (`docs/src/ch05-reflection-refraction.md`).
 
 use crate::real::{Real, Vec3};
 

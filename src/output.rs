@@ -21,6 +21,8 @@
 //!
 //! The PNG is first written to a temporary file in the destination directory and then renamed
 //! over the destination, so an interrupted run never leaves a truncated image behind.
+//!
+//! Course book: [Chapter 3, shading](../../../../docs/book/ch03-shading.html) (`docs/src/ch03-shading.md`).
 
 use std::io::{BufWriter, Write};
 use std::path::Path;

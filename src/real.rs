@@ -9,6 +9,8 @@
 //! cargo test                 # f64
 //! cargo test --features f32  # f32
 //! ```
+//!
+//! Course book: [The speed–accuracy trade](../../../../docs/book/tradeoff.html) (`docs/src/tradeoff.md`).
 
 #[cfg(not(feature = "f32"))]
 mod imp {

@@ -11,7 +11,7 @@
 //! The notes write n·s and (r·v)^f without clamping; a light behind the surface (n·s < 0) would
 //! then *subtract* light, and a negative r·v raised to an even f would add a highlight that
 //! does not exist. whitted clamps both at 0 and drops the specular term entirely when n·s ≤ 0
-//! (docs/errata.md).
+//! (docs/src/errata.md).
 //!
 //! The normal used for shading faces the viewer: for the plane, an open surface, this means
 //! the side the camera sees is lit like a front face; for closed shapes it only matters for
@@ -27,6 +27,8 @@
 //! specular = 0.3
 //! shininess = 40
 //! ```
+//!
+//! Course book: [Chapter 3, shading](../../../../docs/book/ch03-shading.html) (`docs/src/ch03-shading.md`).
 
 use crate::light::Light;
 use crate::material::Material;

@@ -24,6 +24,8 @@
 //! position = [5.0, 8.0, 5.0]
 //! shadows = true        # false: no feeler rays for this light
 //! ```
+//!
+//! Course book: [Chapter 4, shadows](../../../../docs/book/ch04-shadows.html) (`docs/src/ch04-shadows.md`).
 
 use crate::ray::Ray;
 use crate::real::{Real, Vec3};

@@ -18,6 +18,8 @@
 //! ```toml
 //! transform = [ { scale = [0.9, 0.9, 1.1] }, { rotate_x = -90.0 }, { translate = [0.2, 0.1, -2.2] } ]
 //! ```
+//!
+//! Course book: [Chapter 2, generic objects](../../../../docs/book/ch02-generic-objects.html) (`docs/src/ch02-generic-objects.md`).
 
 use crate::real::{Mat3, Mat4, Real, Vec3, Vec4};
 
@@ -208,6 +210,7 @@ impl Placement {
         // END SOLUTION
     }
 
+    // ANCHOR: ch2_from_matrices
     /// A placement from M and its known inverse.
     #[must_use]
     pub fn from_matrices(m: Mat4, inv: Mat4) -> Self {
@@ -217,6 +220,7 @@ impl Placement {
             normal_matrix: Mat3::from_mat4(inv).transpose(),
         }
     }
+    // ANCHOR_END: ch2_from_matrices
 
     /// M: object space → world space.
     #[inline]
@@ -239,10 +243,12 @@ impl Placement {
         &self.normal_matrix
     }
 
+    // ANCHOR: ch2_normal_to_world_sig
     /// Carries an object-space normal to world space: (M⁻¹)ᵀ·n′, renormalised.
     #[inline]
     #[must_use]
     pub fn normal_to_world(&self, n_object: Vec3) -> Vec3 {
+        // ANCHOR_END: ch2_normal_to_world_sig
         // BEGIN SOLUTION 2.26
         crate::numeric::normalize(self.normal_matrix * n_object)
         // END SOLUTION

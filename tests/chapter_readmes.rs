@@ -1,6 +1,7 @@
-//! The chapter READMEs point at the code that runs: every function their "The path of one
-//! pixel" names exists where it says, and every formula function of a chapter
-//! (`chapters/formulas.toml`) appears in that chapter's README.
+//! The chapters' texts point at the code that runs: every function the course book's chapter
+//! page names in "The path of one pixel" exists where it says, the pixel each page inspects is
+//! what the binary prints, and every formula function of a chapter (`chapters/formulas.toml`)
+//! appears in that chapter's README, whose exercises the manifest writes.
 
 use std::path::{Path, PathBuf};
 
@@ -23,6 +24,21 @@ fn readme(n: u8) -> String {
         })
         .unwrap_or_else(|| panic!("no chapters/ch0{n}_* directory"));
     std::fs::read_to_string(dir.join("README.md")).unwrap()
+}
+
+/// The course book's page of chapter `n` (`docs/src/ch0N-….md`).
+fn page(n: u8) -> String {
+    let path = std::fs::read_dir(root().join("docs/src"))
+        .unwrap()
+        .map(|e| e.unwrap().path())
+        .find(|p| {
+            p.file_name()
+                .unwrap()
+                .to_string_lossy()
+                .starts_with(&format!("ch0{n}-"))
+        })
+        .unwrap_or_else(|| panic!("no docs/src/ch0{n}-*.md page"));
+    std::fs::read_to_string(path).unwrap()
 }
 
 /// The text of the section `## title` (up to the next `## `).
@@ -106,9 +122,9 @@ fn the_path_of_one_pixel_names_real_functions() {
     let mut checked = 0;
     let mut missing = Vec::new();
     for n in 1..=5 {
-        let text = readme(n);
+        let text = page(n);
         let path_section = section(&text, "The path of one pixel")
-            .unwrap_or_else(|| panic!("chapter {n}'s README has no \"The path of one pixel\""));
+            .unwrap_or_else(|| panic!("chapter {n}'s book page has no \"The path of one pixel\""));
         let paths = crate_paths(path_section, &modules);
         assert!(paths.len() >= 5, "chapter {n}: only {paths:?}");
         for p in paths {
@@ -160,15 +176,15 @@ fn digits_masked(text: &str) -> String {
         .collect()
 }
 
-/// Chapters 2–5 show one inspected pixel of their scene: the command in the README, run now,
-/// prints exactly the tree the README shows (in an f32 build, the same lines with other
-/// digits), so the README cannot drift from the code.
+/// Chapters 2–5 show one inspected pixel of their scene: the command on the book's page, run
+/// now, prints exactly the tree the page shows (in an f32 build, the same lines with other
+/// digits), so the book cannot drift from the code.
 #[test]
-fn the_inspected_pixel_in_each_readme_is_what_the_binary_prints() {
+fn the_inspected_pixel_on_each_chapter_page_is_what_the_binary_prints() {
     for n in 2..=5u8 {
-        let text = readme(n);
+        let text = page(n);
         let body = section(&text, "One pixel, inspected")
-            .unwrap_or_else(|| panic!("chapter {n}'s README has no \"One pixel, inspected\""));
+            .unwrap_or_else(|| panic!("chapter {n}'s book page has no \"One pixel, inspected\""));
         let block = body
             .split("```text\n")
             .nth(1)

@@ -1,6 +1,8 @@
 //! `scatter N [--seed S] [-o scene.toml]`: writes the scaling scene of N random spheres over a
 //! plane (see `whitted::scene::scatter`), to a file or to stdout.
 
+#![deny(missing_docs)]
+
 use std::process::ExitCode;
 
 use whitted::scene::scatter;

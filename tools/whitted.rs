@@ -17,6 +17,8 @@
 //! 2 on an error (a bad manifest, a function not found, a build that fails …), printed as
 //! one line `error: …`.
 
+#![deny(missing_docs)]
+
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 
@@ -68,6 +70,46 @@ enum Command {
     /// endless loop costs only its own tests. An exercise's points (chapters/formulas.toml) are
     /// shared by its tests. Exit status 0 once graded, whatever the score; 2 on an error.
     Grade(GradeArgs),
+    /// Renders the course book's figures (docs/figures.toml), or checks them with --check.
+    ///
+    /// Each figure is `BINARY ARGS -o docs/src/figures/FILE`, run from the project's root
+    /// with the chapter binaries built next to this one (target/debug or target/release).
+    /// With --check, each is rendered to a temporary directory and compared with the
+    /// committed PNG: a channel may differ by at most 1/255. Exit status: 0 all written or all
+    /// the same, 1 some differ, 2 on an error.
+    Figures(FiguresArgs),
+    /// Builds the course book (docs/, mdBook with mdbook-katex) and checks it.
+    ///
+    /// Before the build, every {{#include file:anchor}} must give something; during it,
+    /// mdBook and mdbook-katex must log no warning or error (a formula KaTeX cannot parse is
+    /// only logged by them); after it, every internal link and image must resolve, nothing
+    /// may load from the network, and each chapter page must show typeset math and a figure.
+    /// The book is written to docs/book (open docs/book/index.html). Exit status: 0 clean,
+    /// 1 problems found (each printed as file:line: …), 2 on an error (mdbook missing …).
+    Book(BookArgs),
+}
+
+#[derive(clap::Args)]
+struct FiguresArgs {
+    /// Compare fresh renders with the committed figures instead of writing them.
+    #[arg(long)]
+    check: bool,
+    /// Only the figures whose file names contain this text.
+    #[arg(long, value_name = "TEXT")]
+    only: Option<String>,
+    /// The project [default: the nearest Cargo.toml at or above the current directory].
+    #[arg(long, value_name = "DIR")]
+    root: Option<PathBuf>,
+}
+
+#[derive(clap::Args)]
+struct BookArgs {
+    /// The mdbook program to run.
+    #[arg(long, value_name = "PATH", default_value = "mdbook")]
+    mdbook: PathBuf,
+    /// The project [default: the nearest Cargo.toml at or above the current directory].
+    #[arg(long, value_name = "DIR")]
+    root: Option<PathBuf>,
 }
 
 #[derive(clap::Args)]
@@ -211,6 +253,8 @@ fn main() -> ExitCode {
         Command::Handout(h) => handout(&h),
         Command::Learn(l) => learn(&l),
         Command::Grade(g) => grade(&g),
+        Command::Figures(f) => figures(&f),
+        Command::Book(b) => book(&b),
     };
     match result {
         Ok(code) => code,
@@ -432,6 +476,171 @@ fn find_root() -> Result<PathBuf, Error> {
                 here.display()
             ))
         })
+}
+
+/// `whitted figures [--check]`: the book's renders, from their manifest.
+fn figures(args: &FiguresArgs) -> Result<ExitCode, Error> {
+    use whitted::course::book::{self, Difference};
+    let root = match &args.root {
+        Some(root) => root.clone(),
+        None => find_root()?,
+    };
+    let manifest = root.join("docs/figures.toml");
+    let mut figures = book::read_figures(&manifest)?;
+    if let Some(only) = &args.only {
+        figures.retain(|f| f.file.contains(only.as_str()));
+        if figures.is_empty() {
+            return Err(Error::Usage(format!(
+                "--only {only}: no figure of {} has it in its name",
+                manifest.display()
+            )));
+        }
+    }
+    let exe = std::env::current_exe().map_err(|e| Error::io("whitted", e))?;
+    let bin_dir = exe.parent().unwrap_or(Path::new("."));
+    let dir = root.join("docs/src/figures");
+    std::fs::create_dir_all(&dir).map_err(|e| Error::io(&dir, e))?;
+    let scratch = tempfile::Builder::new()
+        .prefix(".figures-")
+        .tempdir_in(&dir)
+        .map_err(|e| Error::io(&dir, e))?;
+    let mut differ = 0;
+    for (k, figure) in figures.iter().enumerate() {
+        let fresh = scratch.path().join(&figure.file);
+        let committed = dir.join(&figure.file);
+        let started = std::time::Instant::now();
+        book::render(figure, bin_dir, &root, &fresh)?;
+        let ms = started.elapsed().as_millis();
+        let n = figures.len();
+        if !args.check {
+            std::fs::rename(&fresh, &committed).map_err(|e| Error::io(&committed, e))?;
+            println!(
+                "[{}/{n}] wrote docs/src/figures/{} ({ms} ms)",
+                k + 1,
+                figure.file
+            );
+            continue;
+        }
+        if !committed.is_file() {
+            differ += 1;
+            println!(
+                "[{}/{n}] docs/src/figures/{}: missing (docs/figures.toml:{}): run `whitted figures`",
+                k + 1,
+                figure.file,
+                figure.line
+            );
+            continue;
+        }
+        let verdict = match book::compare(&committed, &fresh, book::TOLERANCE)? {
+            Difference::Same => "the same".to_string(),
+            Difference::Size(a, b) => {
+                differ += 1;
+                format!(
+                    "DIFFERS: {}×{} committed, {}×{} rendered",
+                    a.0, a.1, b.0, b.1
+                )
+            }
+            Difference::Pixels {
+                pixels,
+                largest,
+                first,
+            } => {
+                differ += 1;
+                format!(
+                    "DIFFERS: {pixels} pixel{} off by up to {largest}/255, the first at ({}, {})",
+                    if pixels == 1 { "" } else { "s" },
+                    first.0,
+                    first.1
+                )
+            }
+        };
+        println!(
+            "[{}/{n}] docs/src/figures/{} (docs/figures.toml:{}): {verdict} ({ms} ms)",
+            k + 1,
+            figure.file,
+            figure.line
+        );
+    }
+    if differ > 0 {
+        println!(
+            "{differ} of {} figures differ from a fresh render: if the change is meant, run `whitted figures` and commit them",
+            figures.len()
+        );
+        return Ok(ExitCode::from(1));
+    }
+    Ok(ExitCode::SUCCESS)
+}
+
+/// `whitted book`: checks the includes, builds the book, checks the log and the HTML.
+fn book(args: &BookArgs) -> Result<ExitCode, Error> {
+    use whitted::course::book;
+    let root = match &args.root {
+        Some(root) => root.clone(),
+        None => find_root()?,
+    };
+    let docs = root.join("docs");
+    let mut problems: Vec<String> = book::check_includes(&docs.join("src"))?
+        .iter()
+        .map(ToString::to_string)
+        .collect();
+    let out = std::process::Command::new(&args.mdbook)
+        .arg("build")
+        .arg(&docs)
+        .env("NO_COLOR", "1")
+        .output()
+        .map_err(|e| {
+            Error::Usage(format!(
+                "cannot run `{}`: {e}: install the book's tools as docs/README.md says (`.ci/run` does)",
+                args.mdbook.display()
+            ))
+        })?;
+    let log = format!(
+        "{}{}",
+        String::from_utf8_lossy(&out.stdout),
+        String::from_utf8_lossy(&out.stderr)
+    );
+    problems.extend(
+        book::log_problems(&log)
+            .into_iter()
+            .map(|l| format!("mdbook: {l}")),
+    );
+    if !out.status.success() {
+        problems.push(format!("mdbook build failed ({})", out.status));
+    } else {
+        let chapters = [
+            "ch01-camera-rays.html",
+            "ch02-generic-objects.html",
+            "ch03-shading.html",
+            "ch04-shadows.html",
+            "ch05-reflection-refraction.html",
+        ];
+        let built = docs.join("book");
+        for chapter in chapters {
+            if !built.join(chapter).is_file() {
+                problems.push(format!(
+                    "docs/book/{chapter}: the chapter page was not built"
+                ));
+            }
+        }
+        problems.extend(
+            book::check_html(&built, &chapters)?
+                .iter()
+                .map(ToString::to_string),
+        );
+    }
+    for p in &problems {
+        println!("{p}");
+    }
+    if problems.is_empty() {
+        println!(
+            "the book is built and clean: {}",
+            docs.join("book/index.html").display()
+        );
+        Ok(ExitCode::SUCCESS)
+    } else {
+        println!("{} problems in the book", problems.len());
+        Ok(ExitCode::from(1))
+    }
 }
 
 /// `whitted grade`: one submission, or a class.

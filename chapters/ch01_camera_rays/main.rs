@@ -1,6 +1,8 @@
 //! Chapter 1 — camera rays: one ray per pixel, coloured by its direction (d̂ + 1)/2.
 //! See README.md beside this file.
 
+#![deny(missing_docs)]
+
 use std::process::ExitCode;
 
 use clap::Parser;

@@ -1,6 +1,8 @@
 //! Chapter 2 — generic objects: the nearest hit of each camera ray.
 //! See README.md beside this file.
 
+#![deny(missing_docs)]
+
 use std::process::ExitCode;
 
 use clap::Parser;

@@ -1,6 +1,8 @@
 //! Chapter 3 — shading: ambient, diffuse and specular (Phong) light from every light source.
 //! See README.md beside this file.
 
+#![deny(missing_docs)]
+
 use std::process::ExitCode;
 
 use clap::Parser;

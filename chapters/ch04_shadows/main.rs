@@ -1,6 +1,8 @@
 //! Chapter 4 — shadows: a feeler ray towards each light.
 //! See README.md beside this file.
 
+#![deny(missing_docs)]
+
 use std::process::ExitCode;
 
 use clap::Parser;

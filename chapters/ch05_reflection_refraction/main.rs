@@ -1,6 +1,8 @@
 //! Chapter 5 — reflection and refraction: the complete Whitted renderer.
 //! See README.md beside this file.
 
+#![deny(missing_docs)]
+
 use std::process::ExitCode;
 
 use clap::Parser;

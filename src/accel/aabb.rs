@@ -11,6 +11,8 @@
 //! The boxes are *conservative*: they are padded by more than the rounding error of any hit
 //! the object test can report, so skipping an object whose box is missed never changes an
 //! image (the tests compare every accelerated image with the brute-force one, bit for bit).
+//!
+//! Course book: [Performance](../../../../../docs/book/performance.html) (`docs/src/performance.md`).
 
 use crate::ray::Ray;
 use crate::real::{Mat4, Real, Vec3};

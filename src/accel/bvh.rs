@@ -12,6 +12,8 @@
 //! (A the surface area: the chance that a ray through the node meets the child's box). The
 //! candidate planes are the borders of 12 bins along each axis, over the objects' centres.
 //! A node becomes a leaf when no split beats testing its objects one by one.
+//!
+//! Course book: [Performance](../../../../../docs/book/performance.html) (`docs/src/performance.md`).
 
 use arrayvec::ArrayVec;
 

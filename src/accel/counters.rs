@@ -9,7 +9,9 @@
 //! ```
 //!
 //! Without the feature every counting call is empty and compiles to nothing, so the renders
-//! measured in `docs/performance.md` pay nothing for it.
+//! measured in `docs/src/performance.md` pay nothing for it.
+//!
+//! Course book: [Performance](../../../../../docs/book/performance.html) (`docs/src/performance.md`).
 
 /// The work done by ray queries: what [`super::Accelerator::nearest`] and
 /// [`super::Accelerator::transmittance`] tested.

@@ -16,6 +16,8 @@
 //! The renderer works in 16 × 16 tiles, so each tile keeps the list of objects whose rectangle
 //! overlaps it, and a camera ray of that tile tests only those (and the objects that may be
 //! anywhere, kept in one list of their own).
+//!
+//! Course book: [Performance](../../../../../docs/book/performance.html) (`docs/src/performance.md`).
 
 use super::aabb::Aabb;
 use crate::camera::Camera;

@@ -45,6 +45,8 @@
 //!
 //! How much each one saves can be counted: a build with the `counters` feature ([`counters`])
 //! adds the queries, node visits, box tests and object tests to `--stats`.
+//!
+//! Course book: [Performance](../../../../docs/book/performance.html) (`docs/src/performance.md`).
 
 pub mod aabb;
 pub mod bvh;

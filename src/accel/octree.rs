@@ -14,6 +14,8 @@
 //! A ray walks the cells front to back (along the ray, each axis goes from the near half of a
 //! cube to the far half, so the octants come in a fixed order given by the signs of the
 //! direction), and skips every cell whose contents start beyond the nearest hit found.
+//!
+//! Course book: [Performance](../../../../../docs/book/performance.html) (`docs/src/performance.md`).
 
 use super::aabb::{Aabb, RayBox, Span, first_meeting};
 use crate::real::{Real, Vec3};

@@ -2,6 +2,8 @@
 //! rays of a block of pixels, or their feelers towards one light. Each ray gets exactly its own
 //! answer, the one [`Accelerator::nearest`] or [`Accelerator::transmittance`] gives it: the
 //! objects are tested, and their hits judged, by the same functions.
+//!
+//! Course book: [Performance](../../../../../docs/book/performance.html) (`docs/src/performance.md`).
 
 use arrayvec::ArrayVec;
 

@@ -4,6 +4,8 @@
 //! which objects to test; each test, and what is made of its hits, is the road's own function:
 //! [`Shape::intersect_placed`](crate::shapes::Shape::intersect_placed),
 //! [`Hits::first_after`], [`nearer`], [`shadow::blocks`] and [`shadow::transmittance`].
+//!
+//! Course book: [Performance](../../../../../docs/book/performance.html) (`docs/src/performance.md`).
 
 use super::aabb::RayBox;
 use super::{Accelerator, Index, ObjectSpace, counters};
@@ -31,6 +33,7 @@ impl Best {
         }
     }
 
+    // ANCHOR: ch2_best
     /// The nearest hit found, its normal carried to the world.
     #[inline]
     pub(super) fn nearest(self, objects: &[Object]) -> Option<Nearest> {
@@ -62,6 +65,7 @@ impl Best {
             self.hit = Some(h);
         }
     }
+    // ANCHOR_END: ch2_best
 }
 
 /// What a feeler has met so far: whether an opaque object blocks it, and the translucent

@@ -14,6 +14,8 @@
 //! --deps` measures again and [`check`]s the file, which CI does, so the list of what a
 //! handout fails cannot drift from the tests. A handout of the exercises S fails exactly the
 //! tests whose table names one of S ([`expected`]).
+//!
+//! Course book: [The instructor's guide](../../../../../docs/book/instructor-guide.html) (`docs/src/instructor-guide.md`).
 
 use std::collections::{BTreeMap, BTreeSet};
 use std::path::Path;

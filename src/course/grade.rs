@@ -22,6 +22,8 @@
 //! added to the copy as `tests/hidden_NAME.rs`), compiled against the same public API. Their
 //! tests follow the same naming, so they count for the exercise they name; reports for
 //! students show their points, never their names or messages ([`super::report`]).
+//!
+//! Course book: [The instructor's guide](../../../../../docs/book/instructor-guide.html) (`docs/src/instructor-guide.md`).
 
 use std::collections::{BTreeMap, BTreeSet};
 use std::path::{Path, PathBuf};

@@ -20,6 +20,8 @@
 //! lists (and the helper directories they use, such as `tests/common/` and `tests/golden/`),
 //! and no `.ci/`. It is written into a temporary directory beside the destination and renamed
 //! into place, so a failure leaves nothing half written.
+//!
+//! Course book: [The instructor's guide](../../../../../docs/book/instructor-guide.html) (`docs/src/instructor-guide.md`).
 
 use std::collections::BTreeMap;
 use std::ops::Range;

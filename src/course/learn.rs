@@ -7,6 +7,8 @@
 //! comes from one run of those targets (`cargo test --no-fail-fast`), read from libtest's
 //! output: `done`, `to do` (a test stopped at the exercise's `todo!()`), or `failing`.
 //! The hints a student has asked for are kept in `.whitted/hints.json` in the project.
+//!
+//! Course book: [The student's guide](../../../../../docs/book/student-guide.html) (`docs/src/student-guide.md`).
 
 use std::collections::{BTreeMap, BTreeSet};
 use std::io::IsTerminal;

@@ -5,6 +5,8 @@
 //! have, a malformed function path or a function listed twice are errors that name the file,
 //! line and column of the offending value, e.g.
 //! `chapters/formulas.toml:12:12: chapter: expected 1 to 5, found 7`.
+//!
+//! Course book: [The instructor's guide](../../../../../docs/book/instructor-guide.html) (`docs/src/instructor-guide.md`).
 
 use std::collections::HashMap;
 use std::ops::Range;

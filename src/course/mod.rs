@@ -47,7 +47,10 @@
 //!
 //! The binary `whitted` exposes them: `whitted formulas [--prove | --deps [--write] |
 //! --readmes]`, `whitted handout`, `whitted learn [list | hint | watch]`, `whitted grade`.
+//!
+//! Course book: [The instructor's guide](../../../../docs/book/instructor-guide.html) (`docs/src/instructor-guide.md`).
 
+pub mod book;
 pub mod deps;
 pub mod grade;
 pub mod handout;

@@ -20,6 +20,8 @@
 //!
 //! Two functions are tried at a time, each run under a time limit, so that a poisoned loop
 //! cannot hang the proof.
+//!
+//! Course book: [The instructor's guide](../../../../../docs/book/instructor-guide.html) (`docs/src/instructor-guide.md`).
 
 use std::collections::BTreeMap;
 use std::fs::File;

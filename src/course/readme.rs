@@ -1,6 +1,8 @@
 //! The "Exercises" section of each chapter's README, written from the manifest so that the
 //! README and the manifest cannot say different things: `whitted formulas --readmes`
 //! rewrites the sections, and a test checks they are current.
+//!
+//! Course book: [The student's guide](../../../../../docs/book/student-guide.html) (`docs/src/student-guide.md`).
 
 use std::path::Path;
 
@@ -9,6 +11,13 @@ use super::manifest::Manifest;
 
 /// The heading of the section.
 pub const HEADING: &str = "## Exercises";
+
+/// The lines around the section's text (its heading excepted): mdBook's anchors, so that the
+/// course book's chapter page includes the section (`{{#include …/README.md:exercises}}`)
+/// instead of saying it again.
+pub const ANCHOR_START: &str = "<!-- ANCHOR: exercises -->";
+/// The line that ends the anchored text.
+pub const ANCHOR_END: &str = "<!-- ANCHOR_END: exercises -->";
 
 /// The section for chapter `chapter`, heading included, ending with a newline.
 #[must_use]
@@ -33,9 +42,9 @@ pub fn section(manifest: &Manifest, chapter: u8, chapter_dir: &str) -> String {
         .map(|(c, what)| format!("{c:<width$}  # {what}\n"))
         .collect();
     let mut out = format!(
-        "{HEADING}\n\n\
+        "{HEADING}\n\n{ANCHOR_START}\n\
          Each exercise is one function of the library, the one the renderer calls for that formula.\n\
-         In a handout (`whitted handout`, see `docs/student-guide.md`) its body is `todo!()`; write\n\
+         In a handout (`whitted handout`, see `docs/src/student-guide.md`) its body is `todo!()`; write\n\
          it, then run\n\n\
          ```text\n{lines}```\n\n\
          An exercise's tests are named after it (`ex{chapter}_1_…` for {chapter}.1) and may use \
@@ -55,7 +64,7 @@ pub fn section(manifest: &Manifest, chapter: u8, chapter_dir: &str) -> String {
             x.task
         );
     }
-    out
+    out + ANCHOR_END + "\n"
 }
 
 /// `readme` with its exercises section replaced by `section` (the section runs from its

@@ -6,6 +6,8 @@
 //! reports (the table, JUnit, CSV) by name; in Gradescope's file, which students read, a
 //! hidden test is only "exercise 2.3, hidden test 1" with its points and whether it passed —
 //! never its name, message or code.
+//!
+//! Course book: [The instructor's guide](../../../../../docs/book/instructor-guide.html) (`docs/src/instructor-guide.md`).
 
 use super::CHAPTERS;
 use super::grade::{Grade, Status, TestResult};

@@ -15,6 +15,8 @@
 //! range of the file's text, braces included. [`edit_bodies`] rewrites such ranges: a statement
 //! put first in a body (the proof's poison guard), or a body replaced (a handout's `todo!()`).
 //! Everything outside the edited bodies is kept byte for byte.
+//!
+//! Course book: [The instructor's guide](../../../../../docs/book/instructor-guide.html) (`docs/src/instructor-guide.md`).
 
 use std::ops::Range;
 use std::path::{Path, PathBuf};

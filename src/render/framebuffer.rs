@@ -1,6 +1,8 @@
 //! The framebuffer: the rendered image in linear RGB, the byte each intensity becomes in the
 //! PNG ([`Encoding`]: sRGB or linear, see [`crate::output`] for why), and the limit on the
 //! image's size.
+//!
+//! Course book: [Chapter 3, shading](../../../../../docs/book/ch03-shading.html) (`docs/src/ch03-shading.md`).
 
 use std::sync::LazyLock;
 

@@ -20,7 +20,9 @@
 //! structure may stop at the first opaque one).
 //!
 //! [`RayTree`]'s `Display` is the indented text of `--inspect X,Y`; [`RayTree::to_json`]
-//! the JSON of `--inspect X,Y --json`, whose shape `docs/inspect.md` documents.
+//! the JSON of `--inspect X,Y --json`, whose shape `docs/src/inspect.md` documents.
+//!
+//! Course book: [The ray tree of one pixel](../../../../../docs/book/inspect.html) (`docs/src/inspect.md`).
 
 use std::fmt;
 
@@ -38,7 +40,7 @@ use crate::shading;
 use crate::shadow;
 use crate::shapes::{Formula, Nearest, Part};
 
-/// The version of the JSON shape `RayTree::to_json` writes (`docs/inspect.md`).
+/// The version of the JSON shape `RayTree::to_json` writes (`docs/src/inspect.md`).
 pub const JSON_VERSION: u32 = 1;
 
 /// The ray tree of one pixel: every sample's camera ray and all that followed from it.
@@ -674,7 +676,7 @@ impl RayTree {
         self.colour.to_array().map(|x| self.encoding.byte(x))
     }
 
-    /// The tree as JSON (the shape is documented in `docs/inspect.md`).
+    /// The tree as JSON (the shape is documented in `docs/src/inspect.md`).
     #[must_use]
     pub fn to_json(&self) -> Value {
         json!({

@@ -16,6 +16,8 @@
 //! The road calls one small function per formula of the notes, and the speed machinery
 //! (tiles, packets, the acceleration structures of [`crate::accel`]) calls the same functions:
 //! it changes the time, never a bit of the image.
+//!
+//! Course book: [Chapter 1, camera rays](../../../../docs/book/ch01-camera-rays.html) (`docs/src/ch01-camera-rays.md`).
 
 pub mod framebuffer;
 pub mod inspect;

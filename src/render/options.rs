@@ -1,5 +1,7 @@
 //! What a render is asked to do besides the scene: the chapter, the view, the image size and
 //! the accuracy and speed settings.
+//!
+//! Course book: [Introduction](../../../../../docs/book/introduction.html) (`docs/src/introduction.md`).
 
 use crate::accel::Accel;
 use crate::camera::Camera;

@@ -9,6 +9,8 @@
 //! looks its feelers' shares up instead of tracing them one by one; its mirror and transmitted
 //! rays are traced one by one. The packets change the time, never a bit of the image:
 //! [`Options::packets`] turns them off, and the tests render both ways and compare.
+//!
+//! Course book: [Performance](../../../../../docs/book/performance.html) (`docs/src/performance.md`).
 
 use arrayvec::ArrayVec;
 

@@ -13,6 +13,8 @@
 //!
 //! A pair `(&mut A, &mut B)` of recorders is a recorder that tells both (the rays-per-pixel
 //! view counts one pixel's rays this way while the tree records them).
+//!
+//! Course book: [The ray tree of one pixel](../../../../../docs/book/inspect.html) (`docs/src/inspect.md`).
 
 use super::Stats;
 use super::tracer::{Feeler, Surface};

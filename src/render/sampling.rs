@@ -4,9 +4,12 @@
 //! of a k × k grid over the pixel; any other number jitters over the whole pixel. The jitter
 //! comes from a hash of the seed, the pixel and the sample's index, so every run, on any number
 //! of threads, gives the same image.
+//!
+//! Course book: [Chapter 5, reflection and refraction](../../../../../docs/book/ch05-reflection-refraction.html) (`docs/src/ch05-reflection-refraction.md`).
 
 use crate::real::Real;
 
+// ANCHOR: ch5_sample_position
 /// The position inside pixel (x, y) of sample `s` of `n`, as (dx, dy) ∈ [0, 1)², (½, ½) being
 /// the centre.
 #[must_use]
@@ -24,6 +27,7 @@ pub fn sample_position(seed: u64, n: u32, x: u32, y: u32, s: u32) -> (Real, Real
         (jx, jy)
     }
 }
+// ANCHOR_END: ch5_sample_position
 
 /// A well-mixed 64-bit hash (the SplitMix64 finaliser).
 fn mix(mut z: u64) -> u64 {

@@ -1,5 +1,7 @@
 //! Statistics: the rays a render cast, by kind, and (with the `counters` feature) the work
 //! behind their queries.
+//!
+//! Course book: [Performance](../../../../../docs/book/performance.html) (`docs/src/performance.md`).
 
 use crate::accel::counters::Counts;
 

@@ -29,6 +29,8 @@
 //! });
 //! assert!(matches!(finished, Ok(Finished::Done(stats)) if stats.primary == 32 * 24));
 //! ```
+//!
+//! Course book: [Performance](../../../../../docs/book/performance.html) (`docs/src/performance.md`).
 
 use std::sync::atomic::{AtomicBool, Ordering};
 

@@ -28,7 +28,7 @@
 //! the ray tree. The nearest hit, and what a feeler crosses, are asked of the acceleration
 //! structure ([`crate::accel`]), which gives exactly what testing every object in turn gives.
 //! Tiles ([`super::tiles`]) and packets ([`super::packets`]) sit around this road and call
-//! the same functions.
+//! the same functions. Course book: [Chapter 1, camera rays](../../../../../docs/book/ch01-camera-rays.html) (`docs/src/ch01-camera-rays.md`).
 
 use std::borrow::Cow;
 
@@ -73,8 +73,10 @@ pub struct Surface<'s> {
     pub spawn: SpawnPoint,
 }
 
+// ANCHOR: ch4_feeler_type
 /// A feeler S(u) = P′ + (L − P′)·u from the offset start P′, and the smallest u that counts.
 pub type Feeler = (Ray, Real);
+// ANCHOR_END: ch4_feeler_type
 
 impl<'a> Tracer<'a> {
     /// A tracer for the scene with the options' image size (builds `options.accel`).
@@ -107,6 +109,7 @@ impl<'a> Tracer<'a> {
         &self.camera
     }
 
+    // ANCHOR: ch1_pixel
     /// The colour of pixel (x, y), row y from the top: the mean over its samples. `rec`
     /// hears every stop of the road ([`Stats`](super::Stats) counts the rays).
     pub fn pixel(&self, x: u32, y: u32, rec: &mut impl Recorder) -> Vec3 {
@@ -135,7 +138,9 @@ impl<'a> Tracer<'a> {
         }
         sum / samples as Real
     }
+    // ANCHOR_END: ch1_pixel
 
+    // ANCHOR: ch1_camera_ray
     /// What the camera ray of image pixel `pixel` brings back.
     fn camera_ray(&self, ray: &Ray, pixel: (u32, u32), rec: &mut impl Recorder) -> Vec3 {
         if self.options.stage == Stage::CameraRays {
@@ -145,7 +150,9 @@ impl<'a> Tracer<'a> {
         rec.hit(nearest.as_ref());
         self.seen(ray, nearest, rec)
     }
+    // ANCHOR_END: ch1_camera_ray
 
+    // ANCHOR: ch2_seen
     /// The colour of a camera ray (from stage 2 on) whose nearest hit is `nearest`, as the
     /// view shows it.
     pub(crate) fn seen(
@@ -180,7 +187,9 @@ impl<'a> Tracer<'a> {
             None => self.scene.background,
         }
     }
+    // ANCHOR_END: ch2_seen
 
+    // ANCHOR: ch2_nearest
     /// The nearest hit with t > `t_min` over all objects (the notes' step 5: the smallest t;
     /// of equal t, the object listed first).
     #[must_use]
@@ -193,7 +202,9 @@ impl<'a> Tracer<'a> {
         self.accel
             .nearest(&self.scene.objects, ray, t_min, self.options.formula, pixel)
     }
+    // ANCHOR_END: ch2_nearest
 
+    // ANCHOR: ch5_trace
     /// The light coming back along `ray` (stages 3–5): the nearest hit after `t_min`, shaded.
     /// `depth` counts the bounces that led here and `weight` the share of the pixel the ray
     /// carries.
@@ -209,7 +220,9 @@ impl<'a> Tracer<'a> {
         rec.hit(nearest.as_ref());
         self.shade(ray, nearest, depth, weight, rec)
     }
+    // ANCHOR_END: ch5_trace
 
+    // ANCHOR: ch3_shade
     /// I = I_a + I_d + I_s + I_l + I_r at the nearest hit of `ray` (the background colour for
     /// a miss): the local light, then from stage 5 the mirror and transmitted rays.
     fn shade(
@@ -227,7 +240,9 @@ impl<'a> Tracer<'a> {
         let local = self.local_light(&s, |_, feeler| self.transmittance(feeler), rec);
         self.reflect_and_refract(&s, local, depth, weight, rec)
     }
+    // ANCHOR_END: ch3_shade
 
+    // ANCHOR: ch3_surface
     /// What shading needs to know of a hit.
     pub(crate) fn surface<'s>(&'s self, ray: &Ray, nearest: &Nearest) -> Surface<'s> {
         let hit = nearest.hit;
@@ -242,7 +257,9 @@ impl<'a> Tracer<'a> {
             spawn: SpawnPoint::new(object, ray, &hit),
         }
     }
+    // ANCHOR_END: ch3_surface
 
+    // ANCHOR: ch3_local_light_sig
     /// The local light I_a + Σ_lights (I_d + I_s)·share (chapters 3 and 4): Phong's terms of
     /// every light, each times the share of that light its feeler lets through (from stage 4;
     /// 1 before). `share(light, feeler)` answers for the feeler towards light number `light`:
@@ -254,6 +271,7 @@ impl<'a> Tracer<'a> {
         mut share: impl FnMut(usize, &Feeler) -> Real,
         rec: &mut impl Recorder,
     ) -> Vec3 {
+        // ANCHOR_END: ch3_local_light_sig
         // BEGIN SOLUTION 3.7
         let i_a = shading::ambient(s.material, self.scene.ambient); // I_a
         rec.ambient(i_a);
@@ -282,6 +300,7 @@ impl<'a> Tracer<'a> {
         // END SOLUTION
     }
 
+    // ANCHOR: ch4_feeler_sig
     /// From stage 4, the feeler S(u) = P′ + (L − P′)·u towards a `light` that casts shadows
     /// and lies in front, n·(L − P) > 0, from P moved off the surface to P′ ([`crate::offset`]).
     pub(crate) fn feeler(&self, s: &Surface, light: &Light) -> Option<Feeler> {
@@ -289,6 +308,7 @@ impl<'a> Tracer<'a> {
         if o.stage < Stage::Shadows {
             return None; // no feelers before chapter 4 (given: not part of the exercise)
         }
+        // ANCHOR_END: ch4_feeler_sig
         // BEGIN SOLUTION 4.4
         if !light.shadows || s.n.dot(light.position - s.p) <= 0.0 {
             return None;
@@ -298,6 +318,7 @@ impl<'a> Tracer<'a> {
         // END SOLUTION
     }
 
+    // ANCHOR: ch4_transmittance
     /// The share of its light that a feeler lets through: the product of the transmissions of
     /// the objects it crosses with u ∈ ]u_min, 1] ([`crate::shadow`]).
     #[inline] // two callers (this road and the shadow-mask view): keep it in the road
@@ -310,7 +331,9 @@ impl<'a> Tracer<'a> {
             self.options.formula,
         )
     }
+    // ANCHOR_END: ch4_transmittance
 
+    // ANCHOR: ch5_reflect_and_refract_sig
     /// `color` + k_t·I_r + k_r·I_l (stage 5, while `depth < max_depth`): the light of the
     /// transmitted ray (Snell's law, [`optics::refract`]) and of the mirror ray
     /// ([`optics::reflect`]), each traced in turn. Under total internal reflection the
@@ -328,6 +351,7 @@ impl<'a> Tracer<'a> {
         if o.stage < Stage::ReflectionRefraction {
             return color; // no secondary rays before chapter 5 (given: not part of the exercise)
         }
+        // ANCHOR_END: ch5_reflect_and_refract_sig
         // BEGIN SOLUTION 5.5
         let (material, d, n) = (s.material, s.d, s.n);
         if depth >= o.max_depth {
@@ -383,6 +407,7 @@ impl<'a> Tracer<'a> {
         // END SOLUTION
     }
 
+    // ANCHOR: ch5_follow
     /// Traces a mirror or transmitted ray, telling `rec` it leaves and what it brings back.
     fn follow(
         &self,
@@ -398,9 +423,12 @@ impl<'a> Tracer<'a> {
         rec.done(colour);
         colour
     }
+    // ANCHOR_END: ch5_follow
 }
 
+// ANCHOR: ch3_facing
 /// The normal n turned to face against the direction `d` (towards where the ray came from).
 fn facing(n: Vec3, d: Vec3) -> Vec3 {
     if n.dot(d) > 0.0 { -n } else { n }
 }
+// ANCHOR_END: ch3_facing

@@ -16,6 +16,8 @@
 //! - **shadow mask**: which lights reach each point, light i painted in [`light_colour`]`(i)`
 //!   (red, green, blue for the first three: white where all three arrive) times the share
 //!   its feeler lets through.
+//!
+//! Course book: [Chapter 2, generic objects](../../../../../docs/book/ch02-generic-objects.html) (`docs/src/ch02-generic-objects.md`).
 
 use super::recorder::Recorder;
 use super::tracer::Surface;

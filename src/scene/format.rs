@@ -2,7 +2,9 @@
 //!
 //! Every table and key is optional unless noted, and every number is checked as it is read
 //! (finite, positive where a size is meant, …), so a bad value is reported at its own line and
-//! column. Unknown keys are refused. The full reference is `docs/scene-format.md`.
+//! column. Unknown keys are refused. The full reference is `docs/src/scene-format.md`.
+//!
+//! Course book: [The scene file](../../../../../docs/book/scene-format.html) (`docs/src/scene-format.md`).
 
 use std::collections::BTreeMap;
 use std::fmt;

@@ -16,6 +16,8 @@
 //! | `box = { min = p, max = q }` | the cube [−1, 1]³, scale (q − p)/2, translate (p + q)/2 |
 //!
 //! Any object may add `transform = [ … ]` steps, applied after its placement form.
+//!
+//! Course book: [The scene file](../../../../../docs/book/scene-format.html) (`docs/src/scene-format.md`).
 
 use std::collections::HashMap;
 use std::ops::Range;

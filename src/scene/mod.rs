@@ -11,6 +11,8 @@
 //! [[objects]]
 //! sphere = { center = [0.0, 0.0, 0.0], radius = 1.0 }
 //! ```
+//!
+//! Course book: [The scene file](../../../../docs/book/scene-format.html) (`docs/src/scene-format.md`).
 
 pub mod format;
 pub mod load;

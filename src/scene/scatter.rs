@@ -15,6 +15,8 @@
 //! One sphere in ten is a mirror, so the scene has every kind of ray. The positions come from
 //! a seeded generator (SplitMix64): the same N, layout and seed give the same scene.
 //! [`scene_pov`] writes the same scene for POV-Ray 3.7, to time the classic renderer on it.
+//!
+//! Course book: [Performance](../../../../../docs/book/performance.html) (`docs/src/performance.md`).
 
 use std::fmt::Write;
 

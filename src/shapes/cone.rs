@@ -22,6 +22,8 @@
 //! also computes b² − ac as w_x² + w_y² − w_z² with w = d × (e − apex) (see [`discriminant`]),
 //! which keeps small cones far away from losing their discriminant to cancellation, and takes
 //! the roots in the stable form q/a, c/q.
+//!
+//! Course book: [Chapter 2, generic objects](../../../../../docs/book/ch02-generic-objects.html) (`docs/src/ch02-generic-objects.md`).
 
 use super::cylinder::Extremes;
 use super::quadratic::{Formula, solve, stable_roots};

@@ -11,6 +11,8 @@
 //! the infinite tube (between the two roots), then the stretch between the cap planes. The
 //! answer is their common part, so a ray through a rim can never slip between a wall test and
 //! a cap test, and a = 0 needs no special case.
+//!
+//! Course book: [Chapter 2, generic objects](../../../../../docs/book/ch02-generic-objects.html) (`docs/src/ch02-generic-objects.md`).
 
 use super::quadratic::{Formula, solve, stable_roots};
 use super::{Hit, Hits, Part, Span, entering_leaving};

@@ -24,6 +24,8 @@
 //! shape = "cylinder"
 //! transform = [ { scale = [0.5, 0.5, 1.0] }, { rotate_x = -90.0 }, { translate = [2.0, 0.0, 0.0] } ]
 //! ```
+//!
+//! Course book: [Chapter 2, generic objects](../../../../docs/book/ch02-generic-objects.html) (`docs/src/ch02-generic-objects.md`).
 
 pub mod cone;
 pub mod cylinder;
@@ -59,6 +61,7 @@ pub enum Part {
     Facet(u32),
 }
 
+// ANCHOR: ch2_hit
 /// One point where a ray meets a surface.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct Hit {
@@ -72,6 +75,7 @@ pub struct Hit {
     /// True where the ray goes from outside to inside (for a plane: hits its front, +z side).
     pub entering: bool,
 }
+// ANCHOR_END: ch2_hit
 
 /// The hits of one ray with one object, in increasing t (at most two: the shapes are convex).
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
@@ -194,6 +198,7 @@ pub enum Shape {
 }
 
 impl Shape {
+    // ANCHOR: ch2_intersect_placed_sig
     /// The hits of a world ray with the shape placed by a matrix M whose inverse is `inv`: the
     /// ray carried into object space, M⁻¹r(t) = M⁻¹e + M⁻¹d·t ([`Ray::transformed`]), and
     /// intersected with the generic shape. t is the world ray's; the normals stay in object
@@ -203,11 +208,13 @@ impl Shape {
     #[inline]
     #[must_use]
     pub fn intersect_placed(&self, inv: &Mat4, ray: &Ray, formula: Formula) -> Hits {
+        // ANCHOR_END: ch2_intersect_placed_sig
         // BEGIN SOLUTION 2.12
         self.intersect_local(&ray.transformed(inv), formula)
         // END SOLUTION
     }
 
+    // ANCHOR: ch2_intersect_local
     /// Intersects an object-space ray with the generic shape. Normals are in object space.
     #[must_use]
     pub fn intersect_local(&self, ray: &Ray, formula: Formula) -> Hits {
@@ -219,6 +226,7 @@ impl Shape {
             Shape::Polyhedron(p) => p.intersect(ray),
         }
     }
+    // ANCHOR_END: ch2_intersect_local
 
     /// The shape's name as the scene file writes it.
     #[must_use]
@@ -261,6 +269,7 @@ impl Object {
         }
     }
 
+    // ANCHOR: ch2_object_intersect
     /// Intersects a world ray: carries it into object space with M⁻¹ (direction not
     /// renormalised, so t is shared), intersects the generic shape, and carries each normal
     /// back with (M⁻¹)ᵀ, renormalised.
@@ -272,6 +281,7 @@ impl Object {
         }
         hits
     }
+    // ANCHOR_END: ch2_object_intersect
 
     /// The hits of a world ray with the object, normals left in object space: the first half
     /// of [`Object::intersect`] (see [`Shape::intersect_placed`]).

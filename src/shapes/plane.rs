@@ -3,6 +3,8 @@
 //! e_z + d_z·t = 0 gives t = −e_z/d_z. A ray with d_z = 0 (either sign of zero) is parallel to
 //! the plane and misses it: no ±∞ or NaN is ever returned. The normal is (0, 0, 1); the plane
 //! is an open surface, and "entering" means hitting its +z face.
+//!
+//! Course book: [Chapter 2, generic objects](../../../../../docs/book/ch02-generic-objects.html) (`docs/src/ch02-generic-objects.md`).
 
 use super::{Hit, Hits, Part};
 use crate::ray::Ray;

@@ -19,6 +19,8 @@
 //! polyhedron = { preset = "octahedron" }
 //! transform = [ { scale = 0.8 }, { translate = [0.0, 1.0, 0.0] } ]
 //! ```
+//!
+//! Course book: [Chapter 2, generic objects](../../../../../docs/book/ch02-generic-objects.html) (`docs/src/ch02-generic-objects.md`).
 
 use super::{Hit, Hits, Part, entering_leaving};
 use crate::ray::Ray;

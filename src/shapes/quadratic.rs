@@ -13,6 +13,8 @@
 //!
 //! [`Formula::Robust`] (the default) uses it; [`Formula::Textbook`] keeps the notes' form so
 //! that its error can be measured.
+//!
+//! Course book: [Chapter 2, generic objects](../../../../../docs/book/ch02-generic-objects.html) (`docs/src/ch02-generic-objects.md`).
 
 use crate::numeric::sign;
 use crate::real::Real;

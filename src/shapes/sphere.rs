@@ -7,6 +7,8 @@
 //! point of the line closest to the centre, so the difference is taken between numbers of the
 //! size of the radius, not of |e|² (Ray Tracing Gems, ch. 7). This keeps small spheres far away
 //! hittable in f32.
+//!
+//! Course book: [Chapter 2, generic objects](../../../../../docs/book/ch02-generic-objects.html) (`docs/src/ch02-generic-objects.md`).
 
 use super::quadratic::{self, Formula, Roots, solve_with_discriminant};
 use super::{Hit, Hits, Part, entering_leaving};

@@ -4,6 +4,8 @@
 //! `P` saves) and the screen's `0RGB` pixels, encoded for display ([`Encoding`]). A tile of
 //! pass k paints each pixel it traced over its k-step block ([`schedule::block`]), so the
 //! image refines in place; updates of any generation but the current one are dropped.
+//!
+//! Course book: [The live window](../../../../../docs/book/window.html) (`docs/src/window.md`).
 
 use super::progressive::Update;
 use super::schedule::{self, PASSES};

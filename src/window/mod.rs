@@ -13,6 +13,8 @@
 //!
 //! The road of one pixel is the renderer's own ([`crate::render::Tracer::pixel`]): the window
 //! only decides which pixels to trace first and where to paint them.
+//!
+//! Course book: [The live window](../../../../docs/book/window.html) (`docs/src/window.md`).
 
 pub mod canvas;
 pub mod overlay;

@@ -26,6 +26,8 @@
 //!
 //! Hit points are white squares, lights yellow diamonds. Every stroke has a black outline so
 //! it reads on any image.
+//!
+//! Course book: [The live window](../../../../../docs/book/window.html) (`docs/src/window.md`).
 
 use crate::camera::Camera;
 use crate::real::{Real, Vec3};

@@ -8,6 +8,8 @@
 //! window bumps a shared counter with every change (camera, stage, view, depth, scene), and
 //! the worker compares it with its job's before each tile, so the pass in flight stops at
 //! once and the window drops any tile of an older generation still on its way.
+//!
+//! Course book: [The live window](../../../../../docs/book/window.html) (`docs/src/window.md`).
 
 use std::sync::Arc;
 use std::sync::atomic::{AtomicBool, AtomicU64, Ordering};

@@ -19,6 +19,8 @@
 //! Passes run tile by tile ([`tiles`]), so a pass can be abandoned between tiles the moment
 //! the camera moves; a coarse pass takes larger tiles, so that each tile is about the same
 //! work.
+//!
+//! Course book: [The live window](../../../../../docs/book/window.html) (`docs/src/window.md`).
 
 use crate::render::Rect;
 

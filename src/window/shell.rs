@@ -4,6 +4,8 @@
 //! The loop never waits on rendering: the [`Worker`] renders on its own thread, and the loop
 //! only takes what has arrived since the last frame. minifb samples the keyboard once per
 //! `update`, so a loop blocked for a whole render would lose the taps made meanwhile.
+//!
+//! Course book: [The live window](../../../../../docs/book/window.html) (`docs/src/window.md`).
 
 use std::path::{Path, PathBuf};
 use std::sync::Arc;

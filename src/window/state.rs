@@ -16,6 +16,8 @@
 //! | H | print the keys |
 //! | Esc | quit (closing the window does too) |
 //! | left click | print the pixel's ray tree and draw it over the image |
+//!
+//! Course book: [The live window](../../../../../docs/book/window.html) (`docs/src/window.md`).
 
 use std::sync::Arc;
 

@@ -2,6 +2,7 @@
 
 use std::path::PathBuf;
 
+use serde::{Deserialize, Serialize};
 use whitted::offset::OffsetKind;
 use whitted::shapes::Formula;
 
@@ -10,15 +11,25 @@ use crate::settings::{Setting, settings};
 use crate::worker::{read_image, read_times};
 
 /// Error of an image against the reference, on displayed values (clamped to [0, 1]).
-#[derive(Clone, Copy, Debug, Default)]
+#[derive(Clone, Copy, Debug, Default, Serialize, Deserialize)]
 pub struct Error {
+    /// Root-mean-square error over all channels, in 8-bit levels.
+    #[serde(with = "crate::results::finite")]
     pub rmse: f64,
+    /// The largest error of a channel, in 8-bit levels.
+    #[serde(with = "crate::results::finite")]
     pub max: f64,
+    /// Share of pixels with a channel off by more than 1/255.
+    #[serde(with = "crate::results::finite")]
     pub off: f64,
+    /// Pixels whose centre ray hits nothing in one image and something in the other, or
+    /// another object.
     pub hit_miss: usize,
+    /// Channels that are NaN or ∞.
     pub non_finite: usize,
     /// Share of pixels off by more than 1/255 against the f64 robust error-bound render with
     /// the same samples and depth: the numerical error alone, without the sampling error.
+    #[serde(with = "crate::results::finite")]
     pub numeric: f64,
 }
 
@@ -66,11 +77,16 @@ pub fn compare(image: &Image, reference: &Image) -> Error {
     }
 }
 
-/// One row of the results.
+/// One row of the results (kept in the JSON by [`crate::results`]).
+#[derive(Debug)]
 pub struct Row {
+    /// "f32" or "f64": the build that rendered it.
     pub precision: &'static str,
+    /// The setting rendered.
     pub setting: Setting,
+    /// Median render time, in seconds.
     pub seconds: f64,
+    /// Error against the scene's reference.
     pub error: Error,
 }
 

@@ -1,81 +1,605 @@
-//! The plot: docs/tradeoff.svg, error against render time.
+//! The plot: docs/src/tradeoff.svg, error against render time, one panel per scene, with each
+//! scene's faster-and-more-accurate front.
+//!
+//! Both axes are logarithmic, with ticks only at round values (1, 2, 5 × a power of ten, or
+//! fewer where those would crowd), the same ranges in every panel so that panels compare. The
+//! legend has a panel of its own, so it hides no point. The drawing depends on the results
+//! alone (no date, no machine name), so the same JSON always gives the same bytes.
 
-use std::path::Path;
+use plotters::coord::Shift;
+use plotters::prelude::*;
+use plotters::style::text_anchor::{HPos, Pos, VPos};
 
 use crate::metrics::Row;
-use crate::settings::formula_name;
+use crate::report::scene_front;
+use crate::results::Results;
+use crate::settings::{SCENES, formula_name};
+use whitted::offset::OffsetKind;
 
-/// Error (RMSE, 8-bit levels) against render time, one series per precision, log-log.
-pub fn plot(rows: &[Row], path: &Path) -> Result<(), String> {
-    use plotters::prelude::*;
-    let fail = |e: String| format!("cannot draw {}: {e}", path.display());
-    // drawn into memory, then written atomically like every other output
+/// The picture's size in pixels.
+const SIZE: (u32, u32) = (900, 800);
+/// Font family of every text.
+const FONT: &str = "sans-serif";
+/// Nominal font sizes (plotters writes a nominal size s as 0.806·s px into the SVG): the
+/// title, the panels' titles, the ticks and the axes' titles, the legend's headings and its
+/// text.
+const TITLE_FONT: u32 = 24;
+const PANEL_FONT: u32 = 20;
+const AXIS_FONT: u32 = 17;
+const HEADING_FONT: u32 = 17;
+const LEGEND_FONT: u32 = 16;
+/// At most this many labelled ticks on an axis.
+const MAX_TICKS: usize = 8;
+
+/// The colour of each precision and formula pair (Okabe–Ito colours, which stay apart for
+/// colour-blind readers): warm for f32, cool for f64, dark for textbook, light for robust.
+const COLOURS: [(&str, &str, RGBColor); 4] = [
+    ("f32", "textbook", RGBColor(213, 94, 0)),
+    ("f32", "robust", RGBColor(230, 159, 0)),
+    ("f64", "textbook", RGBColor(0, 114, 178)),
+    ("f64", "robust", RGBColor(86, 180, 233)),
+];
+/// The front's line and labels.
+const FRONT: RGBColor = RGBColor(40, 40, 40);
+/// The legend's explanations and markers.
+const GREY: RGBColor = RGBColor(70, 70, 70);
+/// The lines of the grid.
+const GRID: RGBColor = RGBColor(215, 215, 215);
+
+/// The scenes' titles in their panels.
+const TITLES: [&str; 3] = [
+    "showcase",
+    "far: the showcase from 1e4 units away",
+    "grazing: eye 4 cm above a mirror floor",
+];
+
+/// The ticks of a logarithmic axis from `lo` to `hi` (both > 0): the values 1, 2 and 5 × a
+/// power of ten inside the range, or, where more than `max` of those fall inside, 1 and 3 ×,
+/// then powers of ten, then every second, third, … power of ten, whichever first gives at most
+/// `max` ticks. Increasing; each value is the double nearest its decimal form.
+pub fn log_ticks(lo: f64, hi: f64, max: usize) -> Vec<f64> {
+    let with = |mantissas: &[u32], every: i32| -> Vec<f64> {
+        let (first, last) = (lo.log10().floor() as i32, hi.log10().ceil() as i32);
+        let mut ticks = Vec::new();
+        for k in (first..=last).filter(|k| k.rem_euclid(every) == 0) {
+            for m in mantissas {
+                // parsed from its decimal form: 3e-1 is the double nearest 0.3, not 3 × 0.1
+                let v: f64 = format!("{m}e{k}").parse().expect("a number");
+                if (lo..=hi).contains(&v) {
+                    ticks.push(v);
+                }
+            }
+        }
+        ticks
+    };
+    for mantissas in [&[1, 2, 5][..], &[1, 3], &[1]] {
+        let ticks = with(mantissas, 1);
+        if ticks.len() <= max {
+            return ticks;
+        }
+    }
+    let mut every = 2;
+    loop {
+        let ticks = with(&[1], every);
+        if ticks.len() <= max.max(1) {
+            return ticks;
+        }
+        every += 1;
+    }
+}
+
+/// A tick's label: as few decimals as the value needs ("0.5", "2", "100").
+pub fn tick_label(v: f64) -> String {
+    let decimals = if v >= 1.0 || v <= 0.0 {
+        0
+    } else {
+        (-v.log10().floor()) as usize
+    };
+    format!("{v:.decimals$}")
+}
+
+/// The label of a front point: what sets its place on the time axis and the error axis, the
+/// samples per pixel or the recursion depth (the others are at depth 5).
+fn front_label(r: &Row) -> String {
+    if r.setting.depth != 5 {
+        format!("depth {}", r.setting.depth)
+    } else {
+        format!("{} spp", r.setting.samples)
+    }
+}
+
+/// A setting's colour.
+fn colour(r: &Row) -> RGBColor {
+    COLOURS
+        .iter()
+        .find(|c| c.0 == r.precision && c.1 == formula_name(r.setting.formula))
+        .map_or(BLACK, |c| c.2)
+}
+
+/// The outline of the fixed-ε marker, a triangle, around pixel (0, 0).
+const TRIANGLE: [(i32, i32); 4] = [(0, -6), (6, 4), (-6, 4), (0, -6)];
+/// Half the side of the scaled-ε marker, a square.
+const SQUARE: i32 = 4;
+/// The radius of the error-bound marker, a circle.
+const CIRCLE: i32 = 5;
+
+/// Plots `e` as the error axis holds it: errors below the axis (none in practice) sit on it.
+fn clamp(e: f64, floor: f64) -> f64 {
+    e.max(floor)
+}
+
+/// The nominal size of the front's labels (plotters draws a nominal size s as 0.806·s px).
+const LABEL_FONT: u32 = 16;
+
+/// A point, or a size, in pixels.
+pub type Pixel = (i32, i32);
+/// A box in pixels: left, top, right, bottom.
+pub type PixelBox = (i32, i32, i32, i32);
+
+/// The estimated size in pixels of `text` at nominal font size `size`: plotters writes
+/// 0.806·size px into the SVG, and a sans-serif character is about 0.55 em wide on average.
+fn text_size(text: &str, size: u32) -> Pixel {
+    let px = f64::from(size) * 0.806;
+    (
+        (text.chars().count() as f64 * px * 0.55).ceil() as i32,
+        px.ceil() as i32,
+    )
+}
+
+/// Where a label stands beside its point.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Side {
+    /// Below and to the left: the first choice for a point of the front, since a point there
+    /// would be faster and more accurate, so there is none.
+    LeftBelow,
+    /// To the left, centred on the point's height.
+    Left,
+    /// Below, centred.
+    Below,
+    /// Below and to the right.
+    RightBelow,
+    /// Above and to the left.
+    LeftAbove,
+    /// To the right.
+    Right,
+    /// Above, centred.
+    Above,
+}
+
+impl Side {
+    /// Every side, in the order they are tried.
+    pub const ALL: [Side; 7] = [
+        Side::LeftBelow,
+        Side::Left,
+        Side::Below,
+        Side::RightBelow,
+        Side::LeftAbove,
+        Side::Right,
+        Side::Above,
+    ];
+    /// The gap between a point and its label, in pixels.
+    const GAP: i32 = 8;
+
+    /// The text's anchor relative to the point, and how the text sits on it.
+    pub fn anchor(self) -> (Pixel, HPos, VPos) {
+        let g = Self::GAP;
+        match self {
+            Side::LeftBelow => ((-g, g / 2), HPos::Right, VPos::Top),
+            Side::Left => ((-g - 2, 0), HPos::Right, VPos::Center),
+            Side::Below => ((0, g + 2), HPos::Center, VPos::Top),
+            Side::RightBelow => ((g, g / 2), HPos::Left, VPos::Top),
+            Side::LeftAbove => ((-g, -g / 2), HPos::Right, VPos::Bottom),
+            Side::Right => ((g + 2, 0), HPos::Left, VPos::Center),
+            Side::Above => ((0, -g - 2), HPos::Center, VPos::Bottom),
+        }
+    }
+
+    /// The box of a label of size `(w, h)` on this side of the point `at`.
+    pub fn bounds(self, at: Pixel, (w, h): Pixel) -> PixelBox {
+        let ((dx, dy), hpos, vpos) = self.anchor();
+        let (x, y) = (at.0 + dx, at.1 + dy);
+        let left = match hpos {
+            HPos::Left => x,
+            HPos::Center => x - w / 2,
+            HPos::Right => x - w,
+        };
+        let top = match vpos {
+            VPos::Top => y,
+            VPos::Center => y - h / 2,
+            VPos::Bottom => y - h,
+        };
+        (left, top, left + w, top + h)
+    }
+}
+
+/// Whether two boxes overlap.
+fn overlaps(a: PixelBox, b: PixelBox) -> bool {
+    a.0 < b.2 && b.0 < a.2 && a.1 < b.3 && b.1 < a.3
+}
+
+/// Whether the segment from `p` to `q` passes through the box.
+fn crosses(p: Pixel, q: Pixel, b: PixelBox) -> bool {
+    let steps = (p.0 - q.0).abs().max((p.1 - q.1).abs()).max(1);
+    (0..=steps).any(|i| {
+        let t = f64::from(i) / f64::from(steps);
+        let x = f64::from(p.0) + t * f64::from(q.0 - p.0);
+        let y = f64::from(p.1) + t * f64::from(q.1 - p.1);
+        (f64::from(b.0)..=f64::from(b.2)).contains(&x)
+            && (f64::from(b.1)..=f64::from(b.3)).contains(&y)
+    })
+}
+
+/// The side of each label (its point and its size in pixels, in the order given): of the
+/// sides where the label stays inside `area` and clear of the labels placed before it, the one
+/// that covers the fewest markers (at `markers`, 6 px around each) and segments of the line
+/// through `line`, the first of [`Side::ALL`] among equals; `None` where no side is inside and
+/// clear.
+pub fn place_labels(
+    labels: &[(Pixel, Pixel)],
+    markers: &[Pixel],
+    line: &[Pixel],
+    area: PixelBox,
+) -> Vec<Option<Side>> {
+    const PAD: i32 = 3;
+    let mut placed: Vec<PixelBox> = Vec::new();
+    labels
+        .iter()
+        .map(|&(at, size)| {
+            let best = Side::ALL
+                .into_iter()
+                .map(|side| (side, side.bounds(at, size)))
+                .filter(|(_, b)| b.0 >= area.0 && b.1 >= area.1 && b.2 <= area.2 && b.3 <= area.3)
+                .filter(|(_, b)| {
+                    let grown = (b.0 - PAD, b.1 - PAD, b.2 + PAD, b.3 + PAD);
+                    placed.iter().all(|p| !overlaps(grown, *p))
+                })
+                .min_by_key(|(_, b)| {
+                    let covered = markers
+                        .iter()
+                        .filter(|m| overlaps(*b, (m.0 - 6, m.1 - 6, m.0 + 6, m.1 + 6)))
+                        .count();
+                    let crossed = line.windows(2).filter(|s| crosses(s[0], s[1], *b)).count();
+                    covered + crossed
+                });
+            best.map(|(side, b)| {
+                placed.push(b);
+                side
+            })
+        })
+        .collect()
+}
+
+/// The SVG text of the plot.
+pub fn svg(results: &Results) -> Result<String, String> {
+    let fail = |e: &dyn std::fmt::Display| format!("cannot draw the plot: {e}");
+    let rows = &results.rows;
+    let ms: Vec<f64> = rows.iter().map(|r| r.seconds * 1e3).collect();
+    let finite = |xs: &mut dyn Iterator<Item = f64>| -> (f64, f64) {
+        xs.filter(|x| x.is_finite() && *x > 0.0)
+            .fold((f64::INFINITY, 0.0), |(a, b), x| (a.min(x), b.max(x)))
+    };
+    let (t_min, t_max) = finite(&mut ms.iter().copied());
+    let (e_min, e_max) = finite(&mut rows.iter().map(|r| r.error.rmse));
+    if !(t_min.is_finite() && e_min.is_finite()) {
+        return Err(fail(&"no setting has a positive time and error"));
+    }
+    // room on the left for the labels of the fastest points of the front
+    let x_range = t_min / 2.4..t_max * 1.4;
+    let y_range = e_min / 1.6..e_max * 1.6;
+    let x_ticks = log_ticks(x_range.start, x_range.end, MAX_TICKS);
+    let y_ticks = log_ticks(y_range.start, y_range.end, MAX_TICKS);
+
     let mut svg = String::new();
     {
-        let root = SVGBackend::with_string(&mut svg, (900, 600)).into_drawing_area();
-        root.fill(&WHITE).map_err(|e| fail(e.to_string()))?;
-        let floor = 0.01;
-        let t_min = rows
-            .iter()
-            .map(|r| r.seconds * 1e3)
-            .fold(f64::INFINITY, f64::min);
-        let t_max = rows.iter().map(|r| r.seconds * 1e3).fold(0.0, f64::max);
-        let e_max = rows.iter().map(|r| r.error.rmse).fold(floor, f64::max);
-        let mut chart = ChartBuilder::on(&root)
-            .caption("whitted: error against render time", ("sans-serif", 22))
-            .margin(16)
-            .x_label_area_size(44)
-            .y_label_area_size(60)
-            .build_cartesian_2d(
-                (t_min * 0.8..t_max * 1.25).log_scale(),
-                (floor..e_max * 1.5).log_scale(),
+        let root = SVGBackend::with_string(&mut svg, SIZE).into_drawing_area();
+        root.fill(&WHITE).map_err(|e| fail(&e))?;
+        let body = root
+            .titled(
+                &format!(
+                    "whitted: error against render time ({}×{} pixels, both precisions)",
+                    results.width, results.height
+                ),
+                (FONT, TITLE_FONT),
             )
-            .map_err(|e| fail(e.to_string()))?;
-        chart
-            .configure_mesh()
-            .x_desc("render time (ms, median)")
-            .y_desc("RMSE against the reference (8-bit levels)")
-            .draw()
-            .map_err(|e| fail(e.to_string()))?;
-        let styles = [
-            ("f32", "textbook", RGBColor(214, 39, 40)),
-            ("f32", "robust", RGBColor(255, 152, 150)),
-            ("f64", "textbook", RGBColor(31, 119, 180)),
-            ("f64", "robust", RGBColor(140, 190, 230)),
-        ];
-        for (precision, formula, color) in styles {
-            let points: Vec<(f64, f64, usize)> = rows
-                .iter()
-                .filter(|r| r.precision == precision && formula_name(r.setting.formula) == formula)
-                .map(|r| (r.seconds * 1e3, r.error.rmse.max(floor), r.setting.scene))
-                .collect();
+            .map_err(|e| fail(&e))?;
+        let panels = body.split_evenly((2, 2));
+        for (scene, area) in panels.iter().take(SCENES.len()).enumerate() {
+            let of_scene: Vec<&Row> = rows.iter().filter(|r| r.setting.scene == scene).collect();
+            let mut chart = ChartBuilder::on(area)
+                .caption(TITLES[scene], (FONT, PANEL_FONT))
+                .margin_left(8)
+                .margin_right(22)
+                .margin_top(4)
+                .margin_bottom(8)
+                .x_label_area_size(46)
+                .y_label_area_size(64)
+                .build_cartesian_2d(
+                    x_range.clone().log_scale().with_key_points(x_ticks.clone()),
+                    y_range.clone().log_scale().with_key_points(y_ticks.clone()),
+                )
+                .map_err(|e| fail(&e))?;
             chart
-                .draw_series(points.iter().map(|&(t, e, scene)| {
-                    let style = color.filled();
-                    match scene {
-                        0 => Circle::new((t, e), 5, style).into_dyn(),
-                        1 => TriangleMarker::new((t, e), 6, style).into_dyn(),
-                        _ => Cross::new((t, e), 5, color.stroke_width(2)).into_dyn(),
-                    }
+                .configure_mesh()
+                .bold_line_style(GRID.stroke_width(1))
+                .light_line_style(WHITE.stroke_width(0))
+                .axis_style(BLACK.stroke_width(1))
+                .label_style((FONT, AXIS_FONT))
+                .axis_desc_style((FONT, AXIS_FONT))
+                .x_label_formatter(&|v| tick_label(*v))
+                .y_label_formatter(&|v| tick_label(*v))
+                .x_desc(format!("render time (ms, median of {} runs)", results.runs))
+                .y_desc("RMSE (8-bit levels)")
+                .draw()
+                .map_err(|e| fail(&e))?;
+
+            // the front under the markers, so that they stay visible on it
+            let floor = y_range.start;
+            let front = scene_front(rows, scene);
+            chart
+                .draw_series(LineSeries::new(
+                    front
+                        .iter()
+                        .map(|r| (r.seconds * 1e3, clamp(r.error.rmse, floor))),
+                    FRONT.stroke_width(2),
+                ))
+                .map_err(|e| fail(&e))?;
+            // hollow markers, a shape per offset strategy: where settings coincide, each
+            // outline still shows
+            let at = |r: &Row| (r.seconds * 1e3, clamp(r.error.rmse, floor));
+            let with = |kind: OffsetKind| of_scene.iter().filter(move |r| r.setting.offset == kind);
+            chart
+                .draw_series(with(OffsetKind::Fixed).map(|r| {
+                    EmptyElement::at(at(r))
+                        + PathElement::new(TRIANGLE.to_vec(), colour(r).stroke_width(2))
                 }))
-                .map_err(|e| fail(e.to_string()))?
-                .label(format!("{precision} {formula}"))
-                .legend(move |(x, y)| Circle::new((x, y), 5, color.filled()));
+                .map_err(|e| fail(&e))?;
+            chart
+                .draw_series(with(OffsetKind::Scaled).map(|r| {
+                    EmptyElement::at(at(r))
+                        + Rectangle::new(
+                            [(-SQUARE, -SQUARE), (SQUARE, SQUARE)],
+                            colour(r).stroke_width(2),
+                        )
+                }))
+                .map_err(|e| fail(&e))?;
+            chart
+                .draw_series(with(OffsetKind::ErrorBound).map(|r| {
+                    EmptyElement::at(at(r)) + Circle::new((0, 0), CIRCLE, colour(r).stroke_width(2))
+                }))
+                .map_err(|e| fail(&e))?;
+
+            // the labels of the front: one per samples-or-depth value, at its fastest point
+            let mut labelled: Vec<(&Row, String)> = Vec::new();
+            for r in &front {
+                let label = front_label(r);
+                if labelled.iter().all(|(_, l)| *l != label) {
+                    labelled.push((r, label));
+                }
+            }
+            let pixel = |r: &Row| chart.backend_coord(&at(r));
+            let (xs, ys) = chart.plotting_area().get_pixel_range();
+            let sides = place_labels(
+                &labelled
+                    .iter()
+                    .map(|(r, l)| (pixel(r), text_size(l, LABEL_FONT)))
+                    .collect::<Vec<_>>(),
+                &of_scene.iter().map(|r| pixel(r)).collect::<Vec<_>>(),
+                &front.iter().map(|r| pixel(r)).collect::<Vec<_>>(),
+                (xs.start, ys.start, xs.end, ys.end),
+            );
+            for ((r, label), side) in labelled.iter().zip(sides) {
+                let Some(side) = side else { continue };
+                let (offset, h, v) = side.anchor();
+                let style = TextStyle::from((FONT, LABEL_FONT).into_font())
+                    .color(&FRONT)
+                    .pos(Pos::new(h, v));
+                chart
+                    .plotting_area()
+                    .draw(&(EmptyElement::at(at(r)) + Text::new(label.clone(), offset, style)))
+                    .map_err(|e| fail(&e))?;
+            }
         }
-        chart
-            .configure_series_labels()
-            .background_style(WHITE.mix(0.85))
-            .border_style(BLACK)
-            .position(SeriesLabelPosition::UpperRight)
-            .draw()
-            .map_err(|e| fail(e.to_string()))?;
-        root.draw(&Text::new(
-            "● showcase   ▲ far   × grazing",
-            (80, 570),
-            ("sans-serif", 15),
-        ))
-        .map_err(|e| fail(e.to_string()))?;
-        root.present().map_err(|e| fail(e.to_string()))?;
+        if let Some(area) = panels.get(SCENES.len()) {
+            legend(area, results).map_err(|e| fail(&e))?;
+        }
+        root.present().map_err(|e| fail(&e))?;
     }
-    whitted::output::write_file(path, svg.as_bytes()).map_err(|e| e.to_string())
+    Ok(svg)
+}
+
+/// A line of the legend, starting at `at` (its left end, middle height).
+fn text(
+    s: &str,
+    at: (i32, i32),
+    size: u32,
+    colour: &'static RGBColor,
+) -> Text<'static, (i32, i32), String> {
+    Text::new(
+        s.to_string(),
+        at,
+        TextStyle::from((FONT, size).into_font())
+            .color(colour)
+            .pos(Pos::new(HPos::Left, VPos::Center)),
+    )
+}
+
+/// The legend, in the panel left free by the scenes.
+fn legend<DB: DrawingBackend>(
+    area: &DrawingArea<DB, Shift>,
+    results: &Results,
+) -> Result<(), DrawingAreaErrorKind<DB::ErrorType>> {
+    let (x0, mut y) = (20, 30);
+    let column = 220;
+    area.draw(&text(
+        "colour: precision, formulas",
+        (x0, y),
+        HEADING_FONT,
+        &BLACK,
+    ))?;
+    area.draw(&text(
+        "shape: offset",
+        (x0 + column, y),
+        HEADING_FONT,
+        &BLACK,
+    ))?;
+    let shapes = [
+        (OffsetKind::Fixed, "fixed ε"),
+        (OffsetKind::Scaled, "scaled ε"),
+        (OffsetKind::ErrorBound, "error bound"),
+    ];
+    for (k, (precision, formula, c)) in COLOURS.iter().enumerate() {
+        y += 26;
+        area.draw(&Rectangle::new(
+            [(x0 + 2, y - 6), (x0 + 14, y + 6)],
+            c.filled(),
+        ))?;
+        let name = format!("{precision}, {formula}");
+        area.draw(&text(&name, (x0 + 24, y), LEGEND_FONT, &BLACK))?;
+        if let Some((offset, name)) = shapes.get(k) {
+            let at = (x0 + column + 8, y);
+            let style = GREY.stroke_width(2);
+            match offset {
+                OffsetKind::Fixed => {
+                    area.draw(&(EmptyElement::at(at) + PathElement::new(TRIANGLE.to_vec(), style)))?
+                }
+                OffsetKind::Scaled => area.draw(
+                    &(EmptyElement::at(at)
+                        + Rectangle::new([(-SQUARE, -SQUARE), (SQUARE, SQUARE)], style)),
+                )?,
+                OffsetKind::ErrorBound => area.draw(&Circle::new(at, CIRCLE, style))?,
+            }
+            area.draw(&text(name, (x0 + column + 24, y), LEGEND_FONT, &BLACK))?;
+        }
+    }
+    y += 40;
+    area.draw(&PathElement::new(
+        vec![(x0, y), (x0 + 30, y)],
+        FRONT.stroke_width(2),
+    ))?;
+    let head = "faster-and-more-accurate front:";
+    area.draw(&text(head, (x0 + 40, y), HEADING_FONT, &BLACK))?;
+    for line in [
+        "no other setting of the scene is both faster and",
+        "more accurate. Its labels: samples per pixel (spp),",
+        "or the recursion depth at 1 spp (else depth 5)",
+    ] {
+        y += 22;
+        area.draw(&text(line, (x0, y), LEGEND_FONT, &GREY))?;
+    }
+    y += 18;
+    for line in [
+        "settings: each formula × offset at 1 spp, depth 5;".to_string(),
+        "textbook fixed ε and robust error bound also at".to_string(),
+        "4 and 16 spp; robust error bound at depth 1 and 2.".to_string(),
+        format!(
+            "Reference: f64, robust, error bound, {} spp, depth 12",
+            results.reference_samples
+        ),
+    ] {
+        y += 22;
+        area.draw(&text(&line, (x0, y), LEGEND_FONT, &GREY))?;
+    }
+    Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::{Side, log_ticks, overlaps, place_labels, tick_label};
+
+    const AREA: super::PixelBox = (0, 0, 400, 300);
+
+    #[test]
+    fn a_lone_label_goes_below_left_of_its_point() {
+        assert_eq!(
+            place_labels(&[((200, 100), (40, 12))], &[], &[], AREA),
+            vec![Some(Side::LeftBelow)]
+        );
+        assert_eq!(
+            Side::LeftBelow.bounds((200, 100), (40, 12)),
+            (152, 104, 192, 116)
+        );
+    }
+
+    #[test]
+    fn labels_stay_inside_the_area() {
+        // at the left edge the left sides (and the centred one) would leave it; at the
+        // bottom, the lower ones
+        let sides = place_labels(
+            &[((5, 100), (40, 12)), ((200, 295), (40, 12))],
+            &[],
+            &[],
+            AREA,
+        );
+        assert_eq!(sides, vec![Some(Side::RightBelow), Some(Side::LeftAbove)]);
+    }
+
+    #[test]
+    fn labels_do_not_overlap_and_one_that_cannot_fit_is_left_out() {
+        let labels = [((200, 100), (40, 12)), ((202, 101), (40, 12))];
+        let sides = place_labels(&labels, &[], &[], AREA);
+        let (a, b) = (sides[0].unwrap(), sides[1].unwrap());
+        assert!(!overlaps(
+            a.bounds(labels[0].0, labels[0].1),
+            b.bounds(labels[1].0, labels[1].1)
+        ));
+        // a tiny area: the second label has nowhere to go
+        let tiny = (150, 95, 230, 130);
+        let sides = place_labels(&labels, &[], &[], tiny);
+        assert_eq!(sides[0], Some(Side::LeftBelow));
+        assert_eq!(sides[1], None);
+    }
+
+    #[test]
+    fn labels_avoid_markers_and_the_line() {
+        // a marker where the first choice would go: the next side free of it is taken
+        let sides = place_labels(&[((200, 100), (40, 12))], &[(165, 114)], &[], AREA);
+        assert_eq!(sides, vec![Some(Side::Left)]);
+        // and a line through the left side too
+        let sides = place_labels(
+            &[((200, 100), (40, 12))],
+            &[(165, 114)],
+            &[(100, 100), (200, 100)],
+            AREA,
+        );
+        assert_eq!(sides, vec![Some(Side::Below)]);
+    }
+
+    #[test]
+    fn ticks_at_one_two_five_when_they_fit() {
+        assert_eq!(log_ticks(3.0, 150.0, 8), vec![5.0, 10.0, 20.0, 50.0, 100.0]);
+        assert_eq!(
+            log_ticks(0.35, 40.0, 8),
+            vec![0.5, 1.0, 2.0, 5.0, 10.0, 20.0]
+        );
+    }
+
+    #[test]
+    fn fewer_ticks_when_one_two_five_would_crowd() {
+        // 1-2-5 over 1 … 1000 gives 10 ticks: 1 and 3 gives 7
+        assert_eq!(
+            log_ticks(1.0, 1000.0, 8),
+            vec![1.0, 3.0, 10.0, 30.0, 100.0, 300.0, 1000.0]
+        );
+        assert_eq!(log_ticks(1.0, 1000.0, 4), vec![1.0, 10.0, 100.0, 1000.0]);
+        assert_eq!(log_ticks(1e-3, 1e6, 5), vec![1e-2, 1.0, 1e2, 1e4, 1e6]);
+    }
+
+    #[test]
+    fn ticks_are_the_doubles_of_their_decimal_form() {
+        assert_eq!(log_ticks(0.1, 1.0, 3), vec![0.1, 0.3, 1.0]);
+        assert_eq!(
+            log_ticks(0.25, 0.35, 8),
+            Vec::<f64>::new(),
+            "no 1, 2 or 5 × 10ᵏ inside"
+        );
+    }
+
+    #[test]
+    fn labels_have_the_decimals_they_need() {
+        assert_eq!(tick_label(0.5), "0.5");
+        assert_eq!(tick_label(0.05), "0.05");
+        assert_eq!(tick_label(0.3), "0.3");
+        assert_eq!(tick_label(2.0), "2");
+        assert_eq!(tick_label(100.0), "100");
+    }
 }

@@ -13,6 +13,7 @@ use std::process::Command;
 use crate::Args;
 use crate::measure::{self, Image};
 use crate::planet;
+use crate::results::ShapeTiming;
 use crate::settings::settings;
 use crate::shapes::shape_timings;
 
@@ -121,22 +122,20 @@ pub fn read_times(dir: &Path) -> Result<Vec<(String, f64)>, String> {
         .collect())
 }
 
-/// The workers' shape timings: (precision, shape, formula, ns per test).
-pub fn read_shape_timings(
-    dirs: &[(&'static str, PathBuf)],
-) -> Result<Vec<(&'static str, String, String, f64)>, String> {
+/// The workers' shape timings: ns per test for each precision, shape and formula.
+pub fn read_shape_timings(dirs: &[(&'static str, PathBuf)]) -> Result<Vec<ShapeTiming>, String> {
     let mut micro = Vec::new();
     for (precision, dir) in dirs {
         let text = fs::read_to_string(dir.join("shapes.tsv")).map_err(|e| e.to_string())?;
         for line in text.lines() {
             let parts: Vec<&str> = line.split('\t').collect();
             if let [shape, formula, ns] = parts[..] {
-                micro.push((
-                    *precision,
-                    shape.to_string(),
-                    formula.to_string(),
-                    ns.parse::<f64>().unwrap_or(f64::NAN),
-                ));
+                micro.push(ShapeTiming {
+                    precision: precision.to_string(),
+                    shape: shape.to_string(),
+                    formula: formula.to_string(),
+                    ns: ns.parse::<f64>().unwrap_or(f64::NAN),
+                });
             }
         }
     }

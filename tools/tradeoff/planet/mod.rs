@@ -346,13 +346,19 @@ pub struct Measured {
 }
 
 impl Measured {
-    /// Reads a worker's `planet.tsv`.
-    pub fn read(dir: &Path) -> Result<Self, String> {
+    /// The lines of a worker's `planet.tsv`.
+    pub fn lines(dir: &Path) -> Result<Vec<String>, String> {
         let path = dir.join("planet.tsv");
-        let text = std::fs::read_to_string(&path).map_err(|e| e.to_string())?;
-        let bad = |line: &str| format!("{}: cannot read `{line}`", path.display());
+        let text = std::fs::read_to_string(&path)
+            .map_err(|e| format!("cannot read {}: {e}", path.display()))?;
+        Ok(text.lines().map(str::to_string).collect())
+    }
+
+    /// Parses the lines of a worker's `planet.tsv` (`origin` names them in errors).
+    pub fn parse(lines: &[String], origin: &str) -> Result<Self, String> {
+        let bad = |line: &str| format!("{origin}: cannot read `{line}`");
         let mut m = Measured::default();
-        for line in text.lines() {
+        for line in lines {
             let f: Vec<&str> = line.split('\t').collect();
             let num = |i: usize| f.get(i).and_then(|s| s.parse::<f64>().ok());
             match f[0] {
