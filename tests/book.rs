@@ -454,3 +454,67 @@ fn every_module_links_the_book_page_that_teaches_it() {
     }
     assert!(bad.is_empty(), "{}", bad.join("\n"));
 }
+
+/// Without the manifest, or without mdBook, the book's commands stop with one line on stderr
+/// and exit status 2; `--check` on a figure that differs exits 1 and names it.
+#[test]
+fn the_book_commands_fail_in_one_line_with_status_2_or_name_what_differs() {
+    let whitted = env!("CARGO_BIN_EXE_whitted");
+    let empty = tempfile::tempdir().unwrap();
+    let run = |args: &[&str], dir: &Path| {
+        let out = std::process::Command::new(whitted)
+            .args(args)
+            .current_dir(dir)
+            .output()
+            .unwrap();
+        (
+            out.status.code(),
+            String::from_utf8_lossy(&out.stdout).into_owned(),
+            String::from_utf8_lossy(&out.stderr).into_owned(),
+        )
+    };
+    let root = empty.path().to_str().unwrap();
+    let (code, _, err) = run(&["figures", "--root", root], empty.path());
+    assert_eq!(code, Some(2));
+    assert!(
+        err.starts_with("error: ") && err.contains("figures.toml"),
+        "{err}"
+    );
+    assert_eq!(err.lines().count(), 1, "{err}");
+    std::fs::create_dir_all(empty.path().join("docs/src")).unwrap();
+    let (code, _, err) = run(
+        &["book", "--root", root, "--mdbook", "/nonexistent/mdbook"],
+        empty.path(),
+    );
+    assert_eq!(code, Some(2));
+    assert!(err.contains("cannot run `/nonexistent/mdbook`"), "{err}");
+    assert_eq!(err.lines().count(), 1, "{err}");
+    // a project whose one figure is not what its binary renders
+    write(
+        empty.path(),
+        "docs/figures.toml",
+        "[[figure]]\nfile = \"x.png\"\nbinary = \"ch01_camera_rays\"\nargs = [\"--width\", \"8\", \"--height\", \"6\"]\n",
+    );
+    std::fs::create_dir_all(empty.path().join("docs/src/figures")).unwrap();
+    png(
+        &empty.path().join("docs/src/figures"),
+        "x.png",
+        &[[0, 0, 0]; 48],
+        8,
+    );
+    let (code, out, _) = run(&["figures", "--check", "--root", root], empty.path());
+    assert_eq!(code, Some(1), "{out}");
+    assert!(
+        out.contains("docs/src/figures/x.png (docs/figures.toml:1): DIFFERS: 48 pixels"),
+        "{out}"
+    );
+    // rendered again, it is the same
+    let (code, _, err) = run(&["figures", "--root", root], empty.path());
+    assert_eq!(code, Some(0), "{err}");
+    let (code, out, _) = run(&["figures", "--check", "--root", root], empty.path());
+    assert_eq!(code, Some(0), "{out}");
+    assert!(
+        out.contains("x.png (docs/figures.toml:1): the same"),
+        "{out}"
+    );
+}

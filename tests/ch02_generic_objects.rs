@@ -174,6 +174,21 @@ fn ex2_9_quadratic_has_no_one_or_two_roots_by_the_sign_of_b2_minus_ac() {
     assert_eq!(discriminant(1.0, -5.0, 24.0), 1.0);
 }
 
+/// "Generic Objects": a double root (Δ = 0, a ≠ 0) is one number, returned twice: t₁ = t₂ =
+/// q/a. The other stable form, c/q, is the same root in exact arithmetic but rounds
+/// differently: for a = 3, b = −7, c = b²/a it is one ulp off q/a, in f64 and in f32, and a
+/// tangent ray would seem to cross the surface over a sliver of length 1 ulp.
+#[test]
+fn ex2_8_a_double_root_is_returned_as_two_equal_values() {
+    for (a, b) in [(3.0, -7.0), (3.0, -11.0), (6.0, -7.0), (11.0, -5.0)] {
+        let (a, b): (Real, Real) = (a, b);
+        let c = b * b / a;
+        let (t1, t2) = stable_roots(a, b, c, 0.0).unwrap();
+        assert_eq!(t1, -b / a, "a = {a}, b = {b}");
+        assert_eq!(t2, t1, "a = {a}, b = {b}: the double root twice");
+    }
+}
+
 /// "Generic Sphere", computed without cancellation: q = −(b + sign(b)·√Δ), t₁ = q/a,
 /// t₂ = c/q, in increasing order. t² − 10t + 24 (b = −5, Δ = 1): q = 6, roots 6 and 24/6 = 4;
 /// t² + 10t + 24 (b = 5): q = −6, roots −6 and −4; t² − 4t + 4 (Δ = 0): the double root 2,
@@ -623,6 +638,30 @@ fn ex2_23_ray_parallel_to_a_facet_misses_outside_and_passes_inside() {
     // parallel to it at y = 0.5 (inside its half-space)
     let hits = cube.intersect(&ray([0.0, 0.5, 5.0], [0.0, 0.0, -1.0]));
     assert_hits(&hits, &[(4.0, Part::Facet(4)), (6.0, Part::Facet(5))]);
+}
+
+/// "Convex Polyhedra": the solid is closed (n·P ≤ d), so a ray lying in the plane of a facet
+/// (n·d = 0 and n·e = d) is not outside that facet: along the cube's face y = 1 it enters at
+/// the top (t = 4) and leaves at the bottom (t = 6). Taking n·e ≥ d for "outside" misses it.
+#[test]
+fn ex2_23_a_ray_along_a_face_touches_the_closed_solid() {
+    let hits = Polyhedron::cube().intersect(&ray([0.0, 1.0, 5.0], [0.0, 0.0, -1.0]));
+    assert_hits(&hits, &[(4.0, Part::Facet(4)), (6.0, Part::Facet(5))]);
+}
+
+/// "Convex Polyhedra": in the half-space z ≤ 0 (one facet: `Polyhedron::new` takes any facets,
+/// scenes only closed solids), a ray from inside going up meets no facet that raises t_near,
+/// which stays −∞; its one hit is the finite bound t_far = 2, where it leaves (entering =
+/// false). From above, going down, the one hit enters.
+#[test]
+fn ex2_23_with_only_a_leaving_bound_the_one_hit_leaves() {
+    let half_space = Polyhedron::new(vec![polyhedron::Facet::new(Vec3::Z, 0.0).unwrap()]);
+    let up = half_space.intersect(&ray([0.0, 0.0, -2.0], [0.0, 0.0, 1.0]));
+    assert_hits(&up, &[(2.0, Part::Facet(0))]);
+    assert!(!up.as_slice()[0].entering, "going out of the solid");
+    let down = half_space.intersect(&ray([0.0, 0.0, 2.0], [0.0, 0.0, -1.0]));
+    assert_hits(&down, &[(2.0, Part::Facet(0))]);
+    assert!(down.as_slice()[0].entering, "coming into the solid");
 }
 
 /// "Convex Polyhedra": the octahedron |x| + |y| + |z| ≤ 1 along x at y = 0.25, z = 0.1 spans

@@ -158,6 +158,24 @@ fn ex4_4_point_under_a_sphere_is_lit_at_stage_3_and_shadowed_at_stage_4() {
     assert_vec_eq(dark, Vec3::splat(0.1), TOL);
 }
 
+/// The same floor, light and occluder as above, moved 100 units down: whether the light is in
+/// front of the point depends on L − P alone (n·(L − P) > 0), not on where the scene sits, so
+/// the point is still shadowed and its one feeler is still cast. (A test of n·(L + P), or of
+/// n·L, passes at the origin and fails here.)
+#[test]
+fn ex4_4_the_light_is_in_front_by_l_minus_p_wherever_the_scene_sits() {
+    let shadowed = scene(
+        "[camera]\neye = [0.0, -94.0, 0.001]\nlook_at = [0.0, -100.0, 0.0]\n[ambient]\nintensity = 1.0\n\
+         [[lights]]\nposition = [0.0, -90.0, 0.0]\n\
+         [materials.m]\nambient = 0.1\ndiffuse = 0.6\nspecular = 0.0\n\
+         [[objects]]\nplane = { point = [0.0, -100.0, 0.0], normal = [0.0, 1.0, 0.0] }\nmaterial = \"m\"\n\
+         [[objects]]\nsphere = { center = [0.0, -92.0, 0.0], radius = 0.5 }\n",
+    );
+    let (dark, stats) = centre(&shadowed, Stage::Shadows);
+    assert_vec_eq(dark, Vec3::splat(0.1), TOL);
+    assert_eq!(stats.shadow, 1);
+}
+
 /// A scene of one convex object (a lit sphere), or one lit plane: nothing can shadow a point
 /// that faces the light, so stage 4 must equal stage 3 pixel for pixel; `n_bad` counts the
 /// pixels that differ.

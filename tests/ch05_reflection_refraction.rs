@@ -454,6 +454,44 @@ fn ex5_5_the_recursion_stops_at_max_depth_or_at_the_weight_limit() {
     assert_eq!(at_5, at_4);
 }
 
+/// A row of 20 panes of clear glass (k_t = 0.5, k_r = 0, index 1: rays go straight through),
+/// one unit apart, seen head-on with max_depth 50: the k-th transmitted ray carries weight
+/// 0.5^k, so rays 1 to 9 are traced (0.5⁹ ≈ 0.002 ≥ 10⁻³) and the tenth is stopped by its weight
+/// (0.5¹⁰ ≈ 0.00098), as the mirror rays between two mirrors are. The colour is then the
+/// ambient light of the first ten panes, ρa·Σ 0.5^k for k = 0…9.
+#[test]
+fn ex5_5_a_transmitted_ray_too_faint_to_matter_is_not_traced() {
+    let mut text = String::from(
+        "[camera]\neye = [0.0, 0.0, 0.0]\nlook_at = [0.0, 0.0, -1.0]\n[render]\nmax_depth = 50\n\
+         [materials.pane]\nambient = 0.1\ndiffuse = 0.0\nspecular = 0.0\ntransmission = 0.5\nreflection = 0.0\nior = 1.0\n",
+    );
+    for k in 1..=20 {
+        text += &format!(
+            "[[objects]]\nplane = {{ point = [0.0, 0.0, -{k}.0], normal = [0.0, 0.0, 1.0] }}\nmaterial = \"pane\"\n"
+        );
+    }
+    let s = scene(&text);
+    let mut o = Options::for_scene(&s, Stage::ReflectionRefraction);
+    (o.width, o.height) = (1, 1);
+    let tree = Tracer::new(&s, &o).inspect(0, 0);
+    let mut hit = tree.samples[0].ray.hit.clone().unwrap();
+    let mut through = 0;
+    while let Some(branch) = hit.branches.first() {
+        assert_eq!(branch.kind, RayKind::Transmitted);
+        through += 1;
+        assert_abs_diff_eq!(branch.weight, 0.5_f64.powi(through) as Real, epsilon = TOL);
+        hit = branch.hit.clone().unwrap_or_else(|| {
+            panic!("transmitted ray {through} passed all 20 panes: the tenth should be stopped")
+        });
+    }
+    assert_eq!(through, 9);
+    assert_eq!(hit.stopped, vec![(RayKind::Transmitted, Stop::Weight)]);
+    let (c, stats) = centre(&s, Stage::ReflectionRefraction);
+    let expected: f64 = (0..10).map(|k| 0.1 * 0.5_f64.powi(k)).sum();
+    assert_vec_eq(c, Vec3::splat(expected as Real), 1e-5);
+    assert_eq!(stats.refracted, 9);
+}
+
 /// "Lighting Equations", as the inspector sees it: the floor of [`FIVE_TERMS`] sends its
 /// transmitted ray first (k_t = 0.5, weight 0.5, depth 1), which brings back the background
 /// (0.2, 0.4, 0.6), then its mirror ray (k_r = 0.3), which brings back the ceiling's ambient

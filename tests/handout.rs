@@ -61,11 +61,17 @@ fn every_exercise_has_one_solution_region_in_its_function() {
     }
 }
 
-/// The lines of each solution that appear nowhere else in the project: the handout's test
-/// looks for them.
+/// The lines of each solution that appear nowhere else in the project (its files as git sees
+/// them: tracked, or new and not ignored, so that no build or mutation-testing output counts):
+/// the handout's test looks for them.
 fn unique_lines(m: &Manifest) -> Vec<(String, Vec<String>)> {
-    let project = texts(&root());
-    let regions = handout::regions(&root(), m).unwrap();
+    let root = root();
+    let project: BTreeMap<PathBuf, String> = whitted::course::prove::project_files(&root)
+        .unwrap()
+        .into_iter()
+        .filter_map(|f| Some((f.clone(), std::fs::read_to_string(root.join(&f)).ok()?)))
+        .collect();
+    let regions = handout::regions(&root, m).unwrap();
     let count = |line: &str| -> usize {
         project
             .values()

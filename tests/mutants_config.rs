@@ -104,7 +104,7 @@ fn every_excluded_mutant_has_its_reason_written_above_it() {
     let text = std::fs::read_to_string(root().join(".cargo/mutants.toml")).unwrap();
     let config = config();
     for regex in &config.exclude_re {
-        let quoted = toml::Value::String(regex.clone()).to_string();
+        let quoted = format!("\"{}\"", regex.replace('\\', "\\\\").replace('"', "\\\""));
         let at = text
             .find(&quoted)
             .unwrap_or_else(|| panic!("{quoted} not found as written"));

@@ -34,6 +34,7 @@ use std::path::{Path, PathBuf};
 use serde::Deserialize;
 
 use super::Error;
+use super::manifest::{error_at, from_toml};
 use crate::error::line_col;
 
 /// The largest difference, in 8-bit levels, between a committed figure and a fresh render of
@@ -88,19 +89,8 @@ pub fn read_figures(path: &Path) -> Result<Vec<Figure>, Error> {
 /// `NAME.png` (no directory) named once, each `binary` one of [`BINARIES`], and `args` must
 /// not say where to write (`-o`/`--output`): the manifest's `file` does.
 pub fn parse_figures(text: &str, file: &str) -> Result<Vec<Figure>, Error> {
-    let err = |span: Range<usize>, message: String| {
-        let (line, col) = line_col(text, span.start);
-        Error::Manifest {
-            file: file.to_string(),
-            line,
-            col,
-            message,
-        }
-    };
-    let raw: RawFigures = toml::from_str(text).map_err(|e| {
-        let message = e.message().trim().replace('\n', " ");
-        err(e.span().unwrap_or(0..0), message)
-    })?;
+    let err = |span: Range<usize>, message: String| error_at(text, file, span, message);
+    let raw: RawFigures = from_toml(text, file)?;
     let mut seen: HashMap<String, usize> = HashMap::new();
     let mut figures = Vec::new();
     for spanned in &raw.figure {
@@ -259,7 +249,7 @@ impl std::fmt::Display for Problem {
     }
 }
 
-/// The Markdown pages under `dir`, sorted, found recursively.
+/// The files under `dir` (and its subdirectories) whose extension is `extension`, sorted.
 pub fn pages(dir: &Path, extension: &str) -> Result<Vec<PathBuf>, Error> {
     let mut found = Vec::new();
     let mut stack = vec![dir.to_path_buf()];

@@ -72,7 +72,7 @@ pub fn regions(root: &Path, manifest: &Manifest) -> Result<Vec<Region>, Error> {
     for r in &out {
         known.entry(r.file.clone()).or_default().push(r.bytes.start);
     }
-    for file in rust_files(&root.join("src"))? {
+    for file in super::book::pages(&root.join("src"), "rs")? {
         let text = std::fs::read_to_string(&file).map_err(|err| Error::io(&file, err))?;
         let relative = file.strip_prefix(root).unwrap_or(&file).to_path_buf();
         let mut offset = 0;
@@ -143,24 +143,6 @@ fn region_in(text: &str, entry: usize, e: &Entry, at: &Location) -> Result<Regio
         Some(_) => format!("`{BEGIN} {id}` is not closed by `{END}`"),
         None => format!("the body has no `{BEGIN} {id}` … `{END}` region"),
     }))
-}
-
-/// The Rust files under `dir`, sorted.
-fn rust_files(dir: &Path) -> Result<Vec<PathBuf>, Error> {
-    let mut out = Vec::new();
-    let mut stack = vec![dir.to_path_buf()];
-    while let Some(d) = stack.pop() {
-        for entry in std::fs::read_dir(&d).map_err(|e| Error::io(&d, e))? {
-            let path = entry.map_err(|e| Error::io(&d, e))?.path();
-            if path.is_dir() {
-                stack.push(path);
-            } else if path.extension().is_some_and(|x| x == "rs") {
-                out.push(path);
-            }
-        }
-    }
-    out.sort();
-    Ok(out)
 }
 
 /// The directory of chapter `chapter` under `chapters/` (`ch02_generic_objects`), or

@@ -145,22 +145,34 @@ pub fn load(path: &Path) -> Result<Manifest, Error> {
     parse(&text, &path.display().to_string())
 }
 
+/// A mistake at byte range `span` of the TOML text `text` of `file`, reported as
+/// `file:line:col: message`.
+pub(crate) fn error_at(text: &str, file: &str, span: Range<usize>, message: String) -> Error {
+    let (line, col) = line_col(text, span.start);
+    Error::Manifest {
+        file: file.to_string(),
+        line,
+        col,
+        message,
+    }
+}
+
+/// Reads TOML text into `T`; a syntax error, a missing or unknown key or a wrong type is
+/// reported where it is, in one line ([`error_at`]).
+pub(crate) fn from_toml<T: serde::de::DeserializeOwned>(
+    text: &str,
+    file: &str,
+) -> Result<T, Error> {
+    toml::from_str(text).map_err(|e| {
+        let message = e.message().trim().replace('\n', " ");
+        error_at(text, file, e.span().unwrap_or(0..0), message)
+    })
+}
+
 /// Checks the manifest text `text`; `file` names it in messages.
 pub fn parse(text: &str, file: &str) -> Result<Manifest, Error> {
-    let err = |span: Range<usize>, message: String| {
-        let (line, col) = line_col(text, span.start);
-        Error::Manifest {
-            file: file.to_string(),
-            line,
-            col,
-            message,
-        }
-    };
-
-    let raw: RawManifest = toml::from_str(text).map_err(|e| {
-        let message = e.message().trim().replace('\n', " ");
-        err(e.span().unwrap_or(0..0), message)
-    })?;
+    let err = |span: Range<usize>, message: String| error_at(text, file, span, message);
+    let raw: RawManifest = from_toml(text, file)?;
 
     let (test, filter) = (&raw.prove.get_ref().test, &raw.prove.get_ref().filter);
     if test.get_ref().is_empty() || test.get_ref().contains(char::is_whitespace) {
