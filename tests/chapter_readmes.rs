@@ -11,34 +11,23 @@ fn root() -> PathBuf {
     PathBuf::from(env!("CARGO_MANIFEST_DIR"))
 }
 
-/// The README of chapter `n`.
-fn readme(n: u8) -> String {
-    let dir = std::fs::read_dir(root().join("chapters"))
+/// The entry of `dir` (below the project's root) whose name starts with `prefix`.
+fn entry(dir: &str, prefix: &str) -> PathBuf {
+    std::fs::read_dir(root().join(dir))
         .unwrap()
         .map(|e| e.unwrap().path())
-        .find(|p| {
-            p.file_name()
-                .unwrap()
-                .to_string_lossy()
-                .starts_with(&format!("ch0{n}_"))
-        })
-        .unwrap_or_else(|| panic!("no chapters/ch0{n}_* directory"));
-    std::fs::read_to_string(dir.join("README.md")).unwrap()
+        .find(|p| p.file_name().unwrap().to_string_lossy().starts_with(prefix))
+        .unwrap_or_else(|| panic!("nothing named {dir}/{prefix}*"))
+}
+
+/// The README of chapter `n`.
+fn readme(n: u8) -> String {
+    std::fs::read_to_string(entry("chapters", &format!("ch0{n}_")).join("README.md")).unwrap()
 }
 
 /// The course book's page of chapter `n` (`docs/src/ch0N-….md`).
 fn page(n: u8) -> String {
-    let path = std::fs::read_dir(root().join("docs/src"))
-        .unwrap()
-        .map(|e| e.unwrap().path())
-        .find(|p| {
-            p.file_name()
-                .unwrap()
-                .to_string_lossy()
-                .starts_with(&format!("ch0{n}-"))
-        })
-        .unwrap_or_else(|| panic!("no docs/src/ch0{n}-*.md page"));
-    std::fs::read_to_string(path).unwrap()
+    std::fs::read_to_string(entry("docs/src", &format!("ch0{n}-"))).unwrap()
 }
 
 /// The text of the section `## title` (up to the next `## `).
