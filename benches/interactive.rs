@@ -13,10 +13,10 @@ use std::time::{Duration, Instant};
 
 use whitted::output::Encoding;
 use whitted::render::{Options, Stage};
-use whitted::window::canvas::Canvas;
-use whitted::window::progressive::{Update, Worker};
-use whitted::window::schedule::PASSES;
-use whitted::window::state::{Action, Command, Input, State, Turn};
+use whitted_app::window::canvas::Canvas;
+use whitted_app::window::progressive::{Update, Worker};
+use whitted_app::window::schedule::PASSES;
+use whitted_app::window::state::{Action, Command, Input, State, Turn};
 
 fn median(v: &mut [f64]) -> f64 {
     v.sort_by(f64::total_cmp);
@@ -34,7 +34,7 @@ fn main() {
         .find_map(|a| a.parse().ok())
         .unwrap_or(21)
         .max(1);
-    let scene = whitted::cli::read_scene(None).expect("the showcase loads");
+    let scene = whitted::scene::showcase().expect("the showcase loads");
     let mut options = Options::for_scene(&scene, Stage::ReflectionRefraction);
     (options.width, options.height) = (640, 480);
     let mut state = State::new(scene, options, Stage::ReflectionRefraction);

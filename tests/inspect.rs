@@ -2,6 +2,8 @@
 //! its colour is the rendered pixel bit for bit, its numbers add up to that colour the way the
 //! notes' I = I_a + I_d + I_s + I_l + I_r says, and it says why each branch stopped.
 
+// the helpers of the student's tests, shared
+#[path = "../crates/whitted/tests/common/mod.rs"]
 mod common;
 
 use common::scene;
@@ -11,7 +13,7 @@ use whitted::render::{Framebuffer, Options, RayKind, Stage, Stats, Stop, Tracer,
 use whitted::scene::Scene;
 use whitted::shadow;
 
-const SHOWCASE: &str = include_str!("../scenes/showcase.toml");
+use whitted::scene::SHOWCASE;
 const GLASS: &str = include_str!("../scenes/ch05_reflection_refraction.toml");
 
 fn options(scene: &Scene, stage: Stage, width: u32, height: u32) -> Options {

@@ -1,12 +1,82 @@
-//! The layers a newcomer reads: the library's modules depend on one another without cycles,
-//! the core types carry no command-line code, and the road of one pixel holds no speed
-//! machinery. These read the source files themselves.
+//! The layers a newcomer reads: the workspace's crates depend on one another one way (course
+//! tools → (cargo) → the programs → the renderer), the renderer's modules depend on one another
+//! without cycles, the renderer carries no command-line code, and the road of one pixel holds no
+//! speed machinery. These read the manifests and source files themselves.
 
 use std::collections::{BTreeMap, BTreeSet};
 use std::path::{Path, PathBuf};
 
+/// The workspace's root: this package is its `tests/`.
+fn root() -> PathBuf {
+    PathBuf::from(env!("CARGO_MANIFEST_DIR"))
+        .parent()
+        .expect("tests/ sits in the workspace's root")
+        .to_path_buf()
+}
+
+/// The renderer's sources.
 fn src() -> PathBuf {
-    PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("src")
+    root().join("crates/whitted/src")
+}
+
+/// The packages a crate's manifest names in `section` (`dependencies`, `dev-dependencies` …).
+fn named(manifest: &str, section: &str) -> BTreeSet<String> {
+    let path = root().join(manifest);
+    let text = std::fs::read_to_string(&path).unwrap();
+    let table: toml::Table = text.parse().unwrap();
+    table
+        .get(section)
+        .and_then(|v| v.as_table())
+        .map(|t| t.keys().cloned().collect())
+        .unwrap_or_default()
+}
+
+/// The crates depend one way: the renderer on none of the others and on nothing a command line,
+/// a window or a course tool needs; the programs on the renderer only; the course tools on
+/// neither (they run cargo on a project, so a student's edit never rebuilds them); and nothing
+/// under `crates/` on the tools, benchmarks or these tests.
+#[test]
+fn the_crates_depend_one_way() {
+    let core = named("crates/whitted/Cargo.toml", "dependencies");
+    let app = named("crates/whitted-app/Cargo.toml", "dependencies");
+    let course = named("crates/whitted-course/Cargo.toml", "dependencies");
+    let outside = ["whitted-tools", "whitted-benches", "whitted-tests"];
+    for (name, deps) in [
+        ("whitted", &core),
+        ("whitted-app", &app),
+        ("whitted-course", &course),
+    ] {
+        for o in outside {
+            assert!(!deps.contains(o), "{name} depends on {o}: {deps:?}");
+        }
+    }
+    for not_core in [
+        "whitted-app",
+        "whitted-course",
+        "clap",
+        "minifb",
+        "indicatif",
+        "syn",
+        "notify",
+        "roxmltree",
+        "plotters",
+    ] {
+        assert!(
+            !core.contains(not_core),
+            "the renderer depends on {not_core}: {core:?}"
+        );
+    }
+    assert!(
+        app.contains("whitted") && !app.contains("whitted-course"),
+        "{app:?}"
+    );
+    assert!(
+        !course.contains("whitted") && !course.contains("whitted-app"),
+        "the course tools depend on the code they grade: {course:?}"
+    );
+    // the student's tests need no more than the renderer and approx
+    let dev = named("crates/whitted/Cargo.toml", "dev-dependencies");
+    assert_eq!(dev, BTreeSet::from(["approx".to_string()]), "{dev:?}");
 }
 
 /// Every `.rs` file under `dir`, recursively.
@@ -105,18 +175,18 @@ fn the_modules_form_no_cycle() {
     assert!(!deps["accel"].contains("render"), "{:?}", deps["accel"]);
 }
 
-/// Core types carry no command-line code: `clap` appears in `src/cli.rs` only (the binaries
-/// and tools have their own mains).
+/// The renderer carries no command-line code: `clap` appears nowhere in its sources (the
+/// command line is `whitted-app`'s).
 #[test]
-fn only_the_command_line_module_knows_clap() {
+fn the_renderer_knows_no_command_line() {
     let mut found = Vec::new();
     for file in rust_files(&src()) {
         let text = code(&std::fs::read_to_string(&file).unwrap());
-        if file.file_name().unwrap() != "cli.rs" && text.contains("clap") {
+        if text.contains("clap") {
             found.push(file.display().to_string());
         }
     }
-    assert!(found.is_empty(), "clap outside src/cli.rs: {found:?}");
+    assert!(found.is_empty(), "clap in the renderer: {found:?}");
 }
 
 /// The road of one pixel (`src/render/tracer.rs`) is plain: no tile, packet, mailbox or

@@ -24,7 +24,7 @@ const H: u32 = 48;
 const SENTINEL: Vec3 = Vec3::new(-1.0, -2.0, -3.0);
 
 fn showcase() -> Scene {
-    whitted::cli::read_scene(None).expect("the showcase parses")
+    whitted::scene::showcase().expect("the showcase parses")
 }
 
 /// The showcase's options for chapter 5 at `w` × `h`.

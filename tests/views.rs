@@ -1,6 +1,8 @@
 //! The views that need a scale or a palette (`--view depth|shadows|rays`): their scales are
 //! fixed before the first pixel, and their colours say what they claim to.
 
+// the helpers of the student's tests, shared
+#[path = "../crates/whitted/tests/common/mod.rs"]
 mod common;
 
 use common::scene;

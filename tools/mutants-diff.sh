@@ -18,9 +18,9 @@ if ! git rev-parse -q --verify "$base^{commit}" >/dev/null; then
 fi
 diff="$(mktemp)"
 trap 'rm -f "$diff"' EXIT
-git diff "$base" -- src > "$diff"
+git diff "$base" -- crates/whitted/src > "$diff"
 if [ ! -s "$diff" ]; then
-  echo "the change since $base touches nothing under src/: nothing to mutate"
+  echo "the change since $base touches nothing under crates/whitted/src/: nothing to mutate"
   exit 0
 fi
 n=$(cargo mutants --in-diff "$diff" --list | wc -l)

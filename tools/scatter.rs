@@ -25,7 +25,7 @@ struct Args {
     #[arg(long, default_value_t = 720, value_parser = clap::value_parser!(u32).range(1..=65_535))]
     height: u32,
     /// How the spheres are spread: a field growing with N, or a fog of shrinking spheres.
-    #[arg(long, value_enum, default_value_t = scatter::Layout::Field)]
+    #[arg(long, value_parser = whitted_app::cli::choice::<scatter::Layout>(), default_value = scatter::Layout::Field.name())]
     layout: scatter::Layout,
     /// Write the scene for POV-Ray 3.7 instead of whitted (for `benches/povray/scaling.sh`);
     /// `--width` and `--height` then go on POV-Ray's command line (+W, +H).
@@ -37,7 +37,7 @@ struct Args {
 }
 
 fn main() -> ExitCode {
-    let a: Args = whitted::cli::parse_args();
+    let a: Args = whitted_app::cli::parse_args();
     let text = if a.pov {
         scatter::scene_pov(a.n as usize, a.seed, a.layout)
     } else {

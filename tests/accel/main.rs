@@ -1,7 +1,8 @@
 //! Speed without changing a pixel (notes: "Computational Aspects"): every acceleration
 //! technique gives exactly the brute-force image, whatever the number of threads.
 
-#[path = "../common/mod.rs"]
+// the helpers of the student's tests, shared
+#[path = "../../crates/whitted/tests/common/mod.rs"]
 mod common;
 
 mod boxes;
@@ -20,7 +21,7 @@ use whitted::render::{self, Framebuffer, Options, Stage, Stats};
 use whitted::scene::Scene;
 
 fn showcase() -> Scene {
-    whitted::cli::read_scene(None).expect("the showcase parses")
+    whitted::scene::showcase().expect("the showcase parses")
 }
 
 fn render_with(

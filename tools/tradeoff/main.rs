@@ -212,7 +212,7 @@ mod tests {
 
     /// The committed pages: docs/src/ of this repository.
     fn committed() -> &'static Path {
-        Path::new(concat!(env!("CARGO_MANIFEST_DIR"), "/docs/src"))
+        Path::new(concat!(env!("CARGO_MANIFEST_DIR"), "/../docs/src"))
     }
 
     /// The figures cannot drift: re-plotting the committed JSON gives the committed SVG and

@@ -50,7 +50,7 @@ pub fn build_f32() -> Result<PathBuf, String> {
     let manifest = env!("CARGO_MANIFEST_DIR");
     let target = std::env::var_os("CARGO_TARGET_DIR")
         .map(PathBuf::from)
-        .unwrap_or_else(|| Path::new(manifest).join("target"))
+        .unwrap_or_else(|| Path::new(manifest).join("../target"))
         .join("tradeoff-f32");
     let cargo = std::env::var_os("CARGO").unwrap_or_else(|| "cargo".into());
     eprintln!("building the f32 variant in {} …", target.display());

@@ -1,0 +1,409 @@
+//! The student's loop, measured as a student lives it: on a fresh handout in a temporary
+//! directory, the time to the first verdict (cold `target/`, crates already downloaded), then,
+//! putting the reference bodies back one exercise at a time (each a save), the time from the
+//! save to the verdict and to the chapter's picture, the size of `target/` at the end, and the
+//! time to grade one submission after the first.
+//!
+//! ```text
+//! cargo bench -p whitted-benches --bench student_loop                    # this project
+//! cargo bench -p whitted-benches --bench student_loop -- --project DIR   # another build of it
+//!     [--runs N]    first verdicts on N fresh handouts (median), default 1
+//!     [--saves N]   put back N exercises spread over the chapters, default all
+//!     [--no-grade]  skip the grading
+//! ```
+//!
+//! It measures this workspace's layout (`cargo learn`: the verdict is the first line of the
+//! report, the picture the `picture:` line after it) and the single-crate layout before it
+//! (`cargo run --release --bin whitted -- learn`, the command that handout documented, whose
+//! report comes at its end; the picture is `cargo run --release --bin chNN …`, as that
+//! handout's README said), so that both are measured by one command. Times are wall-clock,
+//! medians and 90th percentiles of the saves; the machine should be otherwise idle.
+
+use std::io::{BufRead, BufReader};
+use std::path::{Path, PathBuf};
+use std::process::{Command, Stdio};
+use std::time::{Duration, Instant};
+
+use whitted_learn::layout::{BEGIN, END};
+use whitted_learn::manifest;
+
+/// The two layouts this benchmark knows.
+#[derive(Clone, Copy, Debug, PartialEq)]
+enum Layout {
+    /// This workspace: crates/whitted, `cargo learn`.
+    Workspace,
+    /// The single crate before it: src/, `cargo run --release --bin whitted -- learn`.
+    SingleCrate,
+}
+
+impl Layout {
+    fn of(project: &Path) -> Layout {
+        if project.join("crates/whitted-learn").is_dir() {
+            Layout::Workspace
+        } else {
+            Layout::SingleCrate
+        }
+    }
+
+    /// The command a student runs for a verdict, in the handout.
+    fn verdict(self) -> Vec<&'static str> {
+        match self {
+            Layout::Workspace => vec!["learn"],
+            Layout::SingleCrate => vec!["run", "--release", "--bin", "whitted", "--", "learn"],
+        }
+    }
+
+    /// The reference project's `whitted` tool, as a command run in `project`.
+    fn tool(self) -> Vec<&'static str> {
+        match self {
+            Layout::Workspace => {
+                vec![
+                    "run",
+                    "--release",
+                    "-q",
+                    "-p",
+                    "whitted-course",
+                    "--bin",
+                    "whitted",
+                    "--",
+                ]
+            }
+            Layout::SingleCrate => vec!["run", "--release", "-q", "--bin", "whitted", "--"],
+        }
+    }
+}
+
+struct Args {
+    project: PathBuf,
+    runs: usize,
+    saves: Option<usize>,
+    grade: bool,
+}
+
+fn args() -> Result<Args, String> {
+    let mut out = Args {
+        project: PathBuf::from(concat!(env!("CARGO_MANIFEST_DIR"), "/..")),
+        runs: 1,
+        saves: None,
+        grade: true,
+    };
+    let mut it = std::env::args().skip(1);
+    while let Some(a) = it.next() {
+        let mut value = |name: &str| it.next().ok_or(format!("{name} needs a value"));
+        match a.as_str() {
+            "--project" => out.project = PathBuf::from(value("--project")?),
+            "--runs" => {
+                out.runs = value("--runs")?
+                    .parse()
+                    .map_err(|e| format!("--runs: {e}"))?
+            }
+            "--saves" => {
+                out.saves = Some(
+                    value("--saves")?
+                        .parse()
+                        .map_err(|e| format!("--saves: {e}"))?,
+                )
+            }
+            "--no-grade" => out.grade = false,
+            "--bench" => {} // what `cargo bench` adds
+            other => {
+                return Err(format!(
+                    "unknown argument `{other}` (see the file's header)"
+                ));
+            }
+        }
+    }
+    out.project = out
+        .project
+        .canonicalize()
+        .map_err(|e| format!("{}: {e}", out.project.display()))?;
+    Ok(out)
+}
+
+fn cargo(dir: &Path, args: &[&str]) -> Command {
+    let mut c = Command::new(whitted_learn::cargo::program());
+    c.args(args)
+        .current_dir(dir)
+        .env_remove("CARGO_TARGET_DIR")
+        .env("NO_COLOR", "1")
+        .stdin(Stdio::null());
+    c
+}
+
+/// Runs `command`; returns when its stdout showed a line starting with one of `verdict`
+/// (or the end, when `verdict` is empty) and when it showed a line starting with `picture`,
+/// and the whole output.
+fn timed(
+    mut command: Command,
+    verdict: &[&str],
+    picture: Option<&str>,
+) -> (Duration, Option<Duration>, String) {
+    let started = Instant::now();
+    let mut child = command
+        .stdout(Stdio::piped())
+        .stderr(Stdio::null())
+        .spawn()
+        .expect("cargo runs");
+    let mut seen_verdict = None;
+    let mut seen_picture = None;
+    let mut text = String::new();
+    if let Some(out) = child.stdout.take() {
+        for line in BufReader::new(out).lines().map_while(Result::ok) {
+            if seen_verdict.is_none() && verdict.iter().any(|v| line.starts_with(v)) {
+                seen_verdict = Some(started.elapsed());
+            }
+            if seen_picture.is_none() && picture.is_some_and(|p| line.starts_with(p)) {
+                seen_picture = Some(started.elapsed());
+            }
+            text += &line;
+            text.push('\n');
+        }
+    }
+    let _ = child.wait();
+    let end = started.elapsed();
+    (seen_verdict.unwrap_or(end), seen_picture, text)
+}
+
+/// Writes a fresh handout of every exercise of `project` into `dir`.
+fn handout(project: &Path, layout: Layout, dir: &Path) {
+    let mut args = layout.tool();
+    let out = dir.to_str().expect("a UTF-8 path");
+    args.extend(["handout", "--out", out]);
+    let status = cargo(project, &args).status().expect("cargo runs");
+    assert!(status.success(), "the handout could not be written");
+}
+
+/// The reference body of exercise `id`: the lines between its markers in `project`'s `file`.
+fn region(text: &str, id: &str) -> Option<(usize, usize)> {
+    let begin = format!("{BEGIN} {id}");
+    let mut offset = 0;
+    let mut start = None;
+    for line in text.split_inclusive('\n') {
+        if start.is_none() && line.trim() == begin {
+            start = Some(offset + line.len());
+        } else if let Some(s) = start
+            && line.trim() == END
+        {
+            return Some((s, offset));
+        }
+        offset += line.len();
+    }
+    None
+}
+
+/// The file of the handout (relative) that holds exercise `id`'s markers.
+fn file_of(dir: &Path, id: &str) -> Option<PathBuf> {
+    let begin = format!("{BEGIN} {id}");
+    let mut stack = vec![dir.to_path_buf()];
+    while let Some(d) = stack.pop() {
+        for entry in std::fs::read_dir(&d).ok()?.flatten() {
+            let p = entry.path();
+            let name = p
+                .file_name()
+                .unwrap_or_default()
+                .to_string_lossy()
+                .into_owned();
+            if p.is_dir() && name != "target" && !name.starts_with('.') {
+                stack.push(p);
+            } else if name.ends_with(".rs")
+                && std::fs::read_to_string(&p).is_ok_and(|t| t.lines().any(|l| l.trim() == begin))
+            {
+                return p.strip_prefix(dir).ok().map(Path::to_path_buf);
+            }
+        }
+    }
+    None
+}
+
+/// Puts exercise `id`'s reference body back into the handout: one save.
+fn put_back(project: &Path, dir: &Path, id: &str) {
+    let file =
+        file_of(dir, id).unwrap_or_else(|| panic!("exercise {id}: no markers in the handout"));
+    let reference = std::fs::read_to_string(project.join(&file)).expect("the reference file");
+    let mine = std::fs::read_to_string(dir.join(&file)).expect("the handout's file");
+    let (a, b) = region(&reference, id).expect("the reference region");
+    let (c, d) = region(&mine, id).expect("the handout's region");
+    let text = format!("{}{}{}", &mine[..c], &reference[a..b], &mine[d..]);
+    std::fs::write(dir.join(&file), text).expect("the save");
+}
+
+fn size(dir: &Path) -> u64 {
+    let mut total = 0;
+    let mut stack = vec![dir.to_path_buf()];
+    while let Some(d) = stack.pop() {
+        let Ok(entries) = std::fs::read_dir(&d) else {
+            continue;
+        };
+        for e in entries.flatten() {
+            match e.metadata() {
+                Ok(m) if m.is_dir() => stack.push(e.path()),
+                Ok(m) => total += m.len(),
+                Err(_) => {}
+            }
+        }
+    }
+    total
+}
+
+fn quantile(values: &[f64], q: f64) -> f64 {
+    if values.is_empty() {
+        return f64::NAN;
+    }
+    let mut v = values.to_vec();
+    v.sort_by(f64::total_cmp);
+    // the nearest rank
+    let rank = ((q * v.len() as f64).ceil() as usize).clamp(1, v.len());
+    v[rank - 1]
+}
+
+fn main() {
+    let args = match args() {
+        Ok(a) => a,
+        Err(e) => {
+            eprintln!("error: {e}");
+            std::process::exit(2);
+        }
+    };
+    let layout = Layout::of(&args.project);
+    let m = manifest::load(&args.project.join(manifest::DEFAULT_PATH)).expect("the manifest");
+    eprintln!("student's loop of {} ({layout:?})", args.project.display());
+    // the reference's own tool, built before anything is timed
+    let mut warm = layout.tool();
+    warm.push("--version");
+    let _ = cargo(&args.project, &warm).output();
+
+    let verdict_marks: &[&str] = match layout {
+        Layout::Workspace => &["✗", "✓"],
+        Layout::SingleCrate => &[],
+    };
+    let picture_mark = (layout == Layout::Workspace).then_some("✓ picture:");
+    let temp = tempfile::tempdir().expect("a temporary directory");
+    let mut firsts = Vec::new();
+    let mut dir = PathBuf::new();
+    for run in 0..args.runs.max(1) {
+        dir = temp.path().join(format!("handout-{run}"));
+        handout(&args.project, layout, &dir);
+        let (verdict, _, _) = timed(cargo(&dir, &layout.verdict()), verdict_marks, None);
+        eprintln!(
+            "first verdict on a fresh handout: {:.1} s",
+            verdict.as_secs_f64()
+        );
+        firsts.push(verdict.as_secs_f64());
+    }
+
+    // the saves: every exercise in order, or N of them spread evenly
+    let n = m.entries.len();
+    let chosen: Vec<usize> = match args.saves {
+        Some(k) if k < n => (0..k).map(|i| (i * n) / k.max(1)).collect(),
+        _ => (0..n).collect(),
+    };
+    let mut to_verdict = Vec::new();
+    let mut to_picture = Vec::new();
+    for (i, e) in m.entries.iter().enumerate() {
+        put_back(&args.project, &dir, &e.exercise.id);
+        let written = i + 1;
+        if !chosen.contains(&i) {
+            continue;
+        }
+        // the newest chapter whose exercises are all back
+        let drawable = (1..=5u8)
+            .take_while(|c| {
+                m.entries[..written]
+                    .iter()
+                    .filter(|x| x.chapter == *c)
+                    .count()
+                    == m.entries.iter().filter(|x| x.chapter == *c).count()
+            })
+            .last();
+        let (verdict, picture, _) =
+            timed(cargo(&dir, &layout.verdict()), verdict_marks, picture_mark);
+        let picture = match (layout, drawable) {
+            (Layout::Workspace, Some(_)) => picture,
+            (Layout::SingleCrate, Some(c)) => {
+                // the picture as that handout's README has it: a release build of the chapter
+                let name = whitted_learn::layout::chapter_dir(&dir, c);
+                let scene = format!("scenes/{name}.toml");
+                let out = dir.join(".picture.png");
+                let o = out.to_str().expect("UTF-8");
+                let (t, _, _) = timed(
+                    cargo(
+                        &dir,
+                        &[
+                            "run",
+                            "--release",
+                            "-q",
+                            "--bin",
+                            &name,
+                            "--",
+                            &scene,
+                            "-o",
+                            o,
+                            "--quiet",
+                        ],
+                    ),
+                    &[],
+                    None,
+                );
+                Some(verdict + t)
+            }
+            _ => None,
+        };
+        eprintln!(
+            "save {} (exercise {}): verdict {:.2} s{}",
+            to_verdict.len() + 1,
+            e.exercise.id,
+            verdict.as_secs_f64(),
+            picture.map_or(String::new(), |p| format!(
+                ", picture {:.2} s",
+                p.as_secs_f64()
+            ))
+        );
+        to_verdict.push(verdict.as_secs_f64());
+        if let Some(p) = picture {
+            to_picture.push(p.as_secs_f64());
+        }
+    }
+    let target = size(&dir.join("target"));
+
+    // grading: the finished handout, twice; the second is what a class pays per submission
+    let mut grade = None;
+    if args.grade {
+        let mut g = layout.tool();
+        let d = dir.to_str().expect("UTF-8");
+        g.extend(["grade", d]);
+        let _ = cargo(&args.project, &g).output();
+        let started = Instant::now();
+        let out = cargo(&args.project, &g).output().expect("cargo runs");
+        grade = Some(started.elapsed().as_secs_f64());
+        if !out.status.success() {
+            eprintln!("grading failed: {}", String::from_utf8_lossy(&out.stderr));
+        }
+    }
+
+    println!("| measure | {layout:?} |");
+    println!("|---|---:|");
+    println!(
+        "| first verdict on a fresh handout (median of {}) | {:.1} s |",
+        firsts.len(),
+        quantile(&firsts, 0.5)
+    );
+    println!(
+        "| save → verdict, median / 90th percentile ({} saves) | {:.2} s / {:.2} s |",
+        to_verdict.len(),
+        quantile(&to_verdict, 0.5),
+        quantile(&to_verdict, 0.9)
+    );
+    println!(
+        "| save → picture, median / 90th percentile ({} saves) | {:.2} s / {:.2} s |",
+        to_picture.len(),
+        quantile(&to_picture, 0.5),
+        quantile(&to_picture, 0.9)
+    );
+    println!(
+        "| `target/` of the handout at the end | {:.2} GB |",
+        target as f64 / 1e9
+    );
+    if let Some(g) = grade {
+        println!("| grading one submission, after the first | {g:.1} s |");
+    }
+}

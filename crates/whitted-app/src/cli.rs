@@ -1,0 +1,553 @@
+//! The command line every chapter binary shares.
+//!
+//! ```text
+//! chNN [SCENE] [-o OUT.png] [--width W] [--height H]      every chapter
+//!      [--encoding srgb|linear] [--quiet] [--window]       every chapter
+//!      [--view color|flat|normals|depth|shadows|rays]      chapters 2–5
+//!      [--inspect X,Y [--json]]                            chapters 2–5
+//!      [--accel none|boxes|extents|octree|bvh] [--no-packets]   chapters 2–5
+//!      [--samples N] [--max-depth N] [--stats]             chapter 5
+//!      [--formula textbook|robust]                         chapters 4–5
+//!      [--offset fixed|scaled|error-bound]                 chapters 4–5
+//! ```
+//!
+//! Without SCENE the embedded default scene `scenes/showcase.toml` is rendered. The PNG is
+//! sRGB-encoded, as viewers expect; `--encoding linear` writes the linear intensities as bytes
+//! (see [`output`]). Every failure
+//! is one line on stderr, `error: …`, and exit status 2; nothing is written unless the whole
+//! image was rendered. An image whose framebuffer would pass
+//! [`render::MAX_FRAMEBUFFER_BYTES`] is refused before any work starts.
+//!
+//! A render that lasts more than a second shows a progress bar on stderr (only when stderr
+//! is a terminal, and not with `--quiet`). Unless `--quiet`, the last line on stderr gives the
+//! resolution, the rays cast by kind, the time and the millions of rays per second.
+//!
+//! Course book: [Introduction](../../../../docs/book/introduction.html) (`docs/src/introduction.md`).
+
+use std::io::IsTerminal;
+use std::path::{Path, PathBuf};
+use std::process::ExitCode;
+use std::sync::atomic::{AtomicBool, Ordering};
+use std::time::{Duration, Instant};
+
+use clap::Args;
+use clap::builder::PossibleValue;
+
+use whitted::accel::Accel;
+/// The one line of an exercise not written yet (it lives in [`whitted::error`], where the live
+/// window finds it too).
+pub use whitted::error::missing_exercise;
+use whitted::error::{Error, MISSING, panic_text};
+use whitted::offset::OffsetKind;
+use whitted::output::{self, Encoding};
+use whitted::real::Real;
+use whitted::render::{self, Options, Stage, View};
+use whitted::scene::load::{MAX_DEPTH, MAX_SAMPLES, MAX_SIDE};
+use whitted::scene::scatter::Layout;
+use whitted::scene::{self, Scene};
+use whitted::shapes::Formula;
+
+/// The default scene, compiled into every binary (it lives in the library).
+pub use whitted::scene::{SHOWCASE, SHOWCASE_NAME};
+
+/// A library type offered on the command line. Its values and their names are the library's
+/// own (`ALL` and `name()`), so the two cannot disagree; only the line each value gets in
+/// `--help` is the command line's.
+pub trait Choice: Copy + PartialEq + Send + Sync + 'static {
+    /// Every value, in the order `--help` lists them.
+    fn all() -> &'static [Self];
+    /// The value's name, as the library reports it and the command line takes it.
+    fn name(self) -> &'static str;
+    /// The value's line in `--help`.
+    fn help(self) -> &'static str;
+}
+
+/// clap's parser for a [`Choice`]: the names it accepts, each with its help, and the value a
+/// name stands for.
+#[must_use]
+pub fn choice<T: Choice>() -> impl clap::builder::TypedValueParser<Value = T> {
+    use clap::builder::TypedValueParser;
+    let names = T::all()
+        .iter()
+        .map(|&v| PossibleValue::new(v.name()).help(v.help()));
+    clap::builder::PossibleValuesParser::new(names).try_map(|name: String| {
+        T::all()
+            .iter()
+            .copied()
+            .find(|v| v.name() == name)
+            .ok_or_else(|| format!("no value is named `{name}`"))
+    })
+}
+
+/// Implements [`Choice`] for a library type from its `ALL`, its `name()` and one help line
+/// per value.
+macro_rules! choice {
+    ($ty:ty { $($variant:path => $help:literal),+ $(,)? }) => {
+        impl Choice for $ty {
+            fn all() -> &'static [Self] {
+                &<$ty>::ALL
+            }
+
+            fn name(self) -> &'static str {
+                <$ty>::name(self)
+            }
+
+            fn help(self) -> &'static str {
+                match self {
+                    $($variant => $help),+
+                }
+            }
+        }
+    };
+}
+
+choice!(Formula {
+    Formula::Textbook => "the notes' formulas as printed",
+    Formula::Robust => "cancellation-free roots and discriminants (default)",
+});
+
+choice!(View {
+    View::Color => "the chapter's colour (default)",
+    View::Flat => "the material's diffuse colour, unlit",
+    View::Normals => "the normal facing the camera, (n + 1)/2",
+    View::Depth => "the distance to the nearest hit, near = white, far = grey (scale 1/d)",
+    View::Shadows => "which lights reach each point: light 0 red, 1 green, 2 blue",
+    View::Rays => "the rays each pixel casts, black (1) to white (the most possible)",
+});
+
+choice!(Accel {
+    Accel::None => "every object for every ray (the notes' step 4)",
+    Accel::Boxes => "a bounding box per object",
+    Accel::Extents => "boxes, and projection extents for camera rays",
+    Accel::Octree => "cubes subdivided until each holds at most 8 objects",
+    Accel::Bvh => "a bounding volume hierarchy, binned SAH (default)",
+});
+
+choice!(OffsetKind {
+    OffsetKind::Fixed => "accept hits only for t > 1e-4 (world units): the classic",
+    OffsetKind::Scaled => "move the origin by 1e-4·max(1, |P|) along the normal",
+    OffsetKind::ErrorBound => "move the origin by a bound on the hit point's rounding error (default)",
+});
+
+choice!(Encoding {
+    Encoding::Srgb => "encode for screens and image viewers (default)",
+    Encoding::Linear => "the linear intensities as bytes, 0.5 → 128",
+});
+
+choice!(Layout {
+    Layout::Field => "constant size and density over a square of side 2√N (default)",
+    Layout::Fog => "a fixed square; the radius shrinks as 1/√N",
+});
+
+/// Arguments shared by every chapter.
+#[derive(Args, Debug, Clone)]
+pub struct Common {
+    /// Scene file (TOML). Without it, the built-in showcase scene (scenes/showcase.toml) is rendered.
+    pub scene: Option<PathBuf>,
+    /// Where to write the PNG image [default: BINARY_NAME.png in the current directory].
+    #[arg(short, long, value_name = "OUT.png")]
+    pub output: Option<PathBuf>,
+    /// Image width in pixels; alone, the height follows the scene's aspect ratio.
+    #[arg(long, value_name = "W", value_parser = clap::value_parser!(u32).range(1..=MAX_SIDE as i64))]
+    pub width: Option<u32>,
+    /// Image height in pixels; alone, the width follows the scene's aspect ratio.
+    #[arg(long, value_name = "H", value_parser = clap::value_parser!(u32).range(1..=MAX_SIDE as i64))]
+    pub height: Option<u32>,
+    /// How the PNG's bytes encode the linear intensities: sRGB, as screens and viewers expect,
+    /// or the intensities themselves (clamped, times 255). `--inspect` prints the same bytes.
+    #[arg(long, value_parser = choice::<Encoding>(), default_value = Encoding::default().name())]
+    pub encoding: Encoding,
+    /// No progress bar and no statistics line (errors and warnings are still printed).
+    #[arg(short, long)]
+    pub quiet: bool,
+    /// Open a live window instead of writing a file: the image refines coarse to fine, keys
+    /// move the camera (WASD, Q/E, arrows) and switch stage (1-5), view (V) and depth (+/-),
+    /// a click prints and draws the pixel's ray tree, P saves the PNG (to -o), R or saving the
+    /// scene file reloads it, H lists the keys, Esc quits. Without --width/--height the image
+    /// is the scene's size, shrunk to fit 1280×960.
+    #[arg(long)]
+    pub window: bool,
+}
+
+/// The view switch of chapters 2–5.
+#[derive(Args, Debug, Clone)]
+pub struct ViewArg {
+    /// What each pixel shows: the chapter's colour, the flat material colour, normals, or depth.
+    #[arg(long, value_parser = choice::<View>(), default_value = View::Color.name())]
+    pub view: View,
+    /// How ray queries are accelerated (notes: "Computational Aspects"); the image is the same
+    /// with every choice, only the time changes.
+    #[arg(long, value_parser = choice::<Accel>(), default_value = Accel::default().name())]
+    pub accel: Accel,
+    /// Trace every pixel alone by the plain road, instead of the camera rays and feelers of
+    /// 8×8 blocks as packets (a BVH or an octree, one sample a pixel); the same image either way.
+    #[arg(long)]
+    pub no_packets: bool,
+    /// Print the ray tree of pixel X,Y (column X, row Y from the top, from 0) — hits, each
+    /// light's I_a, I_d, I_s and feeler, mirror and transmitted rays — and exit, writing no image.
+    #[arg(long, value_name = "X,Y", value_parser = parse_pixel, conflicts_with = "output", allow_hyphen_values = true)]
+    pub inspect: Option<(u32, u32)>,
+    /// With --inspect: print the tree as JSON (its shape: docs/src/inspect.md).
+    #[arg(long, requires = "inspect")]
+    pub json: bool,
+}
+
+/// Reads `X,Y` as a pixel's column and row.
+fn parse_pixel(text: &str) -> Result<(u32, u32), String> {
+    let bad = || format!("expected X,Y: a pixel's column and row, such as 320,240 (got `{text}`)");
+    let (x, y) = text.split_once(',').ok_or_else(bad)?;
+    let x = x.trim().parse().map_err(|_| bad())?;
+    let y = y.trim().parse().map_err(|_| bad())?;
+    Ok((x, y))
+}
+
+/// Chapter 5's tracing controls.
+#[derive(Args, Debug, Clone)]
+pub struct Tracing {
+    /// Samples per pixel (jittered from a fixed seed: the same image every run) [default: the scene's, else 1].
+    #[arg(long, value_name = "N", value_parser = clap::value_parser!(u32).range(1..=MAX_SAMPLES as i64))]
+    pub samples: Option<u32>,
+    /// Maximum recursion depth of mirror and transmitted rays [default: the scene's, else 5].
+    #[arg(long, value_name = "N", value_parser = clap::value_parser!(u32).range(0..=MAX_DEPTH as i64))]
+    pub max_depth: Option<u32>,
+    /// Also print the samples, depth, threads and the acceleration structure built (and, in a
+    /// build with `--features counters`, the node visits, box tests and object tests).
+    #[arg(long)]
+    pub stats: bool,
+}
+
+/// The accuracy switches of chapters 4 and 5: which intersection formulas, and how secondary
+/// rays leave a surface (see [`whitted::shapes::quadratic`] and [`whitted::offset`]).
+#[derive(Args, Debug, Clone)]
+pub struct Accuracy {
+    /// Intersection formulas: the notes' as printed (textbook) or cancellation-free (robust).
+    #[arg(long, value_parser = choice::<Formula>(), default_value = Formula::Robust.name())]
+    pub formula: Formula,
+    /// How feeler, mirror and transmitted rays leave a surface: a fixed ε = 1e-4, an ε scaled
+    /// by the hit point's magnitude, or a bound on the hit point's rounding error.
+    #[arg(long, value_parser = choice::<OffsetKind>(), default_value = OffsetKind::ErrorBound.name())]
+    pub offset: OffsetKind,
+}
+
+/// Parses the command line. `--help` and `--version` print and exit 0; any other problem is
+/// printed as one line `error: …` (clap's own first line, with the list that follows it when
+/// it ends in a colon, such as the arguments missing) with exit status 2.
+#[must_use]
+pub fn parse_args<T: clap::Parser>() -> T {
+    match T::try_parse() {
+        Ok(args) => args,
+        Err(e) if !e.use_stderr() => {
+            // --help, --version: not errors
+            let _ = e.print();
+            std::process::exit(0);
+        }
+        Err(e) if e.kind() == clap::error::ErrorKind::DisplayHelpOnMissingArgumentOrSubcommand => {
+            // a bare `whitted`: the help says what to ask for
+            let _ = e.print();
+            std::process::exit(2);
+        }
+        Err(e) => {
+            let text = e.render().to_string();
+            let mut lines = text.lines().map(str::trim).filter(|l| !l.is_empty());
+            let mut line = lines
+                .next()
+                .unwrap_or("error: invalid arguments")
+                .to_string();
+            if line.ends_with(':') {
+                let list: Vec<&str> = lines.take_while(|l| !l.starts_with("Usage:")).collect();
+                line = format!("{line} {}", list.join(", "));
+            }
+            eprintln!("{line} (see --help)");
+            std::process::exit(2);
+        }
+    }
+}
+
+/// Reads the scene named on the command line, or the embedded showcase: the parts the chapter
+/// `stage` uses ([`Stage::reads`]).
+pub fn read_scene(path: Option<&Path>, stage: Stage) -> Result<Scene, Error> {
+    match path {
+        Some(p) => scene::load_parts(p, stage.reads()),
+        None => scene::showcase_parts(stage.reads()),
+    }
+}
+
+/// The image size after the command line's overrides, keeping the scene's aspect ratio when
+/// only one side is given.
+#[must_use]
+pub fn image_size(scene: &Scene, width: Option<u32>, height: Option<u32>) -> (u32, u32) {
+    let aspect = scene.width as Real / scene.height as Real;
+    let clampside = |x: Real| (x.round() as u32).clamp(1, MAX_SIDE);
+    match (width, height) {
+        (Some(w), Some(h)) => (w, h),
+        (Some(w), None) => (w, clampside(w as Real / aspect)),
+        (None, Some(h)) => (clampside(h as Real * aspect), h),
+        (None, None) => (scene.width, scene.height),
+    }
+}
+
+/// The largest image `--window` opens without `--width` or `--height`.
+pub const WINDOW_FIT: (u32, u32) = (1280, 960);
+
+/// `width` × `height` shrunk, keeping its aspect ratio, to fit in `bound` (unchanged if it
+/// fits already).
+#[must_use]
+pub fn fit(width: u32, height: u32, bound: (u32, u32)) -> (u32, u32) {
+    let scale = (f64::from(bound.0) / f64::from(width))
+        .min(f64::from(bound.1) / f64::from(height))
+        .min(1.0);
+    let side = |x: u32| ((f64::from(x) * scale).round() as u32).max(1);
+    (side(width), side(height))
+}
+
+/// Runs a chapter: read, render, write. Each chapter passes the argument groups it has
+/// (`None` for the others). Returns the exit status (0, or 2 after printing the error).
+pub fn run(
+    binary: &str,
+    stage: Stage,
+    common: &Common,
+    view: Option<&ViewArg>,
+    tracing: Option<&Tracing>,
+    accuracy: Option<&Accuracy>,
+) -> ExitCode {
+    quiet_missing_exercises();
+    let run = || run_inner(binary, stage, common, view, tracing, accuracy);
+    match std::panic::catch_unwind(std::panic::AssertUnwindSafe(run)) {
+        Ok(Ok(())) => ExitCode::SUCCESS,
+        Ok(Err(e)) => {
+            eprintln!("error: {e}");
+            ExitCode::from(2)
+        }
+        Err(payload) => match missing_exercise(payload.as_ref()) {
+            Some(line) => {
+                eprintln!("error: {line}");
+                ExitCode::from(2)
+            }
+            None => std::panic::resume_unwind(payload),
+        },
+    }
+}
+
+/// Keeps the panics of exercises not written yet quiet (no message, no backtrace, on any
+/// thread): [`run`] turns the first into one line. Other panics are reported as usual.
+fn quiet_missing_exercises() {
+    let default = std::panic::take_hook();
+    std::panic::set_hook(Box::new(move |info| {
+        if !panic_text(info.payload()).is_some_and(|t| t.starts_with(MISSING)) {
+            default(info);
+        }
+    }));
+}
+
+fn run_inner(
+    binary: &str,
+    stage: Stage,
+    common: &Common,
+    view: Option<&ViewArg>,
+    tracing: Option<&Tracing>,
+    accuracy: Option<&Accuracy>,
+) -> Result<(), Error> {
+    let inspect = view.and_then(|v| v.inspect);
+    if common.window && inspect.is_some() {
+        return Err(Error::Usage(
+            "--window and --inspect do not go together: click a pixel in the window to inspect it"
+                .into(),
+        ));
+    }
+    let out = common
+        .output
+        .clone()
+        .unwrap_or_else(|| PathBuf::from(format!("{binary}.png")));
+    if inspect.is_none() {
+        output::check_destination(&out)?;
+    }
+    let scene = read_scene(common.scene.as_deref(), stage)?;
+    for w in &scene.warnings {
+        eprintln!("warning: {w}");
+    }
+    let mut options = Options::for_scene(&scene, stage);
+    (options.width, options.height) = image_size(&scene, common.width, common.height);
+    if let Some(v) = view {
+        options.view = v.view;
+        options.accel = v.accel;
+        options.packets = !v.no_packets;
+    }
+    if let Some(t) = tracing {
+        options.samples = t.samples.unwrap_or(options.samples);
+        options.max_depth = t.max_depth.unwrap_or(options.max_depth);
+    }
+    if let Some(a) = accuracy {
+        options.formula = a.formula;
+        options.offset = a.offset.offset();
+    }
+    if let (Some(pixel), Some(v)) = (inspect, view) {
+        return print_tree(&scene, &options, pixel, common.encoding, v.json);
+    }
+    if common.window {
+        if common.width.is_none() && common.height.is_none() {
+            (options.width, options.height) = fit(options.width, options.height, WINDOW_FIT);
+        }
+        render::check_size(options.width, options.height)?;
+        return crate::window::run(crate::window::Setup {
+            binary: binary.to_string(),
+            scene_path: common.scene.clone(),
+            scene,
+            options,
+            max_stage: stage,
+            encoding: common.encoding,
+            save_to: out,
+            quiet: common.quiet,
+        });
+    }
+    render::check_size(options.width, options.height)?;
+    let start = Instant::now();
+    let accel = render::build_accel(&scene, &options);
+    let progress = Progress::new(
+        u64::from(options.width) * u64::from(options.height),
+        !common.quiet && std::io::stderr().is_terminal(),
+    );
+    let (fb, stats) = render::render_with(&scene, &options, &accel, &|n| progress.advance(n));
+    progress.finish();
+    let seconds = start.elapsed().as_secs_f64();
+    output::save(&fb, &out, common.encoding)?;
+    if !common.quiet {
+        eprintln!("wrote {} ({}×{})", out.display(), fb.width, fb.height);
+        if tracing.is_some_and(|t| t.stats) {
+            eprintln!(
+                "{} sample(s)/px, depth {}, {} thread(s), {} mirror rays by total internal reflection; {}",
+                options.samples,
+                options.max_depth,
+                rayon::current_num_threads(),
+                stats.total_internal,
+                accel.describe()
+            );
+            if whitted::accel::counters::ENABLED {
+                eprintln!("{}", work_line(&stats.work));
+            }
+        }
+        eprintln!("{}", summary(fb.width, fb.height, &stats, seconds));
+    }
+    Ok(())
+}
+
+/// `--inspect X,Y [--json]`: prints the ray tree of one pixel on stdout, its bytes in
+/// `encoding` (those the PNG would hold).
+fn print_tree(
+    scene: &Scene,
+    options: &Options,
+    (x, y): (u32, u32),
+    encoding: Encoding,
+    json: bool,
+) -> Result<(), Error> {
+    let (w, h) = (options.width, options.height);
+    if x >= w || y >= h {
+        return Err(Error::Usage(format!(
+            "--inspect {x},{y}: the pixel is outside the {w}×{h} image (X from 0 to {}, Y from 0 to {})",
+            w - 1,
+            h - 1
+        )));
+    }
+    let mut tree = render::Tracer::new(scene, options).inspect(x, y);
+    tree.encoding = encoding;
+    let text = if json {
+        let json = serde_json::to_string_pretty(&tree.to_json())
+            .map_err(|e| Error::Usage(format!("cannot write the tree as JSON: {e}")))?;
+        json + "\n"
+    } else {
+        tree.to_string()
+    };
+    print_out(&text)
+}
+
+/// Writes `text` on stdout; a reader that stops early (`| head`) is not an error.
+fn print_out(text: &str) -> Result<(), Error> {
+    use std::io::Write;
+    let mut out = std::io::stdout().lock();
+    match out.write_all(text.as_bytes()).and_then(|()| out.flush()) {
+        Err(e) if e.kind() != std::io::ErrorKind::BrokenPipe => Err(Error::Write {
+            path: PathBuf::from("standard output"),
+            message: e.to_string(),
+        }),
+        _ => Ok(()),
+    }
+}
+
+/// The line `--stats` adds in a build with the `counters` feature: what the queries tested, in
+/// all and per query.
+#[must_use]
+pub fn work_line(w: &whitted::accel::counters::Counts) -> String {
+    let per = |n: u64| n as f64 / w.queries.max(1) as f64;
+    format!(
+        "work: {} queries; {} node visits ({:.2} a query), {} box tests ({:.2}), {} object tests ({:.2})",
+        w.queries,
+        w.nodes,
+        per(w.nodes),
+        w.boxes,
+        per(w.boxes),
+        w.objects,
+        per(w.objects)
+    )
+}
+
+/// The final line: resolution, rays by kind, time (structure build and render) and M rays/s.
+#[must_use]
+pub fn summary(width: u32, height: u32, stats: &render::Stats, seconds: f64) -> String {
+    format!(
+        "{width}×{height}: rays {} primary, {} shadow, {} reflected, {} refracted ({} total); {:.3} s, {:.2} M rays/s",
+        stats.primary,
+        stats.shadow,
+        stats.reflected,
+        stats.refracted,
+        stats.total(),
+        seconds,
+        stats.total() as f64 / seconds.max(1e-9) / 1e6
+    )
+}
+
+/// A progress bar on stderr that appears only once a render has lasted a second.
+struct Progress {
+    bar: indicatif::ProgressBar,
+    enabled: bool,
+    shown: AtomicBool,
+    start: Instant,
+}
+
+impl Progress {
+    fn new(total: u64, enabled: bool) -> Self {
+        let bar = indicatif::ProgressBar::with_draw_target(
+            Some(total),
+            indicatif::ProgressDrawTarget::hidden(),
+        );
+        if let Ok(style) = indicatif::ProgressStyle::with_template(
+            "{elapsed_precise} [{bar:40}] {percent:>3}% ({eta} left)",
+        ) {
+            bar.set_style(style.progress_chars("=> "));
+        }
+        Self {
+            bar,
+            enabled,
+            shown: AtomicBool::new(false),
+            start: Instant::now(),
+        }
+    }
+
+    fn advance(&self, pixels: u64) {
+        if !self.enabled {
+            return;
+        }
+        self.bar.inc(pixels);
+        if !self.shown.load(Ordering::Relaxed)
+            && self.start.elapsed() > Duration::from_secs(1)
+            && !self.shown.swap(true, Ordering::Relaxed)
+        {
+            self.bar
+                .set_draw_target(indicatif::ProgressDrawTarget::stderr());
+        }
+    }
+
+    fn finish(&self) {
+        if self.shown.load(Ordering::Relaxed) {
+            self.bar.finish_and_clear();
+        }
+    }
+}

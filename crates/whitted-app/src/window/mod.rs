@@ -1,0 +1,26 @@
+//! The live window (`--window` on every chapter binary): the image refines as you watch,
+//! the keys move the camera and switch stage, view and depth, and a click shows the ray tree
+//! of a pixel drawn over the image.
+//!
+//! | module | what it holds |
+//! |---|---|
+//! | [`schedule`] | the coarse-to-fine passes: blocks of 8, 4, 2, 1 pixels, no pixel traced twice |
+//! | [`progressive`] | the render thread, its rayon pool, and cancelling by generation |
+//! | [`canvas`] | the image as the passes fill it in, and the screen's pixels |
+//! | [`state`] | the keys and what they change: input → state → commands, no display needed |
+//! | [`overlay`] | the ray tree of a clicked pixel, projected into the view and drawn |
+//! | [`shell`] | minifb: the window, its loop, reloading the scene file |
+//!
+//! The road of one pixel is the renderer's own ([`whitted::render::Tracer::pixel`]): the window
+//! only decides which pixels to trace first and where to paint them.
+//!
+//! Course book: [The live window](../../../../docs/book/window.html) (`docs/src/window.md`).
+
+pub mod canvas;
+pub mod overlay;
+pub mod progressive;
+pub mod schedule;
+pub mod shell;
+pub mod state;
+
+pub use shell::{Setup, run};

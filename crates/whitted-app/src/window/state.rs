@@ -1,0 +1,488 @@
+//! The window's logic as a state machine: an [`Input`] (a key, a click, a reloaded scene)
+//! changes the [`State`] and returns the [`Command`]s the shell carries out (render, print,
+//! inspect, save, reload, quit). Nothing here touches a display, so every binding and rule is
+//! tested without one.
+//!
+//! | keys | what they do |
+//! |---|---|
+//! | W A S D, Q E | move the camera forward, left, back, right, down, up (Shift: 4× faster) |
+//! | arrows | turn the camera left, right, up, down |
+//! | + − | one more or one less level of mirror and transmitted rays (`max_depth`) |
+//! | 1 … 5 | the stage: which chapter's renderer runs, up to the binary's own |
+//! | V | the next view: colour, flat, normals, depth, shadow mask, rays per pixel |
+//! | C | print the camera as a `[camera]` table, to paste into the scene |
+//! | P | save the image as a PNG |
+//! | R | reload the scene file (saving it does too) |
+//! | H | print the keys |
+//! | Esc | quit (closing the window does too) |
+//! | left click | print the pixel's ray tree and draw it over the image |
+//!
+//! Course book: [The live window](../../../../../docs/book/window.html) (`docs/src/window.md`).
+
+use std::sync::Arc;
+
+use minifb::Key;
+
+use whitted::camera::Camera;
+use whitted::error::Error;
+use whitted::real::{Real, Vec3};
+use whitted::render::{Options, Stage, View};
+use whitted::scene::load::MAX_DEPTH;
+use whitted::scene::{CameraSettings, Scene};
+
+/// Directions the camera moves in.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Move {
+    /// Along the viewing direction.
+    Forward,
+    /// Against the viewing direction.
+    Back,
+    /// To the left on the image (−u).
+    Left,
+    /// To the right on the image (+u).
+    Right,
+    /// Against the scene's up vector.
+    Down,
+    /// Along the scene's up vector.
+    Up,
+}
+
+/// Directions the camera turns in (the eye stays put, the point looked at moves).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Turn {
+    /// About the up vector, to the left.
+    Left,
+    /// About the up vector, to the right.
+    Right,
+    /// About the image's horizontal, upwards.
+    Up,
+    /// About the image's horizontal, downwards.
+    Down,
+}
+
+/// What a key asks for.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Action {
+    /// Move the camera.
+    Move(Move),
+    /// Turn the camera.
+    Turn(Turn),
+    /// Change the maximum depth by this much.
+    Depth(i32),
+    /// Switch to stage 1 to 5.
+    Stage(u8),
+    /// Cycle the views.
+    NextView,
+    /// Print the camera as a `[camera]` table.
+    PrintCamera,
+    /// Save the image.
+    Save,
+    /// Reload the scene file.
+    Reload,
+    /// Print the keys.
+    Help,
+    /// Quit.
+    Quit,
+}
+
+/// A key, what it does, whether holding it repeats, and its line in the help.
+#[derive(Clone, Copy, Debug)]
+pub struct Binding {
+    /// The key.
+    pub key: Key,
+    /// What it does.
+    pub action: Action,
+    /// Whether holding the key repeats the action (moving and turning).
+    pub repeat: bool,
+}
+
+const fn bind(key: Key, action: Action, repeat: bool) -> Binding {
+    Binding {
+        key,
+        action,
+        repeat,
+    }
+}
+
+/// Every key the window reads. The shell polls each of them once per frame.
+pub const BINDINGS: &[Binding] = &[
+    bind(Key::W, Action::Move(Move::Forward), true),
+    bind(Key::S, Action::Move(Move::Back), true),
+    bind(Key::A, Action::Move(Move::Left), true),
+    bind(Key::D, Action::Move(Move::Right), true),
+    bind(Key::Q, Action::Move(Move::Down), true),
+    bind(Key::E, Action::Move(Move::Up), true),
+    bind(Key::Left, Action::Turn(Turn::Left), true),
+    bind(Key::Right, Action::Turn(Turn::Right), true),
+    bind(Key::Up, Action::Turn(Turn::Up), true),
+    bind(Key::Down, Action::Turn(Turn::Down), true),
+    bind(Key::Equal, Action::Depth(1), false),
+    bind(Key::NumPadPlus, Action::Depth(1), false),
+    bind(Key::Minus, Action::Depth(-1), false),
+    bind(Key::NumPadMinus, Action::Depth(-1), false),
+    bind(Key::Key1, Action::Stage(1), false),
+    bind(Key::Key2, Action::Stage(2), false),
+    bind(Key::Key3, Action::Stage(3), false),
+    bind(Key::Key4, Action::Stage(4), false),
+    bind(Key::Key5, Action::Stage(5), false),
+    bind(Key::NumPad1, Action::Stage(1), false),
+    bind(Key::NumPad2, Action::Stage(2), false),
+    bind(Key::NumPad3, Action::Stage(3), false),
+    bind(Key::NumPad4, Action::Stage(4), false),
+    bind(Key::NumPad5, Action::Stage(5), false),
+    bind(Key::V, Action::NextView, false),
+    bind(Key::C, Action::PrintCamera, false),
+    bind(Key::P, Action::Save, false),
+    bind(Key::R, Action::Reload, false),
+    bind(Key::H, Action::Help, false),
+    bind(Key::Escape, Action::Quit, false),
+];
+
+/// The action bound to `key`, if any.
+#[must_use]
+pub fn action_of(key: Key) -> Option<Action> {
+    BINDINGS.iter().find(|b| b.key == key).map(|b| b.action)
+}
+
+/// The keys, as `H` prints them.
+pub const HELP: &str = "\
+keys: W/S forward/back, A/D left/right, Q/E down/up (Shift: 4x faster);
+      arrows turn; +/- max depth; 1-5 stage; V next view;
+      C print the camera; P save PNG; R reload the scene; H these keys; Esc quit;
+      left click: the pixel's ray tree, printed and drawn (white camera ray, yellow feeler
+      reaching its light, red feeler blocked (x where), cyan mirror, magenta transmitted)";
+
+/// What the window is told.
+#[derive(Debug)]
+pub enum Input {
+    /// A bound key was pressed (`fast`: with Shift).
+    Key {
+        /// What the key does.
+        action: Action,
+        /// Shift was held.
+        fast: bool,
+    },
+    /// The left button was pressed at `mouse` (unscaled window coordinates) in a window
+    /// whose drawing area is `window` (width, height) pixels now.
+    Click {
+        /// The pointer, in window pixels from the top left.
+        mouse: (f32, f32),
+        /// The window's current size.
+        window: (usize, usize),
+    },
+    /// The scene file was read again.
+    Loaded(Box<Result<Scene, Error>>),
+}
+
+/// What the shell must do.
+#[derive(Debug, PartialEq)]
+pub enum Command {
+    /// Cancel the render in flight and render the state's scene and options afresh.
+    Render,
+    /// Print a line (or several) on standard output.
+    Print(String),
+    /// Print `error: …` on standard error.
+    Error(String),
+    /// Print the ray tree of pixel (x, y) and draw it over the image.
+    Inspect {
+        /// Column from the left.
+        x: u32,
+        /// Row from the top.
+        y: u32,
+    },
+    /// Save the image as a PNG.
+    Save,
+    /// Read the scene file again (the answer comes back as [`Input::Loaded`]).
+    Reload,
+    /// Close the window.
+    Quit,
+}
+
+/// The camera moves by this share of the eye's distance to the point looked at per key press.
+pub const MOVE_SHARE: Real = 0.05;
+/// The camera turns by this many degrees per key press.
+pub const TURN_DEGREES: Real = 3.0;
+/// Shift multiplies moves and turns by this.
+pub const FAST: Real = 4.0;
+/// The viewing direction stays at least this many degrees away from the up vector.
+pub const MIN_PITCH_GAP: Real = 2.0;
+
+/// The window's state: the last good scene and everything the keys change.
+#[derive(Clone, Debug)]
+pub struct State {
+    /// The scene shown: the last one that loaded without error.
+    pub scene: Arc<Scene>,
+    /// Stage, view, depth, size, and the camera as moved (always `Some`).
+    pub options: Options,
+    /// The binary's own chapter: the highest stage the keys reach.
+    pub max_stage: Stage,
+    /// Samples per pixel at stage 5 (earlier stages take one).
+    pub samples: u32,
+    /// The camera as the scene file last said it (a reload keeps the moved camera unless the
+    /// file's camera changed).
+    pub file_camera: CameraSettings,
+    /// The last reload's error, shown in the title until a reload succeeds.
+    pub error: Option<String>,
+}
+
+impl State {
+    /// The state for `scene` rendered with `options` by a binary whose chapter is `max_stage`.
+    #[must_use]
+    pub fn new(scene: Scene, mut options: Options, max_stage: Stage) -> Self {
+        let file_camera = scene.camera.clone();
+        options.camera.get_or_insert_with(|| file_camera.clone());
+        Self {
+            samples: options.samples,
+            scene: Arc::new(scene),
+            options,
+            max_stage,
+            file_camera,
+            error: None,
+        }
+    }
+
+    /// The camera as moved.
+    #[must_use]
+    pub fn camera(&self) -> &CameraSettings {
+        self.options.camera.as_ref().unwrap_or(&self.scene.camera)
+    }
+
+    /// Takes one input and says what to do.
+    pub fn handle(&mut self, input: Input) -> Vec<Command> {
+        match input {
+            Input::Key { action, fast } => self.act(action, fast),
+            Input::Click { mouse, window } => {
+                match click_to_pixel(mouse, window, (self.options.width, self.options.height)) {
+                    Some((x, y)) => vec![Command::Inspect { x, y }],
+                    None => vec![],
+                }
+            }
+            Input::Loaded(result) => self.loaded(*result),
+        }
+    }
+
+    fn act(&mut self, action: Action, fast: bool) -> Vec<Command> {
+        let speed = if fast { FAST } else { 1.0 };
+        match action {
+            Action::Move(m) => self.set_camera(moved(self.camera(), m, MOVE_SHARE * speed)),
+            Action::Turn(t) => self.set_camera(turned(self.camera(), t, TURN_DEGREES * speed)),
+            Action::Depth(step) => self.change_depth(step),
+            Action::Stage(n) => self.change_stage(n),
+            Action::NextView => self.next_view(),
+            Action::PrintCamera => vec![Command::Print(camera_table(self.camera()))],
+            Action::Save => vec![Command::Save],
+            Action::Reload => vec![Command::Reload],
+            Action::Help => vec![Command::Print(HELP.into())],
+            Action::Quit => vec![Command::Quit],
+        }
+    }
+
+    fn set_camera(&mut self, camera: Option<CameraSettings>) -> Vec<Command> {
+        match camera {
+            Some(c) => {
+                self.options.camera = Some(c);
+                vec![Command::Render]
+            }
+            None => vec![Command::Print(
+                "the camera cannot look straight along its up vector: turn the other way".into(),
+            )],
+        }
+    }
+
+    fn change_depth(&mut self, step: i32) -> Vec<Command> {
+        let old = self.options.max_depth;
+        let new = old.saturating_add_signed(step).min(MAX_DEPTH);
+        if new == old {
+            return vec![Command::Print(format!(
+                "max depth stays {old} (from 0 to {MAX_DEPTH})"
+            ))];
+        }
+        self.options.max_depth = new;
+        if self.options.stage == Stage::ReflectionRefraction {
+            vec![Command::Render]
+        } else {
+            vec![Command::Print(format!(
+                "max depth {new}: it matters from stage 5 (mirror and transmitted rays)"
+            ))]
+        }
+    }
+
+    fn change_stage(&mut self, n: u8) -> Vec<Command> {
+        let Some(stage) = stage_of(n) else {
+            return vec![];
+        };
+        if stage > self.max_stage {
+            return vec![Command::Print(format!(
+                "stage {n} belongs to a later chapter: this binary goes up to stage {}",
+                self.max_stage as u8
+            ))];
+        }
+        if stage == self.options.stage {
+            return vec![];
+        }
+        self.options.stage = stage;
+        // supersampling belongs to chapter 5, as on the command line
+        self.options.samples = if stage == Stage::ReflectionRefraction {
+            self.samples
+        } else {
+            1
+        };
+        vec![Command::Render]
+    }
+
+    fn next_view(&mut self) -> Vec<Command> {
+        if self.options.stage == Stage::CameraRays {
+            return vec![Command::Print(
+                "views start at stage 2: chapter 1 traces no objects, each pixel shows its ray's direction"
+                    .into(),
+            )];
+        }
+        let i = View::ALL
+            .iter()
+            .position(|&v| v == self.options.view)
+            .unwrap_or(0);
+        self.options.view = View::ALL[(i + 1) % View::ALL.len()];
+        vec![Command::Render]
+    }
+
+    fn loaded(&mut self, result: Result<Scene, Error>) -> Vec<Command> {
+        match result {
+            Ok(scene) => {
+                if scene.camera != self.file_camera {
+                    // the file's camera was edited: show it
+                    self.file_camera = scene.camera.clone();
+                    self.options.camera = Some(scene.camera.clone());
+                }
+                self.scene = Arc::new(scene);
+                self.error = None;
+                vec![Command::Print("scene reloaded".into()), Command::Render]
+            }
+            Err(e) => {
+                let line = e.to_string();
+                self.error = Some(line.clone());
+                vec![Command::Error(format!(
+                    "{line} (the window keeps the last scene that loaded)"
+                ))]
+            }
+        }
+    }
+}
+
+/// Stage `n` (1 to 5).
+#[must_use]
+pub fn stage_of(n: u8) -> Option<Stage> {
+    Some(match n {
+        1 => Stage::CameraRays,
+        2 => Stage::GenericObjects,
+        3 => Stage::Shading,
+        4 => Stage::Shadows,
+        5 => Stage::ReflectionRefraction,
+        _ => return None,
+    })
+}
+
+/// The image pixel under the pointer at `mouse` (unscaled window coordinates) in a window of
+/// `window` pixels showing an image of `image` pixels stretched over it; `None` outside the
+/// window. minifb's own scaled position is wrong once the window has been resized, so the
+/// pixel comes from the window's size now.
+#[must_use]
+pub fn click_to_pixel(
+    mouse: (f32, f32),
+    window: (usize, usize),
+    image: (u32, u32),
+) -> Option<(u32, u32)> {
+    let (mx, my) = (f64::from(mouse.0), f64::from(mouse.1));
+    let (ww, wh) = (window.0 as f64, window.1 as f64);
+    if !(ww > 0.0 && wh > 0.0 && (0.0..ww).contains(&mx) && (0.0..wh).contains(&my)) {
+        return None;
+    }
+    let x = ((mx * f64::from(image.0) / ww) as u32).min(image.0 - 1);
+    let y = ((my * f64::from(image.1) / wh) as u32).min(image.1 - 1);
+    Some((x, y))
+}
+
+/// The camera moved by `share` of its distance to the point looked at, in direction `m`;
+/// `None` if the result cannot be a camera.
+#[must_use]
+pub fn moved(c: &CameraSettings, m: Move, share: Real) -> Option<CameraSettings> {
+    let (f, right, up) = frame(c)?;
+    let step = share * (c.look_at - c.eye).length();
+    let delta = step
+        * match m {
+            Move::Forward => f,
+            Move::Back => -f,
+            Move::Right => right,
+            Move::Left => -right,
+            Move::Up => up,
+            Move::Down => -up,
+        };
+    checked(CameraSettings {
+        eye: c.eye + delta,
+        look_at: c.look_at + delta,
+        ..c.clone()
+    })
+}
+
+/// The camera turned by `degrees` in direction `t` about its eye; `None` if the viewing
+/// direction would come within [`MIN_PITCH_GAP`] degrees of the up vector.
+#[must_use]
+pub fn turned(c: &CameraSettings, t: Turn, degrees: Real) -> Option<CameraSettings> {
+    let (f, right, up) = frame(c)?;
+    let a = degrees.to_radians();
+    let (axis, angle) = match t {
+        Turn::Left => (up, a),
+        Turn::Right => (up, -a),
+        Turn::Up => (right, a),
+        Turn::Down => (right, -a),
+    };
+    let g = rotate(f, axis, angle);
+    if g.dot(up).abs() > MIN_PITCH_GAP.to_radians().cos() {
+        return None;
+    }
+    let distance = (c.look_at - c.eye).length();
+    checked(CameraSettings {
+        look_at: c.eye + g * distance,
+        ..c.clone()
+    })
+}
+
+/// The unit viewing direction, the unit right vector and the unit up vector of a camera.
+fn frame(c: &CameraSettings) -> Option<(Vec3, Vec3, Vec3)> {
+    let f = (c.look_at - c.eye).try_normalize()?;
+    let up = c.up.try_normalize()?;
+    let right = f.cross(up).try_normalize()?;
+    Some((f, right, up))
+}
+
+/// v turned by `angle` radians about the unit `axis` (Rodrigues' formula).
+fn rotate(v: Vec3, axis: Vec3, angle: Real) -> Vec3 {
+    let (s, c) = angle.sin_cos();
+    v * c + axis.cross(v) * s + axis * axis.dot(v) * (1.0 - c)
+}
+
+/// The camera if its basis is not degenerate (see [`whitted::camera::viewing_basis`]).
+fn checked(c: CameraSettings) -> Option<CameraSettings> {
+    Camera::new(c.eye, c.look_at, c.up, c.fov, c.near, 1, 1).map(|_| c)
+}
+
+/// The camera as a `[camera]` table of the scene format.
+#[must_use]
+pub fn camera_table(c: &CameraSettings) -> String {
+    let v = |p: Vec3| format!("[{}, {}, {}]", number(p.x), number(p.y), number(p.z));
+    format!(
+        "[camera]\neye = {}\nlook_at = {}\nup = {}\nfov = {}\nnear = {}",
+        v(c.eye),
+        v(c.look_at),
+        v(c.up),
+        number(c.fov),
+        number(c.near)
+    )
+}
+
+/// A number with at most 6 decimals and no trailing zeros, always with a decimal point or
+/// as an integer TOML reads as a float field.
+fn number(x: Real) -> String {
+    let s = format!("{x:.6}");
+    let s = s.trim_end_matches('0').trim_end_matches('.');
+    if s == "-0" { "0".into() } else { s.into() }
+}

@@ -1,0 +1,66 @@
+//! The course tools: the exercises (which function holds which formula of the notes), the
+//! proof that the renderer computes each formula there, a student's handout, and the
+//! student's loop.
+//!
+//! The design asks that every formula of the course notes be computed in exactly one small
+//! function, and that every render path (scalar or packets, with or without an acceleration
+//! structure) go through that function. Each such function is an exercise. One file lists
+//! them, the manifest `chapters/formulas.toml`:
+//!
+//! ```toml
+//! [prove]
+//! test = "render_paths"     # the integration test whose tests are the render paths
+//! filter = "ch{chapter}_"   # the tests of one chapter
+//!
+//! [handout]
+//! tests = ["ch01_camera_rays", "render_paths"]   # the test targets a student's copy keeps
+//!
+//! [[formula]]
+//! function = "camera::near_plane_half_height"
+//! chapter = 1
+//! section = "Principles of Ray Tracing"
+//! formula = "H = N·tan(θ/2)"
+//! id = "1.2"                # the exercise: chapter.k in the file's order
+//! title = "Half the near plane's height"
+//! task = "Return H = N·tan(θ/2) …"
+//! hints = ["a nudge", "nearly the answer"]
+//! points = 1
+//! ```
+//!
+//! The parts that read it:
+//!
+//! - [`manifest`] reads and checks the file; a mistake is reported as `file:line:col: …`;
+//! - [`source`] finds each function in `src/` (following `pub use` re-exports) and the exact
+//!   bytes of its body;
+//! - [`prove`] poisons one function at a time in a copy of the project and checks that every
+//!   render path of the function's chapter then fails. A function that a render path can avoid
+//!   is not the only place its formula is computed, or not a place that matters;
+//! - [`handout`] writes a student's copy, each chosen exercise's solution region
+//!   (`// BEGIN SOLUTION 2.3` … `// END SOLUTION`) replaced by its `todo!()`;
+//! - [`deps`] measures which tests each exercise's absence fails, and keeps the result in
+//!   `chapters/exercise-tests.toml`: what a handout fails, exactly;
+//! - [`learn`] is the student's loop: progress, the next exercise, hints, rerun on save (with
+//!   the manifest, the map and the cargo runner it is the crate `whitted-learn`, which a
+//!   handout holds instead of this one);
+//! - [`readme`] writes each chapter README's exercises from the manifest;
+//! - [`grade`] grades a student's copy, or a class, with the instructor's tests (public and
+//!   hidden), each test in its own process under a time limit; [`report`] writes the table,
+//!   Gradescope's `results.json`, JUnit XML and gradebook CSV.
+//!
+//! The binary `whitted` exposes them: `whitted formulas [--prove | --deps [--write] |
+//! --readmes]`, `whitted handout`, `whitted learn [list | hint | watch]`, `whitted grade`.
+//!
+//! Course book: [The instructor's guide](../../../docs/book/instructor-guide.html) (`docs/src/instructor-guide.md`).
+
+pub mod book;
+pub mod deps;
+pub mod grade;
+pub mod handout;
+pub mod prove;
+pub mod readme;
+pub mod report;
+pub mod source;
+
+pub use whitted_learn::{
+    CHAPTERS, Error, SECTIONS, args, cargo, cli, files, layout, learn, manifest, map,
+};

@@ -1,0 +1,336 @@
+//! `whitted grade` without building anything: taking a student's bodies from their markers,
+//! reading nextest's JUnit report, sharing an exercise's points over its tests, and the
+//! reports (the table, Gradescope's results.json, JUnit, CSV). The grading of real copies —
+//! the reference, a handout, a broken submission, a class — is in tests/grade_build.rs.
+
+use std::path::{Path, PathBuf};
+use std::time::Duration;
+
+use whitted_course::grade::{self, ExerciseScore, Grade, Status, TestResult};
+use whitted_course::handout::{self, Region};
+use whitted_course::manifest::{self, Manifest};
+use whitted_course::report;
+
+/// The workspace's root: this crate sits in `crates/whitted-course`.
+fn root() -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR"))
+        .ancestors()
+        .nth(2)
+        .expect("the crate sits two levels below the workspace's root")
+        .to_path_buf()
+}
+
+fn manifest() -> Manifest {
+    manifest::load(&root().join(manifest::DEFAULT_PATH)).unwrap()
+}
+
+/// The region of exercise `id` in the reference.
+fn region(m: &Manifest, id: &str) -> Region {
+    let i = m.entries.iter().position(|e| e.exercise.id == id).unwrap();
+    handout::regions(&root(), m).unwrap().swap_remove(i)
+}
+
+fn write(dir: &Path, file: &Path, text: &str) {
+    let path = dir.join(file);
+    std::fs::create_dir_all(path.parent().unwrap()).unwrap();
+    std::fs::write(path, text).unwrap();
+}
+
+/// What a student wrote between the markers is taken, line for line; a missing or unclosed
+/// marker is a reason, not a crash.
+#[test]
+fn the_students_body_is_what_lies_between_the_markers() {
+    let m = manifest();
+    let r = region(&m, "1.2");
+    let dir = tempfile::tempdir().unwrap();
+    let file = "fn a() {\n    // BEGIN SOLUTION 1.2\n    let x = 1; // mine\n    x * 2\n    // END SOLUTION\n}\n";
+    write(dir.path(), &r.file, file);
+    assert_eq!(
+        grade::student_body(dir.path(), &r, "1.2").unwrap(),
+        "    let x = 1; // mine\n    x * 2\n"
+    );
+    write(dir.path(), &r.file, "fn a() { 1 }\n");
+    let why = grade::student_body(dir.path(), &r, "1.2").unwrap_err();
+    assert!(why.contains("`// BEGIN SOLUTION 1.2` is missing"), "{why}");
+    write(dir.path(), &r.file, "    // BEGIN SOLUTION 1.2\n    1\n}\n");
+    let why = grade::student_body(dir.path(), &r, "1.2").unwrap_err();
+    assert!(why.contains("not closed"), "{why}");
+    // another exercise's marker before the END does not close this one
+    write(
+        dir.path(),
+        &r.file,
+        "// BEGIN SOLUTION 1.2\n1\n// BEGIN SOLUTION 1.3\n// END SOLUTION\n",
+    );
+    assert!(grade::student_body(dir.path(), &r, "1.2").is_err());
+    let missing = grade::student_body(&dir.path().join("nowhere"), &r, "1.2").unwrap_err();
+    assert!(missing.contains("cannot read"), "{missing}");
+}
+
+/// A JUnit report as nextest 0.9 writes it: a pass, a panic, a `todo!()`, a timeout, an
+/// abort, and a hidden test.
+const JUNIT: &str = r#"<?xml version="1.0" encoding="UTF-8"?>
+<testsuites name="nextest-run" tests="6" failures="5">
+  <testsuite name="whitted::ch01_camera_rays" tests="5" failures="4">
+    <testcase name="ex1_2_half_height_is_near_times_tangent_of_half_the_angle" classname="whitted::ch01_camera_rays" time="0.01"/>
+    <testcase name="ex1_2_viewing_angle_is_converted_from_degrees" classname="whitted::ch01_camera_rays" time="0.1">
+      <failure message="thread panicked" type="test failure with exit code 101">thread &apos;ex1_2_viewing_angle_is_converted_from_degrees&apos; (9915) panicked at tests/ch01_camera_rays.rs:2:28:
+assertion `left == right` failed: H for 90° &amp; N = 1
+  left: 0.5
+ right: 1
+note: run with `RUST_BACKTRACE=1` environment variable to display a backtrace</failure>
+    </testcase>
+    <testcase name="ex1_3_half_width_is_half_height_times_aspect" classname="whitted::ch01_camera_rays" time="0.1">
+      <failure message="thread panicked" type="test failure with exit code 101">thread &apos;x&apos; panicked at src/camera.rs:43:5:
+not yet implemented: exercise 1.3: Half the near plane's width — see chapters/ch01_camera_rays/README.md</failure>
+    </testcase>
+    <testcase name="ex1_4_pixel_formula_spans_the_near_plane_corner_to_corner" classname="whitted::ch01_camera_rays" time="20.0">
+      <failure type="test timeout"/>
+    </testcase>
+    <testcase name="ex1_7_ray_colour_is_unit_direction_plus_one_over_two" classname="whitted::ch01_camera_rays" time="0.01">
+      <failure message="process aborted with signal 6 (SIGABRT)" type="test abort">process aborted with signal 6 (SIGABRT)</failure>
+    </testcase>
+  </testsuite>
+  <testsuite name="whitted::hidden_extra" tests="1" failures="1">
+    <testcase name="ex1_2_secret_check" classname="whitted::hidden_extra" time="0.01">
+      <failure type="test failure with exit code 101">thread &apos;y&apos; panicked at tests/hidden_extra.rs:3:5:
+the secret value</failure>
+    </testcase>
+  </testsuite>
+</testsuites>
+"#;
+
+fn junit_results(m: &Manifest) -> Vec<TestResult> {
+    grade::parse_junit(JUNIT, m, &["hidden_extra".to_string()]).unwrap()
+}
+
+/// Each test case becomes a result: its status, its exercise by name, hidden or not, and its
+/// message in a line.
+#[test]
+fn nextests_junit_report_is_read_test_by_test() {
+    let m = manifest();
+    let results = junit_results(&m);
+    assert_eq!(results.len(), 6);
+    let by = |name: &str| results.iter().find(|t| t.name == name).unwrap();
+    let id = |t: &TestResult| m.entries[t.exercise.unwrap()].exercise.id.clone();
+    let pass = by("ex1_2_half_height_is_near_times_tangent_of_half_the_angle");
+    assert_eq!(
+        (pass.status.clone(), id(pass), pass.hidden),
+        (Status::Passed, "1.2".into(), false)
+    );
+    assert_eq!(pass.target, "ch01_camera_rays");
+    let fail = by("ex1_2_viewing_angle_is_converted_from_degrees");
+    assert_eq!(fail.status, Status::Failed);
+    assert_eq!(
+        fail.message,
+        "assertion `left == right` failed: H for 90° & N = 1 /   left: 0.5 /  right: 1"
+    );
+    let todo = by("ex1_3_half_width_is_half_height_times_aspect");
+    assert!(
+        todo.message
+            .starts_with("not written (not yet implemented: exercise 1.3")
+    );
+    let slow = by("ex1_4_pixel_formula_spans_the_near_plane_corner_to_corner");
+    assert_eq!(slow.status, Status::TimedOut);
+    let crash = by("ex1_7_ray_colour_is_unit_direction_plus_one_over_two");
+    assert_eq!(crash.status, Status::Crashed);
+    assert!(crash.message.contains("SIGABRT") && crash.message.contains("stack overflow"));
+    let secret = by("ex1_2_secret_check");
+    assert!(secret.hidden && secret.target == "hidden_extra");
+    assert_eq!(id(secret), "1.2");
+    assert!(grade::parse_junit("<testsuites", &m, &[]).is_err());
+}
+
+/// A grade by hand: exercise 1.2 (1 point) has three tests, one passed; 1.3 (1 point) one
+/// test, failed; 1.4 (2 points) one test, timed out; 1.7 one crash; the rest of chapter 1
+/// has no test in this report.
+fn graded(m: &Manifest) -> Grade {
+    let tests = junit_results(m);
+    let chapter1: Vec<usize> = (0..m.entries.len())
+        .filter(|&i| m.entries[i].chapter == 1)
+        .collect();
+    let exercises = chapter1
+        .iter()
+        .map(|&i| {
+            let own: Vec<&TestResult> = tests.iter().filter(|t| t.exercise == Some(i)).collect();
+            let passed = own.iter().filter(|t| t.status == Status::Passed).count();
+            let max = f64::from(m.entries[i].exercise.points);
+            ExerciseScore {
+                entry: i,
+                score: if own.is_empty() {
+                    0.0
+                } else {
+                    max * passed as f64 / own.len() as f64
+                },
+                max,
+                passed,
+                total: own.len(),
+                note: (m.entries[i].exercise.id == "1.3").then(|| "does not compile".to_string()),
+            }
+        })
+        .collect();
+    Grade {
+        student: "ada, l.".into(),
+        chapters: vec![1],
+        exercises,
+        tests,
+        notes: vec![],
+        elapsed: Duration::from_secs(42),
+    }
+}
+
+/// Gradescope's file: the total, one entry per test whose scores add up to it, hidden tests
+/// without their names or messages.
+#[test]
+fn gradescope_results_add_up_and_hide_the_hidden_tests() {
+    let m = manifest();
+    let g = graded(&m);
+    let json = report::gradescope(&g, &m);
+    let tests = json["tests"].as_array().unwrap();
+    assert_eq!(tests.len(), 6);
+    let sum: f64 = tests.iter().map(|t| t["score"].as_f64().unwrap()).sum();
+    assert!((sum - json["score"].as_f64().unwrap()).abs() < 0.02);
+    // exercise 1.2 is worth 1 point over 3 tests: one passed
+    let p12 = m
+        .entries
+        .iter()
+        .find(|e| e.exercise.id == "1.2")
+        .unwrap()
+        .exercise
+        .points;
+    assert!((json["score"].as_f64().unwrap() - f64::from(p12) / 3.0).abs() < 0.01);
+    for t in tests {
+        for key in [
+            "name",
+            "score",
+            "max_score",
+            "status",
+            "output",
+            "visibility",
+        ] {
+            assert!(!t[key].is_null(), "{key} missing in {t}");
+        }
+    }
+    let hidden = tests
+        .iter()
+        .find(|t| t["name"].as_str().unwrap().contains("hidden"))
+        .unwrap();
+    assert_eq!(hidden["name"], "exercise 1.2, hidden test 1");
+    assert_eq!(hidden["output"], "failed");
+    let text = json.to_string();
+    assert!(
+        !text.contains("secret"),
+        "a hidden test's name or message leaked: {text}"
+    );
+    assert!(
+        json["output"]
+            .as_str()
+            .unwrap()
+            .contains("exercise 1.3: does not compile")
+    );
+}
+
+/// The table explains every lost point: the exercise, its formula, each failed test and why;
+/// the instructor sees hidden tests by name.
+#[test]
+fn the_table_explains_each_lost_point() {
+    let m = manifest();
+    let g = graded(&m);
+    let t = report::table(&g, &m);
+    assert!(t.starts_with("ada, l.: 0.33 / 13 points"), "{t}");
+    assert!(t.contains("chapter 1  camera rays"));
+    let e13 = &m.entries.iter().find(|e| e.exercise.id == "1.3").unwrap();
+    assert!(t.contains(&e13.formula), "{t}");
+    assert!(t.contains("note: does not compile"));
+    assert!(t.contains("✗ ex1_4_pixel_formula_spans_the_near_plane_corner_to_corner: timed out"));
+    assert!(t.contains("✗ ex1_2_secret_check (hidden): failed: the secret value"));
+}
+
+/// JUnit is well-formed XML with a suite per chapter and the failures; the CSV row has a
+/// column for each header column, the name quoted.
+#[test]
+fn junit_and_csv_reports_are_well_formed() {
+    let m = manifest();
+    let g = graded(&m);
+    let xml = report::junit(&g, &m);
+    let doc = roxmltree::Document::parse(&xml).unwrap();
+    let failures = doc
+        .descendants()
+        .filter(|n| n.has_tag_name("failure"))
+        .count();
+    assert_eq!(failures, 5);
+    assert!(xml.contains("H for 90° &amp; N = 1"));
+    let header = report::csv_header(&m, &[1]);
+    let row = report::csv_row(&g, &m);
+    assert!(row.starts_with("\"ada, l.\",0.33,13,0.33,"), "{row}");
+    // the quoted name holds one comma
+    assert_eq!(header.split(',').count() + 1, row.split(',').count());
+    assert!(header.starts_with("student,total,max,chapter 1,ex 1.1,"));
+}
+
+/// Points print with at most two decimals and no trailing zeros.
+#[test]
+fn points_print_short() {
+    assert_eq!(report::points(13.0), "13");
+    assert_eq!(report::points(2.0 / 3.0), "0.67");
+    assert_eq!(report::points(0.5), "0.5");
+    assert_eq!(report::points(-0.0), "0");
+}
+
+/// A test's message is the panic's, up to three lines; a `todo!()` says "not written".
+#[test]
+fn a_failures_message_is_its_panic() {
+    assert_eq!(
+        grade::panic_message("thread 'a' panicked at src/x.rs:1:1:\nboom\nnote: run with"),
+        "boom"
+    );
+    assert_eq!(
+        grade::panic_message("no panic here\nsecond"),
+        "no panic here"
+    );
+    assert!(
+        grade::panic_message("thread 'a' panicked at x:\nnot yet implemented: exercise 2.1: t")
+            .starts_with("not written")
+    );
+}
+
+/// Runs `whitted` with `args` in the project.
+fn whitted(args: &[&str]) -> std::process::Output {
+    std::process::Command::new(env!("CARGO_BIN_EXE_whitted"))
+        .args(args)
+        .current_dir(root())
+        .output()
+        .unwrap()
+}
+
+/// A directory that is not a copy of the project, a chapter out of range, hidden tests that
+/// are not a directory: one line of error each, exit status 2, before anything is built.
+#[test]
+fn grading_something_that_cannot_be_graded_is_one_line_of_error() {
+    let empty = tempfile::tempdir().unwrap();
+    let dir = empty.path().to_str().unwrap();
+    for (args, says) in [
+        (
+            vec!["grade", dir],
+            "is not a copy of the handout: it has no crates/whitted/src/ directory",
+        ),
+        (vec!["grade", "--chapter", "7"], "--chapter"),
+        (
+            vec!["grade", "--hidden", "Cargo.toml"],
+            "--hidden Cargo.toml: not a directory",
+        ),
+        (
+            vec!["grade", "--class", dir, "--out", dir],
+            "no submission directory in it",
+        ),
+        (vec!["grade", "--class", dir], "--out"),
+    ] {
+        let out = whitted(&args);
+        let err = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(out.status.code(), Some(2), "{args:?}: {err}");
+        assert_eq!(err.lines().count(), 1, "{args:?}: {err}");
+        assert!(
+            err.starts_with("error: ") && err.contains(says),
+            "{args:?}: {err}"
+        );
+    }
+}

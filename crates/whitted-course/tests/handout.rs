@@ -1,0 +1,585 @@
+//! Handouts and the student's loop, without building anything: the solution regions, what a
+//! handout holds and leaves out, and what `whitted learn` makes of a test run. Building a
+//! handout and running its tests is `tests/handout_build.rs` (run by `.ci/run`).
+
+use std::collections::BTreeMap;
+use std::path::{Path, PathBuf};
+
+use whitted_course::handout::{self, BEGIN, END};
+use whitted_course::learn::{self, State, Style, TestRun};
+use whitted_course::manifest::{self, Manifest};
+use whitted_course::prove::TestOutcome;
+
+/// The workspace's root: this crate sits in `crates/whitted-course`.
+fn root() -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR"))
+        .ancestors()
+        .nth(2)
+        .expect("the crate sits two levels below the workspace's root")
+        .to_path_buf()
+}
+
+fn manifest() -> Manifest {
+    manifest::load(&root().join(manifest::DEFAULT_PATH)).unwrap()
+}
+
+/// Every file under `dir`, relative, with its text (binary files left out).
+fn texts(dir: &Path) -> BTreeMap<PathBuf, String> {
+    let mut out = BTreeMap::new();
+    let mut stack = vec![dir.to_path_buf()];
+    while let Some(d) = stack.pop() {
+        for e in std::fs::read_dir(&d).unwrap() {
+            let p = e.unwrap().path();
+            if p.is_dir() {
+                if p.file_name().is_some_and(|n| n != "target" && n != ".git") {
+                    stack.push(p);
+                }
+            } else if let Ok(t) = std::fs::read_to_string(&p) {
+                out.insert(p.strip_prefix(dir).unwrap().to_path_buf(), t);
+            }
+        }
+    }
+    out
+}
+
+/// Every manifest function has exactly one solution region, numbered with its exercise id,
+/// and no other BEGIN SOLUTION marker is in src/.
+#[test]
+fn every_exercise_has_one_solution_region_in_its_function() {
+    let m = manifest();
+    let regions = handout::regions(&root(), &m).unwrap();
+    assert_eq!(regions.len(), m.entries.len());
+    for (r, e) in regions.iter().zip(&m.entries) {
+        assert!(
+            !r.solution.trim().is_empty(),
+            "{}: an empty solution",
+            e.exercise.id
+        );
+        let text = std::fs::read_to_string(root().join(&r.file)).unwrap();
+        let region = &text[r.bytes.clone()];
+        assert!(
+            region
+                .trim_start()
+                .starts_with(&format!("{BEGIN} {}", e.exercise.id))
+        );
+        assert!(region.trim_end().ends_with(END));
+    }
+}
+
+/// The lines of each solution that appear nowhere else in the project (its files as git sees
+/// them: tracked, or new and not ignored, so that no build or mutation-testing output counts):
+/// the handout's test looks for them.
+fn unique_lines(m: &Manifest) -> Vec<(String, Vec<String>)> {
+    let root = root();
+    let project: BTreeMap<PathBuf, String> = whitted_course::prove::project_files(&root)
+        .unwrap()
+        .into_iter()
+        .filter_map(|f| Some((f.clone(), std::fs::read_to_string(root.join(&f)).ok()?)))
+        .collect();
+    let regions = handout::regions(&root, m).unwrap();
+    let count = |line: &str| -> usize {
+        project
+            .values()
+            .map(|t| t.lines().filter(|l| l.trim() == line).count())
+            .sum()
+    };
+    regions
+        .iter()
+        .map(|r| {
+            let lines: Vec<String> = r
+                .solution
+                .lines()
+                .map(str::trim)
+                .filter(|l| l.len() >= 12 && count(l) == 1)
+                .map(str::to_string)
+                .collect();
+            (m.entries[r.entry].exercise.id.clone(), lines)
+        })
+        .collect()
+}
+
+/// A handout of every exercise holds none of their solutions (each has a line found nowhere
+/// else in the project, and that line is nowhere in the handout), holds each exercise's
+/// todo!(), keeps only the handout's test targets, and no instructor's file: no CI, no
+/// cargo-mutants configuration, no tools or benchmarks, no tests of the course tools or the
+/// programs (nor the hand-written mutants), no instructor's guide. Its README is the student's,
+/// its workspace holds the three crates, and its book pages read without mdBook.
+#[test]
+fn a_full_handout_holds_no_solution_and_no_instructor_material() {
+    let m = manifest();
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("student");
+    let all: Vec<usize> = (0..m.entries.len()).collect();
+    let made = handout::write(&root(), &m, &all, &out).unwrap();
+    assert_eq!(made.stripped, all);
+    let files = texts(&out);
+    for (id, lines) in unique_lines(&m) {
+        assert!(
+            !lines.is_empty(),
+            "exercise {id}: its solution has no line of its own to search for"
+        );
+        for line in lines {
+            let found: Vec<&PathBuf> = files
+                .iter()
+                .filter(|(_, t)| t.lines().any(|l| l.trim() == line))
+                .map(|(p, _)| p)
+                .collect();
+            assert!(
+                found.is_empty(),
+                "exercise {id}: `{line}` is still in {found:?}"
+            );
+        }
+    }
+    let all_text: String = files.values().cloned().collect();
+    for e in &m.entries {
+        let todo = handout::todo_statement(&root(), e);
+        assert_eq!(all_text.matches(&todo).count(), 1, "{todo}");
+        assert!(todo.contains(&format!("exercise {}: {}", e.exercise.id, e.exercise.title)));
+    }
+    // each exercise's markers stay, around its todo!() and nothing else: the student writes
+    // between them, and `whitted grade` takes what is there
+    let mut marked = 0;
+    for (path, t) in files
+        .iter()
+        .filter(|(p, _)| p.starts_with("crates/whitted/src"))
+    {
+        let lines: Vec<&str> = t.lines().map(str::trim).collect();
+        for (i, l) in lines.iter().enumerate() {
+            if let Some(id) = l.strip_prefix(BEGIN) {
+                let e = m
+                    .entries
+                    .iter()
+                    .find(|e| e.exercise.id == id.trim())
+                    .unwrap();
+                assert_eq!(
+                    lines[i + 1],
+                    handout::todo_statement(&root(), e),
+                    "{path:?}"
+                );
+                assert_eq!(lines[i + 2], END, "{path:?}");
+                marked += 1;
+            }
+        }
+    }
+    assert_eq!(marked, m.entries.len());
+    // of the renderer's tests/, the handout's targets and their helpers only
+    let tests = Path::new("crates/whitted/tests");
+    for path in files.keys() {
+        if let Ok(rest) = path.strip_prefix(tests)
+            && rest.components().count() == 1
+        {
+            let name = path.file_stem().unwrap().to_string_lossy();
+            assert!(
+                m.handout.tests.iter().any(|t| *t == name),
+                "{path:?} is not a handout target"
+            );
+        }
+    }
+    for t in &m.handout.tests {
+        assert!(files.contains_key(&tests.join(format!("{t}.rs"))), "{t}");
+    }
+    assert!(files.contains_key(&tests.join("common/mod.rs")));
+    assert!(files.contains_key(Path::new("chapters/formulas.toml")));
+    assert!(files.contains_key(Path::new(".cargo/config.toml")));
+    // nothing of the instructor's
+    for path in files.keys() {
+        let p = path.to_string_lossy();
+        for instructor in [
+            ".ci/",
+            ".cargo/mutants.toml",
+            "tools/",
+            "benches/",
+            "tests/",
+            "crates/whitted-app/tests/",
+            "crates/whitted-course/tests/",
+            "crates/whitted-course/handout/",
+            "docs/src/instructor-guide.md",
+            "docs/performance-log.md",
+        ] {
+            assert!(!p.starts_with(instructor), "{p} is the instructor's");
+        }
+        assert!(!p.contains("hand-written") && !p.contains("hidden"), "{p}");
+    }
+    assert!(
+        files[Path::new("crates/whitted/src/lib.rs")]
+            .contains("#![allow(unused_variables, unused_imports, unused_mut, dead_code)]")
+    );
+    // the student's README, the handout's workspace, pages without raw includes
+    let readme = &files[Path::new("README.md")];
+    let all = format!("all {} exercises", m.entries.len());
+    assert!(
+        readme.contains("cargo learn") && readme.contains(&all),
+        "{readme}"
+    );
+    assert!(
+        !readme.contains("whitted grade") && !readme.contains("{exercises}"),
+        "{readme}"
+    );
+    let workspace: toml::Table = files[Path::new("Cargo.toml")].parse().unwrap();
+    assert_eq!(
+        workspace["workspace"]["members"].as_array().unwrap().len(),
+        3,
+        "{workspace:?}"
+    );
+    let pages: Vec<&PathBuf> = files
+        .keys()
+        .filter(|p| p.starts_with("docs/src") && p.extension().is_some_and(|e| e == "md"))
+        .collect();
+    assert!(pages.len() > 10, "{pages:?}");
+    for page in pages {
+        assert!(
+            !files[page].contains("{{#include"),
+            "{page:?} has a raw include"
+        );
+    }
+    assert!(!files[Path::new("docs/src/SUMMARY.md")].contains("instructor"));
+}
+
+/// The hints and tasks, which go into every handout with the manifest, never quote a line of
+/// a solution that computes something: an operator or a call, 16 characters or more without
+/// spaces. The calls a task must name — the recorder's `rec.…`, `self.ray`, `self.follow` —
+/// and returns and struct fields do not count.
+#[test]
+fn the_hints_quote_no_line_of_a_solution() {
+    let m = manifest();
+    let squash = |s: &str| {
+        s.chars()
+            .filter(|c| !c.is_whitespace() && *c != '`')
+            .collect::<String>()
+    };
+    let named = |l: &str| {
+        [
+            "//",
+            "rec.",
+            "self.ray(",
+            "self.follow(",
+            "return",
+            "Some(",
+            "RayKind::",
+        ]
+        .iter()
+        .any(|p| l.starts_with(p))
+            || l.contains("Part::")
+    };
+    let mut checked = 0;
+    for r in handout::regions(&root(), &m).unwrap() {
+        let x = &m.entries[r.entry].exercise;
+        let words: Vec<String> = x.hints.iter().chain([&x.task]).map(|h| squash(h)).collect();
+        for line in r.solution.lines().map(str::trim).filter(|l| !named(l)) {
+            let line = squash(line.trim_end_matches(';'));
+            if line.len() < 16 || !line.contains(['+', '-', '*', '/', '(', '<', '>', '=', '!']) {
+                continue;
+            }
+            checked += 1;
+            assert!(
+                !words.iter().any(|w| w.contains(&line)),
+                "exercise {}: a hint or the task quotes the solution's `{line}`",
+                x.id
+            );
+        }
+    }
+    assert!(checked > 100, "only {checked} lines checked");
+}
+
+/// A handout of chapter 4 alone takes out chapter 4's exercises and keeps every other
+/// chapter's reference code, byte for byte.
+#[test]
+fn a_chapter_handout_keeps_the_other_chapters_reference_code() {
+    let m = manifest();
+    let chapter4 = handout::select(&m, Some((4, 4)), &[]).unwrap();
+    assert!(!chapter4.is_empty());
+    assert!(chapter4.iter().all(|&i| m.entries[i].chapter == 4));
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("ch4");
+    handout::write(&root(), &m, &chapter4, &out).unwrap();
+    for r in handout::regions(&root(), &m).unwrap() {
+        let text = std::fs::read_to_string(out.join(&r.file)).unwrap();
+        let kept = text.contains(&r.solution);
+        let todo = text.contains(&handout::todo_statement(&root(), &m.entries[r.entry]));
+        if m.entries[r.entry].chapter == 4 {
+            assert!(todo && !kept, "exercise {}", m.entries[r.entry].exercise.id);
+        } else {
+            assert!(kept && !todo, "exercise {}", m.entries[r.entry].exercise.id);
+        }
+    }
+}
+
+/// Choosing exercises: by id, by chapter range, or all; unknown ids and chapters are errors.
+#[test]
+fn exercises_are_chosen_by_id_or_chapter() {
+    let m = manifest();
+    assert_eq!(
+        handout::select(&m, None, &[]).unwrap().len(),
+        m.entries.len()
+    );
+    let two = handout::select(&m, None, &["2.3".into(), "1.1".into()]).unwrap();
+    assert_eq!(
+        two.iter()
+            .map(|&i| m.entries[i].exercise.id.as_str())
+            .collect::<Vec<_>>(),
+        ["1.1", "2.3"]
+    );
+    let early = handout::select(&m, Some((1, 3)), &[]).unwrap();
+    assert!(early.iter().all(|&i| m.entries[i].chapter <= 3));
+    assert_eq!(
+        early.len(),
+        m.entries.iter().filter(|e| e.chapter <= 3).count()
+    );
+    assert!(handout::select(&m, None, &["9.9".into()]).is_err());
+    assert!(handout::select(&m, Some((0, 2)), &[]).is_err());
+    assert!(handout::select(&m, Some((4, 2)), &[]).is_err());
+    assert_eq!(handout::parse_chapters("1-3"), Ok((1, 3)));
+    assert_eq!(handout::parse_chapters("4"), Ok((4, 4)));
+    assert!(handout::parse_chapters("a-b").is_err());
+}
+
+/// A destination that holds something is refused and left as it was, and no temporary
+/// directory is left beside it.
+#[test]
+fn a_handout_never_writes_over_a_directory_in_use() {
+    let m = manifest();
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("taken");
+    std::fs::create_dir(&out).unwrap();
+    std::fs::write(out.join("notes.txt"), "mine").unwrap();
+    let err = handout::write(&root(), &m, &[0], &out)
+        .unwrap_err()
+        .to_string();
+    assert!(
+        err.contains("exists and is not an empty directory"),
+        "{err}"
+    );
+    assert_eq!(
+        std::fs::read_to_string(out.join("notes.txt")).unwrap(),
+        "mine"
+    );
+    let names: Vec<_> = std::fs::read_dir(dir.path())
+        .unwrap()
+        .map(|e| e.unwrap().file_name())
+        .collect();
+    assert_eq!(names.len(), 1, "{names:?}");
+}
+
+// ── whitted learn, from a test run ──────────────────────────────────────────────────────────
+
+/// A test run of every handout target in which exercises before `done` pass and the others
+/// stop at their todo!().
+fn run_with_done(m: &Manifest, done: usize) -> TestRun {
+    let mut run = TestRun {
+        targets: m.handout.tests.iter().cloned().collect(),
+        ..TestRun::default()
+    };
+    for (i, e) in m.entries.iter().enumerate() {
+        let name = format!("ch0{}::{}works", e.chapter, e.exercise.test_prefix());
+        if i < done {
+            run.outcomes.insert(name, TestOutcome::Passed);
+        } else {
+            run.outcomes.insert(name.clone(), TestOutcome::Failed);
+            run.failures.insert(
+                name,
+                format!(
+                    "thread 'x' panicked at src/a.rs:1:1:\nnot yet implemented: exercise {}: {}\n",
+                    e.exercise.id, e.exercise.title
+                ),
+            );
+        }
+    }
+    run
+}
+
+/// With nothing written, the verdict names the first exercise, not written yet, with its
+/// failing test and the formula it checks, and the progress says 0 of N; half-way, the next
+/// is the first not done; at the end, N of N and the picture of the last chapter.
+#[test]
+fn learn_gives_the_verdict_and_the_progress() {
+    let m = manifest();
+    let n = m.entries.len();
+    let run = run_with_done(&m, 0);
+    let states = learn::states(&m, &run);
+    assert!(states.iter().all(|s| *s == State::ToDo), "{states:?}");
+    let first = &m.entries[0];
+    let text = learn::verdict(&m, &run, &states, 0, Style::plain(), None);
+    assert!(
+        text.contains(&format!(
+            "✗ exercise {} — {}",
+            first.exercise.id, first.exercise.title
+        )) && text.contains("not written yet"),
+        "{text}"
+    );
+    assert!(
+        text.contains(&format!("failing: {}works", first.exercise.test_prefix())),
+        "{text}"
+    );
+    assert!(text.contains(&first.formula), "{text}");
+    assert!(text.contains("`cargo learn hint`"), "{text}");
+    assert!(!text.contains('\x1b'), "no colour when asked for none");
+    let progress = learn::progress(&m, &states, Style::plain());
+    assert!(
+        progress.contains(&format!("0 of {n} exercises done")),
+        "{progress}"
+    );
+    assert_eq!(learn::drawable_chapter(&m, &states), None);
+
+    // half-way: the chapters before are full, the next exercise is the first not done
+    let half = n / 2;
+    let states = learn::states(&m, &run_with_done(&m, half));
+    assert_eq!(states.iter().position(|s| *s != State::Done), Some(half));
+    let progress = learn::progress(&m, &states, Style::plain());
+    assert!(
+        progress.contains(&format!("{half} of {n} exercises done")),
+        "{progress}"
+    );
+    let chapter = m.entries[half].chapter;
+    assert_eq!(learn::drawable_chapter(&m, &states), Some(chapter - 1));
+
+    let states = learn::states(&m, &run_with_done(&m, n));
+    let progress = learn::progress(&m, &states, Style::plain());
+    assert!(
+        progress.contains(&format!("{n} of {n} exercises done")),
+        "{progress}"
+    );
+    assert_eq!(learn::drawable_chapter(&m, &states), Some(5));
+    assert_eq!(
+        learn::newly_done(&learn::states(&m, &run_with_done(&m, 3)), &states).len(),
+        n - 3
+    );
+}
+
+/// A failure that is not the todo!() is "failing", a failure at another exercise's todo!()
+/// "waits for" it, an exercise without tests "no tests", one whose target did not run is not
+/// known, and nothing is known when the project does not build; the list says each, aligned,
+/// with a summary line.
+#[test]
+fn learn_tells_written_but_wrong_from_not_written() {
+    let m = manifest();
+    let mut run = run_with_done(&m, 0);
+    let name = |i: usize| {
+        format!(
+            "ch0{}::{}works",
+            m.entries[i].chapter,
+            m.entries[i].exercise.test_prefix()
+        )
+    };
+    run.failures
+        .insert(name(0), "assertion `left == right` failed".into());
+    run.outcomes.remove(&name(1));
+    let other = m.entries[0].exercise.id.clone();
+    run.failures.insert(
+        name(2),
+        format!("panicked at x:\nnot yet implemented: exercise {other}: …\n"),
+    );
+    let states = learn::states(&m, &run);
+    assert_eq!(states[0], State::Failing(vec![name(0)]));
+    assert_eq!(states[1], State::NoTests);
+    assert_eq!(states[2], State::Waiting(other.clone()));
+    let list = learn::list(&m, &states, Style::plain());
+    for word in [
+        "failing",
+        "no tests",
+        "to do",
+        &format!("waits for {other}"),
+    ] {
+        assert!(list.contains(word), "{word}: {list}");
+    }
+    let widths: std::collections::BTreeSet<usize> = list
+        .lines()
+        .filter(|l| l.starts_with("  "))
+        .map(|l| l[..l.find(" pt").unwrap_or(0)].chars().count())
+        .collect();
+    assert_eq!(widths.len(), 1, "the points column is aligned: {list}");
+    assert!(
+        list.lines()
+            .last()
+            .unwrap()
+            .contains(&format!("0 done, {} to do", m.entries.len() - 3)),
+        "{list}"
+    );
+    // a target that did not run: its exercises are not known
+    run.targets.clear();
+    assert_eq!(learn::states(&m, &run)[1], State::Unknown);
+    run.build_error = Some((
+        "crates/whitted/src/camera.rs:3:5: mismatched types".into(),
+        String::new(),
+    ));
+    assert!(learn::states(&m, &run).iter().all(|s| *s == State::Unknown));
+}
+
+/// The id in a todo!()'s panic message is read back, wherever the message sits.
+#[test]
+fn the_todo_message_names_its_exercise() {
+    assert_eq!(
+        learn::todo_id(
+            "thread 't' panicked at a.rs:1:1:\nnot yet implemented: exercise 2.13: The plane — see …"
+        ),
+        Some("2.13")
+    );
+    assert_eq!(learn::todo_id("assertion failed"), None);
+}
+
+/// libtest's failure blocks are read per test.
+#[test]
+fn failure_blocks_are_read_per_test() {
+    let out = "running 2 tests\ntest a ... FAILED\ntest b ... FAILED\n\nfailures:\n\n---- a stdout ----\nboom a\n\n---- b stdout ----\nboom b\nmore\n\nfailures:\n    a\n    b\n\ntest result: FAILED.";
+    let blocks = whitted_course::cargo::failure_blocks(out);
+    assert_eq!(blocks["a"].trim(), "boom a");
+    assert_eq!(blocks["b"].trim(), "boom b\nmore");
+    assert_eq!(learn::bar(3, 6, 10), "[#####-----]");
+    assert_eq!(learn::bar(0, 0, 4), "[----]");
+}
+
+/// Editors' backup and swap files do not trigger a rerun; sources do.
+#[test]
+fn watch_ignores_editor_files() {
+    assert!(learn::is_source_change(Path::new("src/shapes/sphere.rs")));
+    for f in ["src/a.rs~", "src/.a.rs.swp", "src/.#a.rs", "src/4913"] {
+        assert!(!learn::is_source_change(Path::new(f)), "{f}");
+    }
+}
+
+/// Working in order works: each exercise's own tests run only that exercise and the ones
+/// before it (by chapters/exercise-tests.toml, which CI checks against measurements), so
+/// when a student reaches an exercise, the failing test points at it.
+#[test]
+fn an_exercises_own_tests_run_only_it_and_exercises_before_it() {
+    let m = manifest();
+    let map = whitted_course::deps::load_map(&root(), &m).unwrap();
+    for (i, e) in m.entries.iter().enumerate() {
+        let prefix = e.exercise.test_prefix();
+        let own: Vec<&String> = map
+            .iter()
+            .flat_map(|g| g.tests.iter())
+            .filter(|t| learn::test_name(t).starts_with(&prefix))
+            .collect();
+        assert!(
+            !own.is_empty(),
+            "exercise {} has no test of its own in the map",
+            e.exercise.id
+        );
+        for t in own {
+            let needs = whitted_course::deps::needs_of(&map, t);
+            assert!(
+                needs.contains(&i),
+                "{t} does not even need exercise {}",
+                e.exercise.id
+            );
+            let later: Vec<&str> = needs
+                .iter()
+                .filter(|&&j| j > i)
+                .map(|&j| m.entries[j].exercise.id.as_str())
+                .collect();
+            assert!(later.is_empty(), "{t} needs later exercises {later:?}");
+        }
+    }
+}
+
+/// Colour only on a terminal, and never with NO_COLOR set to something.
+#[test]
+fn colour_only_on_a_terminal_without_no_color() {
+    use std::ffi::OsStr;
+    let painted = |s: Style| s.good("x").contains('\x1b');
+    assert!(painted(Style::choose(true, None)));
+    assert!(painted(Style::choose(true, Some(OsStr::new("")))));
+    assert!(!painted(Style::choose(true, Some(OsStr::new("1")))));
+    assert!(!painted(Style::choose(false, None)));
+    assert!(!painted(Style::plain()));
+}

@@ -1,0 +1,471 @@
+//! Handouts built and run, as a course uses them. These tests build copies of the project,
+//! so they are `#[ignore]`d in a plain `cargo test`; `.ci/run` runs them with
+//! `cargo test --release --test handout_build -- --ignored --test-threads 1`.
+//!
+//! - A handout of every exercise builds, and its tests fail exactly as
+//!   `chapters/exercise-tests.toml` says (each exercise's own tests, and the render tests
+//!   that need it) — set equality; `whitted learn` in it shows 0 of N and the first
+//!   exercise's failing test; a chapter binary says which exercise is missing, in one line.
+//! - A handout of chapter 4 alone fails exactly chapter 4's tests; putting its reference bodies
+//!   back one by one turns its exercises green in order, and `whitted learn` ends at N of N.
+//! - Across all chapters, exercise by exercise: in a copy where every exercise from the k-th
+//!   on is switched off (the poison switch of `whitted formulas --prove`, one build for all
+//!   steps), `whitted learn` shows k of N done and exercise k next, for k = 0 … N.
+//! - `whitted learn watch` reruns when a file is saved by renaming, and draws the chapter.
+
+use std::collections::BTreeSet;
+use std::path::{Path, PathBuf};
+use std::process::{Command, Output};
+
+use whitted_course::cargo::{TestOutcome, parse_libtest};
+use whitted_course::deps;
+use whitted_course::handout;
+use whitted_course::manifest::{self, Manifest};
+use whitted_course::prove;
+
+/// The workspace's root: this crate sits in `crates/whitted-course`.
+fn root() -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR"))
+        .ancestors()
+        .nth(2)
+        .expect("the crate sits two levels below the workspace's root")
+        .to_path_buf()
+}
+
+fn manifest() -> Manifest {
+    manifest::load(&root().join(manifest::DEFAULT_PATH)).unwrap()
+}
+
+/// One target directory for every copy, so the dependencies are built once.
+fn target_dir() -> PathBuf {
+    root().join("target").join("handout")
+}
+
+fn cargo() -> Command {
+    let mut c = Command::new(std::env::var_os("CARGO").unwrap_or_else(|| "cargo".into()));
+    c.env("CARGO_TARGET_DIR", target_dir())
+        .env("CARGO_PROFILE_DEV_DEBUG", "0")
+        .env_remove("WHITTED_POISON");
+    c
+}
+
+fn text(o: &Output) -> String {
+    format!(
+        "{}{}",
+        String::from_utf8_lossy(&o.stdout),
+        String::from_utf8_lossy(&o.stderr)
+    )
+}
+
+/// Builds the handout's test targets in `project` and runs each: the failed and the passed
+/// tests, as `target::name`.
+fn run_tests(project: &Path, m: &Manifest) -> (BTreeSet<String>, BTreeSet<String>) {
+    let exes = prove::build_tests(project, &target_dir(), &m.handout.tests, &[]).unwrap();
+    let (mut failed, mut passed) = (BTreeSet::new(), BTreeSet::new());
+    for (target, exe) in exes {
+        let out = Command::new(&exe)
+            .args(["--test-threads", "2"])
+            .current_dir(project)
+            .env_remove("WHITTED_POISON")
+            .env_remove("WHITTED_BLESS")
+            .output()
+            .unwrap();
+        let stdout = String::from_utf8_lossy(&out.stdout);
+        assert!(
+            stdout.contains("test result:"),
+            "{target} crashed: {}",
+            text(&out)
+        );
+        for (name, outcome) in parse_libtest(&stdout) {
+            let id = format!("{target}::{name}");
+            match outcome {
+                TestOutcome::Failed => failed.insert(id),
+                TestOutcome::Passed => passed.insert(id),
+                TestOutcome::Ignored => false,
+            };
+        }
+    }
+    (failed, passed)
+}
+
+/// The tests the map (chapters/exercise-tests.toml) says fail when the exercises `stripped`
+/// are missing.
+fn expected(m: &Manifest, all: &BTreeSet<String>, stripped: &[usize]) -> BTreeSet<String> {
+    let map = deps::load_map(&root(), m).unwrap();
+    deps::expected(&map, all, stripped)
+}
+
+/// Asserts two sets of tests are equal, listing the differences.
+#[track_caller]
+fn assert_same(failed: &BTreeSet<String>, expected: &BTreeSet<String>) {
+    let extra: Vec<_> = failed.difference(expected).collect();
+    let missing: Vec<_> = expected.difference(failed).collect();
+    assert!(
+        extra.is_empty() && missing.is_empty(),
+        "failing but not expected: {extra:?}\nexpected but passing: {missing:?}"
+    );
+}
+
+/// Asserts that a `whitted learn` report counts `done` exercises done and names exercise
+/// `next` (a manifest index) as the next one, or, with `None`, says that all of them pass.
+#[track_caller]
+fn assert_progress(report: &str, m: &Manifest, done: usize, next: Option<usize>) {
+    let n = m.entries.len();
+    assert!(
+        report.contains(&format!("{done} of {n} exercises done")),
+        "{report}"
+    );
+    match next {
+        Some(i) => assert!(
+            report.contains(&format!("✗ exercise {} —", m.entries[i].exercise.id)),
+            "{report}"
+        ),
+        None => assert!(
+            report.contains(&format!("all {n} exercises pass")),
+            "{report}"
+        ),
+    }
+}
+
+/// A test's name without its target.
+fn learn_name(t: &str) -> &str {
+    whitted_course::learn::test_name(t)
+}
+
+/// `whitted learn` (this build's) run on the project at `project`.
+fn learn(project: &Path, poison: Option<String>) -> String {
+    let mut c = Command::new(env!("CARGO_BIN_EXE_whitted"));
+    c.args(["learn", "--root"])
+        .arg(project)
+        .env("CARGO_TARGET_DIR", target_dir())
+        .env("CARGO_PROFILE_DEV_DEBUG", "0")
+        .env("NO_COLOR", "1")
+        .env_remove("WHITTED_POISON");
+    if let Some(p) = poison {
+        c.env("WHITTED_POISON", p);
+    }
+    let out = c.output().unwrap();
+    assert!(out.status.success(), "{}", text(&out));
+    String::from_utf8_lossy(&out.stdout).into_owned()
+}
+
+/// Exercise `i`'s file in the handout at `student`: its path, its text now, and its text with
+/// the `todo!()` between the markers replaced by the reference body of region `r`.
+fn reference_body_back(
+    student: &Path,
+    m: &Manifest,
+    r: &handout::Region,
+    i: usize,
+) -> (PathBuf, String, String) {
+    let path = student.join(&r.file);
+    let now = std::fs::read_to_string(&path).unwrap();
+    let todo = format!(
+        "{}{}\n",
+        r.indent,
+        handout::todo_statement(&root(), &m.entries[i])
+    );
+    let back = now.replacen(&todo, &r.solution, 1);
+    (path, now, back)
+}
+
+#[test]
+#[ignore = "builds a handout (minutes); .ci/run runs it"]
+fn a_full_handout_fails_exactly_the_tests_of_its_exercises() {
+    let m = manifest();
+    let n = m.entries.len();
+    let dir = tempfile::tempdir().unwrap();
+    let student = dir.path().join("student");
+    let all: Vec<usize> = (0..n).collect();
+    handout::write(&root(), &m, &all, &student).unwrap();
+
+    let built = cargo()
+        .args(["build", "--locked"])
+        .current_dir(&student)
+        .output()
+        .unwrap();
+    assert!(
+        built.status.success(),
+        "the handout does not build: {}",
+        text(&built)
+    );
+
+    let (failed, passed) = run_tests(&student, &m);
+    let every: BTreeSet<String> = failed.union(&passed).cloned().collect();
+    assert_same(&failed, &expected(&m, &every, &all));
+    eprintln!(
+        "full handout: {} of {} tests fail, as the manifest says",
+        failed.len(),
+        every.len()
+    );
+
+    let report = learn(&student, None);
+    let first = &m.entries[0].exercise;
+    assert!(
+        report.contains(&format!("0 of {n} exercises done")),
+        "{report}"
+    );
+    assert!(
+        report.contains(&format!("✗ exercise {} — {}", first.id, first.title)),
+        "{report}"
+    );
+    assert!(
+        report.contains(&format!("failing: {}", first.test_prefix())),
+        "{report}"
+    );
+
+    // a chapter binary over the missing exercises: one line, exit status 2
+    let exe = target_dir().join("debug").join("ch02_generic_objects");
+    let out = Command::new(exe)
+        .args(["--width", "8", "-o"])
+        .arg(dir.path().join("x.png"))
+        .output()
+        .unwrap();
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(2), "{err}");
+    assert_eq!(err.lines().count(), 1, "{err}");
+    assert!(
+        err.starts_with("error: exercise ") && err.contains("is not written yet"),
+        "{err}"
+    );
+    assert!(!dir.path().join("x.png").exists());
+}
+
+#[test]
+#[ignore = "builds a handout (minutes); .ci/run runs it"]
+fn a_chapter_handout_fails_its_tests_and_turns_green_as_the_bodies_come_back() {
+    let m = manifest();
+    let n = m.entries.len();
+    let chapter4 = handout::select(&m, Some((4, 4)), &[]).unwrap();
+    let dir = tempfile::tempdir().unwrap();
+    let student = dir.path().join("ch4");
+    handout::write(&root(), &m, &chapter4, &student).unwrap();
+    let (failed, passed) = run_tests(&student, &m);
+    let every: BTreeSet<String> = failed.union(&passed).cloned().collect();
+    assert_same(&failed, &expected(&m, &every, &chapter4));
+
+    // the reference bodies back, one at a time, in order; an exercise is done once none of the
+    // exercises its own tests need is missing (by the map: 5.5 waits for chapter 4 too)
+    let map = deps::load_map(&root(), &m).unwrap();
+    let done_with = |missing: &[usize]| {
+        m.entries
+            .iter()
+            .filter(|e| {
+                every
+                    .iter()
+                    .filter(|t| learn_name(t).starts_with(&e.exercise.test_prefix()))
+                    .all(|t| deps::needs_of(&map, t).iter().all(|i| !missing.contains(i)))
+            })
+            .count()
+    };
+    let report = learn(&student, None);
+    assert!(
+        report.contains(&format!("{} of {n} exercises done", done_with(&chapter4))),
+        "{report}"
+    );
+    let regions = handout::regions(&root(), &m).unwrap();
+    for (j, &i) in chapter4.iter().enumerate() {
+        let (path, now, back) = reference_body_back(&student, &m, &regions[i], i);
+        assert_ne!(
+            back, now,
+            "exercise {}'s todo!() not found",
+            m.entries[i].exercise.id
+        );
+        std::fs::write(&path, back).unwrap();
+        let report = learn(&student, None);
+        assert_progress(
+            &report,
+            &m,
+            done_with(&chapter4[j + 1..]),
+            chapter4.get(j + 1).copied(),
+        );
+    }
+}
+
+#[test]
+#[ignore = "builds a poisoned copy and runs whitted learn N + 1 times (minutes); .ci/run runs it"]
+fn exercise_by_exercise_learn_counts_up_to_all_of_them() {
+    let m = manifest();
+    let n = m.entries.len();
+    // a copy of the project with every exercise behind the poison switch
+    let locations = prove::locate_all(&root(), &m).unwrap();
+    let poisoned =
+        prove::PoisonedCopy::new(&root(), &m, &locations, "whitted-learn-", false).unwrap();
+    let copy = &poisoned.project;
+
+    for k in 0..=n {
+        // exercises k … n−1 missing, those before written
+        let poison = (k < n).then(|| format!("{k}-{}", n - 1));
+        let report = learn(copy, Some(poison.unwrap_or_default()));
+        assert_progress(&report, &m, k, (k < n).then_some(k));
+    }
+}
+
+#[test]
+#[ignore = "builds a handout and watches it (a minute); .ci/run runs it"]
+fn learn_watch_reruns_on_a_save_by_renaming_and_draws_the_chapter() {
+    let m = manifest();
+    let i = m
+        .entries
+        .iter()
+        .position(|e| e.exercise.id == "3.1")
+        .unwrap();
+    let dir = tempfile::tempdir().unwrap();
+    let student = dir.path().join("w");
+    handout::write(&root(), &m, &[i], &student).unwrap();
+    let out = dir.path().join("watch.out");
+    let mut child = Command::new(env!("CARGO_BIN_EXE_whitted"))
+        .args(["learn", "watch", "--cycles", "1", "--root"])
+        .arg(&student)
+        .env("CARGO_TARGET_DIR", target_dir())
+        .env("CARGO_PROFILE_DEV_DEBUG", "0")
+        .env("NO_COLOR", "1")
+        .env_remove("WHITTED_POISON")
+        .stdout(std::fs::File::create(&out).unwrap())
+        .spawn()
+        .unwrap();
+    let text = || std::fs::read_to_string(&out).unwrap_or_default();
+    let started = std::time::Instant::now();
+    while !text().contains("watching crates/whitted/src/") {
+        assert!(
+            started.elapsed().as_secs() < 600,
+            "no first report: {}",
+            text()
+        );
+        std::thread::sleep(std::time::Duration::from_millis(200));
+    }
+    assert!(text().contains("✗ exercise 3.1"), "{}", text());
+    // the reference body back, saved as many editors save: a new file renamed over the old
+    let r = &handout::regions(&root(), &m).unwrap()[i];
+    let (path, _, back) = reference_body_back(&student, &m, r, i);
+    std::fs::write(path.with_extension("tmp"), back).unwrap();
+    std::fs::rename(path.with_extension("tmp"), &path).unwrap();
+    let status = child.wait().unwrap();
+    let report = text();
+    assert!(status.success(), "{report}");
+    let n = m.entries.len();
+    assert!(
+        report.contains(&format!("{n} of {n} exercises done")),
+        "{report}"
+    );
+    assert!(
+        report.contains("✓ picture: chapter 3's scene as your code draws it"),
+        "{report}"
+    );
+    let png = student.join(".whitted").join("ch03_shading.png");
+    let decoded = png::Decoder::new(std::io::BufReader::new(std::fs::File::open(&png).unwrap()))
+        .read_info()
+        .map(|r| r.info().size());
+    assert!(decoded.is_ok_and(|(w, h)| w > 0 && h > 0), "{png:?}");
+}
+
+/// Each chapter's binary renders its scene when only the exercises of the later chapters are
+/// missing: chapter 1 reads only the camera and the image, and no chapter calls a function of
+/// a later one. In a copy with every exercise behind the poison switch (one build), chapter N
+/// renders with the exercises of chapters N + 1 … 5 poisoned, and fails with those of chapter
+/// N poisoned.
+#[test]
+#[ignore = "builds a poisoned copy's chapter binaries (a minute); .ci/run runs it"]
+fn each_chapter_renders_over_a_handout_of_the_later_chapters() {
+    let m = manifest();
+    let locations = prove::locate_all(&root(), &m).unwrap();
+    let poisoned =
+        prove::PoisonedCopy::new(&root(), &m, &locations, "whitted-chapters-", false).unwrap();
+    let copy = &poisoned.project;
+    let built = cargo()
+        .args(["build", "-p", "whitted-app", "--bins"])
+        .current_dir(copy)
+        .output()
+        .unwrap();
+    assert!(built.status.success(), "{}", text(&built));
+    let range = |chapters: std::ops::RangeInclusive<u8>| {
+        let of: Vec<usize> = (0..m.entries.len())
+            .filter(|&i| chapters.contains(&m.entries[i].chapter))
+            .collect();
+        match (of.first(), of.last()) {
+            (Some(a), Some(b)) => format!("{a}-{b}"),
+            _ => String::new(),
+        }
+    };
+    for n in 1..=5u8 {
+        let name = handout::chapter_dir(copy, n);
+        let exe = target_dir().join("debug").join(&name);
+        let png = poisoned.runs.join(format!("{name}.png"));
+        let render = |poison: String| {
+            Command::new(&exe)
+                .arg(copy.join("scenes").join(format!("{name}.toml")))
+                .args(["--width", "64", "--quiet", "-o"])
+                .arg(&png)
+                .env("WHITTED_POISON", poison)
+                .output()
+                .unwrap()
+        };
+        let later = render(range(n + 1..=5));
+        assert!(
+            later.status.success(),
+            "chapter {n} over a handout of chapters {}–5: {}",
+            n + 1,
+            text(&later)
+        );
+        assert!(png.is_file(), "chapter {n} wrote no image");
+        let own = render(range(n..=n));
+        assert!(
+            !own.status.success(),
+            "chapter {n} rendered without its own exercises"
+        );
+    }
+}
+
+/// While the student's code does not compile, `learn` shows the compiler's first error at the
+/// student's file:line:col and exits with status 1, and `learn hint` and `learn list` still
+/// answer.
+#[test]
+#[ignore = "builds a handout (a minute); .ci/run runs it"]
+fn learn_answers_while_the_code_does_not_compile() {
+    let m = manifest();
+    let dir = tempfile::tempdir().unwrap();
+    let student = dir.path().join("broken");
+    let first = handout::select(&m, Some((1, 1)), &[]).unwrap();
+    handout::write(&root(), &m, &first, &student).unwrap();
+    let camera = student.join("crates/whitted/src/camera.rs");
+    let text_now = std::fs::read_to_string(&camera).unwrap();
+    let todo = handout::todo_statement(&root(), &m.entries[first[1]]);
+    let broken = text_now.replacen(&todo, "let h: Real = near * ; h", 1);
+    assert_ne!(broken, text_now);
+    std::fs::write(&camera, &broken).unwrap();
+    let line = broken.lines().position(|l| l.contains("near * ;")).unwrap() + 1;
+    let run = |args: &[&str]| {
+        Command::new(env!("CARGO_BIN_EXE_whitted"))
+            .arg("learn")
+            .args(args)
+            .arg("--root")
+            .arg(&student)
+            .env("CARGO_TARGET_DIR", target_dir())
+            .env("CARGO_PROFILE_DEV_DEBUG", "0")
+            .env("NO_COLOR", "1")
+            .env_remove("WHITTED_POISON")
+            .output()
+            .unwrap()
+    };
+    let out = run(&[]);
+    let report = String::from_utf8_lossy(&out.stdout);
+    assert_eq!(out.status.code(), Some(1), "{}", text(&out));
+    assert!(
+        report.contains("does not compile")
+            && report.contains(&format!("crates/whitted/src/camera.rs:{line}:")),
+        "{report}"
+    );
+    let hint = run(&["hint"]);
+    assert!(hint.status.success(), "{}", text(&hint));
+    assert!(
+        String::from_utf8_lossy(&hint.stdout).contains("hint 1 of"),
+        "{}",
+        text(&hint)
+    );
+    let list = run(&["list"]);
+    assert!(list.status.success(), "{}", text(&list));
+    let listed = String::from_utf8_lossy(&list.stdout);
+    assert!(
+        listed.contains("does not compile") && listed.contains(&m.entries[0].exercise.title),
+        "{listed}"
+    );
+}

@@ -1,0 +1,97 @@
+//! Where things are in a whitted project: the one place that knows the workspace's shape.
+//!
+//! ```text
+//! Cargo.toml                  the workspace
+//! crates/whitted/             the renderer: src/ holds the exercises, tests/ the student's tests
+//! crates/whitted-app/         the chapter binaries (src/bin/chNN_name.rs) and the window
+//! crates/whitted-learn/       the student's loop (`cargo learn`)
+//! crates/whitted-course/      the instructor's tools (`whitted formulas`, `handout`, `grade` …)
+//! chapters/                   the chapters' READMEs, formulas.toml, exercise-tests.toml
+//! scenes/                     the scenes, one per chapter
+//! ```
+//!
+//! Every path here is relative to the project's root, the workspace's directory; a handout has
+//! the same shape, without the instructor's files.
+//!
+//! Course book: [The instructor's guide](../../../../docs/book/instructor-guide.html) (`docs/src/instructor-guide.md`).
+
+use std::path::{Path, PathBuf};
+
+/// The marker line that opens an exercise's solution region: `// BEGIN SOLUTION 2.3`.
+pub const BEGIN: &str = "// BEGIN SOLUTION";
+/// The marker line that closes it.
+pub const END: &str = "// END SOLUTION";
+
+/// The renderer's crate: what a student writes, and the tests that check it.
+pub const CORE: &str = "crates/whitted";
+/// The renderer's package name, as `cargo -p` takes it.
+pub const CORE_PACKAGE: &str = "whitted";
+/// The chapter binaries' crate.
+pub const APP: &str = "crates/whitted-app";
+/// The chapter binaries' package name.
+pub const APP_PACKAGE: &str = "whitted-app";
+/// The student's loop (`cargo learn`), which a handout holds.
+pub const LEARN: &str = "crates/whitted-learn";
+/// The student's loop's package name.
+pub const LEARN_PACKAGE: &str = "whitted-learn";
+/// The instructor's course tools, which a handout does not hold.
+pub const COURSE: &str = "crates/whitted-course";
+
+/// The renderer's sources, where every exercise is (`crates/whitted/src`).
+#[must_use]
+pub fn core_src() -> PathBuf {
+    Path::new(CORE).join("src")
+}
+
+/// The renderer's crate root file (`crates/whitted/src/lib.rs`).
+#[must_use]
+pub fn core_lib() -> PathBuf {
+    core_src().join("lib.rs")
+}
+
+/// The renderer's integration tests (`crates/whitted/tests`).
+#[must_use]
+pub fn core_tests() -> PathBuf {
+    Path::new(CORE).join("tests")
+}
+
+/// The file of the test target `name` of the renderer (`crates/whitted/tests/NAME.rs`).
+#[must_use]
+pub fn core_test_file(name: &str) -> PathBuf {
+    core_tests().join(format!("{name}.rs"))
+}
+
+/// The nearest directory at or above `start` that is a whitted project (a `Cargo.toml` beside
+/// the renderer's crate), else the nearest with a `Cargo.toml`.
+#[must_use]
+pub fn find_root(start: &Path) -> Option<PathBuf> {
+    let mut any = None;
+    for dir in start.ancestors() {
+        if dir.join("Cargo.toml").is_file() {
+            if dir.join(CORE).join("Cargo.toml").is_file() {
+                return Some(dir.to_path_buf());
+            }
+            any.get_or_insert_with(|| dir.to_path_buf());
+        }
+    }
+    any
+}
+
+/// The directory of chapter `chapter` under `chapters/` (`ch02_generic_objects`), or
+/// `chNN` when there is none.
+#[must_use]
+pub fn chapter_dir(root: &Path, chapter: u8) -> String {
+    let prefix = format!("ch{chapter:02}_");
+    std::fs::read_dir(root.join("chapters"))
+        .ok()
+        .and_then(|dir| {
+            let mut names: Vec<String> = dir
+                .filter_map(|e| e.ok())
+                .map(|e| e.file_name().to_string_lossy().into_owned())
+                .filter(|n| n.starts_with(&prefix))
+                .collect();
+            names.sort();
+            names.into_iter().next()
+        })
+        .unwrap_or_else(|| format!("ch{chapter:02}"))
+}

@@ -1,0 +1,121 @@
+//! # whitted-learn — the student's loop
+//!
+//! What a student's handout needs to run `cargo learn`, and nothing more: the manifest of the
+//! exercises (`chapters/formulas.toml`, read by [`manifest`]) and the measured map of which
+//! tests need which exercise ([`map`]), one runner for cargo and the test executables it
+//! builds ([`cargo`]), where things are in a project ([`layout`]), and the loop itself
+//! ([`learn`]): the verdict on the next exercise, the progress, hints and the chapter's picture,
+//! after every save with `watch`.
+//!
+//! It does not depend on the renderer: it runs cargo on the student's project, so an edit of
+//! the renderer never rebuilds it and a compile error never stops it. The instructor's tools
+//! (`whitted formulas`, `handout`, `grade`, `figures`, `book`) are the crate `whitted-course`,
+//! built on this one and left out of handouts.
+//!
+//! Course book: [The student's guide](../../../docs/book/student-guide.html) (`docs/src/student-guide.md`).
+
+pub mod args;
+pub mod cargo;
+pub mod cli;
+pub mod files;
+pub mod layout;
+pub mod learn;
+pub mod manifest;
+pub mod map;
+
+use std::path::PathBuf;
+
+/// The chapters, as the binaries name them (index 0 is chapter 1).
+pub const CHAPTERS: [&str; 5] = [
+    "camera rays",
+    "generic objects",
+    "shading",
+    "shadows",
+    "reflection and refraction",
+];
+
+/// The section titles of the course notes, the only values a manifest's `section` may take.
+pub const SECTIONS: [&str; 14] = [
+    "Principles of Ray Tracing",
+    "Ray Tracing Process",
+    "Generic Objects",
+    "Generic Sphere",
+    "Generic Plane",
+    "Generic Cylinder",
+    "Generic Cone",
+    "Convex Polyhedra",
+    "Computational Aspects",
+    "Shading",
+    "Surface Normals at Intersections",
+    "Shadowing",
+    "Reflection and Refraction",
+    "Lighting Equations",
+];
+
+/// What can go wrong in the course tools, each worded for the person running them.
+#[derive(Debug, thiserror::Error)]
+pub enum Error {
+    /// A mistake in the manifest; `line` and `col` count from 1.
+    #[error("{file}:{line}:{col}: {message}")]
+    Manifest {
+        /// The manifest file as named on the command line.
+        file: String,
+        /// Line of the offending value.
+        line: usize,
+        /// Column of the offending value (in characters).
+        col: usize,
+        /// What is wrong.
+        message: String,
+    },
+    /// A manifest entry names a function that cannot be found, or is not unique.
+    #[error("{manifest}:{line}: {function}: {message}")]
+    Function {
+        /// The manifest file.
+        manifest: String,
+        /// The entry's line in the manifest.
+        line: usize,
+        /// The entry's function path.
+        function: String,
+        /// What went wrong, naming the source file.
+        message: String,
+    },
+    /// A source file does not parse as Rust.
+    #[error("{file}:{line}:{col}: cannot parse the Rust source: {message}")]
+    Parse {
+        /// The source file.
+        file: String,
+        /// Line of the error.
+        line: usize,
+        /// Column of the error (in characters).
+        col: usize,
+        /// The parser's message.
+        message: String,
+    },
+    /// A file or directory could not be read, written or copied.
+    #[error("{}: {source}", path.display())]
+    Io {
+        /// The path.
+        path: PathBuf,
+        /// The reason.
+        source: std::io::Error,
+    },
+    /// The proof could not be carried out (the build failed, the baseline is red …).
+    #[error("{0}")]
+    Proof(String),
+    /// Cargo or a test executable could not be run, or did not do its work.
+    #[error("{0}")]
+    Cargo(String),
+    /// A command-line value makes no sense (an `--only` that names no entry …).
+    #[error("{0}")]
+    Usage(String),
+}
+
+impl Error {
+    /// An I/O error on `path`.
+    pub fn io(path: impl Into<PathBuf>, source: std::io::Error) -> Self {
+        Error::Io {
+            path: path.into(),
+            source,
+        }
+    }
+}

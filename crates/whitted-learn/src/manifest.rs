@@ -1,0 +1,451 @@
+//! Reading and checking the manifest `chapters/formulas.toml`, the one list of the functions
+//! that compute the notes' formulas.
+//!
+//! Every key is checked: unknown keys, a chapter outside 1–5, a section the notes do not
+//! have, a malformed function path or a function listed twice are errors that name the file,
+//! line and column of the offending value, e.g.
+//! `chapters/formulas.toml:12:12: chapter: expected 1 to 5, found 7`.
+//!
+//! Course book: [The instructor's guide](../../../../docs/book/instructor-guide.html) (`docs/src/instructor-guide.md`).
+
+use std::collections::HashMap;
+use std::ops::Range;
+use std::path::Path;
+
+use serde::Deserialize;
+use toml::Spanned;
+
+use super::{Error, SECTIONS};
+use crate::files::line_col;
+
+/// Where the manifest lives, relative to the project's root.
+pub const DEFAULT_PATH: &str = "chapters/formulas.toml";
+
+/// The placeholder that [`Prove::filter`] replaces with a chapter's number.
+pub const CHAPTER_PLACEHOLDER: &str = "{chapter}";
+
+/// The checked manifest.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Manifest {
+    /// The file's name, as given to [`load`] or [`parse`], for messages.
+    pub file: String,
+    /// How the proof finds the render paths.
+    pub prove: Prove,
+    /// What a handout holds.
+    pub handout: HandoutTable,
+    /// The formula functions, in the file's order; an entry's index is its number in the proof.
+    pub entries: Vec<Entry>,
+}
+
+/// The `[prove]` table: which tests are the render paths.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Prove {
+    /// The integration test target (a file in `tests/`) whose tests are the render paths.
+    pub test: String,
+    /// The libtest filter that selects one chapter's tests; `{chapter}` stands for its number.
+    pub filter: String,
+}
+
+impl Prove {
+    /// The filter for chapter `chapter`: [`Prove::filter`] with `{chapter}` replaced.
+    #[must_use]
+    pub fn filter_for(&self, chapter: u8) -> String {
+        self.filter
+            .replace(CHAPTER_PLACEHOLDER, &chapter.to_string())
+    }
+}
+
+/// The `[handout]` table: which test targets a student's copy keeps.
+#[derive(Clone, Debug, PartialEq)]
+pub struct HandoutTable {
+    /// The test targets (files of `tests/` without `.rs`, or directories with a `main.rs`)
+    /// that go into a handout; the others are the instructor's.
+    pub tests: Vec<String>,
+}
+
+/// One `[[formula]]` entry: a function and the formula of the notes it computes.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Entry {
+    /// The function's path in the crate: `module::fn` or `module::Type::method`.
+    pub function: String,
+    /// The chapter (1–5) whose render paths must all call the function.
+    pub chapter: u8,
+    /// The section of the notes where the formula is given.
+    pub section: String,
+    /// The formula, in the notes' symbols.
+    pub formula: String,
+    /// The line of the entry's `function` key in the manifest (from 1).
+    pub line: usize,
+    /// The exercise the function is: its id, title, task, hints and points.
+    pub exercise: Exercise,
+}
+
+/// The exercise a formula function is, for the handout, `whitted learn` and grading.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Exercise {
+    /// `chapter.k`: the k-th function of its chapter in the manifest (`2.3`).
+    pub id: String,
+    /// A few words naming it ("The sphere's discriminant").
+    pub title: String,
+    /// What to write: the contract the function must keep (its signature is in the source).
+    pub task: String,
+    /// Two or three hints, from a nudge to nearly the answer.
+    pub hints: Vec<String>,
+    /// What the exercise is worth.
+    pub points: u32,
+}
+
+impl Exercise {
+    /// The prefix of the names of the exercise's own tests: `ex2_3_` for exercise 2.3.
+    #[must_use]
+    pub fn test_prefix(&self) -> String {
+        format!("ex{}_", self.id.replace('.', "_"))
+    }
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct RawManifest {
+    prove: Spanned<RawProve>,
+    handout: Spanned<RawHandout>,
+    #[serde(default)]
+    formula: Vec<Spanned<RawEntry>>,
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct RawProve {
+    test: Spanned<String>,
+    filter: Spanned<String>,
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct RawHandout {
+    tests: Spanned<Vec<String>>,
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct RawEntry {
+    function: Spanned<String>,
+    chapter: Spanned<i64>,
+    section: Spanned<String>,
+    formula: Spanned<String>,
+    id: Option<Spanned<String>>,
+    title: Option<Spanned<String>>,
+    task: Option<Spanned<String>>,
+    hints: Option<Spanned<Vec<String>>>,
+    points: Option<Spanned<i64>>,
+}
+
+/// Reads and checks the manifest at `path`; messages name the path as given.
+pub fn load(path: &Path) -> Result<Manifest, Error> {
+    let text = std::fs::read_to_string(path).map_err(|e| Error::io(path, e))?;
+    parse(&text, &path.display().to_string())
+}
+
+/// A mistake at byte range `span` of the TOML text `text` of `file`, reported as
+/// `file:line:col: message`.
+pub fn error_at(text: &str, file: &str, span: Range<usize>, message: String) -> Error {
+    let (line, col) = line_col(text, span.start);
+    Error::Manifest {
+        file: file.to_string(),
+        line,
+        col,
+        message,
+    }
+}
+
+/// Reads TOML text into `T`; a syntax error, a missing or unknown key or a wrong type is
+/// reported where it is, in one line ([`error_at`]).
+pub fn from_toml<T: serde::de::DeserializeOwned>(text: &str, file: &str) -> Result<T, Error> {
+    toml::from_str(text).map_err(|e| {
+        let message = e.message().trim().replace('\n', " ");
+        error_at(text, file, e.span().unwrap_or(0..0), message)
+    })
+}
+
+/// Checks the manifest text `text`; `file` names it in messages.
+pub fn parse(text: &str, file: &str) -> Result<Manifest, Error> {
+    let err = |span: Range<usize>, message: String| error_at(text, file, span, message);
+    let raw: RawManifest = from_toml(text, file)?;
+
+    let (test, filter) = (&raw.prove.get_ref().test, &raw.prove.get_ref().filter);
+    if test.get_ref().is_empty() || test.get_ref().contains(char::is_whitespace) {
+        return Err(err(
+            test.span(),
+            format!(
+                "prove.test: expected the name of a test target (a file in tests/ without .rs), found {:?}",
+                test.get_ref()
+            ),
+        ));
+    }
+    if filter.get_ref().trim().is_empty() {
+        return Err(err(
+            filter.span(),
+            "prove.filter: expected a test-name filter such as \"ch{chapter}_\", found an empty one"
+                .into(),
+        ));
+    }
+    let prove = Prove {
+        test: test.get_ref().clone(),
+        filter: filter.get_ref().clone(),
+    };
+
+    let tests = &raw.handout.get_ref().tests;
+    if tests.get_ref().is_empty()
+        || tests
+            .get_ref()
+            .iter()
+            .any(|t| t.is_empty() || t.contains(['/', '\\', ' ']) || t.ends_with(".rs"))
+    {
+        return Err(err(
+            tests.span(),
+            format!(
+                "handout.tests: expected the names of test targets (files of tests/ without .rs), found {:?}",
+                tests.get_ref()
+            ),
+        ));
+    }
+    if !tests.get_ref().contains(&prove.test) {
+        return Err(err(
+            tests.span(),
+            format!(
+                "handout.tests: the render paths `{}` of [prove] must go into the handout too",
+                prove.test
+            ),
+        ));
+    }
+    let handout = HandoutTable {
+        tests: tests.get_ref().clone(),
+    };
+
+    if raw.formula.is_empty() {
+        return Err(err(
+            raw.prove.span(),
+            "the manifest lists no function: expected at least one [[formula]] table".into(),
+        ));
+    }
+
+    let mut entries = Vec::with_capacity(raw.formula.len());
+    let mut seen: HashMap<String, usize> = HashMap::new();
+    let mut per_chapter = [0usize; 5];
+    for spanned in &raw.formula {
+        let raw = spanned.get_ref();
+        let function = raw.function.get_ref().trim();
+        if !is_function_path(function) {
+            return Err(err(
+                raw.function.span(),
+                format!(
+                    "function: expected a path in the crate such as \"camera::viewing_basis\" or \"ray::Ray::at\", found {:?}",
+                    raw.function.get_ref()
+                ),
+            ));
+        }
+        let (line, _) = line_col(text, raw.function.span().start);
+        if let Some(first) = seen.insert(function.to_string(), line) {
+            return Err(err(
+                raw.function.span(),
+                format!("function {function} is listed twice (first on line {first})"),
+            ));
+        }
+        let chapter = *raw.chapter.get_ref();
+        let chapter = u8::try_from(chapter)
+            .ok()
+            .filter(|c| (1..=5).contains(c))
+            .ok_or_else(|| {
+                err(
+                    raw.chapter.span(),
+                    format!("chapter: expected 1 to 5, found {chapter}"),
+                )
+            })?;
+        let section = raw.section.get_ref();
+        if !SECTIONS.contains(&section.as_str()) {
+            return Err(err(
+                raw.section.span(),
+                format!(
+                    "section: {section:?} is not a section of the course notes; expected one of: {}",
+                    SECTIONS.join(", ")
+                ),
+            ));
+        }
+        let formula = raw.formula.get_ref().trim();
+        if formula.is_empty() {
+            return Err(err(
+                raw.formula.span(),
+                "formula: expected the formula in the notes' symbols, found an empty string".into(),
+            ));
+        }
+        per_chapter[usize::from(chapter) - 1] += 1;
+        let id = format!("{chapter}.{}", per_chapter[usize::from(chapter) - 1]);
+        let exercise = exercise(raw, id, spanned.span(), &err)?;
+        entries.push(Entry {
+            function: function.to_string(),
+            chapter,
+            section: section.clone(),
+            formula: formula.to_string(),
+            line,
+            exercise,
+        });
+    }
+
+    Ok(Manifest {
+        file: file.to_string(),
+        prove,
+        handout,
+        entries,
+    })
+}
+
+/// The entries an id, a range `2.1-2.12` (within one chapter) or a chapter `3.*` names.
+#[must_use]
+pub fn expand_ids(entries: &[Entry], text: &str) -> Vec<usize> {
+    let text = text.trim();
+    let index = |id: &str| entries.iter().position(|e| e.exercise.id == id.trim());
+    if let Some(chapter) = text.strip_suffix(".*") {
+        return (0..entries.len())
+            .filter(|&i| entries[i].chapter.to_string() == chapter)
+            .collect();
+    }
+    if let Some((a, b)) = text.split_once('-') {
+        return match (index(a), index(b)) {
+            (Some(a), Some(b)) if a <= b && entries[a].chapter == entries[b].chapter => {
+                (a..=b).collect()
+            }
+            _ => Vec::new(),
+        };
+    }
+    index(text).into_iter().collect()
+}
+
+/// The shortest way to write the entries `set` as ids, ranges and whole chapters.
+#[must_use]
+pub fn compress_ids(entries: &[Entry], set: &[usize]) -> Vec<String> {
+    let mut sorted = set.to_vec();
+    sorted.sort_unstable();
+    sorted.dedup();
+    let mut out = Vec::new();
+    let mut i = 0;
+    while i < sorted.len() {
+        let mut j = i;
+        while j + 1 < sorted.len()
+            && sorted[j + 1] == sorted[j] + 1
+            && entries[sorted[j + 1]].chapter == entries[sorted[i]].chapter
+        {
+            j += 1;
+        }
+        let chapter = entries[sorted[i]].chapter;
+        let whole = entries.iter().filter(|e| e.chapter == chapter).count();
+        let (a, b) = (
+            &entries[sorted[i]].exercise.id,
+            &entries[sorted[j]].exercise.id,
+        );
+        out.push(if j - i + 1 == whole {
+            format!("{chapter}.*")
+        } else if i == j {
+            a.clone()
+        } else {
+            format!("{a}-{b}")
+        });
+        i = j + 1;
+    }
+    out
+}
+
+/// The most points one exercise may be worth.
+pub const MAX_POINTS: u32 = 100;
+
+/// Checks an entry's exercise keys. `id` is the one its place gives (`chapter.k`); the
+/// entry's `id` key must say the same, so that a reader of the file sees it.
+fn exercise(
+    raw: &RawEntry,
+    id: String,
+    table: Range<usize>,
+    err: &impl Fn(Range<usize>, String) -> Error,
+) -> Result<Exercise, Error> {
+    let missing = |key: &str| {
+        err(
+            table.clone(),
+            format!(
+                "[[formula]] for {}: the exercise key `{key}` is missing",
+                raw.function.get_ref()
+            ),
+        )
+    };
+    let given = raw.id.as_ref().ok_or_else(|| missing("id"))?;
+    if given.get_ref().trim() != id {
+        return Err(err(
+            given.span(),
+            format!(
+                "id: expected \"{id}\" (chapter.k, k counting this chapter's [[formula]] tables in order), found {:?}",
+                given.get_ref()
+            ),
+        ));
+    }
+    let text = |key: &str, value: &Option<Spanned<String>>| -> Result<String, Error> {
+        let value = value.as_ref().ok_or_else(|| missing(key))?;
+        let t = value.get_ref().trim();
+        if t.is_empty() {
+            return Err(err(
+                value.span(),
+                format!("{key}: expected some text, found an empty string"),
+            ));
+        }
+        Ok(t.to_string())
+    };
+    let title = text("title", &raw.title)?;
+    let task = text("task", &raw.task)?;
+    let hints = raw.hints.as_ref().ok_or_else(|| missing("hints"))?;
+    let list: Vec<String> = hints
+        .get_ref()
+        .iter()
+        .map(|h| h.trim().to_string())
+        .collect();
+    if !(2..=3).contains(&list.len()) || list.iter().any(String::is_empty) {
+        return Err(err(
+            hints.span(),
+            format!(
+                "hints: expected two or three hints (a nudge first, nearly the answer last), found {} ({} empty)",
+                list.len(),
+                list.iter().filter(|h| h.is_empty()).count()
+            ),
+        ));
+    }
+    let points = raw.points.as_ref().ok_or_else(|| missing("points"))?;
+    let value = u32::try_from(*points.get_ref())
+        .ok()
+        .filter(|p| (1..=MAX_POINTS).contains(p))
+        .ok_or_else(|| {
+            err(
+                points.span(),
+                format!(
+                    "points: expected 1 to {MAX_POINTS}, found {}",
+                    points.get_ref()
+                ),
+            )
+        })?;
+    Ok(Exercise {
+        id,
+        title,
+        task,
+        hints: list,
+        points: value,
+    })
+}
+
+/// Whether `path` is two or more Rust identifiers joined by `::`.
+fn is_function_path(path: &str) -> bool {
+    let segments: Vec<&str> = path.split("::").collect();
+    segments.len() >= 2 && segments.iter().all(|s| is_identifier(s))
+}
+
+/// Whether `s` is a plain (ASCII) Rust identifier.
+fn is_identifier(s: &str) -> bool {
+    let mut chars = s.chars();
+    chars
+        .next()
+        .is_some_and(|c| c.is_ascii_alphabetic() || c == '_')
+        && chars.all(|c| c.is_ascii_alphanumeric() || c == '_')
+        && s != "_"
+}

@@ -1,0 +1,103 @@
+//! Errors for people: every failure a user can cause (a bad scene, flag or path) becomes one
+//! of these, printed by the binaries as a single line `error: …` with exit status 2. A
+//! handout's exercise not written yet panics (`todo!`); [`missing_exercise`] turns that panic
+//! into the same kind of line.
+//!
+//! Course book: [The scene file](../../../../docs/book/scene-format.html) (`docs/src/scene-format.md`).
+
+use std::path::PathBuf;
+
+/// Everything that can go wrong between reading a scene and writing an image.
+#[derive(Debug, thiserror::Error)]
+pub enum Error {
+    /// A scene file is malformed; `line` and `col` count from 1.
+    #[error("{file}:{line}:{col}: {message}")]
+    Scene {
+        /// The file as the user named it.
+        file: String,
+        /// Line of the offending value.
+        line: usize,
+        /// Column of the offending value (in characters).
+        col: usize,
+        /// What was expected.
+        message: String,
+    },
+    /// A file could not be read.
+    #[error("cannot read {}: {source}", path.display())]
+    Read {
+        /// The path.
+        path: PathBuf,
+        /// The reason.
+        source: std::io::Error,
+    },
+    /// An output could not be written.
+    #[error("cannot write {}: {message}", path.display())]
+    Write {
+        /// The path.
+        path: PathBuf,
+        /// The reason.
+        message: String,
+    },
+    /// A command-line value is out of range (clap catches the rest).
+    #[error("{0}")]
+    Usage(String),
+    /// The live window could not open (no display, no X library).
+    #[error("cannot open a window ({0}): render to a file with -o FILE instead")]
+    Window(String),
+}
+
+/// The 1-based line and column (in characters) of a byte offset in `text`.
+#[must_use]
+pub fn line_col(text: &str, offset: usize) -> (usize, usize) {
+    let offset = offset.min(text.len());
+    let before = text.get(..offset).unwrap_or(text);
+    let line = before.matches('\n').count() + 1;
+    let line_start = before.rfind('\n').map_or(0, |i| i + 1);
+    let col = before[line_start..].chars().count() + 1;
+    (line, col)
+}
+
+/// The prefix of the panic a handout's `todo!("exercise 2.3: …")` raises.
+pub const MISSING: &str = "not yet implemented: exercise ";
+
+/// The message of a panic, when it is a string.
+pub fn panic_text(payload: &(dyn std::any::Any + Send)) -> Option<&str> {
+    payload
+        .downcast_ref::<String>()
+        .map(String::as_str)
+        .or_else(|| payload.downcast_ref::<&str>().copied())
+}
+
+/// The message of a panic, for a report: its text, or a note that it carried none.
+#[must_use]
+pub fn panic_message(payload: &(dyn std::any::Any + Send)) -> &str {
+    panic_text(payload).unwrap_or("(no message)")
+}
+
+/// For the panic of an exercise not written yet (a handout's `todo!()`), the one line that
+/// says which: `exercise 2.3 is not written yet: The sphere's discriminant — see …`.
+#[must_use]
+pub fn missing_exercise(payload: &(dyn std::any::Any + Send)) -> Option<String> {
+    let rest = panic_text(payload)?.strip_prefix(MISSING)?;
+    let (id, what) = rest.split_once(": ").unwrap_or((rest, ""));
+    Some(format!("exercise {id} is not written yet: {what}"))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::missing_exercise;
+
+    /// The panic of a handout's todo!() becomes one line naming the exercise.
+    #[test]
+    fn a_missing_exercise_is_one_line() {
+        let payload: Box<dyn std::any::Any + Send> = Box::new(String::from(
+            "not yet implemented: exercise 2.3: The sphere's discriminant — see chapters/ch02_generic_objects/README.md",
+        ));
+        assert_eq!(
+            missing_exercise(payload.as_ref()).unwrap(),
+            "exercise 2.3 is not written yet: The sphere's discriminant — see chapters/ch02_generic_objects/README.md"
+        );
+        let other: Box<dyn std::any::Any + Send> = Box::new("index out of bounds");
+        assert_eq!(missing_exercise(other.as_ref()), None);
+    }
+}

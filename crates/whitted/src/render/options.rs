@@ -1,0 +1,170 @@
+//! What a render is asked to do besides the scene: the chapter, the view, the image size and
+//! the accuracy and speed settings.
+//!
+//! Course book: [Introduction](../../../../../docs/book/introduction.html) (`docs/src/introduction.md`).
+
+use crate::accel::Accel;
+use crate::camera::Camera;
+use crate::offset::Offset;
+use crate::real::Real;
+use crate::scene::{CameraSettings, Parts, Scene};
+use crate::shapes::Formula;
+
+/// Which chapter's renderer runs.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash)]
+pub enum Stage {
+    /// Chapter 1: rays only.
+    CameraRays = 1,
+    /// Chapter 2: nearest hit.
+    GenericObjects = 2,
+    /// Chapter 3: Phong shading.
+    Shading = 3,
+    /// Chapter 4: shadows.
+    Shadows = 4,
+    /// Chapter 5: reflection and refraction.
+    ReflectionRefraction = 5,
+}
+
+impl Stage {
+    /// What of a scene file this stage reads: chapter 1 only the camera and the image (it
+    /// places no object, so it runs before chapter 2's functions are written), the others all.
+    #[must_use]
+    pub fn reads(self) -> Parts {
+        match self {
+            Stage::CameraRays => Parts::CameraAndImage,
+            _ => Parts::All,
+        }
+    }
+}
+
+/// What a stage-2 (or later) render shows at each pixel.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub enum View {
+    /// The stage's own colour (for stage 2: the flat colour).
+    #[default]
+    Color,
+    /// The material's diffuse colour ρd, unlit.
+    Flat,
+    /// The world normal n mapped to a colour, (n + 1)/2.
+    Normals,
+    /// Distance to the nearest hit on an inverse scale, near = white, far = grey, a miss
+    /// black (see [`super::views`]).
+    Depth,
+    /// Which lights reach each point: light 0 red, 1 green, 2 blue … times the share that
+    /// arrives (see [`super::views`]).
+    Shadows,
+    /// The rays each pixel casts, on a heat scale from 1 (black) to the most possible
+    /// (white) (see [`super::views`]).
+    Rays,
+}
+
+impl View {
+    /// Every view, in the order the live window cycles through them.
+    pub const ALL: [View; 6] = [
+        View::Color,
+        View::Flat,
+        View::Normals,
+        View::Depth,
+        View::Shadows,
+        View::Rays,
+    ];
+
+    /// The view's name on the command line and in reports.
+    #[must_use]
+    pub fn name(self) -> &'static str {
+        match self {
+            View::Color => "color",
+            View::Flat => "flat",
+            View::Normals => "normals",
+            View::Depth => "depth",
+            View::Shadows => "shadows",
+            View::Rays => "rays",
+        }
+    }
+}
+
+/// Everything about a render that is not in the scene.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Options {
+    /// The chapter.
+    pub stage: Stage,
+    /// What to show.
+    pub view: View,
+    /// Image width (pixels).
+    pub width: u32,
+    /// Image height (pixels).
+    pub height: u32,
+    /// Samples per pixel (1 = the pixel centre).
+    pub samples: u32,
+    /// Maximum recursion depth: a primary ray has depth 0, its mirror ray depth 1 …
+    pub max_depth: u32,
+    /// A secondary ray whose weight (product of reflection/transmission shares) falls below
+    /// this is not traced.
+    pub min_weight: Real,
+    /// Textbook or robust intersection formulas.
+    pub formula: Formula,
+    /// How secondary rays leave a surface.
+    pub offset: Offset,
+    /// Seed of the supersampling positions.
+    pub seed: u64,
+    /// Which acceleration structure answers ray queries (the image does not depend on it).
+    pub accel: Accel,
+    /// Trace the camera rays of 8 × 8 pixels, and their feelers, as packets where that pays
+    /// (one sample a pixel, a BVH or an octree; see [`super::packets`]). The image is the
+    /// same bit for bit either way; `false` renders every pixel by the plain road alone.
+    pub packets: bool,
+    /// The camera, when it is not the scene's own `[camera]`: the live window moves it.
+    pub camera: Option<CameraSettings>,
+}
+
+impl Options {
+    /// The scene's own settings for `stage`: its size, samples and depth, robust formulas, the
+    /// default offset and accelerator, packets on.
+    #[must_use]
+    pub fn for_scene(scene: &Scene, stage: Stage) -> Self {
+        Self {
+            stage,
+            view: View::Color,
+            width: scene.width,
+            height: scene.height,
+            // supersampling belongs to chapter 5; earlier chapters shoot one ray per pixel centre
+            samples: if stage == Stage::ReflectionRefraction {
+                scene.samples
+            } else {
+                1
+            },
+            max_depth: scene.max_depth,
+            min_weight: Self::MIN_WEIGHT,
+            formula: Formula::default(),
+            offset: Offset::default(),
+            seed: 0x5eed,
+            accel: Accel::default(),
+            packets: true,
+            camera: None,
+        }
+    }
+
+    /// The camera of this render: [`Options::camera`] if set, else the scene's, at the
+    /// options' image size.
+    #[must_use]
+    pub fn camera(&self, scene: &Scene) -> Camera {
+        self.camera
+            .as_ref()
+            .unwrap_or(&scene.camera)
+            .camera(self.width, self.height)
+    }
+
+    /// The default weight threshold: a contribution below 1/1000 (a quarter of one 8-bit step)
+    /// cannot change a pixel.
+    pub const MIN_WEIGHT: Real = 1e-3;
+
+    /// The samples a pixel takes: the depth view shows one distance a pixel.
+    #[must_use]
+    pub fn samples_per_pixel(&self) -> u32 {
+        if self.view == View::Depth {
+            1
+        } else {
+            self.samples.max(1)
+        }
+    }
+}
