@@ -2,7 +2,8 @@
 //! directory, the time to the first verdict (cold `target/`, crates already downloaded), then,
 //! putting the reference bodies back one exercise at a time (each a save), the time from the
 //! save to the verdict and to the chapter's picture, the size of `target/` at the end, and the
-//! time to grade one submission after the first.
+//! time to grade one submission after the first (the finished handout is graded first, then
+//! the same student's sources as they were once chapter 2 was written).
 //!
 //! ```text
 //! cargo bench -p whitted-benches --bench student_loop                    # this project
@@ -227,6 +228,19 @@ fn put_back(project: &Path, dir: &Path, id: &str) {
     std::fs::write(dir.join(&file), text).expect("the save");
 }
 
+/// Copies the files under `from` to `to`.
+fn copy_dir(from: &Path, to: &Path) {
+    for entry in std::fs::read_dir(from).expect("a directory").flatten() {
+        let (src, dst) = (entry.path(), to.join(entry.file_name()));
+        if src.is_dir() {
+            copy_dir(&src, &dst);
+        } else {
+            std::fs::create_dir_all(to).expect("a directory");
+            std::fs::copy(&src, &dst).expect("a copy");
+        }
+    }
+}
+
 fn size(dir: &Path) -> u64 {
     let mut total = 0;
     let mut stack = vec![dir.to_path_buf()];
@@ -299,9 +313,18 @@ fn main() {
     };
     let mut to_verdict = Vec::new();
     let mut to_picture = Vec::new();
+    // a second submission for the grading: this student half-way, chapters 1 and 2 written
+    let halfway = temp.path().join("halfway");
+    let sources = match layout {
+        Layout::Workspace => "crates/whitted/src",
+        Layout::SingleCrate => "src",
+    };
     for (i, e) in m.entries.iter().enumerate() {
         put_back(&args.project, &dir, &e.exercise.id);
         let written = i + 1;
+        if m.entries.get(written).is_some_and(|next| next.chapter == 3) && e.chapter == 2 {
+            copy_dir(&dir.join(sources), &halfway.join(sources));
+        }
         if !chosen.contains(&i) {
             continue;
         }
@@ -365,19 +388,29 @@ fn main() {
     }
     let target = size(&dir.join("target"));
 
-    // grading: the finished handout, twice; the second is what a class pays per submission
+    // grading: the finished handout first (it builds what is shared), then the half-way one:
+    // what a class pays for each submission after the first
     let mut grade = None;
     if args.grade {
-        let mut g = layout.tool();
-        let d = dir.to_str().expect("UTF-8");
-        g.extend(["grade", d]);
-        let _ = cargo(&args.project, &g).output();
-        let started = Instant::now();
-        let out = cargo(&args.project, &g).output().expect("cargo runs");
-        grade = Some(started.elapsed().as_secs_f64());
-        if !out.status.success() {
-            eprintln!("grading failed: {}", String::from_utf8_lossy(&out.stderr));
+        let graded = |submission: &Path| {
+            let mut g = layout.tool();
+            g.extend(["grade", submission.to_str().expect("UTF-8")]);
+            let started = Instant::now();
+            let out = cargo(&args.project, &g).output().expect("cargo runs");
+            if !out.status.success() {
+                eprintln!("grading failed: {}", String::from_utf8_lossy(&out.stderr));
+            }
+            let text = String::from_utf8_lossy(&out.stdout).into_owned();
+            (started.elapsed().as_secs_f64(), text)
+        };
+        let (first, _) = graded(&dir);
+        eprintln!("grading the finished handout, the first: {first:.1} s");
+        let (second, report) = graded(&halfway);
+        eprintln!("grading the half-way one after it: {second:.1} s");
+        if let Some(total) = report.lines().find(|l| l.contains("total")) {
+            eprintln!("  {}", total.trim());
         }
+        grade = Some(second);
     }
 
     println!("| measure | {layout:?} |");

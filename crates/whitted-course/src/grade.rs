@@ -42,6 +42,9 @@ pub const NEXTEST_PROFILE: &str = "grading";
 /// Where nextest keeps its reports, in the graded copy.
 const STORE: &str = "nextest-store";
 
+/// The graded copy's directory, inside the build directory when grading has one.
+const COPY: &str = "graded-copy";
+
 /// The default time limit of one test.
 pub const DEFAULT_TIMEOUT: Duration = Duration::from_secs(20);
 
@@ -281,19 +284,34 @@ pub fn grade(
         .ok()
         .and_then(|p| p.file_name().map(|n| n.to_string_lossy().into_owned()))
         .unwrap_or_else(|| submission.display().to_string());
-    let mut temp = tempfile::Builder::new()
-        .prefix("whitted-grade-")
-        .tempdir()
-        .map_err(|e| Error::io(std::env::temp_dir(), e))?;
-    temp.disable_cleanup(options.keep);
-    if options.keep {
-        eprintln!(
-            "grade: the graded copy is kept in {}",
-            temp.path().display()
-        );
-    }
-    let project = temp.path().join("project");
-    prove::copy_project(root, &project)?;
+    // the graded copy: beside the build directory when there is one, kept from one grading to
+    // the next and updated file by file, so that cargo recompiles only what differs from the
+    // last submission; else a fresh temporary directory
+    let mut temp = None;
+    let project = match &options.target_dir {
+        Some(dir) => {
+            let project = dir.join(COPY);
+            prove::sync_project(root, &project, &[".config", STORE])?;
+            if options.keep {
+                eprintln!("grade: the graded copy is {}", project.display());
+            }
+            project
+        }
+        None => {
+            let mut t = tempfile::Builder::new()
+                .prefix("whitted-grade-")
+                .tempdir()
+                .map_err(|e| Error::io(std::env::temp_dir(), e))?;
+            t.disable_cleanup(options.keep);
+            if options.keep {
+                eprintln!("grade: the graded copy is kept in {}", t.path().display());
+            }
+            let project = t.path().join("project");
+            prove::copy_project(root, &project)?;
+            temp = Some(t);
+            project
+        }
+    };
     let mut notes: BTreeMap<usize, String> = BTreeMap::new();
     let mut files = splice(root, manifest, submission, &chapters, &mut notes)?;
     let hidden = add_hidden(&project, options.hidden.as_deref())?;
@@ -313,8 +331,7 @@ pub fn grade(
         let mut placed = Vec::with_capacity(files.len());
         for f in &files {
             let (text, lines) = f.text();
-            let path = project.join(&f.file);
-            std::fs::write(&path, text).map_err(|e| Error::io(&path, e))?;
+            prove::write_if_changed(&project.join(&f.file), text.as_bytes())?;
             placed.push((f.file.clone(), lines));
         }
         let errors = build(&project, &target_dir, &targets)?;
@@ -357,6 +374,7 @@ pub fn grade(
         Vec::new()
     };
     let exercises = score(manifest, &chapters, &tests, &notes);
+    drop(temp);
     Ok(Grade {
         student,
         chapters,
@@ -408,6 +426,15 @@ fn splice(
 /// Copies each `*.rs` of the hidden directory into the copy's `tests/` as `hidden_NAME.rs`;
 /// returns the test targets added.
 fn add_hidden(project: &Path, hidden: Option<&Path>) -> Result<Vec<String>, Error> {
+    // a kept copy may hold the hidden tests of an earlier grading
+    let tests = project.join(layout::core_tests());
+    if let Ok(entries) = std::fs::read_dir(&tests) {
+        for e in entries.flatten() {
+            if e.file_name().to_string_lossy().starts_with("hidden_") {
+                let _ = std::fs::remove_file(e.path());
+            }
+        }
+    }
     let Some(dir) = hidden else {
         return Ok(Vec::new());
     };
@@ -435,7 +462,8 @@ fn add_hidden(project: &Path, hidden: Option<&Path>) -> Result<Vec<String>, Erro
             .collect();
         let target = format!("hidden_{stem}");
         let to = project.join(layout::core_test_file(&target));
-        std::fs::copy(&f, &to).map_err(|e| Error::io(&f, e))?;
+        let bytes = std::fs::read(&f).map_err(|e| Error::io(&f, e))?;
+        prove::write_if_changed(&to, &bytes)?;
         targets.push(target);
     }
     Ok(targets)
@@ -463,8 +491,7 @@ fn write_profile(project: &Path, timeout: Duration) -> Result<(), Error> {
          store-failure-output = true\n",
         timeout.as_secs().max(1)
     );
-    let path = dir.join("nextest.toml");
-    std::fs::write(&path, text).map_err(|e| Error::io(&path, e))
+    prove::write_if_changed(&dir.join("nextest.toml"), text.as_bytes()).map(|_| ())
 }
 
 /// A compiler error: the file and line of its primary span, and its message with its place.

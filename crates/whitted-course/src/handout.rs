@@ -190,7 +190,7 @@ pub fn select(
             .position(|e| e.exercise.id == id.trim())
             .ok_or_else(|| {
                 Error::Usage(format!(
-                    "--exercises: there is no exercise {id} in {} (ids look like 2.3; `whitted learn list` shows them)",
+                    "--exercises: there is no exercise {id} in {} (ids look like 2.3; `cargo learn list` shows them)",
                     manifest.file
                 ))
             })?;
@@ -230,6 +230,8 @@ pub enum Part {
     Workspace,
     /// Replaced by the student's README.
     Readme,
+    /// Cargo's configuration, written with only the alias a student uses (`cargo learn`).
+    CargoConfig,
 }
 
 /// What becomes of the project file `file` (relative to `root`) in a handout whose test
@@ -246,10 +248,10 @@ pub fn part_of(file: &Path, tests: &[String], root: &Path) -> Part {
     if path == "README.md" {
         return Part::Readme;
     }
-    if matches!(
-        path.as_str(),
-        "Cargo.lock" | ".gitignore" | ".cargo/config.toml"
-    ) {
+    if path == ".cargo/config.toml" {
+        return Part::CargoConfig;
+    }
+    if matches!(path.as_str(), "Cargo.lock" | ".gitignore") {
         return Part::Copied;
     }
     if let Some(rest) = under(&layout::core_tests().to_string_lossy()) {
@@ -361,6 +363,7 @@ pub fn write(
         let text = match part {
             Part::Workspace => Some(workspace_manifest(&read()?)?),
             Part::Readme => Some(student_readme(root, manifest, selected)?),
+            Part::CargoConfig => Some(cargo_config(&read()?)?),
             Part::Page => {
                 pages.push(file.clone());
                 None
@@ -487,6 +490,22 @@ pub const LEFT_PACKAGES: [&str; 6] = [
     "roxmltree",
     "plotters",
 ];
+
+/// The handout's `.cargo/config.toml`: the project's `learn` alias (the one command of the
+/// student's README) and nothing of the instructor's.
+pub fn cargo_config(reference: &str) -> Result<String, Error> {
+    let learn = reference
+        .lines()
+        .find(|l| l.trim_start().starts_with("learn ="))
+        .ok_or_else(|| {
+            Error::Proof(".cargo/config.toml: no `learn = …` alias for the handout".into())
+        })?;
+    Ok(format!(
+        "# `cargo learn`: the loop of this handout (crates/whitted-learn), built once, at the test\n\
+         # profile, which its own builds of the renderer's tests and binaries use too.\n\
+         [alias]\n{learn}\n"
+    ))
+}
 
 /// `SUMMARY.md` without the section for instructors (a handout has no instructor's guide).
 fn without_instructors(summary: &str) -> String {

@@ -596,6 +596,45 @@ pub(crate) fn copy_project(root: &Path, dest: &Path) -> Result<usize, Error> {
     Ok(files.len())
 }
 
+/// Makes `dest` a copy of the project's files at `root`, writing only the files that are
+/// missing or differ, so that cargo (which goes by modification times) rebuilds only what
+/// changed since the last copy, and removing the files the project no longer has (but those
+/// under `keep`, relative to `dest`); returns how many files it wrote.
+pub(crate) fn sync_project(root: &Path, dest: &Path, keep: &[&str]) -> Result<usize, Error> {
+    let files = project_files(root)?;
+    let mut written = 0;
+    for file in &files {
+        let bytes = std::fs::read(root.join(file)).map_err(|e| Error::io(root.join(file), e))?;
+        if write_if_changed(&dest.join(file), &bytes)? {
+            written += 1;
+        }
+    }
+    if dest.is_dir() {
+        let mut present = Vec::new();
+        walk(dest, Path::new(""), &mut present)?;
+        for stale in present.iter().filter(|p| !files.contains(p)) {
+            if !keep.iter().any(|k| stale.starts_with(k)) {
+                let path = dest.join(stale);
+                std::fs::remove_file(&path).map_err(|e| Error::io(&path, e))?;
+            }
+        }
+    }
+    Ok(written)
+}
+
+/// Writes `bytes` to `path` unless it holds them already (creating its directory); returns
+/// whether it wrote.
+pub(crate) fn write_if_changed(path: &Path, bytes: &[u8]) -> Result<bool, Error> {
+    if std::fs::read(path).is_ok_and(|now| now == bytes) {
+        return Ok(false);
+    }
+    if let Some(parent) = path.parent() {
+        std::fs::create_dir_all(parent).map_err(|e| Error::io(parent, e))?;
+    }
+    std::fs::write(path, bytes).map_err(|e| Error::io(path, e))?;
+    Ok(true)
+}
+
 /// Builds the test target `test` of the project at `project` into `target_dir`; returns the
 /// test executable.
 fn build(

@@ -24,15 +24,15 @@ pub const ANCHOR_END: &str = "<!-- ANCHOR_END: exercises -->";
 pub fn section(manifest: &Manifest, chapter: u8, chapter_dir: &str) -> String {
     let commands = [
         (
-            "cargo run --release --bin whitted -- learn".to_string(),
-            "progress, the next exercise, its failing test",
+            "cargo learn".to_string(),
+            "the verdict on the next exercise, its failing tests, the picture",
         ),
         (
-            "cargo run --release --bin whitted -- learn hint".to_string(),
+            "cargo learn hint".to_string(),
             "a hint, then a stronger one",
         ),
         (
-            format!("cargo test --test {chapter_dir} ex{chapter}_"),
+            format!("cargo test -p whitted --test {chapter_dir} ex{chapter}_"),
             "this chapter's exercise tests (--features f32: in single precision)",
         ),
     ];
@@ -43,7 +43,8 @@ pub fn section(manifest: &Manifest, chapter: u8, chapter_dir: &str) -> String {
         .collect();
     let mut out = format!(
         "{HEADING}\n\n{ANCHOR_START}\n\
-         Each exercise is one function of the library, the one the renderer calls for that formula.\n\
+         Each exercise is one function of the renderer (`crates/whitted/src/`), the one it calls for\n\
+         that formula.\n\
          In a handout (`whitted handout`, see `docs/src/student-guide.md`) its body is `todo!()`; write\n\
          it, then run\n\n\
          ```text\n{lines}```\n\n\

@@ -233,6 +233,11 @@ fn a_full_handout_holds_no_solution_and_no_instructor_material() {
         );
     }
     assert!(!files[Path::new("docs/src/SUMMARY.md")].contains("instructor"));
+    // cargo's configuration: the student's one alias, and no command of the instructor's
+    let config: toml::Table = files[Path::new(".cargo/config.toml")].parse().unwrap();
+    let aliases = config["alias"].as_table().unwrap();
+    assert_eq!(aliases.keys().collect::<Vec<_>>(), ["learn"], "{config:?}");
+    assert!(aliases["learn"].as_str().unwrap().contains("whitted-learn"));
 }
 
 /// The hints and tasks, which go into every handout with the manifest, never quote a line of
@@ -439,6 +444,18 @@ fn learn_gives_the_verdict_and_the_progress() {
         "{progress}"
     );
     assert_eq!(learn::drawable_chapter(&m, &states), Some(5));
+    // the picture: the chapter that turned green, else the newest the code draws
+    let i31 = m
+        .entries
+        .iter()
+        .position(|e| e.exercise.id == "3.1")
+        .unwrap();
+    let mut before = states.clone();
+    before[i31] = State::ToDo;
+    assert_eq!(learn::picture_chapter(&m, &before, &states), Some(3));
+    assert_eq!(learn::picture_chapter(&m, &states, &states), Some(5));
+    let eight = learn::states(&m, &run_with_done(&m, 8));
+    assert_eq!(learn::picture_chapter(&m, &eight, &eight), Some(1));
     assert_eq!(
         learn::newly_done(&learn::states(&m, &run_with_done(&m, 3)), &states).len(),
         n - 3

@@ -579,6 +579,26 @@ pub fn drawable_chapter(manifest: &Manifest, states: &[State]) -> Option<u8> {
     out
 }
 
+/// The chapter whose picture a check draws: of the chapters the code can draw now (see
+/// [`drawable_chapter`]), the newest one that was not all done at the last check (the chapter
+/// that turned green), else the newest of them.
+#[must_use]
+pub fn picture_chapter(manifest: &Manifest, before: &[State], now: &[State]) -> Option<u8> {
+    let drawable = drawable_chapter(manifest, now)?;
+    let green = |states: &[State], chapter: u8| {
+        manifest
+            .entries
+            .iter()
+            .zip(states)
+            .filter(|(e, _)| e.chapter == chapter)
+            .all(|(_, s)| *s == State::Done)
+    };
+    (1..=drawable)
+        .rev()
+        .find(|&c| !green(before, c))
+        .or(Some(drawable))
+}
+
 /// A build of the loop: the packages of [`PACKAGES`], cargo's lines shown once it is slow.
 fn build(root: &Path, tests: &[String], bins: &[String], say: &Say) -> Result<Built, Error> {
     let started = Instant::now();
@@ -766,7 +786,7 @@ pub fn check(
         let now: Vec<State> = (0..manifest.entries.len())
             .map(|i| state_now(&run, i))
             .collect();
-        say.report(&picture(root, manifest, &now, style));
+        say.report(&picture(root, manifest, known, &now, style));
     }
     // 2. the progress: every target not run yet
     let rest: Vec<String> = manifest
@@ -876,9 +896,15 @@ pub fn render_chapter(root: &Path, chapter: u8) -> Result<PathBuf, Error> {
     Ok(png)
 }
 
-/// After a check: the picture of the newest chapter the code can draw, and a line saying so.
-pub fn picture(root: &Path, manifest: &Manifest, states: &[State], style: Style) -> String {
-    let Some(chapter) = drawable_chapter(manifest, states) else {
+/// After a check: the picture of the chapter [`picture_chapter`] picks, and a line saying so.
+pub fn picture(
+    root: &Path,
+    manifest: &Manifest,
+    before: &[State],
+    states: &[State],
+    style: Style,
+) -> String {
+    let Some(chapter) = picture_chapter(manifest, before, states) else {
         let first = &manifest.entries[0];
         return format!(
             "picture: chapter 1's image appears in {STATE_DIR}/ once chapter 1 is written (it waits for exercise {})\n",

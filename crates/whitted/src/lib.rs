@@ -22,9 +22,9 @@
 //!
 //! This crate is the renderer and nothing else: what a student writes and what it runs in. The
 //! programs around it are other crates of the workspace: `whitted-app` holds the chapter
-//! binaries, the command line they share and the live window; `whitted-course` holds the course
-//! tools (`whitted learn`, `whitted grade` …), which run cargo on a project and do not depend on
-//! this crate.
+//! binaries, the command line they share and the live window; `whitted-learn` (the student's
+//! loop, `cargo learn`) and `whitted-course` (the instructor's tools, `whitted grade` …) run
+//! cargo on a project and do not depend on this crate.
 //!
 //! Speed (the notes' "Computational Aspects") lives in [`accel`]: bounding boxes, projection
 //! extents, an octree and a BVH, chosen with `--accel`. They decide which objects a ray is

@@ -6,7 +6,7 @@
 mod common;
 
 use approx::assert_abs_diff_eq;
-use common::{TOL, assert_vec_eq, centre, scene};
+use common::{TOL, assert_vec_eq, centre, chapter_scene};
 use whitted::camera::{
     Camera, direction_colour, near_plane_half_height, near_plane_half_width, pixel_on_near_plane,
     viewing_basis,
@@ -301,14 +301,16 @@ fn ex1_7_ray_colour_is_unit_direction_plus_one_over_two() {
 /// coloured (1, ½, ½).
 #[test]
 fn centre_pixel_of_a_chapter_one_image_is_the_colour_of_minus_n() {
-    let along_minus_z = scene(
+    let along_minus_z = chapter_scene(
         "[camera]\neye = [0.0, 0.0, 5.0]\nlook_at = [0.0, 0.0, 0.0]\nnear = 2.0\n[[objects]]\nsphere = {}\n",
+        Stage::CameraRays,
     );
     let (c, stats) = centre(&along_minus_z, Stage::CameraRays);
     assert_vec_eq(c, vec3(0.5, 0.5, 0.0), TOL);
     assert_eq!(stats.primary, 1);
-    let along_x = scene(
+    let along_x = chapter_scene(
         "[camera]\neye = [-3.0, 1.0, 2.0]\nlook_at = [4.0, 1.0, 2.0]\nnear = 0.5\n[[objects]]\nsphere = {}\n",
+        Stage::CameraRays,
     );
     let (c, _) = centre(&along_x, Stage::CameraRays);
     assert_vec_eq(c, vec3(1.0, 0.5, 0.5), TOL);

@@ -27,6 +27,12 @@ pub fn scene(text: &str) -> Scene {
     parse(text, "test.toml").unwrap_or_else(|e| panic!("{e}"))
 }
 
+/// Loads the parts of a scene that the chapter `stage` reads, as its binary does (chapter 1:
+/// the camera and the image, no object placed).
+pub fn chapter_scene(text: &str, stage: Stage) -> Scene {
+    whitted::scene::parse_parts(text, "test.toml", stage.reads()).unwrap_or_else(|e| panic!("{e}"))
+}
+
 /// Renders `scene` at stage `stage` and the given size by the plain road of one pixel, and
 /// checks that packets (on by default) give the same image bit for bit and the same rays.
 pub fn render_at(scene: &Scene, stage: Stage, width: u32, height: u32) -> (Framebuffer, Stats) {
