@@ -407,7 +407,7 @@ fn main() {
         eprintln!("grading the finished handout, the first: {first:.1} s");
         let (second, report) = graded(&halfway);
         eprintln!("grading the half-way one after it: {second:.1} s");
-        if let Some(total) = report.lines().find(|l| l.contains("total")) {
+        if let Some(total) = report.lines().find(|l| l.contains(" points (")) {
             eprintln!("  {}", total.trim());
         }
         grade = Some(second);

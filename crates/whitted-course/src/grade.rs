@@ -3,9 +3,12 @@
 //!
 //! What is graded is the student's code and nothing else: the body of each exercise, the lines
 //! between `// BEGIN SOLUTION 2.3` and `// END SOLUTION` in the student's files. Those bodies
-//! are put into a fresh copy of the **instructor's** project — its tests, its manifest, its
+//! are put into a copy of the **instructor's** project — its tests, its manifest, its
 //! `Cargo.lock`, its code around the exercises — so a student who edits a test, the manifest
 //! or the renderer gains nothing. An exercise whose markers are missing counts as not written.
+//! With a build directory ([`Options::target_dir`]) the copy is kept beside it and rewritten
+//! file by file for each submission, so that cargo recompiles only the bodies that differ from
+//! the last submission's; without one, it is a fresh temporary directory.
 //!
 //! Then, in that copy:
 //!
@@ -58,8 +61,9 @@ pub struct Options {
     /// The time limit of each test.
     pub timeout: Duration,
     /// Where cargo builds, kept from one grading to the next so the dependencies are built
-    /// once (a class gives each worker its own directory under it); the copy's own `target/`
-    /// when `None`. Never to be used by two gradings at once.
+    /// once, with the graded copy beside the build (a class gives each worker its own
+    /// directory under it); a fresh copy with its own `target/` when `None`. Never to be used
+    /// by two gradings at once.
     pub target_dir: Option<PathBuf>,
     /// Keep the graded copy (its path is printed) instead of removing it.
     pub keep: bool,

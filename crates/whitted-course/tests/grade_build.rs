@@ -9,7 +9,7 @@
 //!   gives for those three exercises;
 //! - a tampered handout: its test files edited to pass and its manifest's points raised, its
 //!   exercises left as `todo!()`: zero, since the grader's tests and manifest are its own;
-//! - one copy per hand-written mutant (`tests/mutants/hand-written.toml`): each loses points in
+//! - one copy per hand-written mutant (`crates/whitted-course/tests/mutants/hand-written.toml`): each loses points in
 //!   its exercise and its chapter.
 //!
 //! Ignored by default (it builds every submission: minutes); `.ci/run` runs it with
@@ -79,7 +79,10 @@ struct Mutant {
 }
 
 fn mutants() -> Vec<Mutant> {
-    let text = std::fs::read_to_string(root().join("tests/mutants/hand-written.toml")).unwrap();
+    let text = std::fs::read_to_string(
+        root().join("crates/whitted-course/tests/mutants/hand-written.toml"),
+    )
+    .unwrap();
     toml::from_str::<Mutants>(&text).unwrap().mutant
 }
 
@@ -153,7 +156,7 @@ fn a_class_is_graded_as_each_submission_deserves() {
     let all: Vec<usize> = (0..m.entries.len()).collect();
     let tampered = class.join("tampered");
     handout::write(&root(), &m, &all, &tampered).unwrap();
-    for t in std::fs::read_dir(tampered.join("tests")).unwrap() {
+    for t in std::fs::read_dir(tampered.join("crates/whitted/tests")).unwrap() {
         let p = t.unwrap().path();
         if p.extension().is_some_and(|x| x == "rs") {
             std::fs::write(&p, "#[test]\nfn ex1_1_always() {}\n").unwrap();
