@@ -12,7 +12,7 @@
 use std::time::{Duration, Instant};
 
 use whitted::output::Encoding;
-use whitted::render::{Options, Stage};
+use whitted::render::{Chapter, Options};
 use whitted_app::window::canvas::Canvas;
 use whitted_app::window::progressive::{Update, Worker};
 use whitted_app::window::schedule::PASSES;
@@ -35,9 +35,9 @@ fn main() {
         .unwrap_or(21)
         .max(1);
     let scene = whitted::scene::showcase().expect("the showcase loads");
-    let mut options = Options::for_scene(&scene, Stage::ReflectionRefraction);
+    let mut options = Options::for_scene(&scene, Chapter::ReflectionRefraction);
     (options.width, options.height) = (640, 480);
-    let mut state = State::new(scene, options, Stage::ReflectionRefraction);
+    let mut state = State::new(scene, options, Chapter::ReflectionRefraction);
     let worker = Worker::spawn(0).expect("the render thread starts");
     let mut canvas = Canvas::new(640, 480, Encoding::Srgb);
     let (mut coarse, mut full, mut whole) = (Vec::new(), Vec::new(), Vec::new());
@@ -86,7 +86,7 @@ fn main() {
     }
     let threads = std::thread::available_parallelism().map_or(1, usize::from);
     println!(
-        "showcase 640×480, stage 5, {runs} camera moves, {threads} thread(s), {PASSES} passes (8, 4, 2, 1 px)"
+        "showcase 640×480, chapter 5, {runs} camera moves, {threads} thread(s), {PASSES} passes (8, 4, 2, 1 px)"
     );
     let reference = median(&mut whole);
     for (name, v, goal) in [

@@ -37,7 +37,7 @@
 use std::time::Instant;
 
 use whitted::accel::{Accel, Accelerator};
-use whitted::render::{self, Options, Stage};
+use whitted::render::{self, Chapter, Options};
 use whitted::scene::scatter;
 use whitted::scene::{Scene, parse};
 
@@ -191,7 +191,7 @@ fn scene(c: &Config, n: usize) -> Scene {
 
 /// Chapter 5's options for the benchmark's image size and `accel`.
 fn options(c: &Config, scene: &Scene, accel: Accel) -> Options {
-    let mut o = Options::for_scene(scene, Stage::ReflectionRefraction);
+    let mut o = Options::for_scene(scene, Chapter::ReflectionRefraction);
     o.width = c.width;
     o.height = c.height;
     o.accel = accel;

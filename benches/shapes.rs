@@ -15,7 +15,7 @@ use std::time::Duration;
 use criterion::{Criterion, Throughput, criterion_main};
 use whitted::ray::Ray;
 use whitted::real::{PRECISION, Real, Vec3};
-use whitted::shapes::{Formula, Object, Polyhedron, Shape};
+use whitted::shapes::{Numerics, Object, Polyhedron, Shape};
 use whitted::transform::Placement;
 
 /// 1024 deterministic rays (xorshift), the same in both precisions up to rounding.
@@ -51,13 +51,13 @@ fn shapes(c: &mut Criterion) {
         Shape::Polyhedron(Polyhedron::cube()),
     ] {
         let object = Object::new(shape.clone(), Placement::identity());
-        for formula in [Formula::Textbook, Formula::Robust] {
-            let name = format!("{}/{formula:?}", shape.name());
+        for numerics in [Numerics::Textbook, Numerics::Robust] {
+            let name = format!("{}/{numerics:?}", shape.name());
             group.bench_function(name, |b| {
                 b.iter(|| {
                     let mut count = 0usize;
                     for ray in &rays {
-                        count += black_box(object.intersect(black_box(ray), formula)).len();
+                        count += black_box(object.intersect(black_box(ray), numerics)).len();
                     }
                     count
                 });

@@ -9,15 +9,15 @@ mod common;
 use common::scene;
 use whitted::real::{Real, Vec3};
 use whitted::render::inspect::{HitNode, RayNode, RayTree};
-use whitted::render::{Framebuffer, Options, RayKind, Stage, Stats, Stop, Tracer, View, render};
+use whitted::render::{Chapter, Framebuffer, Options, RayKind, Stats, Stop, Tracer, View, render};
 use whitted::scene::Scene;
 use whitted::shadow;
 
 use whitted::scene::SHOWCASE;
 const GLASS: &str = include_str!("../scenes/ch05_reflection_refraction.toml");
 
-fn options(scene: &Scene, stage: Stage, width: u32, height: u32) -> Options {
-    let mut o = Options::for_scene(scene, stage);
+fn options(scene: &Scene, chapter: Chapter, width: u32, height: u32) -> Options {
+    let mut o = Options::for_scene(scene, chapter);
     o.width = width;
     o.height = height;
     o
@@ -42,7 +42,7 @@ fn assert_trees_match(scene: &Scene, o: &Options) {
                 bits(tree.colour),
                 bits(fb.get(x, y)),
                 "pixel ({x}, {y}) of {:?} {:?} packets {}: tree {:?}, image {:?}",
-                o.stage,
+                o.chapter,
                 o.view,
                 o.packets,
                 tree.colour,
@@ -59,14 +59,14 @@ fn assert_trees_match(scene: &Scene, o: &Options) {
 #[test]
 fn the_tree_colour_is_the_rendered_pixel_on_the_showcase() {
     let s = scene(SHOWCASE);
-    for stage in [
-        Stage::GenericObjects,
-        Stage::Shading,
-        Stage::Shadows,
-        Stage::ReflectionRefraction,
+    for chapter in [
+        Chapter::GenericObjects,
+        Chapter::Shading,
+        Chapter::Shadows,
+        Chapter::ReflectionRefraction,
     ] {
         for packets in [true, false] {
-            let mut o = options(&s, stage, 48, 36);
+            let mut o = options(&s, chapter, 48, 36);
             o.packets = packets;
             assert_trees_match(&s, &o);
         }
@@ -79,7 +79,7 @@ fn the_tree_colour_is_the_rendered_pixel_on_the_showcase() {
 fn the_tree_colour_is_the_rendered_pixel_on_the_glass_scene() {
     let s = scene(GLASS);
     for (samples, packets) in [(1, true), (1, false), (4, true)] {
-        let mut o = options(&s, Stage::ReflectionRefraction, 48, 32);
+        let mut o = options(&s, Chapter::ReflectionRefraction, 48, 32);
         o.samples = samples;
         o.packets = packets;
         assert_trees_match(&s, &o);
@@ -92,7 +92,7 @@ fn the_tree_colour_is_the_rendered_pixel_on_the_glass_scene() {
 fn the_tree_colour_is_the_rendered_pixel_in_every_view() {
     let s = scene(SHOWCASE);
     for view in View::ALL {
-        let mut o = options(&s, Stage::ReflectionRefraction, 32, 24);
+        let mut o = options(&s, Chapter::ReflectionRefraction, 32, 24);
         o.view = view;
         assert_trees_match(&s, &o);
     }
@@ -120,7 +120,7 @@ fn each_node(tree: &RayTree, f: &mut impl FnMut(&RayNode)) {
 #[test]
 fn the_tree_adds_up_to_the_pixel() {
     let s = scene(GLASS);
-    let mut o = options(&s, Stage::ReflectionRefraction, 24, 16);
+    let mut o = options(&s, Chapter::ReflectionRefraction, 24, 16);
     o.samples = 2;
     let tracer = Tracer::new(&s, &o);
     let mut hits = 0;
@@ -164,7 +164,7 @@ fn the_tree_adds_up_to_the_pixel() {
 #[test]
 fn a_feeler_share_is_the_product_of_what_it_crosses() {
     let s = scene(GLASS);
-    let o = options(&s, Stage::ReflectionRefraction, 32, 20);
+    let o = options(&s, Chapter::ReflectionRefraction, 32, 20);
     let tracer = Tracer::new(&s, &o);
     let (mut feelers, mut crossing) = (0, 0);
     for y in 0..o.height {
@@ -237,7 +237,7 @@ fn chain(tree: &RayTree) -> (Vec<Link>, Vec<(RayKind, Stop)>) {
 #[test]
 fn a_branch_past_the_maximum_depth_is_stopped_and_says_why() {
     let s = scene(MIRRORS);
-    let o = options(&s, Stage::ReflectionRefraction, 1, 1);
+    let o = options(&s, Chapter::ReflectionRefraction, 1, 1);
     let tree = Tracer::new(&s, &o).inspect(0, 0);
     let (rays, stopped) = chain(&tree);
     // camera → ball → wall → ball → wall: depths 0..3, each a mirror ray of weight 0.5^depth
@@ -261,7 +261,7 @@ fn a_branch_past_the_maximum_depth_is_stopped_and_says_why() {
 #[test]
 fn a_branch_below_the_minimum_weight_is_stopped_and_says_why() {
     let s = scene(MIRRORS);
-    let mut o = options(&s, Stage::ReflectionRefraction, 1, 1);
+    let mut o = options(&s, Chapter::ReflectionRefraction, 1, 1);
     o.max_depth = 10;
     o.min_weight = 0.2; // 0.5, 0.25 pass; 0.125 does not
     let (rays, stopped) = chain(&Tracer::new(&s, &o).inspect(0, 0));
@@ -274,7 +274,7 @@ fn a_branch_below_the_minimum_weight_is_stopped_and_says_why() {
 fn a_ray_that_hits_nothing_brings_back_the_background() {
     let mut s = scene(MIRRORS);
     s.objects.truncate(1); // the ball alone: its mirror ray flies off
-    let o = options(&s, Stage::ReflectionRefraction, 1, 1);
+    let o = options(&s, Chapter::ReflectionRefraction, 1, 1);
     let tree = Tracer::new(&s, &o).inspect(0, 0);
     let (rays, stopped) = chain(&tree);
     assert_eq!(rays.len(), 2);
@@ -292,7 +292,7 @@ fn a_ray_that_hits_nothing_brings_back_the_background() {
 #[test]
 fn total_internal_reflection_is_recorded_and_the_mirror_ray_takes_k_t() {
     let s = scene(GLASS);
-    let o = options(&s, Stage::ReflectionRefraction, 96, 64);
+    let o = options(&s, Chapter::ReflectionRefraction, 96, 64);
     let tracer = Tracer::new(&s, &o);
     let mut found = 0;
     for y in 0..o.height {
@@ -323,7 +323,7 @@ fn total_internal_reflection_is_recorded_and_the_mirror_ray_takes_k_t() {
 #[test]
 fn the_hit_names_the_object_and_its_point_is_on_the_ray() {
     let s = scene(SHOWCASE);
-    let o = options(&s, Stage::ReflectionRefraction, 64, 48);
+    let o = options(&s, Chapter::ReflectionRefraction, 64, 48);
     let tracer = Tracer::new(&s, &o);
     let tree = tracer.inspect(32, 24);
     let ray = &tree.samples[0].ray;
@@ -348,7 +348,7 @@ fn the_hit_names_the_object_and_its_point_is_on_the_ray() {
 #[test]
 fn the_json_parses_and_carries_the_colour() {
     let s = scene(SHOWCASE);
-    let o = options(&s, Stage::ReflectionRefraction, 64, 48);
+    let o = options(&s, Chapter::ReflectionRefraction, 64, 48);
     let tree = Tracer::new(&s, &o).inspect(32, 24);
     let text = serde_json::to_string(&tree.to_json()).unwrap();
     let v: serde_json::Value = serde_json::from_str(&text).unwrap();

@@ -12,7 +12,7 @@ use std::sync::atomic::{AtomicUsize, Ordering};
 use whitted::error::Error;
 use whitted::real::Vec3;
 use whitted::render::{
-    Finished, Framebuffer, Options, Rect, Stage, Stats, TILE, Tracer, render, render_rect,
+    Chapter, Finished, Framebuffer, Options, Rect, Stats, TILE, Tracer, render, render_rect,
 };
 use whitted::scene::Scene;
 
@@ -29,7 +29,7 @@ fn showcase() -> Scene {
 
 /// The showcase's options for chapter 5 at `w` × `h`.
 fn options(scene: &Scene, w: u32, h: u32) -> Options {
-    let mut o = Options::for_scene(scene, Stage::ReflectionRefraction);
+    let mut o = Options::for_scene(scene, Chapter::ReflectionRefraction);
     (o.width, o.height) = (w, h);
     o
 }

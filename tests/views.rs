@@ -8,7 +8,7 @@ mod common;
 use common::scene;
 use whitted::real::{Real, Vec3, vec3};
 use whitted::render::views::{heat, light_colour, shadow_mask};
-use whitted::render::{Options, Stage, Stats, Tracer, View, render};
+use whitted::render::{Chapter, Options, Stats, Tracer, View, render};
 use whitted::shadow;
 
 /// An opaque ball above a floor, lit by three lights: light 0 straight above the ball, light 1
@@ -40,8 +40,8 @@ sphere = { center = [0.0, 1.0, 0.0], radius = 0.5 }
 #[test]
 fn the_shadow_mask_shows_which_lights_reach_each_point() {
     let s = scene(BALL);
-    for stage in [Stage::Shading, Stage::Shadows] {
-        let mut o = Options::for_scene(&s, stage);
+    for chapter in [Chapter::Shading, Chapter::Shadows] {
+        let mut o = Options::for_scene(&s, chapter);
         o.view = View::Shadows;
         let (fb, _) = render(&s, &o);
         let tracer = Tracer::new(&s, &o);
@@ -62,9 +62,9 @@ fn the_shadow_mask_shows_which_lights_reach_each_point() {
                             }
                             // a feeler from just off the surface
                             let feeler = shadow::feeler(p + n * 1e-6, light.position);
-                            let blocked = stage == Stage::Shadows
+                            let blocked = chapter == Chapter::Shadows
                                 && s.objects.iter().any(|obj| {
-                                    shadow::blocks(&obj.intersect(&feeler, o.formula), 0.0)
+                                    shadow::blocks(&obj.intersect(&feeler, o.numerics), 0.0)
                                 });
                             if !blocked {
                                 reached += light_colour(l);
@@ -74,7 +74,7 @@ fn the_shadow_mask_shows_which_lights_reach_each_point() {
                     }
                 };
                 let got = fb.get(x, y);
-                assert_eq!(got, expected, "pixel ({x}, {y}) at {stage:?}");
+                assert_eq!(got, expected, "pixel ({x}, {y}) at {chapter:?}");
                 if got == vec3(0.12, 0.12 + 0.88, 0.12) {
                     shadowed += 1; // light 1 (green) only: in the ball's shadow of light 0
                 }
@@ -83,9 +83,9 @@ fn the_shadow_mask_shows_which_lights_reach_each_point() {
                 }
             }
         }
-        assert!(lit > 100, "{stage:?}: {lit} pixels lit by lights 0 and 1");
-        match stage {
-            Stage::Shadows => assert!(shadowed > 5, "{shadowed} pixels in the ball's shadow"),
+        assert!(lit > 100, "{chapter:?}: {lit} pixels lit by lights 0 and 1");
+        match chapter {
+            Chapter::Shadows => assert!(shadowed > 5, "{shadowed} pixels in the ball's shadow"),
             _ => assert_eq!(shadowed, 0, "no shadows before chapter 4"),
         }
     }
@@ -97,7 +97,7 @@ fn the_shadow_mask_shows_which_lights_reach_each_point() {
 #[test]
 fn the_rays_view_shows_the_rays_each_pixel_casts() {
     let s = scene(include_str!("../scenes/ch05_reflection_refraction.toml"));
-    let mut o = Options::for_scene(&s, Stage::ReflectionRefraction);
+    let mut o = Options::for_scene(&s, Chapter::ReflectionRefraction);
     (o.width, o.height) = (48, 32);
     o.view = View::Rays;
     let tracer = Tracer::new(&s, &o);
@@ -150,7 +150,7 @@ fn the_heat_scale_brightens_from_black_to_white() {
 #[test]
 fn the_depth_view_scale_is_known_before_the_first_pixel() {
     let s = scene(BALL);
-    let mut o = Options::for_scene(&s, Stage::GenericObjects);
+    let mut o = Options::for_scene(&s, Chapter::GenericObjects);
     o.view = View::Depth;
     let tracer = Tracer::new(&s, &o);
     let (near, far) = tracer.scales().depth.expect("the depth view has a scale");

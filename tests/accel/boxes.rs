@@ -6,7 +6,7 @@ use whitted::accel::aabb::{RayBox, polyhedron_bounds, world_bounds};
 use whitted::accel::{Aabb, Accel, Accelerator};
 use whitted::ray::Ray;
 use whitted::real::{Real, Vec3, vec3};
-use whitted::render::{Stage, TILE};
+use whitted::render::{Chapter, TILE};
 use whitted::scene::parse;
 use whitted::scene::scatter;
 use whitted::shapes::{Facet, Polyhedron};
@@ -158,5 +158,5 @@ position = [0.0, 0.0, 5.0]
 intensity = 1.0
 "#;
     let scene = parse(text, "axis.toml").expect("parses");
-    assert_all_equal(&render_with(&scene, Stage::Shadows, 9, 9, |_| {}));
+    assert_all_equal(&render_with(&scene, Chapter::Shadows, 9, 9, |_| {}));
 }

@@ -6,7 +6,7 @@ use whitted::accel::aabb::world_bounds;
 use whitted::accel::{Aabb, Accel, Accelerator, Octree};
 use whitted::ray::Ray;
 use whitted::real::{Real, Vec3, real, vec3};
-use whitted::render::{self, Options, Stage, TILE};
+use whitted::render::{self, Chapter, Options, TILE};
 use whitted::scene::parse;
 use whitted::scene::scatter;
 use whitted::shadow;
@@ -20,7 +20,7 @@ fn counters_show_the_work_each_structure_saves() {
     let (w, h) = (48u32, 27u32);
     let scene = parse(&scatter::scene_toml(200, 3, w, h), "s.toml").unwrap();
     let work = |accel| {
-        let mut o = Options::for_scene(&scene, Stage::GenericObjects);
+        let mut o = Options::for_scene(&scene, Chapter::GenericObjects);
         (o.width, o.height, o.accel) = (w, h, accel);
         render::render(&scene, &o).1.work
     };

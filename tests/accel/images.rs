@@ -2,7 +2,7 @@
 //! depth, a demanding scene, many spheres), on one thread or four; and the framebuffer limit.
 
 use super::{STRAIN, assert_all_equal, render_with, showcase};
-use whitted::render::{self, Options, Stage, View};
+use whitted::render::{self, Chapter, Options, View};
 use whitted::scene::parse;
 use whitted::scene::scatter;
 
@@ -13,7 +13,7 @@ fn every_accel_renders_the_showcase_exactly_as_brute_force() {
     let scene = showcase();
     assert_all_equal(&render_with(
         &scene,
-        Stage::ReflectionRefraction,
+        Chapter::ReflectionRefraction,
         128,
         96,
         |_| {},
@@ -25,7 +25,7 @@ fn every_accel_renders_the_showcase_exactly_as_brute_force() {
 fn every_accel_gives_the_same_normals_and_depths() {
     let scene = showcase();
     for view in [View::Normals, View::Depth, View::Color] {
-        assert_all_equal(&render_with(&scene, Stage::GenericObjects, 80, 60, |o| {
+        assert_all_equal(&render_with(&scene, Chapter::GenericObjects, 80, 60, |o| {
             o.view = view
         }));
     }
@@ -38,12 +38,12 @@ fn every_accel_renders_a_demanding_scene_exactly_as_brute_force() {
     let scene = parse(STRAIN, "strain.toml").expect("the strain scene parses");
     assert_all_equal(&render_with(
         &scene,
-        Stage::ReflectionRefraction,
+        Chapter::ReflectionRefraction,
         96,
         72,
         |_| {},
     ));
-    assert_all_equal(&render_with(&scene, Stage::Shadows, 48, 36, |o| {
+    assert_all_equal(&render_with(&scene, Chapter::Shadows, 48, 36, |o| {
         o.samples = 4
     }));
 }
@@ -57,7 +57,7 @@ fn every_accel_renders_many_spheres_exactly_as_brute_force() {
         assert_eq!(scene.objects.len(), 301);
         assert_all_equal(&render_with(
             &scene,
-            Stage::ReflectionRefraction,
+            Chapter::ReflectionRefraction,
             96,
             54,
             |_| {},
@@ -70,7 +70,7 @@ fn every_accel_renders_many_spheres_exactly_as_brute_force() {
 #[test]
 fn one_thread_and_four_render_the_same_image() {
     let scene = parse(STRAIN, "strain.toml").unwrap();
-    let mut o = Options::for_scene(&scene, Stage::ReflectionRefraction);
+    let mut o = Options::for_scene(&scene, Chapter::ReflectionRefraction);
     o.width = 70; // not a multiple of the tile size
     o.height = 45;
     o.samples = 2;

@@ -17,7 +17,7 @@ mod packets;
 mod scatter;
 
 use whitted::accel::Accel;
-use whitted::render::{self, Framebuffer, Options, Stage, Stats};
+use whitted::render::{self, Chapter, Framebuffer, Options, Stats};
 use whitted::scene::Scene;
 
 fn showcase() -> Scene {
@@ -26,7 +26,7 @@ fn showcase() -> Scene {
 
 fn render_with(
     scene: &Scene,
-    stage: Stage,
+    chapter: Chapter,
     w: u32,
     h: u32,
     f: impl Fn(&mut Options),
@@ -34,7 +34,7 @@ fn render_with(
     Accel::ALL
         .iter()
         .map(|&accel| {
-            let mut o = Options::for_scene(scene, stage);
+            let mut o = Options::for_scene(scene, chapter);
             o.width = w;
             o.height = h;
             o.accel = accel;

@@ -4,7 +4,7 @@ use super::sphere::far_sphere_is_right;
 use super::{all_finite, f, hits, placed, tol};
 use whitted::ray::Ray;
 use whitted::real::vec3;
-use whitted::shapes::{Formula, Hit, Object, Part, Shape};
+use whitted::shapes::{Hit, Numerics, Object, Part, Shape};
 use whitted::transform::{Placement, Step};
 
 /// The entry point of a ray through the rim point (cos φ, sin φ, 1) of the generic cylinder,
@@ -28,14 +28,14 @@ fn ray_through_a_cylinder_rim_never_slips_between_wall_and_cap() {
     for i in 0..n {
         let phi = std::f64::consts::TAU * i as f64 / n as f64;
         let (ray, t_rim) = rim_ray(phi);
-        let robust = hits(&cylinder, &ray, Formula::Robust);
+        let robust = hits(&cylinder, &ray, Numerics::Robust);
         assert_eq!(robust.len(), 2, "φ = {phi}: {robust:?}");
         assert!(
             (f(robust[0].t) - t_rim).abs() < 1e-3,
             "φ = {phi}: {robust:?}"
         );
         assert!(robust[0].entering && !robust[1].entering);
-        let textbook = hits(&cylinder, &ray, Formula::Textbook);
+        let textbook = hits(&cylinder, &ray, Numerics::Textbook);
         if textbook.len() != 2 || (f(textbook[0].t) - t_rim).abs() > 1e-3 {
             textbook_wrong += 1;
         }
@@ -54,7 +54,7 @@ fn ray_along_the_cylinder_axis_crosses_both_caps() {
     let cylinder = Object::new(Shape::Cylinder, Placement::identity());
     for tilt in [0.0, 1e-30, 1e-12, 1e-6] {
         let ray = Ray::new(vec3(0.5, 0.0, -5.0), vec3(tilt, 0.0, 1.0));
-        let hs = hits(&cylinder, &ray, Formula::Robust);
+        let hs = hits(&cylinder, &ray, Numerics::Robust);
         assert_eq!(hs.len(), 2, "tilt {tilt}: {hs:?}");
         assert_eq!((hs[0].part, hs[1].part), (Part::BottomCap, Part::TopCap));
         assert!((f(hs[0].t) - 4.0).abs() < 1e-4 && (f(hs[1].t) - 6.0).abs() < 1e-4);
@@ -88,9 +88,9 @@ fn cone_ray_parallel_to_a_generator_meets_the_base_and_the_wall_once() {
     for i in 0..360 {
         let phi = (i as f64).to_radians();
         let ray = generator_ray(phi);
-        let robust = hits(&cone, &ray, Formula::Robust);
+        let robust = hits(&cone, &ray, Numerics::Robust);
         assert!(generator_ray_is_right(&robust), "φ = {i}°: {robust:?}");
-        if !generator_ray_is_right(&hits(&cone, &ray, Formula::Textbook)) {
+        if !generator_ray_is_right(&hits(&cone, &ray, Numerics::Textbook)) {
             textbook_wrong += 1;
         }
     }
@@ -98,7 +98,7 @@ fn cone_ray_parallel_to_a_generator_meets_the_base_and_the_wall_once() {
     assert!(!generator_ray_is_right(&hits(
         &cone,
         &generator_ray(0.0),
-        Formula::Textbook
+        Numerics::Textbook
     )));
     assert!(textbook_wrong > 0);
 }
@@ -117,22 +117,22 @@ fn small_cone_far_away_is_hit_where_the_textbook_discriminant_sees_nothing() {
             Step::Translate(vec3(0.0, 0.0, -tol::FAR)),
         ],
     );
-    let case = |h: f64, formula| {
+    let case = |h: f64, numerics| {
         let ray = Ray::new(vec3(h, 0.0, 0.0), vec3(0.0, 0.0, -1.0));
-        hits(&cone, &ray, formula)
+        hits(&cone, &ray, numerics)
     };
     for h in [0.0, 0.5, 0.9, -0.95] {
         assert!(
-            far_sphere_is_right(&case(h, Formula::Robust), h),
+            far_sphere_is_right(&case(h, Numerics::Robust), h),
             "h = {h}: {:?}",
-            case(h, Formula::Robust)
+            case(h, Numerics::Robust)
         );
     }
-    assert!(case(1.05, Formula::Robust).is_empty());
+    assert!(case(1.05, Numerics::Robust).is_empty());
     assert!(
-        !far_sphere_is_right(&case(0.5, Formula::Textbook), 0.5),
+        !far_sphere_is_right(&case(0.5, Numerics::Textbook), 0.5),
         "the textbook discriminant was expected to fail: {:?}",
-        case(0.5, Formula::Textbook)
+        case(0.5, Numerics::Textbook)
     );
 }
 
@@ -152,19 +152,19 @@ fn rays_through_the_cone_apex_get_finite_unit_normals() {
             let local = vec3(phi.cos(), phi.sin(), dz);
             let dir = cone.placement.m().transform_vector3(local);
             let ray = Ray::new(apex - dir * 3.0, dir);
-            for formula in [Formula::Robust, Formula::Textbook] {
-                let hs = hits(&cone, &ray, formula);
-                assert!(all_finite(&hs), "{formula:?} φ {i}: {hs:?}");
+            for numerics in [Numerics::Robust, Numerics::Textbook] {
+                let hs = hits(&cone, &ray, numerics);
+                assert!(all_finite(&hs), "{numerics:?} φ {i}: {hs:?}");
                 for w in hs.windows(2) {
                     assert!(w[0].t <= w[1].t);
                 }
                 for h in &hs {
                     assert!(
                         (f(h.normal.length()) - 1.0).abs() < tol::UNIT,
-                        "{formula:?}: {h:?}"
+                        "{numerics:?}: {h:?}"
                     );
                 }
-                if formula == Formula::Robust && !lying && dz < -1.0 {
+                if numerics == Numerics::Robust && !lying && dz < -1.0 {
                     // the apex is on the ray at t = 3 and the ray reaches the solid there
                     assert!(
                         hs.iter().any(|h| (f(h.t) - 3.0).abs() < 1e-3),

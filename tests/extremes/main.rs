@@ -25,7 +25,7 @@ use proptest::prelude::*;
 use proptest::test_runner::RngSeed;
 use whitted::ray::Ray;
 use whitted::real::{Real, real, vec3};
-use whitted::shapes::{Formula, Hit, Object, Shape};
+use whitted::shapes::{Hit, Numerics, Object, Shape};
 use whitted::transform::{Placement, Step};
 
 /// Tolerances and problem sizes for the precision under test.
@@ -84,8 +84,8 @@ fn placed(shape: Shape, steps: &[Step]) -> Object {
     )
 }
 
-fn hits(object: &Object, ray: &Ray, formula: Formula) -> Vec<Hit> {
-    object.intersect(ray, formula).as_slice().to_vec()
+fn hits(object: &Object, ray: &Ray, numerics: Numerics) -> Vec<Hit> {
+    object.intersect(ray, numerics).as_slice().to_vec()
 }
 
 fn all_finite(hs: &[Hit]) -> bool {

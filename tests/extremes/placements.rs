@@ -6,7 +6,7 @@ use proptest::prelude::*;
 use whitted::numeric::{normalize, normalize_naive};
 use whitted::ray::Ray;
 use whitted::real::{Real, Vec3, real, vec3};
-use whitted::shapes::{Formula, Part, Shape};
+use whitted::shapes::{Numerics, Part, Shape};
 use whitted::transform::Step;
 
 /// Notes, "Surface Normals at Intersections": n = (M⁻¹)ᵀn′, renormalised. v/|v| overflows
@@ -57,7 +57,7 @@ fn placements_from_a_millionth_to_a_million_keep_hits_on_the_surface() {
                 let target = object.placement.m().transform_point3(vec3(0.1, 0.2, 0.3));
                 let origin = centre + vec3(5.0 * s, 20.0 * s, 40.0 * s);
                 let ray = Ray::new(origin, target - origin);
-                let hs = hits(&object, &ray, Formula::Robust);
+                let hs = hits(&object, &ray, Numerics::Robust);
                 assert_eq!(hs.len(), 2, "{} at scale {s}: {hs:?}", shape.name());
                 let s_min = s * f(anisotropy.min_element());
                 for h in &hs {
@@ -129,7 +129,7 @@ proptest! {
         let target = m.transform_point3(vec3(towards[0], towards[1], towards[2]));
         prop_assume!(origin != target);
         let ray = Ray::new(origin, target - origin);
-        let hs = hits(&object, &ray, Formula::Robust);
+        let hs = hits(&object, &ray, Numerics::Robust);
         prop_assert!(all_finite(&hs), "{hs:?}");
         for w in hs.windows(2) {
             prop_assert!(w[0].t <= w[1].t, "{hs:?}");

@@ -2,7 +2,7 @@
 
 use super::{rel_err, tol};
 use whitted::real::{Real, real};
-use whitted::shapes::Formula;
+use whitted::shapes::Numerics;
 use whitted::shapes::quadratic::{self, Roots};
 
 /// Notes, "Generic Sphere": t = −b/a ± √(b² − ac)/a. When b² ≫ ac the smaller root subtracts
@@ -17,8 +17,8 @@ fn stable_quadratic_keeps_the_small_root_when_b_squared_dwarfs_ac() {
         Roots::One(t) => t,
         Roots::None => Real::NAN,
     };
-    let robust = smallest(quadratic::solve(a, b, c, Formula::Robust));
-    let textbook = smallest(quadratic::solve(a, b, c, Formula::Textbook));
+    let robust = smallest(quadratic::solve(a, b, c, Numerics::Robust));
+    let textbook = smallest(quadratic::solve(a, b, c, Numerics::Textbook));
     assert!(
         rel_err(robust, small) < tol::ROOT_REL,
         "robust small root {robust} vs {small}"
@@ -33,14 +33,14 @@ fn stable_quadratic_keeps_the_small_root_when_b_squared_dwarfs_ac() {
 /// zero; the robust one never returns a non-finite root.
 #[test]
 fn quadratic_with_a_zero_returns_only_finite_roots() {
-    for formula in [Formula::Textbook, Formula::Robust] {
+    for numerics in [Numerics::Textbook, Numerics::Robust] {
         for (a, b, c) in [
             (0.0, 1.0, -2.0),
             (0.0, 0.0, 1.0),
             (0.0, 0.0, 0.0),
             (0.0, -0.0, 0.0),
         ] {
-            match quadratic::solve(a, b, c, formula) {
+            match quadratic::solve(a, b, c, numerics) {
                 Roots::None => {}
                 Roots::One(t) => assert!(t.is_finite()),
                 Roots::Two(t1, t2) => assert!(t1.is_finite() && t2.is_finite() && t1 <= t2),
@@ -49,7 +49,7 @@ fn quadratic_with_a_zero_returns_only_finite_roots() {
     }
     // the linear case 2b·t + c = 0 is solved by the robust form: t = −c/(2b) = 1
     assert_eq!(
-        quadratic::solve(0.0, 1.0, -2.0, Formula::Robust),
+        quadratic::solve(0.0, 1.0, -2.0, Numerics::Robust),
         Roots::One(1.0)
     );
 }

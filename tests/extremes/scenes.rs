@@ -4,9 +4,9 @@
 use super::config;
 use proptest::prelude::*;
 use whitted::offset::OffsetKind;
-use whitted::render::{self, Options, Stage};
+use whitted::render::{self, Chapter, Options};
 use whitted::scene;
-use whitted::shapes::Formula;
+use whitted::shapes::Numerics;
 
 /// Notes, "Lighting Equations": I = I_a + I_d + I_s + I_l + I_r is finite at every pixel of the
 /// far and grazing scenes, for every formula and offset strategy.
@@ -20,18 +20,18 @@ fn no_nan_or_infinity_reaches_a_pixel_of_the_extreme_scenes() {
         ),
     ] {
         let scene = scene::parse(text, name).expect("valid scene");
-        for formula in [Formula::Textbook, Formula::Robust] {
+        for numerics in [Numerics::Textbook, Numerics::Robust] {
             for offset in OffsetKind::ALL {
-                let mut options = Options::for_scene(&scene, Stage::ReflectionRefraction);
+                let mut options = Options::for_scene(&scene, Chapter::ReflectionRefraction);
                 (options.width, options.height) = (40, 30);
-                options.formula = formula;
+                options.numerics = numerics;
                 options.offset = offset.offset();
                 let (fb, _) = render::render(&scene, &options);
                 assert!(
                     fb.pixels
                         .iter()
                         .all(|p| p.is_finite() && p.min_element() >= 0.0),
-                    "{name} {formula:?} {offset:?}"
+                    "{name} {numerics:?} {offset:?}"
                 );
             }
         }
@@ -156,7 +156,7 @@ fn corrupt(text: &str, cuts: &[Corruption]) -> String {
 fn loads_or_fails_politely(name: &str, text: &str) -> Result<(), TestCaseError> {
     match scene::parse(text, name) {
         Ok(scene) => {
-            let mut options = Options::for_scene(&scene, Stage::ReflectionRefraction);
+            let mut options = Options::for_scene(&scene, Chapter::ReflectionRefraction);
             (options.width, options.height, options.samples) = (3, 2, 1);
             options.max_depth = options.max_depth.min(3);
             let (fb, _) = render::render(&scene, &options);

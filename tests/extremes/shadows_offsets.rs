@@ -7,9 +7,9 @@ use whitted::numeric::normalize;
 use whitted::offset::Offset;
 use whitted::ray::Ray;
 use whitted::real::{Vec3, real, vec3};
-use whitted::render::{self, Options, Stage};
+use whitted::render::{self, Chapter, Options};
 use whitted::scene::{self, Scene};
-use whitted::shapes::{Formula, Hit};
+use whitted::shapes::{Hit, Numerics};
 
 /// A scene with one object ~`distance` units in front of the camera and one light on the
 /// camera's side: nothing can shadow the object but itself.
@@ -69,10 +69,10 @@ fn tilted_plane_scene(d: f64) -> Scene {
 /// convex object or a plane and the light on the visible side, every such pixel is a false
 /// shadow (shadow acne).
 fn wrongly_shadowed_share(scene: &Scene, offset: Offset) -> f64 {
-    let mut options = Options::for_scene(scene, Stage::Shading);
+    let mut options = Options::for_scene(scene, Chapter::Shading);
     options.offset = offset;
     let (lit, _) = render::render(scene, &options);
-    options.stage = Stage::Shadows;
+    options.chapter = Chapter::Shadows;
     let (shadowed, _) = render::render(scene, &options);
     let ambient_only = scene.materials[1].ambient * scene.ambient;
     let mut lit_count = 0;
@@ -141,7 +141,7 @@ proptest! {
         let target = m.transform_point3(vec3(towards[0], towards[1], towards[2]));
         prop_assume!(origin != target);
         let ray = Ray::new(origin, target - origin);
-        let hs = hits(&object, &ray, Formula::Robust);
+        let hs = hits(&object, &ray, Numerics::Robust);
         let Some(hit) = hs.first() else { return Ok(()); };
         let n = hit.normal;
         let t = vec3(tangent[0], tangent[1], tangent[2]);
@@ -151,7 +151,7 @@ proptest! {
         prop_assume!(f(dir.dot(n)) * side > 0.01);
         let spawn = whitted::offset::SpawnPoint::new(&object, &ray, hit);
         let (start, t_min) = Offset::ErrorBound.spawn(&spawn, dir);
-        let again = hits(&object, &Ray::new(start, dir), Formula::Robust);
+        let again = hits(&object, &Ray::new(start, dir), Numerics::Robust);
         let ahead: Vec<&Hit> = again.iter().filter(|h| h.t > t_min).collect();
         // the surface it starts from: the same part (a facet, a cap, the wall …); at an edge the
         // ray may legitimately cross the neighbouring part right away

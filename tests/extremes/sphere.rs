@@ -4,15 +4,15 @@ use super::{eps, f, hits, placed, rel_err, tol};
 use whitted::numeric::normalize;
 use whitted::ray::Ray;
 use whitted::real::{Vec3, real, vec3};
-use whitted::shapes::{Formula, Hit, Object, Shape};
+use whitted::shapes::{Hit, Numerics, Object, Shape};
 use whitted::transform::{Placement, Step};
 
 /// A unit sphere centred at (0, 0, −D) and a ray from (h, 0, 0) along −z: hits at
 /// t = D ∓ √(1 − h²).
-fn far_sphere_case(h: f64, formula: Formula) -> Vec<Hit> {
+fn far_sphere_case(h: f64, numerics: Numerics) -> Vec<Hit> {
     let sphere = placed(Shape::Sphere, &[Step::Translate(vec3(0.0, 0.0, -tol::FAR))]);
     let ray = Ray::new(vec3(h, 0.0, 0.0), vec3(0.0, 0.0, -1.0));
-    hits(&sphere, &ray, formula)
+    hits(&sphere, &ray, numerics)
 }
 
 pub(super) fn far_sphere_is_right(hs: &[Hit], h: f64) -> bool {
@@ -33,13 +33,13 @@ pub(super) fn far_sphere_is_right(hs: &[Hit], h: f64) -> bool {
 #[test]
 fn small_sphere_far_away_is_hit_where_the_textbook_discriminant_sees_nothing() {
     for h in [0.0, 0.3, 0.5, 0.8, 0.95] {
-        let robust = far_sphere_case(h, Formula::Robust);
+        let robust = far_sphere_case(h, Numerics::Robust);
         assert!(
             far_sphere_is_right(&robust, h),
             "robust, h = {h}: {robust:?}"
         );
     }
-    let textbook = far_sphere_case(0.5, Formula::Textbook);
+    let textbook = far_sphere_case(0.5, Numerics::Textbook);
     assert!(
         !far_sphere_is_right(&textbook, 0.5),
         "the textbook discriminant was expected to fail at distance {}: {textbook:?}",
@@ -53,12 +53,12 @@ fn small_sphere_far_away_is_hit_where_the_textbook_discriminant_sees_nothing() {
 #[test]
 fn grazing_rays_at_a_far_sphere_hit_inside_the_silhouette_and_miss_outside() {
     for h in [0.99, -0.99, 1.01, -1.01, 2.0] {
-        let robust = far_sphere_case(h, Formula::Robust);
+        let robust = far_sphere_case(h, Numerics::Robust);
         assert!(far_sphere_is_right(&robust, h), "h = {h}: {robust:?}");
     }
     let wrong = [0.99, 1.01]
         .iter()
-        .filter(|&&h| !far_sphere_is_right(&far_sphere_case(h, Formula::Textbook), h))
+        .filter(|&&h| !far_sphere_is_right(&far_sphere_case(h, Numerics::Textbook), h))
         .count();
     assert!(
         wrong > 0,
@@ -72,7 +72,7 @@ fn grazing_rays_at_a_far_sphere_hit_inside_the_silhouette_and_miss_outside() {
 fn tangent_ray_grazes_the_sphere_at_one_point() {
     let sphere = Object::new(Shape::Sphere, Placement::identity());
     let ray = Ray::new(vec3(1.0, 0.0, -5.0), vec3(0.0, 0.0, 1.0));
-    let hs = hits(&sphere, &ray, Formula::Robust);
+    let hs = hits(&sphere, &ray, Numerics::Robust);
     assert!(!hs.is_empty() && hs.len() <= 2, "{hs:?}");
     for h in &hs {
         assert!((f(h.t) - 5.0).abs() < 1e-3, "{h:?}");
@@ -104,8 +104,8 @@ fn large_sphere_close_by_keeps_the_near_root_accurate() {
     let c = 2.0 * r + 1.0; // (r + 1)² − r², exact
     let q = -(b + b.signum() * (b * b - a * c).sqrt());
     let near = c / q;
-    let robust = hits(&sphere, &ray, Formula::Robust);
-    let textbook = hits(&sphere, &ray, Formula::Textbook);
+    let robust = hits(&sphere, &ray, Numerics::Robust);
+    let textbook = hits(&sphere, &ray, Numerics::Textbook);
     // a few dozen roundings for the stable root; the textbook one loses ~log2(r) bits more
     let few_ulps = 64.0 * eps();
     assert!(

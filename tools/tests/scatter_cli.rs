@@ -3,7 +3,7 @@
 
 use std::process::Command;
 
-use whitted::render::{Options, Stage, render};
+use whitted::render::{Chapter, Options, render};
 
 const SCATTER: &str = env!("CARGO_BIN_EXE_scatter");
 
@@ -34,7 +34,7 @@ fn scatter_writes_a_scene_of_n_spheres() {
     assert_eq!(text.matches("plane = {").count(), 1);
     // the chapters render it: it parses, and every pixel of a small render is traced
     let parsed = whitted::scene::parse(&text, "s.toml").unwrap();
-    let mut options = Options::for_scene(&parsed, Stage::ReflectionRefraction);
+    let mut options = Options::for_scene(&parsed, Chapter::ReflectionRefraction);
     (options.width, options.height) = (64, 48);
     let (fb, stats) = render(&parsed, &options);
     assert_eq!((fb.width, fb.height, stats.primary), (64, 48, 64 * 48));

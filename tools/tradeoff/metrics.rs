@@ -4,7 +4,7 @@ use std::path::PathBuf;
 
 use serde::{Deserialize, Serialize};
 use whitted::offset::OffsetKind;
-use whitted::shapes::Formula;
+use whitted::shapes::Numerics;
 
 use crate::measure::Image;
 use crate::settings::{Setting, settings};
@@ -111,7 +111,7 @@ pub fn rows(
             let image = read_image(dir, &key, n).map_err(|e| e.to_string())?;
             let mut error = compare(&image, &references[s.scene]);
             let twin = Setting {
-                formula: Formula::Robust,
+                formula: Numerics::Robust,
                 offset: OffsetKind::ErrorBound,
                 ..s
             };

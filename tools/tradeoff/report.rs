@@ -2,7 +2,7 @@
 //! the raw results alone.
 
 use whitted::offset::OffsetKind;
-use whitted::shapes::Formula;
+use whitted::shapes::Numerics;
 
 use crate::front::front;
 use crate::metrics::Row;
@@ -134,10 +134,10 @@ pub fn report(results: &Results) -> Result<String, String> {
     let robust_cost = |p: &'static str| {
         cost_ratio(
             rows,
-            move |r| r.precision == p && r.setting.formula == Formula::Robust,
+            move |r| r.precision == p && r.setting.formula == Numerics::Robust,
             move |a, b| {
                 b.precision == p
-                    && b.setting.formula == Formula::Textbook
+                    && b.setting.formula == Numerics::Textbook
                     && b.setting.offset == a.setting.offset
                     && same(&a.setting, &b.setting)
             },
@@ -180,8 +180,8 @@ pub fn report(results: &Results) -> Result<String, String> {
         let mut parts = Vec::new();
         for p in ["f32", "f64"] {
             for (f, o) in [
-                (Formula::Textbook, OffsetKind::Fixed),
-                (Formula::Robust, OffsetKind::ErrorBound),
+                (Numerics::Textbook, OffsetKind::Fixed),
+                (Numerics::Robust, OffsetKind::ErrorBound),
             ] {
                 if let Some(r) = find(rows, p, base(scene, f, o)) {
                     parts.push(format!(

@@ -10,7 +10,7 @@ use std::path::Path;
 
 use serde::{Deserialize, Serialize};
 use whitted::offset::OffsetKind;
-use whitted::shapes::Formula;
+use whitted::shapes::Numerics;
 
 use crate::metrics::{Error, Row};
 use crate::settings::{SCENES, Setting, formula_name};
@@ -170,7 +170,7 @@ impl<'de> Deserialize<'de> for Row {
             .into_iter()
             .find(|p| *p == r.precision)
             .ok_or_else(|| unknown("precision", &r.precision))?;
-        let formula = [Formula::Textbook, Formula::Robust]
+        let formula = [Numerics::Textbook, Numerics::Robust]
             .into_iter()
             .find(|f| formula_name(*f) == r.formula)
             .ok_or_else(|| unknown("formula", &r.formula))?;
@@ -222,7 +222,7 @@ mod tests {
             precision,
             setting: Setting {
                 scene,
-                formula: Formula::Robust,
+                formula: Numerics::Robust,
                 offset: OffsetKind::Scaled,
                 samples: 4,
                 depth: 2,
@@ -267,7 +267,7 @@ mod tests {
         assert_eq!(back.rows[0].precision, "f32");
         assert_eq!(back.rows[1].setting.scene, 2);
         assert_eq!(back.rows[1].setting.offset, OffsetKind::Scaled);
-        assert_eq!(back.rows[1].setting.formula, Formula::Robust);
+        assert_eq!(back.rows[1].setting.formula, Numerics::Robust);
         assert_eq!(
             (back.rows[1].setting.samples, back.rows[1].setting.depth),
             (4, 2)

@@ -1,9 +1,9 @@
 //! What is measured: the fixed scenes and the render settings every precision renders.
 
 use whitted::offset::OffsetKind;
-use whitted::render::{Options, Stage};
+use whitted::render::{Chapter, Options};
 use whitted::scene::{self, Scene};
-use whitted::shapes::Formula;
+use whitted::shapes::Numerics;
 
 /// The fixed scenes: (short name, file, text).
 pub const SCENES: [(&str, &str, &str); 3] = [
@@ -28,7 +28,7 @@ pub const SCENES: [(&str, &str, &str); 3] = [
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Setting {
     pub scene: usize,
-    pub formula: Formula,
+    pub formula: Numerics,
     pub offset: OffsetKind,
     pub samples: u32,
     pub depth: u32,
@@ -52,7 +52,7 @@ impl Setting {
     pub fn reference(scene: usize, samples: u32) -> Self {
         Setting {
             scene,
-            formula: Formula::Robust,
+            formula: Numerics::Robust,
             offset: OffsetKind::ErrorBound,
             samples,
             depth: 12,
@@ -68,12 +68,12 @@ pub fn settings() -> Vec<Setting> {
     for scene in 0..SCENES.len() {
         let base = Setting {
             scene,
-            formula: Formula::Robust,
+            formula: Numerics::Robust,
             offset: OffsetKind::ErrorBound,
             samples: 1,
             depth: 5,
         };
-        for formula in [Formula::Textbook, Formula::Robust] {
+        for formula in [Numerics::Textbook, Numerics::Robust] {
             for offset in [
                 OffsetKind::Fixed,
                 OffsetKind::Scaled,
@@ -88,8 +88,8 @@ pub fn settings() -> Vec<Setting> {
         }
         for samples in [4, 16] {
             for (formula, offset) in [
-                (Formula::Textbook, OffsetKind::Fixed),
-                (Formula::Robust, OffsetKind::ErrorBound),
+                (Numerics::Textbook, OffsetKind::Fixed),
+                (Numerics::Robust, OffsetKind::ErrorBound),
             ] {
                 all.push(Setting {
                     formula,
@@ -114,9 +114,9 @@ pub fn load(scene: usize) -> Scene {
 
 /// The render options of a setting at the given image size.
 pub fn options(scene: &Scene, s: &Setting, width: u32, height: u32) -> Options {
-    let mut o = Options::for_scene(scene, Stage::ReflectionRefraction);
+    let mut o = Options::for_scene(scene, Chapter::ReflectionRefraction);
     (o.width, o.height) = (width, height);
-    o.formula = s.formula;
+    o.numerics = s.formula;
     o.offset = s.offset.offset();
     o.samples = s.samples;
     o.max_depth = s.depth;
@@ -124,9 +124,9 @@ pub fn options(scene: &Scene, s: &Setting, width: u32, height: u32) -> Options {
 }
 
 /// A formula's name in the report.
-pub fn formula_name(f: Formula) -> &'static str {
+pub fn formula_name(f: Numerics) -> &'static str {
     match f {
-        Formula::Textbook => "textbook",
-        Formula::Robust => "robust",
+        Numerics::Textbook => "textbook",
+        Numerics::Robust => "robust",
     }
 }

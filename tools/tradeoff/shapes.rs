@@ -5,13 +5,13 @@ use std::time::Instant;
 
 use whitted::ray::Ray;
 use whitted::real::{Real, Vec3};
-use whitted::shapes::{Formula, Object, Polyhedron, Shape};
+use whitted::shapes::{Numerics, Object, Polyhedron, Shape};
 use whitted::transform::Placement;
 
 /// Nanoseconds per ray–shape test for each shape and formula, at this build's precision:
 /// 4096 fixed rays through the generic shapes, the fastest of 15 timed passes (the least
 /// disturbed by whatever else the machine runs).
-pub fn shape_timings() -> Vec<(String, Formula, f64)> {
+pub fn shape_timings() -> Vec<(String, Numerics, f64)> {
     let shapes = [
         Shape::Sphere,
         Shape::Plane,
@@ -23,7 +23,7 @@ pub fn shape_timings() -> Vec<(String, Formula, f64)> {
     let mut out = Vec::new();
     for shape in &shapes {
         let object = Object::new(shape.clone(), Placement::identity());
-        for formula in [Formula::Textbook, Formula::Robust] {
+        for formula in [Numerics::Textbook, Numerics::Robust] {
             let mut times = Vec::new();
             for _ in 0..15 {
                 let start = Instant::now();

@@ -7,7 +7,7 @@
 //!      [--inspect X,Y [--json]]                            chapters 2–5
 //!      [--accel none|boxes|extents|octree|bvh] [--no-packets]   chapters 2–5
 //!      [--samples N] [--max-depth N] [--stats]             chapter 5
-//!      [--formula textbook|robust]                         chapters 4–5
+//!      [--numerics textbook|robust]                        chapters 4–5
 //!      [--offset fixed|scaled|error-bound]                 chapters 4–5
 //! ```
 //!
@@ -41,11 +41,11 @@ use whitted::error::{Error, MISSING, panic_text};
 use whitted::offset::OffsetKind;
 use whitted::output::{self, Encoding};
 use whitted::real::Real;
-use whitted::render::{self, Options, Stage, View};
+use whitted::render::{self, Chapter, Options, View};
 use whitted::scene::load::{MAX_DEPTH, MAX_SAMPLES, MAX_SIDE};
 use whitted::scene::scatter::Layout;
 use whitted::scene::{self, Scene};
-use whitted::shapes::Formula;
+use whitted::shapes::Numerics;
 
 /// The default scene, compiled into every binary (it lives in the library).
 pub use whitted::scene::{SHOWCASE, SHOWCASE_NAME};
@@ -101,9 +101,9 @@ macro_rules! choice {
     };
 }
 
-choice!(Formula {
-    Formula::Textbook => "the notes' formulas as printed",
-    Formula::Robust => "cancellation-free roots and discriminants (default)",
+choice!(Numerics {
+    Numerics::Textbook => "the notes' formulas as printed",
+    Numerics::Robust => "cancellation-free roots and discriminants (default)",
 });
 
 choice!(View {
@@ -161,7 +161,7 @@ pub struct Common {
     #[arg(short, long)]
     pub quiet: bool,
     /// Open a live window instead of writing a file: the image refines coarse to fine, keys
-    /// move the camera (WASD, Q/E, arrows) and switch stage (1-5), view (V) and depth (+/-),
+    /// move the camera (WASD, Q/E, arrows) and switch chapter (1-5), view (V) and depth (+/-),
     /// a click prints and draws the pixel's ray tree, P saves the PNG (to -o), R or saving the
     /// scene file reloads it, H lists the keys, Esc quits. Without --width/--height the image
     /// is the scene's size, shrunk to fit 1280×960.
@@ -221,8 +221,8 @@ pub struct Tracing {
 #[derive(Args, Debug, Clone)]
 pub struct Accuracy {
     /// Intersection formulas: the notes' as printed (textbook) or cancellation-free (robust).
-    #[arg(long, value_parser = choice::<Formula>(), default_value = Formula::Robust.name())]
-    pub formula: Formula,
+    #[arg(long, alias = "formula", value_parser = choice::<Numerics>(), default_value = Numerics::Robust.name())]
+    pub numerics: Numerics,
     /// How feeler, mirror and transmitted rays leave a surface: a fixed ε = 1e-4, an ε scaled
     /// by the hit point's magnitude, or a bound on the hit point's rounding error.
     #[arg(long, value_parser = choice::<OffsetKind>(), default_value = OffsetKind::ErrorBound.name())]
@@ -264,11 +264,11 @@ pub fn parse_args<T: clap::Parser>() -> T {
 }
 
 /// Reads the scene named on the command line, or the embedded showcase: the parts the chapter
-/// `stage` uses ([`Stage::reads`]).
-pub fn read_scene(path: Option<&Path>, stage: Stage) -> Result<Scene, Error> {
+/// `chapter` uses ([`Chapter::reads`]).
+pub fn read_scene(path: Option<&Path>, chapter: Chapter) -> Result<Scene, Error> {
     match path {
-        Some(p) => scene::load_parts(p, stage.reads()),
-        None => scene::showcase_parts(stage.reads()),
+        Some(p) => scene::load_parts(p, chapter.reads()),
+        None => scene::showcase_parts(chapter.reads()),
     }
 }
 
@@ -304,14 +304,14 @@ pub fn fit(width: u32, height: u32, bound: (u32, u32)) -> (u32, u32) {
 /// (`None` for the others). Returns the exit status (0, or 2 after printing the error).
 pub fn run(
     binary: &str,
-    stage: Stage,
+    chapter: Chapter,
     common: &Common,
     view: Option<&ViewArg>,
     tracing: Option<&Tracing>,
     accuracy: Option<&Accuracy>,
 ) -> ExitCode {
     quiet_missing_exercises();
-    let run = || run_inner(binary, stage, common, view, tracing, accuracy);
+    let run = || run_inner(binary, chapter, common, view, tracing, accuracy);
     match std::panic::catch_unwind(std::panic::AssertUnwindSafe(run)) {
         Ok(Ok(())) => ExitCode::SUCCESS,
         Ok(Err(e)) => {
@@ -341,7 +341,7 @@ fn quiet_missing_exercises() {
 
 fn run_inner(
     binary: &str,
-    stage: Stage,
+    chapter: Chapter,
     common: &Common,
     view: Option<&ViewArg>,
     tracing: Option<&Tracing>,
@@ -361,11 +361,11 @@ fn run_inner(
     if inspect.is_none() {
         output::check_destination(&out)?;
     }
-    let scene = read_scene(common.scene.as_deref(), stage)?;
+    let scene = read_scene(common.scene.as_deref(), chapter)?;
     for w in &scene.warnings {
         eprintln!("warning: {w}");
     }
-    let mut options = Options::for_scene(&scene, stage);
+    let mut options = Options::for_scene(&scene, chapter);
     (options.width, options.height) = image_size(&scene, common.width, common.height);
     if let Some(v) = view {
         options.view = v.view;
@@ -377,7 +377,7 @@ fn run_inner(
         options.max_depth = t.max_depth.unwrap_or(options.max_depth);
     }
     if let Some(a) = accuracy {
-        options.formula = a.formula;
+        options.numerics = a.numerics;
         options.offset = a.offset.offset();
     }
     if let (Some(pixel), Some(v)) = (inspect, view) {
@@ -393,7 +393,7 @@ fn run_inner(
             scene_path: common.scene.clone(),
             scene,
             options,
-            max_stage: stage,
+            max_chapter: chapter,
             encoding: common.encoding,
             save_to: out,
             quiet: common.quiet,

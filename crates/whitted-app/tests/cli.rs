@@ -384,7 +384,7 @@ fn command_line_names_are_the_library_names() {
     use whitted::output::Encoding;
     use whitted::render::View;
     use whitted::scene::scatter::Layout;
-    use whitted::shapes::Formula;
+    use whitted::shapes::Numerics;
     use whitted_app::cli::{Choice, choice};
     fn check<T: Choice + std::fmt::Debug + Clone>() {
         let command = || {
@@ -401,7 +401,7 @@ fn command_line_names_are_the_library_names() {
         assert!(refused.is_err(), "an unknown name was taken");
     }
     check::<Accel>();
-    check::<Formula>();
+    check::<Numerics>();
     check::<OffsetKind>();
     check::<View>();
     check::<Encoding>();

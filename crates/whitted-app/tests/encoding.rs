@@ -16,11 +16,11 @@ use std::process::{Command, Output};
 
 use whitted::output::{Encoding, to_byte, to_rgb8};
 use whitted::real::Real;
-use whitted::render::{Framebuffer, Options, Stage, render};
+use whitted::render::{Chapter, Framebuffer, Options, render};
 
 /// The sRGB byte by the formula, written out here as the module docs write it (the same
 /// operations in the same order as the library's definition).
-fn formula(x: Real) -> u8 {
+fn numerics(x: Real) -> u8 {
     if x.is_nan() {
         return 0;
     }
@@ -50,7 +50,7 @@ fn steps() -> Vec<Real> {
             let (mut lo, mut hi) = (Real::to_bits(0.0), Real::to_bits(1.0));
             while hi - lo > 1 {
                 let mid = lo + (hi - lo) / 2;
-                if formula(Real::from_bits(mid)) > k {
+                if numerics(Real::from_bits(mid)) > k {
                     hi = mid;
                 } else {
                     lo = mid;
@@ -126,8 +126,8 @@ fn the_fast_srgb_byte_is_the_formulas_byte_everywhere() {
     let mut values: Vec<Real> = Vec::new();
     for (k, &t) in steps.iter().enumerate() {
         // the formula steps up exactly there
-        assert_eq!(usize::from(formula(t)), k + 1, "step {k} at {t}");
-        assert_eq!(usize::from(formula(next_down(t))), k, "step {k} at {t}");
+        assert_eq!(usize::from(numerics(t)), k + 1, "step {k} at {t}");
+        assert_eq!(usize::from(numerics(next_down(t))), k, "step {k} at {t}");
         let mut below = t;
         let mut above = t;
         values.push(t);
@@ -163,7 +163,7 @@ fn the_fast_srgb_byte_is_the_formulas_byte_everywhere() {
     ]);
     let mut wrong = Vec::new();
     for &x in &values {
-        let (fast, slow) = (Encoding::Srgb.byte(x), formula(x));
+        let (fast, slow) = (Encoding::Srgb.byte(x), numerics(x));
         if fast != slow {
             wrong.push(format!("{x:e} (bits {:x}): {fast} ≠ {slow}", x.to_bits()));
         }
@@ -207,7 +207,7 @@ fn scene_path() -> PathBuf {
 /// Chapter 3's scene at 64 pixels wide, rendered by the library as the binary renders it.
 fn framebuffer() -> Framebuffer {
     let scene = whitted::scene::load(&scene_path()).unwrap();
-    let mut options = Options::for_scene(&scene, Stage::Shading);
+    let mut options = Options::for_scene(&scene, Chapter::Shading);
     (options.width, options.height) = whitted_app::cli::image_size(&scene, Some(64), None);
     render(&scene, &options).0
 }

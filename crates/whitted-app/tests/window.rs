@@ -23,7 +23,7 @@ fn assert_vec_close(actual: Vec3, expected: Vec3, epsilon: Real) {
 use minifb::Key;
 use whitted::error::Error;
 use whitted::real::{Real, Vec3};
-use whitted::render::{self, Finished, Options, Rect, Stage, Tracer, View};
+use whitted::render::{self, Chapter, Finished, Options, Rect, Tracer, View};
 use whitted::scene::{CameraSettings, Scene};
 use whitted_app::window::canvas::Canvas;
 use whitted_app::window::overlay::{self, Mark, Overlay, Stroke};
@@ -40,8 +40,8 @@ fn showcase() -> Scene {
     whitted::scene::showcase().unwrap()
 }
 
-fn options(scene: &Scene, stage: Stage, w: u32, h: u32) -> Options {
-    let mut o = Options::for_scene(scene, stage);
+fn options(scene: &Scene, chapter: Chapter, w: u32, h: u32) -> Options {
+    let mut o = Options::for_scene(scene, chapter);
     (o.width, o.height) = (w, h);
     o
 }
@@ -154,19 +154,19 @@ fn stale_tiles_are_dropped() {
 }
 
 /// The four passes, painted, give the whole-image render bit for bit, in every view and
-/// stage (a coarse-to-fine render traces the same road).
+/// chapter (a coarse-to-fine render traces the same road).
 #[test]
 fn the_progressive_render_equals_the_whole_image_render() {
     let scene = showcase();
-    for (stage, view) in [
-        (Stage::CameraRays, View::Color),
-        (Stage::Shading, View::Normals),
-        (Stage::Shadows, View::Shadows),
-        (Stage::ReflectionRefraction, View::Color),
-        (Stage::ReflectionRefraction, View::Depth),
-        (Stage::ReflectionRefraction, View::Rays),
+    for (chapter, view) in [
+        (Chapter::CameraRays, View::Color),
+        (Chapter::Shading, View::Normals),
+        (Chapter::Shadows, View::Shadows),
+        (Chapter::ReflectionRefraction, View::Color),
+        (Chapter::ReflectionRefraction, View::Depth),
+        (Chapter::ReflectionRefraction, View::Rays),
     ] {
-        let mut o = options(&scene, stage, 70, 45);
+        let mut o = options(&scene, chapter, 70, 45);
         o.view = view;
         let tracer = Tracer::new(&scene, &o);
         let mut canvas = Canvas::new(70, 45, whitted::output::Encoding::Srgb);
@@ -189,7 +189,7 @@ fn the_progressive_render_equals_the_whole_image_render() {
             }
         }
         let (whole, stats) = render::render(&scene, &o);
-        assert_eq!(canvas.fb, whole, "stage {stage:?}, view {view:?}");
+        assert_eq!(canvas.fb, whole, "chapter {chapter:?}, view {view:?}");
         assert_eq!(rays, stats.primary, "each pixel's camera rays once");
     }
 }
@@ -198,7 +198,7 @@ fn the_progressive_render_equals_the_whole_image_render() {
 #[test]
 fn a_cancelled_pass_traces_only_the_tiles_started_before_the_stop() {
     let scene = showcase();
-    let o = options(&scene, Stage::Shading, 160, 128); // 5 × 4 tiles of 32 in pass 4
+    let o = options(&scene, Chapter::Shading, 160, 128); // 5 × 4 tiles of 32 in pass 4
     let tracer = Tracer::new(&scene, &o);
     for allowed in [0, 1, 5, 13] {
         let asked = AtomicUsize::new(0);
@@ -224,8 +224,8 @@ fn a_cancelled_pass_traces_only_the_tiles_started_before_the_stop() {
 fn a_new_job_cancels_the_render_in_flight() {
     let scene = Arc::new(showcase());
     let worker = Worker::spawn(2).unwrap();
-    let big = options(&scene, Stage::ReflectionRefraction, 1280, 960);
-    let small = options(&scene, Stage::Shading, 64, 48);
+    let big = options(&scene, Chapter::ReflectionRefraction, 1280, 960);
+    let small = options(&scene, Chapter::Shading, 64, 48);
     let first = worker.submit(Arc::clone(&scene), big);
     let second = worker.submit(Arc::clone(&scene), small);
     assert_eq!(second, first + 1);
@@ -276,7 +276,7 @@ fn every_action_has_a_key_and_no_key_two_actions() {
         .map(Action::Move),
     );
     wanted.extend([Turn::Left, Turn::Right, Turn::Up, Turn::Down].map(Action::Turn));
-    wanted.extend((1..=5).map(Action::Stage));
+    wanted.extend((1..=5).map(Action::Chapter));
     for a in wanted {
         assert!(BINDINGS.iter().any(|b| b.action == a), "{a:?} has no key");
     }
@@ -299,8 +299,8 @@ fn keys_are_bound_as_the_help_says() {
         (Key::Equal, Action::Depth(1)),
         (Key::NumPadPlus, Action::Depth(1)),
         (Key::Minus, Action::Depth(-1)),
-        (Key::Key1, Action::Stage(1)),
-        (Key::Key5, Action::Stage(5)),
+        (Key::Key1, Action::Chapter(1)),
+        (Key::Key5, Action::Chapter(5)),
         (Key::V, Action::NextView),
         (Key::C, Action::PrintCamera),
         (Key::P, Action::Save),
@@ -323,10 +323,10 @@ fn keys_are_bound_as_the_help_says() {
     }
 }
 
-fn state(stage: Stage) -> State {
+fn state(chapter: Chapter) -> State {
     let scene = showcase();
-    let o = options(&scene, stage, 64, 48);
-    State::new(scene, o, stage)
+    let o = options(&scene, chapter, 64, 48);
+    State::new(scene, o, chapter)
 }
 
 fn key(action: Action) -> Input {
@@ -340,7 +340,7 @@ fn key(action: Action) -> Input {
 /// Shift moves 4 times as far; then a render.
 #[test]
 fn moving_translates_eye_and_look_at_together() {
-    let mut s = state(Stage::Shadows);
+    let mut s = state(Chapter::Shadows);
     let before = s.camera().clone();
     let f = (before.look_at - before.eye).normalize();
     let dist = (before.look_at - before.eye).length();
@@ -368,7 +368,7 @@ fn moving_translates_eye_and_look_at_together() {
 /// short of the up vector with a message and no render.
 #[test]
 fn turning_keeps_the_eye_and_stops_before_looking_straight_up() {
-    let mut s = state(Stage::Shadows);
+    let mut s = state(Chapter::Shadows);
     let start = s.camera().clone();
     assert_eq!(s.handle(key(Action::Turn(Turn::Left))), [Command::Render]);
     let turned = s.camera().clone();
@@ -406,29 +406,29 @@ fn turning_keeps_the_eye_and_stops_before_looking_straight_up() {
     assert!(angle >= 2.0 - 1e-3, "{angle}° from up");
 }
 
-/// 1–5 switch the stage up to the binary's own, never past it; stage 5 brings back the
-/// samples, earlier stages take one.
+/// 1–5 switch the chapter up to the binary's own, never past it; chapter 5 brings back the
+/// samples, earlier chapters take one.
 #[test]
 fn stage_keys_stop_at_the_binarys_chapter() {
-    let mut s = state(Stage::Shadows);
-    let cmds = s.handle(key(Action::Stage(5)));
-    assert!(matches!(cmds.as_slice(), [Command::Print(m)] if m.contains("up to stage 4")));
-    assert_eq!(s.options.stage, Stage::Shadows);
-    assert_eq!(s.handle(key(Action::Stage(2))), [Command::Render]);
-    assert_eq!(s.options.stage, Stage::GenericObjects);
-    assert_eq!(s.handle(key(Action::Stage(2))), []);
-    let mut s5 = state(Stage::ReflectionRefraction);
+    let mut s = state(Chapter::Shadows);
+    let cmds = s.handle(key(Action::Chapter(5)));
+    assert!(matches!(cmds.as_slice(), [Command::Print(m)] if m.contains("up to chapter 4")));
+    assert_eq!(s.options.chapter, Chapter::Shadows);
+    assert_eq!(s.handle(key(Action::Chapter(2))), [Command::Render]);
+    assert_eq!(s.options.chapter, Chapter::GenericObjects);
+    assert_eq!(s.handle(key(Action::Chapter(2))), []);
+    let mut s5 = state(Chapter::ReflectionRefraction);
     s5.samples = 4;
-    s5.handle(key(Action::Stage(3)));
+    s5.handle(key(Action::Chapter(3)));
     assert_eq!(s5.options.samples, 1);
-    s5.handle(key(Action::Stage(5)));
+    s5.handle(key(Action::Chapter(5)));
     assert_eq!(s5.options.samples, 4);
 }
 
-/// V cycles the six views and comes back; at stage 1 it says why it does nothing.
+/// V cycles the six views and comes back; at chapter 1 it says why it does nothing.
 #[test]
 fn v_cycles_the_views() {
-    let mut s = state(Stage::ReflectionRefraction);
+    let mut s = state(Chapter::ReflectionRefraction);
     let mut seen = vec![s.options.view];
     for _ in 0..6 {
         assert_eq!(s.handle(key(Action::NextView)), [Command::Render]);
@@ -436,7 +436,7 @@ fn v_cycles_the_views() {
     }
     assert_eq!(&seen[..6], &View::ALL);
     assert_eq!(seen[6], View::Color);
-    let mut s1 = state(Stage::CameraRays);
+    let mut s1 = state(Chapter::CameraRays);
     assert!(matches!(
         s1.handle(key(Action::NextView)).as_slice(),
         [Command::Print(_)]
@@ -444,10 +444,10 @@ fn v_cycles_the_views() {
     assert_eq!(s1.options.view, View::Color);
 }
 
-/// +/- change the depth within 0 … MAX_DEPTH; only stage 5 renders again.
+/// +/- change the depth within 0 … MAX_DEPTH; only chapter 5 renders again.
 #[test]
 fn depth_keys_change_max_depth_within_its_range() {
-    let mut s = state(Stage::ReflectionRefraction);
+    let mut s = state(Chapter::ReflectionRefraction);
     let d = s.options.max_depth;
     assert_eq!(s.handle(key(Action::Depth(1))), [Command::Render]);
     assert_eq!(s.options.max_depth, d + 1);
@@ -459,9 +459,9 @@ fn depth_keys_change_max_depth_within_its_range() {
         s.handle(key(Action::Depth(-1))).as_slice(),
         [Command::Print(_)]
     ));
-    let mut s3 = state(Stage::Shading);
+    let mut s3 = state(Chapter::Shading);
     assert!(
-        matches!(s3.handle(key(Action::Depth(1))).as_slice(), [Command::Print(m)] if m.contains("stage 5"))
+        matches!(s3.handle(key(Action::Depth(1))).as_slice(), [Command::Print(m)] if m.contains("chapter 5"))
     );
     assert_eq!(s3.options.max_depth, d + 1);
 }
@@ -469,7 +469,7 @@ fn depth_keys_change_max_depth_within_its_range() {
 /// C prints a `[camera]` table that reads back as the camera moved.
 #[test]
 fn the_printed_camera_reads_back_as_the_same_camera() {
-    let mut s = state(Stage::Shading);
+    let mut s = state(Chapter::Shading);
     s.handle(key(Action::Turn(Turn::Left)));
     s.handle(key(Action::Move(Move::Forward)));
     let cmds = s.handle(key(Action::PrintCamera));
@@ -499,7 +499,7 @@ fn the_printed_camera_reads_back_as_the_same_camera() {
 /// The other keys ask the shell for what they name.
 #[test]
 fn save_reload_help_and_quit_become_commands() {
-    let mut s = state(Stage::Shading);
+    let mut s = state(Chapter::Shading);
     assert_eq!(s.handle(key(Action::Save)), [Command::Save]);
     assert_eq!(s.handle(key(Action::Reload)), [Command::Reload]);
     assert_eq!(s.handle(key(Action::Quit)), [Command::Quit]);
@@ -533,7 +533,7 @@ fn a_click_maps_to_the_pixel_under_it_after_a_resize() {
     assert_eq!(click_to_pixel((-1.0, 10.0), (640, 480), image), None);
     assert_eq!(click_to_pixel((10.0, 480.0), (640, 480), image), None);
     assert_eq!(click_to_pixel((10.0, 10.0), (0, 0), image), None);
-    let mut s = state(Stage::Shading); // a 64 × 48 image
+    let mut s = state(Chapter::Shading); // a 64 × 48 image
     let cmds = s.handle(Input::Click {
         mouse: (200.0, 50.0),
         window: (256, 192),
@@ -545,7 +545,7 @@ fn a_click_maps_to_the_pixel_under_it_after_a_resize() {
 /// keeps the moved camera unless the file's camera changed.
 #[test]
 fn reloading_keeps_the_last_good_scene() {
-    let mut s = state(Stage::Shading);
+    let mut s = state(Chapter::Shading);
     s.handle(key(Action::Move(Move::Back)));
     let moved = s.camera().clone();
     let before = Arc::clone(&s.scene);
@@ -604,7 +604,7 @@ fn projection_inverts_the_camera_ray() {
 #[test]
 fn the_overlay_of_a_shadowed_pixel_shows_the_blocked_feeler() {
     let scene = showcase();
-    let o = options(&scene, Stage::Shadows, 640, 480);
+    let o = options(&scene, Chapter::Shadows, 640, 480);
     let tracer = Tracer::new(&scene, &o);
     // find a pixel whose first hit has a blocked feeler
     let tree = (0..480)

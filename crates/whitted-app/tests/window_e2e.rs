@@ -290,7 +290,7 @@ fn the_window_refines_inspects_reloads_and_obeys_every_key() {
     let refs = tempfile::tempdir().unwrap();
 
     // 1. it refines to the image -o writes
-    s.wait_for(true, "image complete: stage 5, view color", 0);
+    s.wait_for(true, "image complete: chapter 5, view color", 0);
     std::thread::sleep(Duration::from_millis(200));
     let first = s.shot("01-refined");
     let want = reference(BIN, &scene, refs.path(), "color", &[]);
@@ -363,9 +363,9 @@ fn the_window_refines_inspects_reloads_and_obeys_every_key() {
         );
     }
 
-    // 4. 1-5: the stages; 3 is chapter 3's image
+    // 4. 1-5: the chapters; 3 is chapter 3's image
     s.key_and_render("3");
-    s.wait_for(true, "stage 3, view color", 0);
+    s.wait_for(true, "chapter 3, view color", 0);
     let ch3 = reference(
         env!("CARGO_BIN_EXE_ch03_shading"),
         &scene,
@@ -374,9 +374,9 @@ fn the_window_refines_inspects_reloads_and_obeys_every_key() {
         &[],
     );
     assert!(differing(&s.shot("05-stage3"), &ch3) < 0.001);
-    for stage in ["1", "2", "4", "5"] {
-        s.key_and_render(stage);
-        s.wait_for(true, &format!("stage {stage}, "), 0);
+    for chapter in ["1", "2", "4", "5"] {
+        s.key_and_render(chapter);
+        s.wait_for(true, &format!("chapter {chapter}, "), 0);
     }
 
     // 5. -/+: depth 4 differs from depth 5 in the mirror, then back

@@ -278,7 +278,7 @@ pub fn part_of(file: &Path, tests: &[String], root: &Path) -> Part {
     if under(layout::CORE).is_some() {
         return Part::Copied;
     }
-    for krate in [layout::APP, layout::LEARN] {
+    for krate in [layout::SYLLABUS, layout::APP, layout::LEARN] {
         if let Some(rest) = under(krate) {
             return if rest.starts_with("tests/") {
                 Part::Left
@@ -431,14 +431,14 @@ fn prune_lock(project: &Path) {
 pub fn workspace_manifest(reference: &str) -> Result<String, Error> {
     let members = format!(
         "members = [{}]",
-        [layout::CORE, layout::APP, layout::LEARN]
+        [layout::SYLLABUS, layout::CORE, layout::APP, layout::LEARN]
             .map(|m| format!("{m:?}"))
             .join(", ")
     );
     let mut out = String::from(
         "# The workspace of your copy of whitted: the renderer you write (crates/whitted), the\n\
-         # chapter binaries (crates/whitted-app) and the loop behind `cargo learn`\n\
-         # (crates/whitted-learn).\n",
+         # chapter binaries (crates/whitted-app), the loop behind `cargo learn`\n\
+         # (crates/whitted-learn) and the course's outline they share (crates/whitted-syllabus).\n",
     );
     let mut replaced = false;
     let mut header = true;

@@ -22,6 +22,8 @@ pub const BEGIN: &str = "// BEGIN SOLUTION";
 /// The marker line that closes it.
 pub const END: &str = "// END SOLUTION";
 
+/// The course's outline (the chapters), which every other crate reads.
+pub const SYLLABUS: &str = "crates/whitted-syllabus";
 /// The renderer's crate: what a student writes, and the tests that check it.
 pub const CORE: &str = "crates/whitted";
 /// The renderer's package name, as `cargo -p` takes it.

@@ -14,7 +14,7 @@
 //! Each formula of the notes is one small function in those modules, and the renderer calls
 //! exactly that function (`chapters/formulas.toml` lists them). **The road of one pixel** —
 //! camera ray, nearest hit, local light, feelers, mirror and transmitted rays — is one plain
-//! file, [`render::tracer`]; [`render::Stage`] decides how far along it a chapter goes.
+//! file, [`render::tracer`]; [`render::Chapter`] decides how far along it a chapter goes.
 //!
 //! Around the road: [`render`] (tiles in parallel, packets, the framebuffer, statistics),
 //! [`numeric`], [`error`] and [`output`] (sRGB-encoded PNGs, written atomically). Everything

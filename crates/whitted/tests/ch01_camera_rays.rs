@@ -12,7 +12,7 @@ use whitted::camera::{
     viewing_basis,
 };
 use whitted::real::{Real, Vec3, real, vec3};
-use whitted::render::Stage;
+use whitted::render::Chapter;
 
 /// A camera at the origin looking down −z (so n = +z, u = +x, v = +y).
 fn straight_camera(fov: Real, near: Real, columns: u32, rows: u32) -> Camera {
@@ -303,15 +303,15 @@ fn ex1_7_ray_colour_is_unit_direction_plus_one_over_two() {
 fn centre_pixel_of_a_chapter_one_image_is_the_colour_of_minus_n() {
     let along_minus_z = chapter_scene(
         "[camera]\neye = [0.0, 0.0, 5.0]\nlook_at = [0.0, 0.0, 0.0]\nnear = 2.0\n[[objects]]\nsphere = {}\n",
-        Stage::CameraRays,
+        Chapter::CameraRays,
     );
-    let (c, stats) = centre(&along_minus_z, Stage::CameraRays);
+    let (c, stats) = centre(&along_minus_z, Chapter::CameraRays);
     assert_vec_eq(c, vec3(0.5, 0.5, 0.0), TOL);
     assert_eq!(stats.primary, 1);
     let along_x = chapter_scene(
         "[camera]\neye = [-3.0, 1.0, 2.0]\nlook_at = [4.0, 1.0, 2.0]\nnear = 0.5\n[[objects]]\nsphere = {}\n",
-        Stage::CameraRays,
+        Chapter::CameraRays,
     );
-    let (c, _) = centre(&along_x, Stage::CameraRays);
+    let (c, _) = centre(&along_x, Chapter::CameraRays);
     assert_vec_eq(c, vec3(1.0, 0.5, 0.5), TOL);
 }

@@ -14,9 +14,9 @@ use common::{TOL, assert_vec_eq, centre, render_at, render_both_ways, scene};
 use whitted::accel::Accel;
 use whitted::ray::Ray;
 use whitted::real::{Mat4, Real, Vec3, vec3};
-use whitted::render::{Options, Stage, Tracer};
+use whitted::render::{Chapter, Options, Tracer};
 use whitted::shapes::quadratic::{
-    Formula, Roots, discriminant, solve, solve_with_discriminant, stable_roots,
+    Numerics, Roots, discriminant, solve, solve_with_discriminant, stable_roots,
 };
 use whitted::shapes::{
     Hit, Hits, Object, Part, Polyhedron, Shape, cone, cylinder, nearer, plane, polyhedron, sphere,
@@ -159,10 +159,10 @@ fn ex2_5_r_of_t_is_e_plus_d_t() {
 /// "Generic Sphere": t = −b/a ± √(b² − ac)/a; b² − ac < 0 no root, = 0 one, > 0 two.
 #[test]
 fn ex2_9_quadratic_has_no_one_or_two_roots_by_the_sign_of_b2_minus_ac() {
-    for formula in [Formula::Textbook, Formula::Robust] {
-        assert_eq!(solve(1.0, 0.0, 1.0, formula), Roots::None); // t² + 1
-        assert_eq!(solve(1.0, -2.0, 4.0, formula), Roots::One(2.0)); // t² − 4t + 4
-        match solve(1.0, -5.0, 24.0, formula) {
+    for numerics in [Numerics::Textbook, Numerics::Robust] {
+        assert_eq!(solve(1.0, 0.0, 1.0, numerics), Roots::None); // t² + 1
+        assert_eq!(solve(1.0, -2.0, 4.0, numerics), Roots::One(2.0)); // t² − 4t + 4
+        match solve(1.0, -5.0, 24.0, numerics) {
             // t² − 10t + 24 = (t − 4)(t − 6)
             Roots::Two(t1, t2) => {
                 assert_abs_diff_eq!(t1, 4.0, epsilon = TOL);
@@ -227,8 +227,8 @@ fn ex2_8_the_small_root_keeps_its_digits() {
 #[test]
 fn ex2_9_textbook_roots_lose_the_small_root_and_stable_ones_keep_it() {
     let (a, b, c) = (1.0, -1e8, 1.0);
-    assert_eq!(solve(a, b, c, Formula::Textbook), Roots::Two(0.0, 2e8));
-    match solve(a, b, c, Formula::Robust) {
+    assert_eq!(solve(a, b, c, Numerics::Textbook), Roots::Two(0.0, 2e8));
+    match solve(a, b, c, Numerics::Robust) {
         Roots::Two(t1, t2) => {
             assert_abs_diff_eq!(t1 / 5e-9, 1.0, epsilon = TOL);
             assert_abs_diff_eq!(t2 / 2e8, 1.0, epsilon = TOL);
@@ -236,12 +236,12 @@ fn ex2_9_textbook_roots_lose_the_small_root_and_stable_ones_keep_it() {
         r => panic!("{r:?}"),
     }
     assert_eq!(
-        solve_with_discriminant(0.0, 2.0, -4.0, 4.0, Formula::Robust),
+        solve_with_discriminant(0.0, 2.0, -4.0, 4.0, Numerics::Robust),
         Roots::One(1.0)
     );
-    for formula in [Formula::Textbook, Formula::Robust] {
+    for numerics in [Numerics::Textbook, Numerics::Robust] {
         assert_eq!(
-            solve_with_discriminant(1.0, 0.0, 1.0, Real::NAN, formula),
+            solve_with_discriminant(1.0, 0.0, 1.0, Real::NAN, numerics),
             Roots::None
         );
     }
@@ -308,14 +308,14 @@ fn ex2_10_sphere_normal_is_the_point() {
 /// equal to the hit points ("Surface Normals at Intersections").
 #[test]
 fn ex2_11_sphere_two_hits_with_the_point_as_normal() {
-    let hits = sphere::intersect(&ray([0.0, 0.0, 5.0], [0.0, 0.0, -1.0]), Formula::Robust);
+    let hits = sphere::intersect(&ray([0.0, 0.0, 5.0], [0.0, 0.0, -1.0]), Numerics::Robust);
     assert_hits(&hits, &[(4.0, Part::Surface), (6.0, Part::Surface)]);
     let [h1, h2] = [hits.as_slice()[0], hits.as_slice()[1]];
     assert_vec_eq(h1.normal, Vec3::Z, TOL);
     assert_vec_eq(h2.normal, Vec3::NEG_Z, TOL);
     assert!(h1.entering && !h2.entering);
     // an oblique ray: e = (0.6, 0, 5), d = (0, 0, −1) meets z = ±0.8
-    let hits = sphere::intersect(&ray([0.6, 0.0, 5.0], [0.0, 0.0, -1.0]), Formula::Robust);
+    let hits = sphere::intersect(&ray([0.6, 0.0, 5.0], [0.0, 0.0, -1.0]), Numerics::Robust);
     assert_hits(&hits, &[(4.2, Part::Surface), (5.8, Part::Surface)]);
     assert_vec_eq(hits.as_slice()[0].normal, vec3(0.6, 0.0, 0.8), 10.0 * TOL);
 }
@@ -323,18 +323,18 @@ fn ex2_11_sphere_two_hits_with_the_point_as_normal() {
 /// "Generic Sphere": b² − ac = 0 grazes (one hit), b² − ac < 0 misses.
 #[test]
 fn ex2_11_sphere_tangent_ray_grazes_once_and_outside_ray_misses() {
-    for formula in [Formula::Textbook, Formula::Robust] {
-        let graze = sphere::intersect(&ray([1.0, 0.0, 5.0], [0.0, 0.0, -1.0]), formula);
+    for numerics in [Numerics::Textbook, Numerics::Robust] {
+        let graze = sphere::intersect(&ray([1.0, 0.0, 5.0], [0.0, 0.0, -1.0]), numerics);
         assert_hits(&graze, &[(5.0, Part::Surface)]);
         assert_vec_eq(graze.as_slice()[0].normal, Vec3::X, TOL);
-        assert!(sphere::intersect(&ray([1.5, 0.0, 5.0], [0.0, 0.0, -1.0]), formula).is_empty());
+        assert!(sphere::intersect(&ray([1.5, 0.0, 5.0], [0.0, 0.0, -1.0]), numerics).is_empty());
         // along −z from (0, 1, 5) it grazes at t = 5, from (0, 2, 5) it misses (b² − ac < 0)
-        let graze = sphere::intersect(&ray([0.0, 1.0, 5.0], [0.0, 0.0, -1.0]), formula);
+        let graze = sphere::intersect(&ray([0.0, 1.0, 5.0], [0.0, 0.0, -1.0]), numerics);
         assert_hits(&graze, &[(5.0, Part::Surface)]);
-        assert!(sphere::intersect(&ray([0.0, 2.0, 5.0], [0.0, 0.0, -1.0]), formula).is_empty());
+        assert!(sphere::intersect(&ray([0.0, 2.0, 5.0], [0.0, 0.0, -1.0]), numerics).is_empty());
     }
     // a degenerate direction hits nothing
-    assert!(sphere::intersect(&ray([0.0, 0.0, 5.0], [0.0, 0.0, 0.0]), Formula::Robust).is_empty());
+    assert!(sphere::intersect(&ray([0.0, 0.0, 5.0], [0.0, 0.0, 0.0]), Numerics::Robust).is_empty());
 }
 
 // --- plane --------------------------------------------------------------------------------
@@ -426,8 +426,8 @@ fn ex2_16_cylinder_normals_are_x_y_0_on_the_wall_and_plus_minus_z_on_the_caps() 
 /// y = ∓1 with normals (x, y, 0).
 #[test]
 fn ex2_17_cylinder_wall_two_hits_with_normals_x_y_0() {
-    for formula in [Formula::Textbook, Formula::Robust] {
-        let hits = cylinder::intersect(&ray([0.0, -5.0, 0.5], [0.0, 1.0, 0.0]), formula);
+    for numerics in [Numerics::Textbook, Numerics::Robust] {
+        let hits = cylinder::intersect(&ray([0.0, -5.0, 0.5], [0.0, 1.0, 0.0]), numerics);
         assert_hits(&hits, &[(4.0, Part::Wall), (6.0, Part::Wall)]);
         assert_vec_eq(hits.as_slice()[0].normal, Vec3::NEG_Y, TOL);
         assert_vec_eq(hits.as_slice()[1].normal, Vec3::Y, TOL);
@@ -437,10 +437,10 @@ fn ex2_17_cylinder_wall_two_hits_with_normals_x_y_0() {
 /// "Generic Cylinder": roots with z outside [−1, 1] do not count, and a tangent ray grazes once.
 #[test]
 fn ex2_17_cylinder_miss_beyond_the_caps_and_tangent_graze() {
-    for formula in [Formula::Textbook, Formula::Robust] {
-        assert!(cylinder::intersect(&ray([0.0, -5.0, 2.0], [0.0, 1.0, 0.0]), formula).is_empty());
-        assert!(cylinder::intersect(&ray([1.5, -5.0, 0.0], [0.0, 1.0, 0.0]), formula).is_empty());
-        let graze = cylinder::intersect(&ray([1.0, -5.0, 0.0], [0.0, 1.0, 0.0]), formula);
+    for numerics in [Numerics::Textbook, Numerics::Robust] {
+        assert!(cylinder::intersect(&ray([0.0, -5.0, 2.0], [0.0, 1.0, 0.0]), numerics).is_empty());
+        assert!(cylinder::intersect(&ray([1.5, -5.0, 0.0], [0.0, 1.0, 0.0]), numerics).is_empty());
+        let graze = cylinder::intersect(&ray([1.0, -5.0, 0.0], [0.0, 1.0, 0.0]), numerics);
         assert_hits(&graze, &[(5.0, Part::Wall)]);
         assert_vec_eq(graze.as_slice()[0].normal, Vec3::X, TOL);
     }
@@ -451,8 +451,8 @@ fn ex2_17_cylinder_miss_beyond_the_caps_and_tangent_graze() {
 /// normal (0, 0, −1).
 #[test]
 fn ex2_17_cylinder_ray_along_the_axis_crosses_both_caps() {
-    for formula in [Formula::Textbook, Formula::Robust] {
-        let hits = cylinder::intersect(&ray([0.3, 0.2, 5.0], [0.0, 0.0, -1.0]), formula);
+    for numerics in [Numerics::Textbook, Numerics::Robust] {
+        let hits = cylinder::intersect(&ray([0.3, 0.2, 5.0], [0.0, 0.0, -1.0]), numerics);
         assert_hits(&hits, &[(4.0, Part::TopCap), (6.0, Part::BottomCap)]);
         assert_vec_eq(hits.as_slice()[0].normal, Vec3::Z, TOL);
         assert_vec_eq(hits.as_slice()[1].normal, Vec3::NEG_Z, TOL);
@@ -464,8 +464,8 @@ fn ex2_17_cylinder_ray_along_the_axis_crosses_both_caps() {
 #[test]
 fn ex2_17_cylinder_ray_from_cap_to_wall() {
     // e = (0, 0, 2), d = (0.5, 0, −1): z = 1 at t = 1 (x = 0.5, inside); x = 1 at t = 2 (z = 0)
-    for formula in [Formula::Textbook, Formula::Robust] {
-        let hits = cylinder::intersect(&ray([0.0, 0.0, 2.0], [0.5, 0.0, -1.0]), formula);
+    for numerics in [Numerics::Textbook, Numerics::Robust] {
+        let hits = cylinder::intersect(&ray([0.0, 0.0, 2.0], [0.5, 0.0, -1.0]), numerics);
         assert_hits(&hits, &[(1.0, Part::TopCap), (2.0, Part::Wall)]);
         assert_vec_eq(hits.as_slice()[1].normal, Vec3::X, TOL);
     }
@@ -531,8 +531,8 @@ fn ex2_20_cone_normals_are_x_y_one_minus_z_on_the_wall_and_minus_z_on_the_base()
 #[test]
 fn ex2_21_cone_wall_two_hits_with_normals_x_y_one_minus_z() {
     let k = 1.0 / (2.0 as Real).sqrt();
-    for formula in [Formula::Textbook, Formula::Robust] {
-        let hits = cone::intersect(&ray([0.0, -5.0, 0.0], [0.0, 1.0, 0.0]), formula);
+    for numerics in [Numerics::Textbook, Numerics::Robust] {
+        let hits = cone::intersect(&ray([0.0, -5.0, 0.0], [0.0, 1.0, 0.0]), numerics);
         assert_hits(&hits, &[(4.0, Part::Wall), (6.0, Part::Wall)]);
         assert_vec_eq(
             unit(hits.as_slice()[0].normal),
@@ -554,8 +554,8 @@ fn ex2_21_cone_wall_two_hits_with_normals_x_y_one_minus_z() {
 #[test]
 fn ex2_21_cone_base_then_wall() {
     let k = 1.0 / (2.0 as Real).sqrt();
-    for formula in [Formula::Textbook, Formula::Robust] {
-        let hits = cone::intersect(&ray([0.5, 0.0, -3.0], [0.0, 0.0, 1.0]), formula);
+    for numerics in [Numerics::Textbook, Numerics::Robust] {
+        let hits = cone::intersect(&ray([0.5, 0.0, -3.0], [0.0, 0.0, 1.0]), numerics);
         assert_hits(&hits, &[(2.0, Part::Base), (3.5, Part::Wall)]);
         assert_vec_eq(hits.as_slice()[0].normal, Vec3::NEG_Z, TOL);
         assert_vec_eq(
@@ -570,9 +570,9 @@ fn ex2_21_cone_base_then_wall() {
 /// part of the cone: a ray crossing it misses.
 #[test]
 fn ex2_21_upper_nappe_of_the_double_cone_is_not_hit() {
-    for formula in [Formula::Textbook, Formula::Robust] {
-        let hits = cone::intersect(&ray([0.0, -5.0, 1.5], [0.0, 1.0, 0.0]), formula);
-        assert!(hits.is_empty(), "{formula:?}: {hits:?}");
+    for numerics in [Numerics::Textbook, Numerics::Robust] {
+        let hits = cone::intersect(&ray([0.0, -5.0, 1.5], [0.0, 1.0, 0.0]), numerics);
+        assert!(hits.is_empty(), "{numerics:?}: {hits:?}");
     }
 }
 
@@ -581,7 +581,7 @@ fn ex2_21_upper_nappe_of_the_double_cone_is_not_hit() {
 /// leaves through the base.
 #[test]
 fn ex2_21_cone_apex_has_a_finite_unit_normal() {
-    let hits = cone::intersect(&ray([0.0, 0.0, 3.0], [0.0, 0.0, -1.0]), Formula::Robust);
+    let hits = cone::intersect(&ray([0.0, 0.0, 3.0], [0.0, 0.0, -1.0]), Numerics::Robust);
     assert_eq!(hits.len(), 2, "{hits:?}");
     let (apex, base) = (hits.as_slice()[0], hits.as_slice()[1]);
     assert_abs_diff_eq!(apex.t, 2.0, epsilon = 10.0 * TOL);
@@ -746,7 +746,7 @@ fn ex2_12_t_is_the_same_in_world_and_object_space() {
         (local.dir.length() - world.dir.length()).abs() > 0.1,
         "the scale changes |d|"
     );
-    let hits = o.intersect_object_space(&world, Formula::Robust); // Shape::intersect_placed
+    let hits = o.intersect_object_space(&world, Numerics::Robust); // Shape::intersect_placed
     assert_eq!(hits.len(), 2);
     for h in hits.as_slice() {
         let p_world = world.at(h.t);
@@ -760,7 +760,7 @@ fn ex2_12_t_is_the_same_in_world_and_object_space() {
     }
     // renormalising M⁻¹d would change t: the hit would no longer be at world.at(t)
     let renormalised = Ray::new(local.origin, local.dir.normalize());
-    let t_bad = sphere::intersect(&renormalised, Formula::Robust).as_slice()[0].t;
+    let t_bad = sphere::intersect(&renormalised, Numerics::Robust).as_slice()[0].t;
     let miss = o.placement.inv().transform_point3(world.at(t_bad)).length();
     assert!(
         (miss - 1.0).abs() > 0.1,
@@ -779,7 +779,7 @@ fn ex2_12_a_placed_shape_is_hit_at_the_world_rays_t() {
     ])
     .unwrap();
     let world = ray([0.0, 0.0, 0.0], [0.0, 0.0, -2.0]);
-    let hits = Shape::Sphere.intersect_placed(placement.inv(), &world, Formula::Robust);
+    let hits = Shape::Sphere.intersect_placed(placement.inv(), &world, Numerics::Robust);
     assert_hits(&hits, &[(4.0, Part::Surface), (6.0, Part::Surface)]);
     assert_vec_eq(hits.as_slice()[0].normal, Vec3::Z, TOL);
     assert_vec_eq(hits.as_slice()[1].normal, Vec3::NEG_Z, TOL);
@@ -830,7 +830,7 @@ fn ex2_26_normal_under_non_uniform_scale_uses_inverse_transpose() {
     let s = (2.0 as Real).sqrt();
     let p_world = Vec3::new(s, 1.0 / s, 0.0); // M·(1/√2, 1/√2, 0)
     let r = Ray::new(p_world + vec3(1.0, 2.0, 0.0), vec3(-1.0, -2.0, 0.0));
-    let hit = o.intersect(&r, Formula::Robust).as_slice()[0];
+    let hit = o.intersect(&r, Numerics::Robust).as_slice()[0];
     assert_abs_diff_eq!(hit.t, 1.0, epsilon = 10.0 * TOL);
     let right = vec3(1.0, 2.0, 0.0) / (5.0 as Real).sqrt();
     assert_vec_eq(hit.normal, right, 10.0 * TOL);
@@ -859,11 +859,11 @@ fn placed_cylinder_from_base_top_radius() {
     .unwrap();
     let o = &scene.objects[0];
     // along x at height 1: wall at x = ∓0.5
-    let hits = o.intersect(&ray([-3.0, 1.0, 0.0], [1.0, 0.0, 0.0]), Formula::Robust);
+    let hits = o.intersect(&ray([-3.0, 1.0, 0.0], [1.0, 0.0, 0.0]), Numerics::Robust);
     assert_hits(&hits, &[(2.5, Part::Wall), (3.5, Part::Wall)]);
     assert_vec_eq(hits.as_slice()[0].normal, Vec3::NEG_X, TOL);
     // down the axis: top cap at y = 4, bottom at y = 0
-    let hits = o.intersect(&ray([0.1, 10.0, 0.0], [0.0, -1.0, 0.0]), Formula::Robust);
+    let hits = o.intersect(&ray([0.1, 10.0, 0.0], [0.0, -1.0, 0.0]), Numerics::Robust);
     assert_hits(&hits, &[(6.0, Part::TopCap), (10.0, Part::BottomCap)]);
     assert_vec_eq(hits.as_slice()[0].normal, Vec3::Y, TOL);
     assert_vec_eq(hits.as_slice()[1].normal, Vec3::NEG_Y, TOL);
@@ -885,8 +885,8 @@ fn ex2_21_cone_tangent_ray_grazes_once() {
     let (a, b, c) = cone::coefficients(&r);
     assert_abs_diff_eq!(b * b - a * c, 0.0, epsilon = TOL);
     let k = 1.0 / (2.0 as Real).sqrt();
-    for formula in [Formula::Textbook, Formula::Robust] {
-        let hits = cone::intersect(&r, formula);
+    for numerics in [Numerics::Textbook, Numerics::Robust] {
+        let hits = cone::intersect(&r, numerics);
         assert_hits(&hits, &[(5.0, Part::Wall)]);
         assert_vec_eq(
             unit(hits.as_slice()[0].normal),
@@ -894,7 +894,7 @@ fn ex2_21_cone_tangent_ray_grazes_once() {
             TOL,
         );
     }
-    assert!(cone::intersect(&ray([1.2, -5.0, 0.0], [0.0, 1.0, 0.0]), Formula::Robust).is_empty());
+    assert!(cone::intersect(&ray([1.2, -5.0, 0.0], [0.0, 1.0, 0.0]), Numerics::Robust).is_empty());
 }
 
 /// "Convex Polyhedra": a ray across an edge of the cube enters (facet +z) and leaves (facet +x)
@@ -981,8 +981,8 @@ fn open_empty_or_flat_facet_sets_are_not_polyhedra() {
 #[test]
 fn ex2_21_cone_base_has_radius_two() {
     let k = 1.0 / (2.0 as Real).sqrt();
-    for formula in [Formula::Textbook, Formula::Robust] {
-        let hits = cone::intersect(&ray([1.5, 0.0, -3.0], [0.0, 0.0, 1.0]), formula);
+    for numerics in [Numerics::Textbook, Numerics::Robust] {
+        let hits = cone::intersect(&ray([1.5, 0.0, -3.0], [0.0, 0.0, 1.0]), numerics);
         assert_hits(&hits, &[(2.0, Part::Base), (2.5, Part::Wall)]);
         assert_vec_eq(
             unit(hits.as_slice()[1].normal),
@@ -990,7 +990,7 @@ fn ex2_21_cone_base_has_radius_two() {
             TOL,
         );
         // just outside the radius-2 base: a miss
-        assert!(cone::intersect(&ray([2.01, 0.0, -3.0], [0.0, 0.0, 1.0]), formula).is_empty());
+        assert!(cone::intersect(&ray([2.01, 0.0, -3.0], [0.0, 0.0, 1.0]), numerics).is_empty());
     }
 }
 
@@ -1005,10 +1005,10 @@ fn placed_cone_from_base_apex_radius() {
     .unwrap();
     let o = &scene.objects[0];
     // along x just above the floor: the wall at radius 0.5·(1 − 0.3/3) = 0.45
-    let hits = o.intersect(&ray([-3.0, 0.3, 0.0], [1.0, 0.0, 0.0]), Formula::Robust);
+    let hits = o.intersect(&ray([-3.0, 0.3, 0.0], [1.0, 0.0, 0.0]), Numerics::Robust);
     assert_hits(&hits, &[(2.55, Part::Wall), (3.45, Part::Wall)]);
     // up the axis from below: base at y = 0, apex at y = 3
-    let hits = o.intersect(&ray([0.0, -1.0, 0.0], [0.0, 1.0, 0.0]), Formula::Robust);
+    let hits = o.intersect(&ray([0.0, -1.0, 0.0], [0.0, 1.0, 0.0]), Numerics::Robust);
     assert_eq!(hits.len(), 2);
     assert_abs_diff_eq!(hits.as_slice()[0].t, 1.0, epsilon = 10.0 * TOL);
     assert_eq!(hits.as_slice()[0].part, Part::Base);
@@ -1037,7 +1037,7 @@ fn nearest_hit_has_the_smallest_positive_t() {
     let s = scene(THREE_SPHERES);
     let ray = ray([0.0, 0.0, 0.0], [0.0, 0.0, -2.0]);
     for accel in Accel::ALL {
-        let mut o = Options::for_scene(&s, Stage::GenericObjects);
+        let mut o = Options::for_scene(&s, Chapter::GenericObjects);
         o.accel = accel;
         let tracer = Tracer::new(&s, &o);
         let near = tracer
@@ -1058,7 +1058,7 @@ fn nearest_hit_has_the_smallest_positive_t() {
         assert!(tracer.nearest(&ray, 5.5).is_none(), "{accel:?}");
     }
     // the chapter-2 image shows the near sphere's flat colour ρd
-    let (c, _) = centre(&s, Stage::GenericObjects);
+    let (c, _) = centre(&s, Chapter::GenericObjects);
     assert_vec_eq(c, vec3(1.0, 0.0, 0.0), 0.0);
 }
 
@@ -1117,7 +1117,7 @@ fn coincident_objects_show_the_first_listed_for_every_accel() {
     ] {
         let s = scene(&coincident(first, second));
         for accel in Accel::ALL {
-            let mut o = Options::for_scene(&s, Stage::GenericObjects);
+            let mut o = Options::for_scene(&s, Chapter::GenericObjects);
             (o.width, o.height, o.accel) = (1, 1, accel);
             let (fb, _) = render_both_ways(&s, &o);
             assert_eq!(fb.pixels[0], colour, "{first} first, {accel:?}");
@@ -1264,7 +1264,7 @@ fn ray_parallel_to_a_placed_floor_misses_it() {
             [0.0, 0.0, 1.0],
             [0.0, 0.0, -1.0],
         ] {
-            let hits = floor.intersect(&ray([0.3, y, -0.7], d), Formula::Robust);
+            let hits = floor.intersect(&ray([0.3, y, -0.7], d), Numerics::Robust);
             assert!(hits.is_empty(), "y = {y}, d = {d:?}: {hits:?}");
         }
         // the same floor turned by the inexact angle: some parallel ray meets it very far away
@@ -1273,7 +1273,7 @@ fn ray_parallel_to_a_placed_floor_misses_it() {
             .iter()
             .flat_map(|&d| {
                 Shape::Plane
-                    .intersect_placed(&inexact, &ray([0.3, y, -0.7], d), Formula::Robust)
+                    .intersect_placed(&inexact, &ray([0.3, y, -0.7], d), Numerics::Robust)
                     .as_slice()
                     .to_vec()
             })
@@ -1284,7 +1284,7 @@ fn ray_parallel_to_a_placed_floor_misses_it() {
     }
     let (sky, ground) = (vec3(0.0, 0.2, 0.8), vec3(0.9, 0.6, 0.1));
     for look_z in [-1.0, 1.0] {
-        let (fb, _) = render_at(&scene(&floor_scene(look_z)), Stage::GenericObjects, 5, 3);
+        let (fb, _) = render_at(&scene(&floor_scene(look_z)), Chapter::GenericObjects, 5, 3);
         for x in 0..5 {
             assert_eq!(
                 fb.get(x, 0),

@@ -3,7 +3,7 @@
 //!
 //! A test named `ex3_K_…` checks exercise 3.K of `chapters/formulas.toml`. The local light
 //! (3.7) is seen only through the renderer, which also asks `Tracer::feeler` (4.4) for a
-//! feeler and hands the colour to `Tracer::reflect_and_refract` (5.5): before stage 4 and 5
+//! feeler and hands the colour to `Tracer::reflect_and_refract` (5.5): before chapter 4 and 5
 //! they give nothing and return it unchanged, but they must not be `todo!()`.
 
 mod common;
@@ -13,7 +13,7 @@ use common::{TOL, assert_vec_eq, centre, render_at, scene};
 use whitted::light::Light;
 use whitted::material::Material;
 use whitted::real::{Real, Vec3, vec3};
-use whitted::render::{Options, Stage, Tracer};
+use whitted::render::{Chapter, Options, Tracer};
 use whitted::shading::{ambient, direct, highlight, lambert, mirror};
 
 /// A unit sphere at the origin seen from (0, 0, 5), with one light at `light` (a TOML array).
@@ -31,7 +31,7 @@ fn sphere_scene(light: &str, extra: &str) -> String {
 #[test]
 fn ex3_7_light_behind_the_eye_gives_ambient_plus_full_diffuse_and_specular() {
     let s = scene(&sphere_scene("[0.0, 0.0, 10.0]", ""));
-    let (c, _) = centre(&s, Stage::Shading);
+    let (c, _) = centre(&s, Chapter::Shading);
     let expected = vec3(0.1 * 0.5, 0.2 * 0.4, 0.3 * 0.3)
         + vec3(0.9, 0.8, 0.7) * vec3(0.5 + 0.2, 0.4 + 0.3, 0.3 + 0.4);
     assert_vec_eq(c, expected, 10.0 * TOL);
@@ -41,7 +41,7 @@ fn ex3_7_light_behind_the_eye_gives_ambient_plus_full_diffuse_and_specular() {
 #[test]
 fn ex3_7_light_behind_the_surface_gives_ambient_only() {
     let s = scene(&sphere_scene("[0.0, 0.0, -10.0]", ""));
-    let (c, stats) = centre(&s, Stage::Shading);
+    let (c, stats) = centre(&s, Chapter::Shading);
     assert_vec_eq(c, vec3(0.05, 0.08, 0.09), 10.0 * TOL);
     assert_eq!(stats.shadow, 0);
 }
@@ -282,7 +282,7 @@ fn ex3_7_attenuated_light_through_the_renderer() {
         "[0.0, 0.0, 10.0]",
         "attenuation = [1.0, 0.5, 0.25]",
     ));
-    let (c, _) = centre(&s, Stage::Shading);
+    let (c, _) = centre(&s, Chapter::Shading);
     let d: Real = 9.0; // from (0, 0, 1) to (0, 0, 10)
     let k = 1.0 / (1.0 + 0.5 * d + 0.25 * d * d);
     let expected = vec3(0.05, 0.08, 0.09) + vec3(0.9, 0.8, 0.7) * vec3(0.7, 0.7, 0.7) * k;
@@ -297,8 +297,8 @@ fn ex3_7_several_lights_add_up() {
         "[0.0, 0.0, 10.0]",
         "[[lights]]\nposition = [0.0, 0.0, 20.0]\nintensity = 0.5",
     ));
-    let (c1, _) = centre(&one, Stage::Shading);
-    let (c2, _) = centre(&two, Stage::Shading);
+    let (c1, _) = centre(&one, Chapter::Shading);
+    let (c2, _) = centre(&two, Chapter::Shading);
     assert_vec_eq(c2 - c1, Vec3::splat(0.5) * vec3(0.7, 0.7, 0.7), 10.0 * TOL);
 }
 
@@ -314,19 +314,19 @@ fn open_plane_is_shaded_on_the_side_the_viewer_sees() {
              [[objects]]\nplane = {{ normal = [0.0, 1.0, 0.0] }}\nmaterial = \"m\"\n"
         )
     };
-    let (above, _) = centre(&scene(&text(3.0, 5.0)), Stage::Shading);
-    let (below, _) = centre(&scene(&text(-3.0, -5.0)), Stage::Shading);
-    let (across, _) = centre(&scene(&text(-3.0, 5.0)), Stage::Shading);
+    let (above, _) = centre(&scene(&text(3.0, 5.0)), Chapter::Shading);
+    let (below, _) = centre(&scene(&text(-3.0, -5.0)), Chapter::Shading);
+    let (across, _) = centre(&scene(&text(-3.0, 5.0)), Chapter::Shading);
     assert_vec_eq(above, Vec3::splat(0.5), TOL);
     assert_vec_eq(below, Vec3::splat(0.5), TOL);
     assert_vec_eq(across, Vec3::ZERO, TOL); // light on the other side: dark
 }
 
-/// "Shading": a stage-3 render casts primary rays only — no feelers, no secondary rays.
+/// "Shading": a chapter-3 render casts primary rays only — no feelers, no secondary rays.
 #[test]
 fn shading_casts_primary_rays_only() {
     let s = scene(&sphere_scene("[3.0, 3.0, 10.0]", ""));
-    let (_, stats) = render_at(&s, Stage::Shading, 20, 10);
+    let (_, stats) = render_at(&s, Chapter::Shading, 20, 10);
     assert_eq!(stats.primary, 200);
     assert_eq!((stats.shadow, stats.reflected, stats.refracted), (0, 0, 0));
 }
@@ -392,7 +392,7 @@ fn phong_with_both_cosines_between_zero_and_one() {
         [materials.m]\nambient = [0.1, 0.2, 0.3]\ndiffuse = [0.5, 0.4, 0.3]\n\
         specular = [0.2, 0.3, 0.4]\nshininess = 3\n\
         [[objects]]\nplane = { point = [0.0, 0.0, 0.0], normal = [0.0, 1.0, 0.0] }\nmaterial = \"m\"\n";
-    let (c, stats) = centre(&scene(text), Stage::Shading);
+    let (c, stats) = centre(&scene(text), Chapter::Shading);
     assert_vec_eq(c, i, 10.0 * TOL);
     assert_eq!(stats.shadow, 0);
 }
@@ -401,14 +401,14 @@ fn phong_with_both_cosines_between_zero_and_one() {
 /// The sphere scene with a second light behind the sphere, at (0, 0, −10): at the nearest point
 /// the recorder hears I_a = ρa·I_m = (0.05, 0.08, 0.09), the first light's unshadowed
 /// I_p·(ρd + ρs) = (0.9, 0.8, 0.7)·0.7 arriving whole (no feeler before chapter 4), the second
-/// light's zero, and the local light, their sum, which is the pixel's colour at stage 3.
+/// light's zero, and the local light, their sum, which is the pixel's colour at chapter 3.
 #[test]
 fn ex3_7_the_recorder_hears_the_ambient_term_each_light_and_the_local_light() {
     let s = scene(&sphere_scene(
         "[0.0, 0.0, 10.0]",
         "[[lights]]\nposition = [0.0, 0.0, -10.0]",
     ));
-    let mut o = Options::for_scene(&s, Stage::Shading);
+    let mut o = Options::for_scene(&s, Chapter::Shading);
     (o.width, o.height) = (1, 1);
     let tree = Tracer::new(&s, &o).inspect(0, 0);
     let hit = tree.samples[0].ray.hit.as_ref().expect("the sphere is hit");
@@ -425,5 +425,5 @@ fn ex3_7_the_recorder_hears_the_ambient_term_each_light_and_the_local_light() {
     assert_eq!((back.feeler.is_none(), back.share), (true, 1.0));
     assert_vec_eq(hit.local.unwrap(), i_a + lit, 10.0 * TOL);
     assert_eq!(hit.local.unwrap(), tree.colour);
-    assert_eq!(tree.rays, 1, "no feeler at stage 3");
+    assert_eq!(tree.rays, 1, "no feeler at chapter 3");
 }

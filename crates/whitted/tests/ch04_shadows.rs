@@ -3,7 +3,7 @@
 //!
 //! A test named `ex4_K_…` checks exercise 4.K of `chapters/formulas.toml`. `Tracer::feeler`
 //! (4.4) is seen only through the renderer, which hands each colour to
-//! `Tracer::reflect_and_refract` (5.5): before stage 5 it returns the colour unchanged, but it
+//! `Tracer::reflect_and_refract` (5.5): before chapter 5 it returns the colour unchanged, but it
 //! must not be `todo!()`.
 
 mod common;
@@ -14,9 +14,9 @@ use whitted::camera::Camera;
 use whitted::material::Material;
 use whitted::offset::Offset;
 use whitted::real::{Real, Vec3, vec3};
-use whitted::render::{Options, Stage, Tracer};
+use whitted::render::{Chapter, Options, Tracer};
 use whitted::shadow;
-use whitted::shapes::{Formula, Hit, Hits, Object, Shape};
+use whitted::shapes::{Hit, Hits, Numerics, Object, Shape};
 use whitted::transform::{Placement, Step};
 
 fn ball(center: Vec3, material: usize) -> Object {
@@ -45,14 +45,14 @@ fn share(objects: &[Object], light: Vec3) -> Real {
     let camera = Camera::new(vec3(0.0, 0.0, 5.0), P, Vec3::Y, 60.0, 1.0, 4, 4).unwrap();
     let brute = Accelerator::build(objects, &camera, Accel::None, 16);
     let feeler = shadow::feeler(P, light);
-    brute.transmittance(objects, &materials(), &feeler, 0.0, Formula::Robust)
+    brute.transmittance(objects, &materials(), &feeler, 0.0, Numerics::Robust)
 }
 const L: Vec3 = Vec3::new(0.0, 10.0, 0.0);
 
 /// Whether `object` blocks the feeler from P to `light`: `shadow::blocks` on its hits.
 fn blocks(object: &Object, light: Vec3) -> bool {
     shadow::blocks(
-        &object.intersect(&shadow::feeler(P, light), Formula::Robust),
+        &object.intersect(&shadow::feeler(P, light), Numerics::Robust),
         0.0,
     )
 }
@@ -129,7 +129,7 @@ fn ex4_3_translucent_occluders_let_their_transmission_through() {
 }
 
 /// A floor lit from above with a sphere hovering over it: the point under the sphere is in
-/// shadow at stage 4 (ambient only) and lit at stage 3.
+/// shadow at chapter 4 (ambient only) and lit at chapter 3.
 #[test]
 fn ex4_4_point_under_a_sphere_is_lit_at_stage_3_and_shadowed_at_stage_4() {
     let s = scene(
@@ -140,10 +140,10 @@ fn ex4_4_point_under_a_sphere_is_lit_at_stage_3_and_shadowed_at_stage_4() {
          [[objects]]\nsphere = { center = [0.0, 3.0, 3.0], radius = 0.5 }\n",
     );
     // the eye looks straight down at the origin; the sphere is off to the side, not in view
-    let (lit, s3) = centre(&s, Stage::Shading);
+    let (lit, s3) = centre(&s, Chapter::Shading);
     assert_vec_eq(lit, Vec3::splat(0.1 + 0.6), TOL);
     assert_eq!(s3.shadow, 0);
-    let (also_lit, s4) = centre(&s, Stage::Shadows);
+    let (also_lit, s4) = centre(&s, Chapter::Shadows);
     assert_vec_eq(also_lit, Vec3::splat(0.7), TOL);
     assert_eq!(s4.shadow, 1);
     // move the sphere between the floor point and the light
@@ -154,7 +154,7 @@ fn ex4_4_point_under_a_sphere_is_lit_at_stage_3_and_shadowed_at_stage_4() {
          [[objects]]\nplane = { normal = [0.0, 1.0, 0.0] }\nmaterial = \"m\"\n\
          [[objects]]\nsphere = { center = [0.0, 8.0, 0.0], radius = 0.5 }\n",
     );
-    let (dark, _) = centre(&shadowed, Stage::Shadows);
+    let (dark, _) = centre(&shadowed, Chapter::Shadows);
     assert_vec_eq(dark, Vec3::splat(0.1), TOL);
 }
 
@@ -171,21 +171,21 @@ fn ex4_4_the_light_is_in_front_by_l_minus_p_wherever_the_scene_sits() {
          [[objects]]\nplane = { point = [0.0, -100.0, 0.0], normal = [0.0, 1.0, 0.0] }\nmaterial = \"m\"\n\
          [[objects]]\nsphere = { center = [0.0, -92.0, 0.0], radius = 0.5 }\n",
     );
-    let (dark, stats) = centre(&shadowed, Stage::Shadows);
+    let (dark, stats) = centre(&shadowed, Chapter::Shadows);
     assert_vec_eq(dark, Vec3::splat(0.1), TOL);
     assert_eq!(stats.shadow, 1);
 }
 
 /// A scene of one convex object (a lit sphere), or one lit plane: nothing can shadow a point
-/// that faces the light, so stage 4 must equal stage 3 pixel for pixel; `n_bad` counts the
+/// that faces the light, so chapter 4 must equal chapter 3 pixel for pixel; `n_bad` counts the
 /// pixels that differ.
 fn wrongly_shadowed(text: &str, offset: Offset) -> (usize, usize) {
     let s = scene(text);
-    let mut o3 = Options::for_scene(&s, Stage::Shading);
+    let mut o3 = Options::for_scene(&s, Chapter::Shading);
     o3.width = 96;
     o3.height = 72;
     let o4 = Options {
-        stage: Stage::Shadows,
+        chapter: Chapter::Shadows,
         offset,
         ..o3.clone()
     };
@@ -235,13 +235,13 @@ fn ex4_4_lit_sphere_and_plane_show_no_shadow_acne() {
 #[test]
 fn ex4_4_feelers_only_where_a_scene_needs_them() {
     let base = "[camera]\neye = [0.0, 0.0, 5.0]\n[[objects]]\nsphere = {}\n";
-    let (_, none) = render_at(&scene(base), Stage::Shadows, 16, 16);
+    let (_, none) = render_at(&scene(base), Chapter::Shadows, 16, 16);
     assert_eq!(none.shadow, 0, "no lights, no feelers");
     let off = format!("{base}[[lights]]\nposition = [0.0, 0.0, 10.0]\nshadows = false\n");
-    let (_, off) = render_at(&scene(&off), Stage::Shadows, 16, 16);
+    let (_, off) = render_at(&scene(&off), Chapter::Shadows, 16, 16);
     assert_eq!(off.shadow, 0, "shadows = false, no feelers");
     let on = format!("{base}[[lights]]\nposition = [0.0, 0.0, 10.0]\n");
-    let (fb, on) = render_at(&scene(&on), Stage::Shadows, 16, 16);
+    let (fb, on) = render_at(&scene(&on), Chapter::Shadows, 16, 16);
     let hits = fb.pixels.iter().filter(|p| **p != Vec3::ZERO).count() as u64;
     assert!(hits > 0);
     assert_eq!(on.shadow, hits, "one feeler per visible lit point");
@@ -279,7 +279,7 @@ fn ex4_2_occluder_at_u_zero_does_not_shadow() {
     let l = vec3(0.0, 10.0, 0.0);
     let feeler = shadow::feeler(P, l);
     let under = ball(vec3(0.0, -1.0, 0.0), 0);
-    let hits = under.intersect(&feeler, Formula::Robust);
+    let hits = under.intersect(&feeler, Numerics::Robust);
     let u: Vec<Real> = hits.as_slice().iter().map(|h| h.t).collect();
     assert_eq!(u.len(), 2);
     assert!((u[0] + 0.2).abs() <= TOL && u[1].abs() <= TOL, "{u:?}");
@@ -288,7 +288,7 @@ fn ex4_2_occluder_at_u_zero_does_not_shadow() {
         "[[objects]]\nplane = { point = [0.0, 0.0, 0.0], normal = [0.0, 1.0, 0.0] }\n\
          [[objects]]\nsphere = { center = [0.0, -1.0, 0.0] }\n",
     );
-    let floor = s.objects[0].intersect(&feeler, Formula::Robust);
+    let floor = s.objects[0].intersect(&feeler, Numerics::Robust);
     assert_eq!(floor.len(), 1);
     assert_eq!(floor.as_slice()[0].t, 0.0);
     assert!(!shadow::blocks(&floor, 0.0));
@@ -308,7 +308,7 @@ fn ex4_3_occluders_at_u_zero_let_the_light_through() {
          [[objects]]\nsphere = { center = [0.0, -1.0, 0.0] }\n",
     );
     assert_eq!(
-        common::brute_share(&s.objects, &s.materials, &feeler, 0.0, Formula::Robust),
+        common::brute_share(&s.objects, &s.materials, &feeler, 0.0, Numerics::Robust),
         1.0
     );
     assert_eq!(share(&s.objects, l), 1.0);
@@ -336,11 +336,11 @@ fn ex4_2_hit_at_or_before_u_min_does_not_count_and_just_after_does() {
         ))
     };
     let on = plane_at(2.5);
-    let hits = on.objects[0].intersect(&feeler, Formula::Robust);
+    let hits = on.objects[0].intersect(&feeler, Numerics::Robust);
     assert_eq!(hits.as_slice()[0].t, 0.25);
     assert!(!shadow::blocks(&hits, u_min));
     let above = plane_at(2.51);
-    let hits = above.objects[0].intersect(&feeler, Formula::Robust);
+    let hits = above.objects[0].intersect(&feeler, Numerics::Robust);
     assert!((hits.as_slice()[0].t - 0.251).abs() <= TOL);
     assert!(shadow::blocks(&hits, u_min));
 }
@@ -359,7 +359,7 @@ fn ex4_3_a_plane_at_u_min_lets_the_light_through_and_one_just_after_does_not() {
     };
     let on = plane_at(2.5);
     assert_eq!(
-        common::brute_share(&on.objects, &on.materials, &feeler, u_min, Formula::Robust),
+        common::brute_share(&on.objects, &on.materials, &feeler, u_min, Numerics::Robust),
         1.0
     );
     let above = plane_at(2.51);
@@ -369,7 +369,7 @@ fn ex4_3_a_plane_at_u_min_lets_the_light_through_and_one_just_after_does_not() {
             &above.materials,
             &feeler,
             u_min,
-            Formula::Robust
+            Numerics::Robust
         ),
         0.0
     );
@@ -387,7 +387,7 @@ const FLOOR_UNDER_A_BALL: &str = "[camera]\neye = [0.0, 6.0, 0.001]\nlook_at = [
 /// moved 0.01 towards the light, P′ = (0, 0.01, 0), u_min = 0, and the sphere y ∈ [7.5, 8.5]
 /// is crossed at u = 7.49/9.99 and 8.49/9.99; with `Offset::Fixed(0.01)` the start is P itself
 /// and u_min = 0.01/‖L − P‖ = 0.001, the sphere crossed at u = 0.75 and 0.85. Either way no
-/// light arrives: the pixel is ambient only, 0.1. At stage 3 there is no feeler at all.
+/// light arrives: the pixel is ambient only, 0.1. At chapter 3 there is no feeler at all.
 #[test]
 fn ex4_4_the_feeler_leaves_from_the_offset_start_towards_the_light() {
     let s = scene(FLOOR_UNDER_A_BALL);
@@ -401,7 +401,7 @@ fn ex4_4_the_feeler_leaves_from_the_offset_start_towards_the_light() {
         (Offset::Fixed(0.01), Vec3::ZERO, 0.001, [0.75, 0.85]),
     ];
     for (offset, start, u_min, u) in cases {
-        let mut o = Options::for_scene(&s, Stage::Shadows);
+        let mut o = Options::for_scene(&s, Chapter::Shadows);
         (o.width, o.height, o.offset) = (1, 1, offset);
         let tree = Tracer::new(&s, &o).inspect(0, 0);
         let hit = tree.samples[0].ray.hit.as_ref().expect("the floor is hit");
@@ -425,7 +425,7 @@ fn ex4_4_the_feeler_leaves_from_the_offset_start_towards_the_light() {
         assert_vec_eq(tree.colour, Vec3::splat(0.1), TOL);
         assert_eq!(tree.rays, 2, "the camera ray and one feeler");
     }
-    let mut o = Options::for_scene(&s, Stage::Shading);
+    let mut o = Options::for_scene(&s, Chapter::Shading);
     (o.width, o.height) = (1, 1);
     let tree = Tracer::new(&s, &o).inspect(0, 0);
     let hit = tree.samples[0].ray.hit.as_ref().unwrap();

@@ -12,7 +12,7 @@ use whitted::offset::Offset;
 use whitted::optics::{critical_angle, critical_angle_sine, indices, reflect, refract};
 use whitted::real::{Real, Vec3, real, vec3};
 use whitted::render::inspect::RayTree;
-use whitted::render::{Options, RayKind, Stage, Stop, Tracer, render};
+use whitted::render::{Chapter, Options, RayKind, Stop, Tracer, render};
 
 fn deg(x: Real) -> Real {
     x.to_radians()
@@ -131,7 +131,7 @@ fn ex5_5_ray_along_the_axis_of_a_glass_sphere_leaves_undeflected() {
         TOL,
     );
     let s = scene(&glass_sphere_scene(5));
-    let (c, stats) = centre(&s, Stage::ReflectionRefraction);
+    let (c, stats) = centre(&s, Chapter::ReflectionRefraction);
     assert_vec_eq(c, vec3(0.81, 0.0, 0.0), 10.0 * TOL); // 0.9 · 0.9 · red
     assert_eq!((stats.refracted, stats.reflected), (2, 0));
 }
@@ -140,10 +140,16 @@ fn ex5_5_ray_along_the_axis_of_a_glass_sphere_leaves_undeflected() {
 /// through the sphere; with max_depth = 1 it is stopped inside.
 #[test]
 fn ex5_5_recursion_depth_limits_the_refracted_path() {
-    let (c, stats) = centre(&scene(&glass_sphere_scene(1)), Stage::ReflectionRefraction);
+    let (c, stats) = centre(
+        &scene(&glass_sphere_scene(1)),
+        Chapter::ReflectionRefraction,
+    );
     assert_eq!(stats.refracted, 1);
     assert_vec_eq(c, Vec3::ZERO, TOL); // the inner hit has no local light and may recurse no more
-    let (_, stats) = centre(&scene(&glass_sphere_scene(0)), Stage::ReflectionRefraction);
+    let (_, stats) = centre(
+        &scene(&glass_sphere_scene(0)),
+        Chapter::ReflectionRefraction,
+    );
     assert_eq!(stats.refracted, 0);
 }
 
@@ -164,7 +170,7 @@ fn ex5_5_two_facing_mirrors_stop_at_max_depth() {
     for depth in [0, 1, 3, 5, 8] {
         let (c, stats) = centre(
             &scene(&facing_mirrors(depth, 0.5)),
-            Stage::ReflectionRefraction,
+            Chapter::ReflectionRefraction,
         );
         assert_eq!(stats.reflected, depth as u64, "max_depth {depth}");
         let expected: Real = (0..=depth)
@@ -179,7 +185,7 @@ fn ex5_5_two_facing_mirrors_stop_at_max_depth() {
 #[test]
 fn ex5_5_recursion_stops_when_the_weight_falls_below_the_threshold() {
     let s = scene(&facing_mirrors(50, 0.5));
-    let (_, stats) = centre(&s, Stage::ReflectionRefraction);
+    let (_, stats) = centre(&s, Chapter::ReflectionRefraction);
     assert_eq!(stats.reflected, 9, "0.5^9 ≥ 1e-3 > 0.5^10");
     assert_eq!(Options::MIN_WEIGHT, 1e-3);
 }
@@ -194,7 +200,7 @@ fn ex5_5_total_internal_reflection_sends_the_transmitted_share_into_reflection()
         [ambient]\nintensity = 1.0\n\
         [materials.glass]\nambient = 0.1\ndiffuse = 0.0\nspecular = 0.0\ntransmission = 0.5\nreflection = 0.0\nior = 1.5\n\
         [[objects]]\nsphere = { radius = 10.0 }\nmaterial = \"glass\"\n";
-    let (c, stats) = centre(&scene(text), Stage::ReflectionRefraction);
+    let (c, stats) = centre(&scene(text), Chapter::ReflectionRefraction);
     assert_eq!(stats.refracted, 0);
     assert_eq!(stats.total_internal, 4);
     assert_eq!(stats.reflected, 4);
@@ -204,25 +210,25 @@ fn ex5_5_total_internal_reflection_sends_the_transmitted_share_into_reflection()
 }
 
 /// "Lighting Equations" and "model only what a scene requires": matte scenes cast no secondary
-/// rays at stage 5; a mirror adds reflected rays only; glass adds refracted ones.
+/// rays at chapter 5; a mirror adds reflected rays only; glass adds refracted ones.
 #[test]
 fn ex5_5_secondary_rays_only_for_mirror_and_glass_materials() {
     let matte = "[camera]\neye = [0.0, 0.0, 5.0]\n[[lights]]\nposition = [3.0, 3.0, 5.0]\n[[objects]]\nsphere = {}\n";
-    let (_, stats) = render_at(&scene(matte), Stage::ReflectionRefraction, 24, 24);
+    let (_, stats) = render_at(&scene(matte), Chapter::ReflectionRefraction, 24, 24);
     assert_eq!((stats.reflected, stats.refracted), (0, 0));
     assert!(stats.shadow > 0);
     let mirror = format!("{matte}material = \"m\"\n[materials.m]\nreflection = 0.5\n");
-    let (_, stats) = render_at(&scene(&mirror), Stage::ReflectionRefraction, 24, 24);
+    let (_, stats) = render_at(&scene(&mirror), Chapter::ReflectionRefraction, 24, 24);
     assert!(stats.reflected > 0);
     assert_eq!(stats.refracted, 0);
-    let (_, stats) = render_at(&scene(&mirror), Stage::Shadows, 24, 24);
+    let (_, stats) = render_at(&scene(&mirror), Chapter::Shadows, 24, 24);
     assert_eq!(
         (stats.reflected, stats.refracted),
         (0, 0),
         "chapter 4 never recurses"
     );
     let glass = format!("{matte}material = \"g\"\n[materials.g]\ntransmission = 0.5\n");
-    let (_, stats) = render_at(&scene(&glass), Stage::ReflectionRefraction, 24, 24);
+    let (_, stats) = render_at(&scene(&glass), Chapter::ReflectionRefraction, 24, 24);
     assert!(stats.refracted > 0);
 }
 
@@ -230,7 +236,7 @@ fn ex5_5_secondary_rays_only_for_mirror_and_glass_materials() {
 #[test]
 fn supersampling_is_the_same_every_run() {
     let s = scene(&glass_sphere_scene(5));
-    let mut o = Options::for_scene(&s, Stage::ReflectionRefraction);
+    let mut o = Options::for_scene(&s, Chapter::ReflectionRefraction);
     o.width = 40;
     o.height = 30;
     o.samples = 4;
@@ -411,7 +417,7 @@ const FIVE_TERMS: &str = "[camera]\neye = [0.0, 2.0, 0.0]\nlook_at = [0.0, 0.0, 
 #[test]
 fn ex5_5_five_terms_of_the_lighting_equation_add_up() {
     let s = scene(FIVE_TERMS);
-    let (c, stats) = centre(&s, Stage::ReflectionRefraction);
+    let (c, stats) = centre(&s, Chapter::ReflectionRefraction);
     assert_vec_eq(c, vec3(0.545, 0.53, 0.555), 10.0 * TOL);
     assert_eq!(
         (
@@ -422,8 +428,8 @@ fn ex5_5_five_terms_of_the_lighting_equation_add_up() {
         ),
         (1, 1, 1, 1)
     );
-    // the local part alone, at stage 4: I_a + I_d + I_s
-    let (local, _) = centre(&s, Stage::Shadows);
+    // the local part alone, at chapter 4: I_a + I_d + I_s
+    let (local, _) = centre(&s, Chapter::Shadows);
     assert_vec_eq(local, vec3(0.325, 0.24, 0.225), 10.0 * TOL);
 }
 
@@ -437,7 +443,7 @@ fn ex5_5_the_recursion_stops_at_max_depth_or_at_the_weight_limit() {
     for depth in 0..=14 {
         let (_, stats) = render_at(
             &scene(&facing_mirrors(depth, 0.5)),
-            Stage::ReflectionRefraction,
+            Chapter::ReflectionRefraction,
             6,
             4,
         );
@@ -448,9 +454,9 @@ fn ex5_5_the_recursion_stops_at_max_depth_or_at_the_weight_limit() {
         last = per_pixel;
     }
     let s = scene(&facing_mirrors(0, 0.5));
-    let (at_5, stats) = render_at(&s, Stage::ReflectionRefraction, 6, 4);
+    let (at_5, stats) = render_at(&s, Chapter::ReflectionRefraction, 6, 4);
     assert_eq!(stats.reflected, 0);
-    let (at_4, _) = render_at(&s, Stage::Shadows, 6, 4);
+    let (at_4, _) = render_at(&s, Chapter::Shadows, 6, 4);
     assert_eq!(at_5, at_4);
 }
 
@@ -471,7 +477,7 @@ fn ex5_5_a_transmitted_ray_too_faint_to_matter_is_not_traced() {
         );
     }
     let s = scene(&text);
-    let mut o = Options::for_scene(&s, Stage::ReflectionRefraction);
+    let mut o = Options::for_scene(&s, Chapter::ReflectionRefraction);
     (o.width, o.height) = (1, 1);
     let tree = Tracer::new(&s, &o).inspect(0, 0);
     let mut hit = tree.samples[0].ray.hit.clone().unwrap();
@@ -486,7 +492,7 @@ fn ex5_5_a_transmitted_ray_too_faint_to_matter_is_not_traced() {
     }
     assert_eq!(through, 9);
     assert_eq!(hit.stopped, vec![(RayKind::Transmitted, Stop::Weight)]);
-    let (c, stats) = centre(&s, Stage::ReflectionRefraction);
+    let (c, stats) = centre(&s, Chapter::ReflectionRefraction);
     let expected: f64 = (0..10).map(|k| 0.1 * 0.5_f64.powi(k)).sum();
     assert_vec_eq(c, Vec3::splat(expected as Real), 1e-5);
     assert_eq!(stats.refracted, 9);
@@ -504,7 +510,7 @@ fn ex5_5_a_transmitted_ray_too_faint_to_matter_is_not_traced() {
 fn ex5_5_the_recorder_hears_each_branch_and_why_one_stopped() {
     let inspect_with = |text: &str, offset: Offset| {
         let s = scene(text);
-        let mut o = Options::for_scene(&s, Stage::ReflectionRefraction);
+        let mut o = Options::for_scene(&s, Chapter::ReflectionRefraction);
         (o.width, o.height, o.offset) = (1, 1, offset);
         Tracer::new(&s, &o).inspect(0, 0)
     };

@@ -19,7 +19,7 @@ use std::path::PathBuf;
 
 use whitted::accel::Accel;
 use whitted::output::{Encoding, read_png, to_rgb8, write_png};
-use whitted::render::{Framebuffer, Options, Stage, render};
+use whitted::render::{Chapter, Framebuffer, Options, render};
 use whitted::scene::{Scene, load_parts};
 
 /// Share of pixels allowed to differ by more than [`MAX_DIFF`].
@@ -39,27 +39,27 @@ fn root() -> PathBuf {
         .to_path_buf()
 }
 
-/// The chapters' scenes and reference images: (scene file, stage, golden name).
-fn chapter(n: u32) -> (&'static str, Stage, &'static str) {
+/// The chapters' scenes and reference images: (scene file, chapter, golden name).
+fn chapter(n: u32) -> (&'static str, Chapter, &'static str) {
     match n {
         1 => (
             "ch01_camera_rays.toml",
-            Stage::CameraRays,
+            Chapter::CameraRays,
             "ch01_camera_rays",
         ),
         2 => (
             "ch02_generic_objects.toml",
-            Stage::GenericObjects,
+            Chapter::GenericObjects,
             "ch02_generic_objects",
         ),
-        3 => ("ch03_shading.toml", Stage::Shading, "ch03_shading"),
-        4 => ("ch04_shadows.toml", Stage::Shadows, "ch04_shadows"),
+        3 => ("ch03_shading.toml", Chapter::Shading, "ch03_shading"),
+        4 => ("ch04_shadows.toml", Chapter::Shadows, "ch04_shadows"),
         5 => (
             "ch05_reflection_refraction.toml",
-            Stage::ReflectionRefraction,
+            Chapter::ReflectionRefraction,
             "ch05_reflection_refraction",
         ),
-        _ => ("showcase.toml", Stage::ReflectionRefraction, "showcase"),
+        _ => ("showcase.toml", Chapter::ReflectionRefraction, "showcase"),
     }
 }
 
@@ -106,10 +106,10 @@ const PATHS: [Path; 7] = [
 ];
 
 fn load_chapter(n: u32) -> (Scene, Options, &'static str) {
-    let (file, stage, golden) = chapter(n);
+    let (file, chapter, golden) = chapter(n);
     // what the chapter's binary reads: chapter 1 places no object
-    let scene = load_parts(&root().join("scenes").join(file), stage.reads()).unwrap();
-    let mut options = Options::for_scene(&scene, stage);
+    let scene = load_parts(&root().join("scenes").join(file), chapter.reads()).unwrap();
+    let mut options = Options::for_scene(&scene, chapter);
     options.width = WIDTH;
     options.height = (WIDTH as f64 * scene.height as f64 / scene.width as f64).round() as u32;
     (scene, options, golden)

@@ -6,7 +6,7 @@ use glam::DVec3;
 use whitted::ray::Ray;
 use whitted::real::{Real, Vec3, real};
 use whitted::shapes::quadratic::stable_roots;
-use whitted::shapes::{Formula, Shape};
+use whitted::shapes::{Numerics, Shape};
 
 use super::{Planet, wide3};
 
@@ -60,7 +60,7 @@ impl Method {
     /// The nearest hit t > 0 of the ray with the planet (with its tangent plane for
     /// [`Method::Plane`]), at the build's precision.
     pub fn nearest(self, planet: &Planet, ray: &Ray) -> Option<Real> {
-        let formula = Formula::Robust;
+        let formula = Numerics::Robust;
         match self {
             Method::Generic => planet
                 .sphere

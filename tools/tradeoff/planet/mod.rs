@@ -30,7 +30,7 @@ use whitted::offset::{OffsetKind, SpawnPoint};
 use whitted::ray::Ray;
 use whitted::real::{Real, Vec3, real, vec3};
 use whitted::shadow;
-use whitted::shapes::{Formula, Object, Shape};
+use whitted::shapes::{Numerics, Object, Shape};
 use whitted::transform::{Placement, Step, rotation_from_z};
 
 use crate::measure::{median, wide};
@@ -219,7 +219,7 @@ pub fn hit_errors(planet: &Planet, samples: &[Sample], method: Method) -> Vec<Hi
 /// fixed ε when the hits and the feelers are found by the anchored fix (b′).
 pub fn acne(planet: &Planet, samples: &[Sample]) -> ([f64; 3], f64, f64) {
     let light = vec3(LIGHT[0], LIGHT[1], LIGHT[2]);
-    let formula = Formula::Robust;
+    let formula = Numerics::Robust;
     let (mut lit, mut blocked, mut pushes) = (0usize, [0usize; 3], Vec::new());
     let (mut lit_fixed, mut blocked_fixed) = (0usize, 0usize);
     for s in samples {

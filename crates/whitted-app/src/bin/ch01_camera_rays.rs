@@ -6,7 +6,7 @@
 use std::process::ExitCode;
 
 use clap::Parser;
-use whitted::render::Stage;
+use whitted::render::Chapter;
 use whitted_app::cli::{Common, run};
 
 /// Chapter 1 of whitted: builds the viewing coordinates and the near plane from the scene's
@@ -23,7 +23,7 @@ fn main() -> ExitCode {
     let args: Args = whitted_app::cli::parse_args();
     run(
         "ch01_camera_rays",
-        Stage::CameraRays,
+        Chapter::CameraRays,
         &args.common,
         None,
         None,

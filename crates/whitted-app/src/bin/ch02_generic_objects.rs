@@ -6,7 +6,7 @@
 use std::process::ExitCode;
 
 use clap::Parser;
-use whitted::render::Stage;
+use whitted::render::Chapter;
 use whitted_app::cli::{Common, ViewArg, run};
 
 /// Chapter 2 of whitted: intersects each camera ray with the scene's spheres, planes,
@@ -25,7 +25,7 @@ fn main() -> ExitCode {
     let args: Args = whitted_app::cli::parse_args();
     run(
         "ch02_generic_objects",
-        Stage::GenericObjects,
+        Chapter::GenericObjects,
         &args.common,
         Some(&args.view),
         None,

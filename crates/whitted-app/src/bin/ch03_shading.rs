@@ -6,7 +6,7 @@
 use std::process::ExitCode;
 
 use clap::Parser;
-use whitted::render::Stage;
+use whitted::render::Chapter;
 use whitted_app::cli::{Common, ViewArg, run};
 
 /// Chapter 3 of whitted: shades the nearest hit with the notes' Phong model,
@@ -25,7 +25,7 @@ fn main() -> ExitCode {
     let args: Args = whitted_app::cli::parse_args();
     run(
         "ch03_shading",
-        Stage::Shading,
+        Chapter::Shading,
         &args.common,
         Some(&args.view),
         None,

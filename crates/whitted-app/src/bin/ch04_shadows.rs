@@ -6,7 +6,7 @@
 use std::process::ExitCode;
 
 use clap::Parser;
-use whitted::render::Stage;
+use whitted::render::Chapter;
 use whitted_app::cli::{Accuracy, Common, ViewArg, run};
 
 /// Chapter 4 of whitted: chapter 3's shading, where each light first sends a feeler ray
@@ -27,7 +27,7 @@ fn main() -> ExitCode {
     let args: Args = whitted_app::cli::parse_args();
     run(
         "ch04_shadows",
-        Stage::Shadows,
+        Chapter::Shadows,
         &args.common,
         Some(&args.view),
         None,

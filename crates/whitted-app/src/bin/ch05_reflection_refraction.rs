@@ -6,7 +6,7 @@
 use std::process::ExitCode;
 
 use clap::Parser;
-use whitted::render::Stage;
+use whitted::render::Chapter;
 use whitted_app::cli::{Accuracy, Common, Tracing, ViewArg, run};
 
 /// Chapter 5 of whitted, the complete renderer: I = I_a + I_d + I_s + I_l + I_r. Mirror
@@ -29,7 +29,7 @@ fn main() -> ExitCode {
     let args: Args = whitted_app::cli::parse_args();
     run(
         "ch05_reflection_refraction",
-        Stage::ReflectionRefraction,
+        Chapter::ReflectionRefraction,
         &args.common,
         Some(&args.view),
         Some(&args.tracing),

@@ -1,5 +1,5 @@
 //! The live window (`--window` on every chapter binary): the image refines as you watch,
-//! the keys move the camera and switch stage, view and depth, and a click shows the ray tree
+//! the keys move the camera and switch chapter, view and depth, and a click shows the ray tree
 //! of a pixel drawn over the image.
 //!
 //! | module | what it holds |

@@ -18,7 +18,7 @@
 //! | stroke | colour |
 //! |---|---|
 //! | camera ray | white |
-//! | feeler reaching its light | yellow (dotted when no feeler is cast: stage 3 or `shadows = false`) |
+//! | feeler reaching its light | yellow (dotted when no feeler is cast: chapter 3 or `shadows = false`) |
 //! | feeler blocked | red up to the first opaque object (marked ×), dotted red beyond |
 //! | feeler through transparent objects only | orange |
 //! | mirror ray | cyan |

@@ -5,7 +5,7 @@
 //! render it with) to the [`Worker`] and goes back to reading the keyboard; the worker's own
 //! thread renders the four passes of [`super::schedule`] on its own rayon pool, tile by tile,
 //! and sends every finished tile back as an [`Update`]. Each job carries a *generation*: the
-//! window bumps a shared counter with every change (camera, stage, view, depth, scene), and
+//! window bumps a shared counter with every change (camera, chapter, view, depth, scene), and
 //! the worker compares it with its job's before each tile, so the pass in flight stops at
 //! once and the window drops any tile of an older generation still on its way.
 //!
@@ -34,7 +34,7 @@ pub struct Job {
     pub generation: u64,
     /// The scene.
     pub scene: Arc<Scene>,
-    /// The stage, view, depth, camera and size.
+    /// The chapter, view, depth, camera and size.
     pub options: Options,
 }
 
@@ -251,7 +251,7 @@ struct AccelKey {
 impl AccelKey {
     fn new(job: &Job) -> Self {
         let mut options = job.options.clone();
-        // only what build_accel reads: the stage (chapter 1 builds none), the kind, the size,
+        // only what build_accel reads: the chapter (chapter 1 builds none), the kind, the size,
         // and the camera when the kind looks at it
         options.view = whitted::render::View::Color;
         options.max_depth = 0;

@@ -23,7 +23,7 @@ use whitted::error::Error;
 use whitted::output::{self, Encoding};
 use whitted::real::Real;
 use whitted::render::views::{self, Scales};
-use whitted::render::{Options, Stage, Tracer, View};
+use whitted::render::{Chapter, Options, Tracer, View};
 use whitted::scene::{self, Scene};
 
 /// What the window starts from.
@@ -34,10 +34,10 @@ pub struct Setup {
     pub scene_path: Option<PathBuf>,
     /// The scene as loaded.
     pub scene: Scene,
-    /// The options from the command line (stage, view, size …).
+    /// The options from the command line (chapter, view, size …).
     pub options: Options,
     /// The binary's own chapter.
-    pub max_stage: Stage,
+    pub max_chapter: Chapter,
     /// How the screen and the saved PNG encode intensities.
     pub encoding: Encoding,
     /// Where `P` saves.
@@ -55,7 +55,7 @@ pub fn run(setup: Setup) -> Result<(), Error> {
     let mut window = open(&setup.binary, w as usize, h as usize)?;
     let worker = Worker::spawn(0)?;
     let mut shell = Shell {
-        state: State::new(setup.scene, setup.options, setup.max_stage),
+        state: State::new(setup.scene, setup.options, setup.max_chapter),
         canvas: Canvas::new(w, h, setup.encoding),
         overlay: None,
         accel: None,
@@ -63,7 +63,7 @@ pub fn run(setup: Setup) -> Result<(), Error> {
         worker,
         binary: setup.binary,
         scene_path: setup.scene_path,
-        max_stage: setup.max_stage,
+        max_chapter: setup.max_chapter,
         save_to: setup.save_to,
         quiet: setup.quiet,
         failure: None,
@@ -114,7 +114,7 @@ pub fn run(setup: Setup) -> Result<(), Error> {
                 stamp = Some(now);
                 inputs.push(Input::Loaded(Box::new(scene::load_parts(
                     path,
-                    shell.max_stage.reads(),
+                    shell.max_chapter.reads(),
                 ))));
             }
         }
@@ -203,7 +203,7 @@ struct Shell {
     binary: String,
     scene_path: Option<PathBuf>,
     /// The chapter of the binary, whose parts of the scene file a reload reads.
-    max_stage: Stage,
+    max_chapter: Chapter,
     save_to: PathBuf,
     quiet: bool,
     /// The depth and rays views' scales of the current generation.
@@ -233,7 +233,7 @@ impl Shell {
             Command::Save => self.save(),
             Command::Reload => match &self.scene_path {
                 Some(path) => {
-                    let loaded = Box::new(scene::load_parts(path, self.max_stage.reads()));
+                    let loaded = Box::new(scene::load_parts(path, self.max_chapter.reads()));
                     for command in self.state.handle(Input::Loaded(loaded)) {
                         self.execute(command);
                     }
@@ -272,8 +272,8 @@ impl Shell {
                 } if pass + 1 == PASSES && !self.quiet => {
                     let o = &self.state.options;
                     eprintln!(
-                        "image complete: stage {}, view {}, {}×{} in {:.3} s, {:.2} M rays/s",
-                        o.stage as u8,
+                        "image complete: chapter {}, view {}, {}×{} in {:.3} s, {:.2} M rays/s",
+                        o.chapter as u8,
                         o.view.name(),
                         o.width,
                         o.height,
@@ -334,14 +334,14 @@ impl Shell {
         }
     }
 
-    /// stage, view, depth, pass, time and M rays/s, and the last error if any.
+    /// chapter, view, depth, pass, time and M rays/s, and the last error if any.
     fn title(&self) -> String {
         let o = &self.state.options;
         let c = &self.canvas;
         let mut t = format!(
-            "{} — stage {} · {} · depth {} · pass {}/{PASSES}",
+            "{} — chapter {} · {} · depth {} · pass {}/{PASSES}",
             self.binary,
-            o.stage as u8,
+            o.chapter as u8,
             o.view.name(),
             o.max_depth,
             c.passes_done

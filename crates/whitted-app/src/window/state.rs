@@ -8,7 +8,7 @@
 //! | W A S D, Q E | move the camera forward, left, back, right, down, up (Shift: 4× faster) |
 //! | arrows | turn the camera left, right, up, down |
 //! | + − | one more or one less level of mirror and transmitted rays (`max_depth`) |
-//! | 1 … 5 | the stage: which chapter's renderer runs, up to the binary's own |
+//! | 1 … 5 | the chapter: which chapter's renderer runs, up to the binary's own |
 //! | V | the next view: colour, flat, normals, depth, shadow mask, rays per pixel |
 //! | C | print the camera as a `[camera]` table, to paste into the scene |
 //! | P | save the image as a PNG |
@@ -26,7 +26,7 @@ use minifb::Key;
 use whitted::camera::Camera;
 use whitted::error::Error;
 use whitted::real::{Real, Vec3};
-use whitted::render::{Options, Stage, View};
+use whitted::render::{Chapter, Options, View};
 use whitted::scene::load::MAX_DEPTH;
 use whitted::scene::{CameraSettings, Scene};
 
@@ -69,8 +69,8 @@ pub enum Action {
     Turn(Turn),
     /// Change the maximum depth by this much.
     Depth(i32),
-    /// Switch to stage 1 to 5.
-    Stage(u8),
+    /// Switch to chapter 1 to 5.
+    Chapter(u8),
     /// Cycle the views.
     NextView,
     /// Print the camera as a `[camera]` table.
@@ -120,16 +120,16 @@ pub const BINDINGS: &[Binding] = &[
     bind(Key::NumPadPlus, Action::Depth(1), false),
     bind(Key::Minus, Action::Depth(-1), false),
     bind(Key::NumPadMinus, Action::Depth(-1), false),
-    bind(Key::Key1, Action::Stage(1), false),
-    bind(Key::Key2, Action::Stage(2), false),
-    bind(Key::Key3, Action::Stage(3), false),
-    bind(Key::Key4, Action::Stage(4), false),
-    bind(Key::Key5, Action::Stage(5), false),
-    bind(Key::NumPad1, Action::Stage(1), false),
-    bind(Key::NumPad2, Action::Stage(2), false),
-    bind(Key::NumPad3, Action::Stage(3), false),
-    bind(Key::NumPad4, Action::Stage(4), false),
-    bind(Key::NumPad5, Action::Stage(5), false),
+    bind(Key::Key1, Action::Chapter(1), false),
+    bind(Key::Key2, Action::Chapter(2), false),
+    bind(Key::Key3, Action::Chapter(3), false),
+    bind(Key::Key4, Action::Chapter(4), false),
+    bind(Key::Key5, Action::Chapter(5), false),
+    bind(Key::NumPad1, Action::Chapter(1), false),
+    bind(Key::NumPad2, Action::Chapter(2), false),
+    bind(Key::NumPad3, Action::Chapter(3), false),
+    bind(Key::NumPad4, Action::Chapter(4), false),
+    bind(Key::NumPad5, Action::Chapter(5), false),
     bind(Key::V, Action::NextView, false),
     bind(Key::C, Action::PrintCamera, false),
     bind(Key::P, Action::Save, false),
@@ -147,7 +147,7 @@ pub fn action_of(key: Key) -> Option<Action> {
 /// The keys, as `H` prints them.
 pub const HELP: &str = "\
 keys: W/S forward/back, A/D left/right, Q/E down/up (Shift: 4x faster);
-      arrows turn; +/- max depth; 1-5 stage; V next view;
+      arrows turn; +/- max depth; 1-5 chapter; V next view;
       C print the camera; P save PNG; R reload the scene; H these keys; Esc quit;
       left click: the pixel's ray tree, printed and drawn (white camera ray, yellow feeler
       reaching its light, red feeler blocked (x where), cyan mirror, magenta transmitted)";
@@ -212,11 +212,11 @@ pub const MIN_PITCH_GAP: Real = 2.0;
 pub struct State {
     /// The scene shown: the last one that loaded without error.
     pub scene: Arc<Scene>,
-    /// Stage, view, depth, size, and the camera as moved (always `Some`).
+    /// Chapter, view, depth, size, and the camera as moved (always `Some`).
     pub options: Options,
-    /// The binary's own chapter: the highest stage the keys reach.
-    pub max_stage: Stage,
-    /// Samples per pixel at stage 5 (earlier stages take one).
+    /// The binary's own chapter: the highest chapter the keys reach.
+    pub max_chapter: Chapter,
+    /// Samples per pixel at chapter 5 (earlier chapters take one).
     pub samples: u32,
     /// The camera as the scene file last said it (a reload keeps the moved camera unless the
     /// file's camera changed).
@@ -226,16 +226,16 @@ pub struct State {
 }
 
 impl State {
-    /// The state for `scene` rendered with `options` by a binary whose chapter is `max_stage`.
+    /// The state for `scene` rendered with `options` by a binary whose chapter is `max_chapter`.
     #[must_use]
-    pub fn new(scene: Scene, mut options: Options, max_stage: Stage) -> Self {
+    pub fn new(scene: Scene, mut options: Options, max_chapter: Chapter) -> Self {
         let file_camera = scene.camera.clone();
         options.camera.get_or_insert_with(|| file_camera.clone());
         Self {
             samples: options.samples,
             scene: Arc::new(scene),
             options,
-            max_stage,
+            max_chapter,
             file_camera,
             error: None,
         }
@@ -267,7 +267,7 @@ impl State {
             Action::Move(m) => self.set_camera(moved(self.camera(), m, MOVE_SHARE * speed)),
             Action::Turn(t) => self.set_camera(turned(self.camera(), t, TURN_DEGREES * speed)),
             Action::Depth(step) => self.change_depth(step),
-            Action::Stage(n) => self.change_stage(n),
+            Action::Chapter(n) => self.change_chapter(n),
             Action::NextView => self.next_view(),
             Action::PrintCamera => vec![Command::Print(camera_table(self.camera()))],
             Action::Save => vec![Command::Save],
@@ -298,31 +298,31 @@ impl State {
             ))];
         }
         self.options.max_depth = new;
-        if self.options.stage == Stage::ReflectionRefraction {
+        if self.options.chapter == Chapter::ReflectionRefraction {
             vec![Command::Render]
         } else {
             vec![Command::Print(format!(
-                "max depth {new}: it matters from stage 5 (mirror and transmitted rays)"
+                "max depth {new}: it matters from chapter 5 (mirror and transmitted rays)"
             ))]
         }
     }
 
-    fn change_stage(&mut self, n: u8) -> Vec<Command> {
-        let Some(stage) = stage_of(n) else {
+    fn change_chapter(&mut self, n: u8) -> Vec<Command> {
+        let Some(chapter) = Chapter::from_number(n) else {
             return vec![];
         };
-        if stage > self.max_stage {
+        if chapter > self.max_chapter {
             return vec![Command::Print(format!(
-                "stage {n} belongs to a later chapter: this binary goes up to stage {}",
-                self.max_stage as u8
+                "chapter {n} belongs to a later chapter: this binary goes up to chapter {}",
+                self.max_chapter as u8
             ))];
         }
-        if stage == self.options.stage {
+        if chapter == self.options.chapter {
             return vec![];
         }
-        self.options.stage = stage;
+        self.options.chapter = chapter;
         // supersampling belongs to chapter 5, as on the command line
-        self.options.samples = if stage == Stage::ReflectionRefraction {
+        self.options.samples = if chapter == Chapter::ReflectionRefraction {
             self.samples
         } else {
             1
@@ -331,9 +331,9 @@ impl State {
     }
 
     fn next_view(&mut self) -> Vec<Command> {
-        if self.options.stage == Stage::CameraRays {
+        if self.options.chapter == Chapter::CameraRays {
             return vec![Command::Print(
-                "views start at stage 2: chapter 1 traces no objects, each pixel shows its ray's direction"
+                "views start at chapter 2: chapter 1 traces no objects, each pixel shows its ray's direction"
                     .into(),
             )];
         }
@@ -366,19 +366,6 @@ impl State {
             }
         }
     }
-}
-
-/// Stage `n` (1 to 5).
-#[must_use]
-pub fn stage_of(n: u8) -> Option<Stage> {
-    Some(match n {
-        1 => Stage::CameraRays,
-        2 => Stage::GenericObjects,
-        3 => Stage::Shading,
-        4 => Stage::Shadows,
-        5 => Stage::ReflectionRefraction,
-        _ => return None,
-    })
 }
 
 /// The image pixel under the pointer at `mouse` (unscaled window coordinates) in a window of

@@ -66,7 +66,7 @@ pub use octree::Octree;
 use crate::camera::Camera;
 use crate::ray::Ray;
 use crate::real::Mat4;
-use crate::shapes::{Formula, Hits, Object, Shape};
+use crate::shapes::{Hits, Numerics, Object, Shape};
 
 /// Which acceleration technique answers the ray queries.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
@@ -151,22 +151,22 @@ struct Candidate {
 
 /// Anything a world ray can be tested against, normals left in object space.
 trait ObjectSpace {
-    fn hits(&self, ray: &Ray, formula: Formula) -> Hits;
+    fn hits(&self, ray: &Ray, numerics: Numerics) -> Hits;
 }
 
 impl ObjectSpace for Object {
     #[inline]
-    fn hits(&self, ray: &Ray, formula: Formula) -> Hits {
+    fn hits(&self, ray: &Ray, numerics: Numerics) -> Hits {
         counters::object();
-        self.intersect_object_space(ray, formula)
+        self.intersect_object_space(ray, numerics)
     }
 }
 
 impl ObjectSpace for Candidate {
     #[inline]
-    fn hits(&self, ray: &Ray, formula: Formula) -> Hits {
+    fn hits(&self, ray: &Ray, numerics: Numerics) -> Hits {
         counters::object();
-        self.shape.intersect_placed(&self.inv, ray, formula)
+        self.shape.intersect_placed(&self.inv, ray, numerics)
     }
 }
 

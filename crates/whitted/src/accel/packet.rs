@@ -13,7 +13,7 @@ use super::{Accelerator, Index, PACKET, counters};
 use crate::material::Material;
 use crate::ray::Ray;
 use crate::real::{Real, Vec3};
-use crate::shapes::{Formula, Nearest, Object};
+use crate::shapes::{Nearest, Numerics, Object};
 
 /// The last few candidates an octree walk of a packet has been through, each with the first
 /// ray it was done for: an object that straddles several cubes sits in several leaves, and a
@@ -117,13 +117,13 @@ impl Accelerator {
         objects: &[Object],
         rays: &[Ray],
         t_min: Real,
-        formula: Formula,
+        numerics: Numerics,
         out: &mut [Option<Nearest>],
     ) {
         assert!(rays.len() <= PACKET && out.len() == rays.len());
         if matches!(self.index, Index::List) {
             for (ray, out) in rays.iter().zip(out.iter_mut()) {
-                *out = self.nearest(objects, ray, t_min, formula, None);
+                *out = self.nearest(objects, ray, t_min, numerics, None);
             }
             return;
         }
@@ -131,7 +131,7 @@ impl Accelerator {
         let mut best: [Best; PACKET] = std::array::from_fn(|_| Best::new());
         for (ray, best) in rays.iter().zip(best.iter_mut()) {
             counters::query();
-            self.consider_unbounded(objects, ray, t_min, formula, best);
+            self.consider_unbounded(objects, ray, t_min, numerics, best);
         }
         if !self.bounded.is_empty() {
             let boxes: ArrayVec<RayBox, PACKET> = rays.iter().map(RayBox::new).collect();
@@ -143,7 +143,7 @@ impl Accelerator {
             self.walk_packet(&boxes, &t_mins[..n], &mut limits[..n], |c, from, limits| {
                 let c = c as usize;
                 for r in from..n {
-                    self.consider_candidate(c, &boxes[r], &rays[r], t_min, formula, &mut best[r]);
+                    self.consider_candidate(c, &boxes[r], &rays[r], t_min, numerics, &mut best[r]);
                     limits[r] = best[r].t;
                 }
             });
@@ -170,14 +170,14 @@ impl Accelerator {
         light: Vec3,
         feelers: &[Ray],
         u_min: &[Real],
-        formula: Formula,
+        numerics: Numerics,
         out: &mut [Real],
     ) {
         let n = feelers.len();
         assert!(n <= PACKET && u_min.len() == n && out.len() == n);
         if matches!(self.index, Index::List) {
             for r in 0..n {
-                out[r] = self.transmittance(objects, materials, &feelers[r], u_min[r], formula);
+                out[r] = self.transmittance(objects, materials, &feelers[r], u_min[r], numerics);
             }
             return;
         }
@@ -189,7 +189,7 @@ impl Accelerator {
         for r in 0..n {
             counters::query();
             limits[r] =
-                if self.meet_unbounded(&feelers[r], u_min[r], formula, &mut blockers[r], scene) {
+                if self.meet_unbounded(&feelers[r], u_min[r], numerics, &mut blockers[r], scene) {
                     1.0 - u_min[r]
                 } else {
                     Real::NAN
@@ -218,7 +218,7 @@ impl Accelerator {
                                 c,
                                 &feelers[r],
                                 u_min[r],
-                                formula,
+                                numerics,
                                 &mut blockers[r],
                                 scene,
                             )

@@ -13,7 +13,7 @@ use crate::material::Material;
 use crate::ray::Ray;
 use crate::real::Real;
 use crate::shadow;
-use crate::shapes::{Formula, Hit, Hits, Nearest, Object, nearer};
+use crate::shapes::{Hit, Hits, Nearest, Numerics, Object, nearer};
 
 /// The nearest hit so far: (t, object), with the hit in object space.
 pub(super) struct Best {
@@ -55,9 +55,9 @@ impl Best {
         i: usize,
         ray: &Ray,
         t_min: Real,
-        formula: Formula,
+        numerics: Numerics,
     ) {
-        if let Some(h) = object.hits(ray, formula).first_after(t_min)
+        if let Some(h) = object.hits(ray, numerics).first_after(t_min)
             && nearer(h.t, i, self.t, self.object)
         {
             self.t = h.t;
@@ -150,16 +150,16 @@ impl Accelerator {
         objects: &[Object],
         ray: &Ray,
         t_min: Real,
-        formula: Formula,
+        numerics: Numerics,
         pixel: Option<(u32, u32)>,
     ) -> Option<Nearest> {
         counters::query();
         let mut best = Best::new();
-        self.consider_unbounded(objects, ray, t_min, formula, &mut best);
+        self.consider_unbounded(objects, ray, t_min, numerics, &mut best);
         if !self.bounded.is_empty() {
             let rb = RayBox::new(ray);
             let test = |c: u32, best: &mut Best| {
-                self.consider_candidate(c as usize, &rb, ray, t_min, formula, best);
+                self.consider_candidate(c as usize, &rb, ray, t_min, numerics, best);
             };
             match &self.index {
                 Index::List => match (&self.extents, pixel) {
@@ -203,11 +203,11 @@ impl Accelerator {
         objects: &[Object],
         ray: &Ray,
         t_min: Real,
-        formula: Formula,
+        numerics: Numerics,
         best: &mut Best,
     ) {
         for &i in &self.unbounded {
-            best.consider(&objects[i as usize], i as usize, ray, t_min, formula);
+            best.consider(&objects[i as usize], i as usize, ray, t_min, numerics);
         }
     }
 
@@ -220,7 +220,7 @@ impl Accelerator {
         rb: &RayBox,
         ray: &Ray,
         t_min: Real,
-        formula: Formula,
+        numerics: Numerics,
         best: &mut Best,
     ) {
         if self.boxes[c].hit_between(rb, t_min, best.t) {
@@ -229,7 +229,7 @@ impl Accelerator {
                 self.bounded[c] as usize,
                 ray,
                 t_min,
-                formula,
+                numerics,
             );
         }
     }
@@ -241,7 +241,7 @@ impl Accelerator {
         &self,
         feeler: &Ray,
         u_min: Real,
-        formula: Formula,
+        numerics: Numerics,
         blockers: &mut Blockers,
         scene: (&[Object], &[Material]),
     ) -> bool {
@@ -249,7 +249,7 @@ impl Accelerator {
         // shapes' intersection routines out of line and cost the field's render 4% more
         // instructions at N = 10)
         for &i in &self.unbounded {
-            let hits = scene.0[i as usize].hits(feeler, formula);
+            let hits = scene.0[i as usize].hits(feeler, numerics);
             if !blockers.meet(&hits, i, u_min, scene) {
                 return false;
             }
@@ -265,11 +265,11 @@ impl Accelerator {
         c: usize,
         feeler: &Ray,
         u_min: Real,
-        formula: Formula,
+        numerics: Numerics,
         blockers: &mut Blockers,
         scene: (&[Object], &[Material]),
     ) -> bool {
-        let hits = self.candidates[c].hits(feeler, formula);
+        let hits = self.candidates[c].hits(feeler, numerics);
         blockers.meet(&hits, self.bounded[c], u_min, scene)
     }
 
@@ -283,19 +283,19 @@ impl Accelerator {
         materials: &[Material],
         feeler: &Ray,
         u_min: Real,
-        formula: Formula,
+        numerics: Numerics,
     ) -> Real {
         counters::query();
         let mut blockers = Blockers::new();
         let scene = (objects, materials);
-        if self.meet_unbounded(feeler, u_min, formula, &mut blockers, scene)
+        if self.meet_unbounded(feeler, u_min, numerics, &mut blockers, scene)
             && !self.bounded.is_empty()
         {
             let rb = RayBox::new(feeler);
             let test = |c: u32, blockers: &mut Blockers| -> bool {
                 let c = c as usize;
                 !self.boxes[c].hit_between(&rb, u_min, 1.0)
-                    || self.meet_candidate(c, feeler, u_min, formula, blockers, scene)
+                    || self.meet_candidate(c, feeler, u_min, numerics, blockers, scene)
             };
             match &self.index {
                 Index::List => {

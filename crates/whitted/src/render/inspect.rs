@@ -31,14 +31,14 @@ use serde_json::{Value, json};
 use super::framebuffer::Encoding;
 use super::recorder::{RayKind, Recorder, Stop};
 use super::tracer::{Feeler, Surface};
-use super::{Stage, Stats, Tracer, View};
+use super::{Chapter, Stats, Tracer, View};
 use crate::light::Light;
 use crate::ray::Ray;
 use crate::real::{Real, Vec3};
 use crate::scene::Scene;
 use crate::shading;
 use crate::shadow;
-use crate::shapes::{Formula, Nearest, Part};
+use crate::shapes::{Nearest, Numerics, Part};
 
 /// The version of the JSON shape `RayTree::to_json` writes (`docs/src/inspect.md`).
 pub const JSON_VERSION: u32 = 1;
@@ -49,7 +49,7 @@ pub struct RayTree {
     /// The pixel (x, y), row y from the top.
     pub pixel: (u32, u32),
     /// The chapter whose road was followed.
-    pub stage: Stage,
+    pub chapter: Chapter,
     /// The view the colour is for.
     pub view: View,
     /// The pixel's colour: exactly what the render writes in the framebuffer (linear RGB).
@@ -185,12 +185,12 @@ impl Tracer<'_> {
     /// Its colour is the pixel's colour bit for bit.
     #[must_use]
     pub fn inspect(&self, x: u32, y: u32) -> RayTree {
-        let mut tree = TreeRecorder::new(self.scene, self.options.formula);
+        let mut tree = TreeRecorder::new(self.scene, self.options.numerics);
         let mut count = Stats::default();
         let colour = self.pixel(x, y, &mut (&mut tree, &mut count));
         RayTree {
             pixel: (x, y),
-            stage: self.options.stage,
+            chapter: self.options.chapter,
             view: self.options.view,
             colour,
             encoding: Encoding::default(),
@@ -203,7 +203,7 @@ impl Tracer<'_> {
 /// The recorder that keeps the tree ([`Tracer::inspect`] uses it).
 pub struct TreeRecorder<'s> {
     scene: &'s Scene,
-    formula: Formula,
+    numerics: Numerics,
     /// The rays under way, the camera ray first.
     stack: Vec<RayNode>,
     /// The sample under way: its index and position.
@@ -214,10 +214,10 @@ pub struct TreeRecorder<'s> {
 impl<'s> TreeRecorder<'s> {
     /// An empty recorder for rays through `scene`, intersected with `formula`.
     #[must_use]
-    pub fn new(scene: &'s Scene, formula: Formula) -> Self {
+    pub fn new(scene: &'s Scene, numerics: Numerics) -> Self {
         Self {
             scene,
-            formula,
+            numerics,
             stack: Vec::new(),
             sample: (0, (0.5, 0.5)),
             samples: Vec::new(),
@@ -239,7 +239,7 @@ impl<'s> TreeRecorder<'s> {
         let scene = self.scene;
         let mut out = Vec::new();
         for (i, object) in scene.objects.iter().enumerate() {
-            let hits = object.intersect(ray, self.formula);
+            let hits = object.intersect(ray, self.numerics);
             if shadow::blocks(&hits, *u_min) {
                 out.push(Crossing {
                     object: i,
@@ -475,7 +475,7 @@ impl fmt::Display for RayTree {
         writeln!(
             f,
             "pixel ({x}, {y}), chapter {}, view {}: colour I = {} (linear RGB; {:?} in the {png} PNG), {} ray{}, {n} sample{}",
-            self.stage as u8,
+            self.chapter as u8,
             self.view.name(),
             V(self.colour),
             self.bytes(),
@@ -483,9 +483,9 @@ impl fmt::Display for RayTree {
             if self.rays == 1 { "" } else { "s" },
             if n == 1 { "" } else { "s" },
         )?;
-        let shows = match (self.stage, self.view) {
-            (Stage::CameraRays, _) => Some("the ray direction as a colour, (d̂ + 1)/2"),
-            (Stage::GenericObjects, View::Color) | (_, View::Flat) => {
+        let shows = match (self.chapter, self.view) {
+            (Chapter::CameraRays, _) => Some("the ray direction as a colour, (d̂ + 1)/2"),
+            (Chapter::GenericObjects, View::Color) | (_, View::Flat) => {
                 Some("the diffuse colour ρd of the material hit, unlit (background for a miss)")
             }
             (_, View::Normals) => Some("the normal facing the camera as a colour, (n + 1)/2"),
@@ -682,7 +682,7 @@ impl RayTree {
         json!({
             "version": JSON_VERSION,
             "pixel": [self.pixel.0, self.pixel.1],
-            "chapter": self.stage as u8,
+            "chapter": self.chapter as u8,
             "view": self.view.name(),
             "colour": v(self.colour),
             "encoding": self.encoding.name(),

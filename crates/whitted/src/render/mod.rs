@@ -3,7 +3,7 @@
 //! | module | what it holds |
 //! |---|---|
 //! | [`tracer`] | **the road of one pixel**: camera ray → nearest hit → local light → feelers → mirror and transmitted rays. Start reading here. |
-//! | [`options`] | the chapter ([`Stage`]), the [`View`] and the settings of a render ([`Options`]) |
+//! | [`options`] | the chapter ([`Chapter`]), the [`View`] and the settings of a render ([`Options`]) |
 //! | [`tiles`] | the image in parallel tiles: [`render`], [`render_with`]; a [`Rect`] of it, cancellable between tiles, for the live window: [`render_rect`] |
 //! | [`packets`] | blocks of pixels traced together, the same image bit for bit |
 //! | [`sampling`] | where the samples of a pixel go |
@@ -32,7 +32,7 @@ pub mod views;
 
 pub use framebuffer::{Framebuffer, MAX_FRAMEBUFFER_BYTES, check_size};
 pub use inspect::RayTree;
-pub use options::{Options, Stage, View};
+pub use options::{Chapter, Options, View};
 pub use recorder::{RayKind, Recorder, Stop};
 pub use stats::Stats;
 pub use tiles::{BLOCK, Finished, Rect, TILE, build_accel, render, render_rect, render_with};

@@ -8,11 +8,13 @@ use crate::camera::Camera;
 use crate::offset::Offset;
 use crate::real::Real;
 use crate::scene::{CameraSettings, Parts, Scene};
-use crate::shapes::Formula;
+use crate::shapes::Numerics;
 
-/// Which chapter's renderer runs.
+/// Which chapter's renderer runs: how far along the road of one pixel a render goes. Its
+/// number, title, binary, scene and book page are the course outline's
+/// ([`Chapter::about`], from `whitted_syllabus::CHAPTERS`).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash)]
-pub enum Stage {
+pub enum Chapter {
     /// Chapter 1: rays only.
     CameraRays = 1,
     /// Chapter 2: nearest hit.
@@ -25,22 +27,51 @@ pub enum Stage {
     ReflectionRefraction = 5,
 }
 
-impl Stage {
-    /// What of a scene file this stage reads: chapter 1 only the camera and the image (it
+impl Chapter {
+    /// Every chapter, in order.
+    pub const ALL: [Chapter; 5] = [
+        Chapter::CameraRays,
+        Chapter::GenericObjects,
+        Chapter::Shading,
+        Chapter::Shadows,
+        Chapter::ReflectionRefraction,
+    ];
+
+    /// Chapter `n` (1 to 5), or `None`.
+    #[must_use]
+    pub fn from_number(n: u8) -> Option<Chapter> {
+        Self::ALL.get(usize::from(n).checked_sub(1)?).copied()
+    }
+
+    /// Its number, 1 to 5.
+    #[must_use]
+    pub fn number(self) -> u8 {
+        self as u8
+    }
+
+    /// The course outline's entry for it: title, binary, scene, book page.
+    #[must_use]
+    pub fn about(self) -> &'static whitted_syllabus::Chapter {
+        &whitted_syllabus::CHAPTERS[usize::from(self.number()) - 1]
+    }
+
+    /// What of a scene file this chapter reads: chapter 1 only the camera and the image (it
     /// places no object, so it runs before chapter 2's functions are written), the others all.
     #[must_use]
     pub fn reads(self) -> Parts {
         match self {
-            Stage::CameraRays => Parts::CameraAndImage,
+            Chapter::CameraRays => Parts::CameraAndImage,
             _ => Parts::All,
         }
     }
 }
 
-/// What a stage-2 (or later) render shows at each pixel.
+const _: () = assert!(Chapter::ALL.len() == whitted_syllabus::CHAPTERS.len());
+
+/// What a chapter-2 (or later) render shows at each pixel.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
 pub enum View {
-    /// The stage's own colour (for stage 2: the flat colour).
+    /// The chapter's own colour (for chapter 2: the flat colour).
     #[default]
     Color,
     /// The material's diffuse colour ρd, unlit.
@@ -87,7 +118,7 @@ impl View {
 #[derive(Clone, Debug, PartialEq)]
 pub struct Options {
     /// The chapter.
-    pub stage: Stage,
+    pub chapter: Chapter,
     /// What to show.
     pub view: View,
     /// Image width (pixels).
@@ -102,7 +133,7 @@ pub struct Options {
     /// this is not traced.
     pub min_weight: Real,
     /// Textbook or robust intersection formulas.
-    pub formula: Formula,
+    pub numerics: Numerics,
     /// How secondary rays leave a surface.
     pub offset: Offset,
     /// Seed of the supersampling positions.
@@ -118,24 +149,24 @@ pub struct Options {
 }
 
 impl Options {
-    /// The scene's own settings for `stage`: its size, samples and depth, robust formulas, the
+    /// The scene's own settings for `chapter`: its size, samples and depth, robust formulas, the
     /// default offset and accelerator, packets on.
     #[must_use]
-    pub fn for_scene(scene: &Scene, stage: Stage) -> Self {
+    pub fn for_scene(scene: &Scene, chapter: Chapter) -> Self {
         Self {
-            stage,
+            chapter,
             view: View::Color,
             width: scene.width,
             height: scene.height,
             // supersampling belongs to chapter 5; earlier chapters shoot one ray per pixel centre
-            samples: if stage == Stage::ReflectionRefraction {
+            samples: if chapter == Chapter::ReflectionRefraction {
                 scene.samples
             } else {
                 1
             },
             max_depth: scene.max_depth,
             min_weight: Self::MIN_WEIGHT,
-            formula: Formula::default(),
+            numerics: Numerics::default(),
             offset: Offset::default(),
             seed: 0x5eed,
             accel: Accel::default(),

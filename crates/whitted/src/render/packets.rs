@@ -15,7 +15,7 @@
 use arrayvec::ArrayVec;
 
 use super::tracer::Surface;
-use super::{Options, Stage, Stats, Tracer, View};
+use super::{Chapter, Options, Stats, Tracer, View};
 use crate::accel::{Accel, PACKET};
 use crate::ray::Ray;
 use crate::real::{Real, Vec3};
@@ -28,13 +28,13 @@ pub(crate) type Shares = Vec<[Real; PACKET]>;
 
 impl Tracer<'_> {
     /// Whether `Tracer::block` traces a block's camera rays together: packets asked for, one
-    /// ray a pixel, from stage 2 on, through a BVH or an octree.
+    /// ray a pixel, from chapter 2 on, through a BVH or an octree.
     fn packets(&self) -> bool {
         let o: &Options = self.options;
         o.packets
             && o.view != View::Rays // counts each pixel's rays on the plain road
             && o.samples_per_pixel() == 1
-            && o.stage >= Stage::GenericObjects
+            && o.chapter >= Chapter::GenericObjects
             && matches!(self.accel.kind(), Accel::Bvh | Accel::Octree)
     }
 
@@ -61,12 +61,12 @@ impl Tracer<'_> {
             &self.scene.objects,
             &rays,
             0.0,
-            self.options.formula,
+            self.options.numerics,
             nearest,
         );
         stats.primary += rays.len() as u64;
         let o = self.options;
-        if o.view != View::Color || o.stage < Stage::Shading {
+        if o.view != View::Color || o.chapter < Chapter::Shading {
             let seen = rays.iter().zip(nearest.iter());
             return seen.map(|(ray, n)| self.seen(ray, *n, stats)).collect();
         }
@@ -118,7 +118,7 @@ impl Tracer<'_> {
                 light.position,
                 &feelers,
                 &u_min,
-                self.options.formula,
+                self.options.numerics,
                 &mut out[..who.len()],
             );
             for (k, &i) in who.iter().enumerate() {

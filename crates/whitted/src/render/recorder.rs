@@ -103,7 +103,7 @@ pub trait Recorder {
     }
 
     /// Light number `light` seen from the surface `s`: its unshadowed I_d + I_s, the feeler
-    /// sent towards it (from stage 4, if it casts shadows and lies in front) and the share
+    /// sent towards it (from chapter 4, if it casts shadows and lies in front) and the share
     /// of it that arrives (1 without a feeler).
     #[inline]
     fn light(

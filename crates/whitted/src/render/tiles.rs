@@ -16,10 +16,10 @@
 //! bit, as that tile of the whole image: tiles stay on the image's grid, cut to the rectangle.
 //!
 //! ```
-//! use whitted::render::{Finished, Framebuffer, Options, Rect, Stage, Tracer, render_rect};
+//! use whitted::render::{Finished, Framebuffer, Options, Rect, Chapter, Tracer, render_rect};
 //!
 //! let scene = whitted::scene::showcase().unwrap(); // the showcase
-//! let mut options = Options::for_scene(&scene, Stage::Shading);
+//! let mut options = Options::for_scene(&scene, Chapter::Shading);
 //! (options.width, options.height) = (64, 48);
 //! let tracer = Tracer::new(&scene, &options);
 //! let mut fb = Framebuffer::new(64, 48);
@@ -37,7 +37,7 @@ use std::sync::atomic::{AtomicBool, Ordering};
 use rayon::prelude::*;
 
 use super::packets::Shares;
-use super::{Framebuffer, Options, Stage, Stats, Tracer};
+use super::{Chapter, Framebuffer, Options, Stats, Tracer};
 use crate::accel::Accel;
 use crate::accel::Accelerator;
 use crate::error::Error;
@@ -59,7 +59,7 @@ const _: () = assert!((BLOCK * BLOCK) as usize <= crate::accel::PACKET);
 pub fn build_accel(scene: &Scene, options: &Options) -> Accelerator {
     let camera = options.camera(scene);
     // chapter 1 intersects nothing
-    let kind = if options.stage == Stage::CameraRays {
+    let kind = if options.chapter == Chapter::CameraRays {
         Accel::None
     } else {
         options.accel

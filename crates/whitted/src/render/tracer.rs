@@ -12,13 +12,13 @@
 //! small function of the notes' formula ([`crate::camera`], [`crate::shapes`], [`crate::shading`],
 //! [`crate::shadow`], [`crate::optics`]); no formula is computed here. How far a chapter goes:
 //!
-//! | [`Stage`] | what a camera ray returns |
+//! | [`Chapter`] | what a camera ray returns |
 //! |---|---|
-//! | 1 [`Stage::CameraRays`] | the ray direction as a colour, (d̂ + 1)/2 |
-//! | 2 [`Stage::GenericObjects`] | the nearest hit, seen through a [`View`] (flat colour, normals, depth) |
-//! | 3 [`Stage::Shading`] | ambient + diffuse + specular from every light (Phong) |
-//! | 4 [`Stage::Shadows`] | the same, each light tested by a feeler ray |
-//! | 5 [`Stage::ReflectionRefraction`] | plus mirror and transmitted rays, recursively: I = I_a + I_d + I_s + I_l + I_r |
+//! | 1 [`Chapter::CameraRays`] | the ray direction as a colour, (d̂ + 1)/2 |
+//! | 2 [`Chapter::GenericObjects`] | the nearest hit, seen through a [`View`] (flat colour, normals, depth) |
+//! | 3 [`Chapter::Shading`] | ambient + diffuse + specular from every light (Phong) |
+//! | 4 [`Chapter::Shadows`] | the same, each light tested by a feeler ray |
+//! | 5 [`Chapter::ReflectionRefraction`] | plus mirror and transmitted rays, recursively: I = I_a + I_d + I_s + I_l + I_r |
 //!
 //! The scene decides which stops are needed: no feeler for a light with `shadows = false`, no
 //! mirror ray from a material with `reflection = 0`, no transmitted ray where
@@ -32,7 +32,7 @@
 use std::borrow::Cow;
 
 use super::recorder::{RayKind, Recorder, Stop};
-use super::{Options, Stage, View, build_accel, sampling, views};
+use super::{Chapter, Options, View, build_accel, sampling, views};
 use crate::accel::Accelerator;
 use crate::camera::{Camera, direction_colour};
 use crate::light::Light;
@@ -49,7 +49,7 @@ use crate::shapes::{Hit, Nearest};
 /// Traces rays through one scene with one set of options.
 pub struct Tracer<'a> {
     pub(crate) scene: &'a Scene,
-    /// The options it renders with: size, stage, view, depth …
+    /// The options it renders with: size, chapter, view, depth …
     pub options: &'a Options,
     pub(crate) camera: Camera,
     pub(crate) accel: Cow<'a, Accelerator>,
@@ -143,7 +143,7 @@ impl<'a> Tracer<'a> {
     // ANCHOR: ch1_camera_ray
     /// What the camera ray of image pixel `pixel` brings back.
     fn camera_ray(&self, ray: &Ray, pixel: (u32, u32), rec: &mut impl Recorder) -> Vec3 {
-        if self.options.stage == Stage::CameraRays {
+        if self.options.chapter == Chapter::CameraRays {
             return direction_colour(ray.dir); // chapter 1: (d̂ + 1)/2
         }
         let nearest = self.nearest_from(ray, 0.0, Some(pixel));
@@ -153,7 +153,7 @@ impl<'a> Tracer<'a> {
     // ANCHOR_END: ch1_camera_ray
 
     // ANCHOR: ch2_seen
-    /// The colour of a camera ray (from stage 2 on) whose nearest hit is `nearest`, as the
+    /// The colour of a camera ray (from chapter 2 on) whose nearest hit is `nearest`, as the
     /// view shows it.
     pub(crate) fn seen(
         &self,
@@ -163,7 +163,7 @@ impl<'a> Tracer<'a> {
     ) -> Vec3 {
         let o = self.options;
         match o.view {
-            View::Color | View::Rays if o.stage == Stage::GenericObjects => self.flat(nearest),
+            View::Color | View::Rays if o.chapter == Chapter::GenericObjects => self.flat(nearest),
             View::Color | View::Rays => self.shade(ray, nearest, 0, 1.0, rec),
             View::Flat => self.flat(nearest),
             View::Normals => match nearest {
@@ -199,13 +199,18 @@ impl<'a> Tracer<'a> {
 
     /// [`Tracer::nearest`] for a ray that may be the camera ray of image pixel `pixel`.
     fn nearest_from(&self, ray: &Ray, t_min: Real, pixel: Option<(u32, u32)>) -> Option<Nearest> {
-        self.accel
-            .nearest(&self.scene.objects, ray, t_min, self.options.formula, pixel)
+        self.accel.nearest(
+            &self.scene.objects,
+            ray,
+            t_min,
+            self.options.numerics,
+            pixel,
+        )
     }
     // ANCHOR_END: ch2_nearest
 
     // ANCHOR: ch5_trace
-    /// The light coming back along `ray` (stages 3–5): the nearest hit after `t_min`, shaded.
+    /// The light coming back along `ray` (chapters 3–5): the nearest hit after `t_min`, shaded.
     /// `depth` counts the bounces that led here and `weight` the share of the pixel the ray
     /// carries.
     pub fn trace(
@@ -224,7 +229,7 @@ impl<'a> Tracer<'a> {
 
     // ANCHOR: ch3_shade
     /// I = I_a + I_d + I_s + I_l + I_r at the nearest hit of `ray` (the background colour for
-    /// a miss): the local light, then from stage 5 the mirror and transmitted rays.
+    /// a miss): the local light, then from chapter 5 the mirror and transmitted rays.
     fn shade(
         &self,
         ray: &Ray,
@@ -261,7 +266,7 @@ impl<'a> Tracer<'a> {
 
     // ANCHOR: ch3_local_light_sig
     /// The local light I_a + Σ_lights (I_d + I_s)·share (chapters 3 and 4): Phong's terms of
-    /// every light, each times the share of that light its feeler lets through (from stage 4;
+    /// every light, each times the share of that light its feeler lets through (from chapter 4;
     /// 1 before). `share(light, feeler)` answers for the feeler towards light number `light`:
     /// `Tracer::shade` traces it (`Tracer::transmittance`); a packet of pixels looks up
     /// what it traced for all of them at once.
@@ -301,11 +306,11 @@ impl<'a> Tracer<'a> {
     }
 
     // ANCHOR: ch4_feeler_sig
-    /// From stage 4, the feeler S(u) = P′ + (L − P′)·u towards a `light` that casts shadows
+    /// From chapter 4, the feeler S(u) = P′ + (L − P′)·u towards a `light` that casts shadows
     /// and lies in front, n·(L − P) > 0, from P moved off the surface to P′ ([`crate::offset`]).
     pub(crate) fn feeler(&self, s: &Surface, light: &Light) -> Option<Feeler> {
         let o = self.options;
-        if o.stage < Stage::Shadows {
+        if o.chapter < Chapter::Shadows {
             return None; // no feelers before chapter 4 (given: not part of the exercise)
         }
         // ANCHOR_END: ch4_feeler_sig
@@ -328,13 +333,13 @@ impl<'a> Tracer<'a> {
             &self.scene.materials,
             feeler,
             *u_min,
-            self.options.formula,
+            self.options.numerics,
         )
     }
     // ANCHOR_END: ch4_transmittance
 
     // ANCHOR: ch5_reflect_and_refract_sig
-    /// `color` + k_t·I_r + k_r·I_l (stage 5, while `depth < max_depth`): the light of the
+    /// `color` + k_t·I_r + k_r·I_l (chapter 5, while `depth < max_depth`): the light of the
     /// transmitted ray (Snell's law, [`optics::refract`]) and of the mirror ray
     /// ([`optics::reflect`]), each traced in turn. Under total internal reflection the
     /// transmitted share goes to the mirror ray. A ray whose weight would fall below
@@ -348,7 +353,7 @@ impl<'a> Tracer<'a> {
         rec: &mut impl Recorder,
     ) -> Vec3 {
         let o = self.options;
-        if o.stage < Stage::ReflectionRefraction {
+        if o.chapter < Chapter::ReflectionRefraction {
             return color; // no secondary rays before chapter 5 (given: not part of the exercise)
         }
         // ANCHOR_END: ch5_reflect_and_refract_sig

@@ -21,7 +21,7 @@
 
 use super::recorder::Recorder;
 use super::tracer::Surface;
-use super::{Stage, Tracer, View};
+use super::{Chapter, Tracer, View};
 use crate::real::{Real, Vec3};
 use crate::shading;
 
@@ -53,7 +53,7 @@ impl Scales {
     #[must_use]
     pub fn measure(tracer: &Tracer) -> Self {
         let o = tracer.options;
-        let depth = (o.view == View::Depth && o.stage >= Stage::GenericObjects)
+        let depth = (o.view == View::Depth && o.chapter >= Chapter::GenericObjects)
             .then(|| probe_depth(tracer));
         Self {
             depth,
@@ -101,7 +101,7 @@ impl Tracer<'_> {
 
     /// The shadow-mask view: which lights reach the surface, light i painted in
     /// [`light_colour`]`(i)` times the share of it that arrives (0 for a light behind
-    /// the surface; before stage 4, 1 for every light in front).
+    /// the surface; before chapter 4, 1 for every light in front).
     pub(crate) fn shadow_mask(&self, s: &Surface, rec: &mut impl Recorder) -> Vec3 {
         let mut mask = Vec3::ZERO;
         for (l, light) in self.scene.lights.iter().enumerate() {
@@ -142,12 +142,12 @@ fn probe_depth(tracer: &Tracer) -> (Real, Real) {
 /// samples × (1 + feelers a hit can send) × (2^(depth + 1) − 1).
 fn rays_max(tracer: &Tracer) -> u64 {
     let o = tracer.options;
-    let feelers = if o.stage >= Stage::Shadows {
+    let feelers = if o.chapter >= Chapter::Shadows {
         tracer.scene.lights.iter().filter(|l| l.shadows).count() as u64
     } else {
         0
     };
-    let depth = if o.stage == Stage::ReflectionRefraction {
+    let depth = if o.chapter == Chapter::ReflectionRefraction {
         o.max_depth.min(62)
     } else {
         0

@@ -26,7 +26,7 @@
 //! Course book: [Chapter 2, generic objects](../../../../../docs/book/ch02-generic-objects.html) (`docs/src/ch02-generic-objects.md`).
 
 use super::cylinder::Extremes;
-use super::quadratic::{Formula, solve, stable_roots};
+use super::quadratic::{Numerics, solve, stable_roots};
 use super::{Hit, Hits, Part, Span};
 use crate::ray::Ray;
 use crate::real::{Real, Vec3};
@@ -76,14 +76,14 @@ pub fn normal(part: Part, p: Vec3) -> Vec3 {
 
 /// Intersects an object-space ray with the closed generic cone.
 #[must_use]
-pub fn intersect(ray: &Ray, formula: Formula) -> Hits {
+pub fn intersect(ray: &Ray, numerics: Numerics) -> Hits {
     // BEGIN SOLUTION 2.21
     // The notes' method: roots kept when z ∈ [−1, 1], and the base plane z = −1 kept when the
     // point lies inside the base circle (radius 2, not the notes' 1).
     fn intersect_textbook(ray: &Ray) -> Hits {
         let (a, b, c) = coefficients(ray);
         let mut found = Extremes::default();
-        for t in solve(a, b, c, Formula::Textbook).iter() {
+        for t in solve(a, b, c, Numerics::Textbook).iter() {
             let p = ray.at(t);
             if (-1.0..=1.0).contains(&p.z) {
                 found.add(Hit {
@@ -162,9 +162,9 @@ pub fn intersect(ray: &Ray, formula: Formula) -> Hits {
         }
     }
 
-    match formula {
-        Formula::Textbook => intersect_textbook(ray),
-        Formula::Robust => intersect_robust(ray),
+    match numerics {
+        Numerics::Textbook => intersect_textbook(ray),
+        Numerics::Robust => intersect_robust(ray),
     }
     // END SOLUTION
 }

@@ -14,7 +14,7 @@
 //!
 //! Course book: [Chapter 2, generic objects](../../../../../docs/book/ch02-generic-objects.html) (`docs/src/ch02-generic-objects.md`).
 
-use super::quadratic::{Formula, solve, stable_roots};
+use super::quadratic::{Numerics, solve, stable_roots};
 use super::{Hit, Hits, Part, Span, entering_leaving};
 use crate::ray::Ray;
 use crate::real::{Real, Vec3};
@@ -57,7 +57,7 @@ pub fn normal(part: Part, p: Vec3) -> Vec3 {
 
 /// Intersects an object-space ray with the closed unit cylinder.
 #[must_use]
-pub fn intersect(ray: &Ray, formula: Formula) -> Hits {
+pub fn intersect(ray: &Ray, numerics: Numerics) -> Hits {
     // BEGIN SOLUTION 2.17
     // The notes' method as written: roots of the wall quadratic kept when z ∈ [−1, 1], cap
     // planes kept when the point lies inside the unit circle.
@@ -73,7 +73,7 @@ pub fn intersect(ray: &Ray, formula: Formula) -> Hits {
                 entering: true,
             });
         };
-        for t in solve(a, b, c, Formula::Textbook).iter() {
+        for t in solve(a, b, c, Numerics::Textbook).iter() {
             let z = ray.origin.z + ray.dir.z * t;
             if (-1.0..=1.0).contains(&z) {
                 keep(t, Part::Wall);
@@ -127,9 +127,9 @@ pub fn intersect(ray: &Ray, formula: Formula) -> Hits {
         }
     }
 
-    match formula {
-        Formula::Textbook => intersect_textbook(ray),
-        Formula::Robust => intersect_robust(ray),
+    match numerics {
+        Numerics::Textbook => intersect_textbook(ray),
+        Numerics::Robust => intersect_robust(ray),
     }
     // END SOLUTION
 }

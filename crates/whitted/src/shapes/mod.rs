@@ -35,7 +35,7 @@ pub mod quadratic;
 pub mod sphere;
 
 pub use polyhedron::{Facet, Polyhedron};
-pub use quadratic::Formula;
+pub use quadratic::Numerics;
 
 use crate::ray::Ray;
 use crate::real::{Mat4, Real, Vec3};
@@ -207,22 +207,22 @@ impl Shape {
     /// structures, which keep M⁻¹ and the shape side by side for speed.
     #[inline]
     #[must_use]
-    pub fn intersect_placed(&self, inv: &Mat4, ray: &Ray, formula: Formula) -> Hits {
+    pub fn intersect_placed(&self, inv: &Mat4, ray: &Ray, numerics: Numerics) -> Hits {
         // ANCHOR_END: ch2_intersect_placed_sig
         // BEGIN SOLUTION 2.12
-        self.intersect_local(&ray.transformed(inv), formula)
+        self.intersect_local(&ray.transformed(inv), numerics)
         // END SOLUTION
     }
 
     // ANCHOR: ch2_intersect_local
     /// Intersects an object-space ray with the generic shape. Normals are in object space.
     #[must_use]
-    pub fn intersect_local(&self, ray: &Ray, formula: Formula) -> Hits {
+    pub fn intersect_local(&self, ray: &Ray, numerics: Numerics) -> Hits {
         match self {
-            Shape::Sphere => sphere::intersect(ray, formula),
+            Shape::Sphere => sphere::intersect(ray, numerics),
             Shape::Plane => plane::intersect(ray),
-            Shape::Cylinder => cylinder::intersect(ray, formula),
-            Shape::Cone => cone::intersect(ray, formula),
+            Shape::Cylinder => cylinder::intersect(ray, numerics),
+            Shape::Cone => cone::intersect(ray, numerics),
             Shape::Polyhedron(p) => p.intersect(ray),
         }
     }
@@ -274,8 +274,8 @@ impl Object {
     /// renormalised, so t is shared), intersects the generic shape, and carries each normal
     /// back with (M⁻¹)ᵀ, renormalised.
     #[must_use]
-    pub fn intersect(&self, ray: &Ray, formula: Formula) -> Hits {
-        let mut hits = self.intersect_object_space(ray, formula);
+    pub fn intersect(&self, ray: &Ray, numerics: Numerics) -> Hits {
+        let mut hits = self.intersect_object_space(ray, numerics);
         for hit in hits.as_mut_slice() {
             hit.normal = self.placement.normal_to_world(hit.normal);
         }
@@ -287,9 +287,9 @@ impl Object {
     /// of [`Object::intersect`] (see [`Shape::intersect_placed`]).
     #[inline]
     #[must_use]
-    pub fn intersect_object_space(&self, ray: &Ray, formula: Formula) -> Hits {
+    pub fn intersect_object_space(&self, ray: &Ray, numerics: Numerics) -> Hits {
         self.shape
-            .intersect_placed(self.placement.inv(), ray, formula)
+            .intersect_placed(self.placement.inv(), ray, numerics)
     }
 }
 

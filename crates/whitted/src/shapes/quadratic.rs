@@ -21,7 +21,7 @@ use crate::real::Real;
 
 /// Which formulas the intersection routines use.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
-pub enum Formula {
+pub enum Numerics {
     /// The notes' formulas as printed: t = −b/a ± √(b² − ac)/a, discriminant b² − ac,
     /// and the notes' range tests for the cylinder and cone.
     Textbook,
@@ -30,16 +30,16 @@ pub enum Formula {
     Robust,
 }
 
-impl Formula {
+impl Numerics {
     /// Both, the notes' first.
-    pub const ALL: [Formula; 2] = [Formula::Textbook, Formula::Robust];
+    pub const ALL: [Numerics; 2] = [Numerics::Textbook, Numerics::Robust];
 
-    /// The name reports and `--formula` use.
+    /// The name reports and `--numerics` use.
     #[must_use]
     pub fn name(self) -> &'static str {
         match self {
-            Formula::Textbook => "textbook",
-            Formula::Robust => "robust",
+            Numerics::Textbook => "textbook",
+            Numerics::Robust => "robust",
         }
     }
 }
@@ -89,7 +89,7 @@ pub fn discriminant(a: Real, b: Real, c: Real) -> Real {
 /// [`Formula::Textbook`], [`stable_roots`] for [`Formula::Robust`]. Roots that are not finite
 /// are dropped.
 #[must_use]
-pub fn solve_with_discriminant(a: Real, b: Real, c: Real, disc: Real, formula: Formula) -> Roots {
+pub fn solve_with_discriminant(a: Real, b: Real, c: Real, disc: Real, numerics: Numerics) -> Roots {
     // BEGIN SOLUTION 2.9
     // The notes' t = −b/a ± √(b² − ac)/a, as printed.
     fn textbook_roots(a: Real, b: Real, disc: Real) -> Roots {
@@ -108,9 +108,9 @@ pub fn solve_with_discriminant(a: Real, b: Real, c: Real, disc: Real, formula: F
         Roots::from_pair(-b / a - root / a, -b / a + root / a)
     }
 
-    match formula {
-        Formula::Textbook => textbook_roots(a, b, disc),
-        Formula::Robust => match stable_roots(a, b, c, disc) {
+    match numerics {
+        Numerics::Textbook => textbook_roots(a, b, disc),
+        Numerics::Robust => match stable_roots(a, b, c, disc) {
             Some((t1, t2)) => Roots::from_pair(t1, t2),
             None => Roots::None,
         },
@@ -120,8 +120,8 @@ pub fn solve_with_discriminant(a: Real, b: Real, c: Real, disc: Real, formula: F
 
 /// The roots of at² + 2bt + c = 0 with the notes' discriminant b² − ac.
 #[must_use]
-pub fn solve(a: Real, b: Real, c: Real, formula: Formula) -> Roots {
-    solve_with_discriminant(a, b, c, discriminant(a, b, c), formula)
+pub fn solve(a: Real, b: Real, c: Real, numerics: Numerics) -> Roots {
+    solve_with_discriminant(a, b, c, discriminant(a, b, c), numerics)
 }
 
 /// Both roots of at² + 2bt + c = 0 from its discriminant Δ = b² − ac, in increasing order, by

@@ -10,7 +10,7 @@
 //!
 //! Course book: [Chapter 2, generic objects](../../../../../docs/book/ch02-generic-objects.html) (`docs/src/ch02-generic-objects.md`).
 
-use super::quadratic::{self, Formula, Roots, solve_with_discriminant};
+use super::quadratic::{self, Numerics, Roots, solve_with_discriminant};
 use super::{Hit, Hits, Part, entering_leaving};
 use crate::ray::Ray;
 use crate::real::{Real, Vec3};
@@ -45,15 +45,15 @@ pub fn normal(p: Vec3) -> Vec3 {
 
 /// Intersects an object-space ray with the unit sphere.
 #[must_use]
-pub fn intersect(ray: &Ray, formula: Formula) -> Hits {
+pub fn intersect(ray: &Ray, numerics: Numerics) -> Hits {
     // BEGIN SOLUTION 2.11
     let (a, b, c) = coefficients(ray);
     if a == 0.0 || !a.is_finite() {
         return Hits::none();
     }
-    let disc = match formula {
-        Formula::Textbook => quadratic::discriminant(a, b, c),
-        Formula::Robust => discriminant(ray, a, b),
+    let disc = match numerics {
+        Numerics::Textbook => quadratic::discriminant(a, b, c),
+        Numerics::Robust => discriminant(ray, a, b),
     };
     let hit = |t: Real| Hit {
         t,
@@ -61,7 +61,7 @@ pub fn intersect(ray: &Ray, formula: Formula) -> Hits {
         part: Part::Surface,
         entering: true,
     };
-    match solve_with_discriminant(a, b, c, disc, formula) {
+    match solve_with_discriminant(a, b, c, disc, numerics) {
         Roots::None => Hits::none(),
         Roots::One(t) => Hits::one(hit(t)),
         Roots::Two(t1, t2) => entering_leaving(hit(t1), hit(t2)),

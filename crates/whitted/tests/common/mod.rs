@@ -19,7 +19,7 @@ pub fn assert_vec_eq(actual: Vec3, expected: Vec3, tol: Real) {
     );
 }
 
-use whitted::render::{Framebuffer, Options, Stage, Stats, render};
+use whitted::render::{Chapter, Framebuffer, Options, Stats, render};
 use whitted::scene::{Scene, parse};
 
 /// Loads a scene from TOML text (panics on an error: test scenes are valid).
@@ -27,16 +27,17 @@ pub fn scene(text: &str) -> Scene {
     parse(text, "test.toml").unwrap_or_else(|e| panic!("{e}"))
 }
 
-/// Loads the parts of a scene that the chapter `stage` reads, as its binary does (chapter 1:
+/// Loads the parts of a scene that the chapter `chapter` reads, as its binary does (chapter 1:
 /// the camera and the image, no object placed).
-pub fn chapter_scene(text: &str, stage: Stage) -> Scene {
-    whitted::scene::parse_parts(text, "test.toml", stage.reads()).unwrap_or_else(|e| panic!("{e}"))
+pub fn chapter_scene(text: &str, chapter: Chapter) -> Scene {
+    whitted::scene::parse_parts(text, "test.toml", chapter.reads())
+        .unwrap_or_else(|e| panic!("{e}"))
 }
 
-/// Renders `scene` at stage `stage` and the given size by the plain road of one pixel, and
+/// Renders `scene` at chapter `chapter` and the given size by the plain road of one pixel, and
 /// checks that packets (on by default) give the same image bit for bit and the same rays.
-pub fn render_at(scene: &Scene, stage: Stage, width: u32, height: u32) -> (Framebuffer, Stats) {
-    let mut o = Options::for_scene(scene, stage);
+pub fn render_at(scene: &Scene, chapter: Chapter, width: u32, height: u32) -> (Framebuffer, Stats) {
+    let mut o = Options::for_scene(scene, chapter);
     o.width = width;
     o.height = height;
     render_both_ways(scene, &o)
@@ -77,14 +78,14 @@ pub fn render_both_ways(scene: &Scene, options: &Options) -> (Framebuffer, Stats
 }
 
 /// The colour seen along the camera's axis: a 1 × 1 render, whose only ray is d = −N·n.
-pub fn centre(scene: &Scene, stage: Stage) -> (Vec3, Stats) {
-    let (fb, stats) = render_at(scene, stage, 1, 1);
+pub fn centre(scene: &Scene, chapter: Chapter) -> (Vec3, Stats) {
+    let (fb, stats) = render_at(scene, chapter, 1, 1);
     (fb.pixels[0], stats)
 }
 
 use whitted::material::Material;
 use whitted::ray::Ray;
-use whitted::shapes::{Formula, Object};
+use whitted::shapes::{Numerics, Object};
 
 /// The share of a light that the feeler lets through, from first principles: every object in
 /// scene order, [`whitted::shadow::blocks`] on its hits, [`whitted::shadow::transmittance`] of
@@ -94,11 +95,11 @@ pub fn brute_share(
     materials: &[Material],
     feeler: &Ray,
     u_min: Real,
-    formula: Formula,
+    numerics: Numerics,
 ) -> Real {
     let crossed = objects
         .iter()
-        .filter(|o| whitted::shadow::blocks(&o.intersect(feeler, formula), u_min))
+        .filter(|o| whitted::shadow::blocks(&o.intersect(feeler, numerics), u_min))
         .map(|o| materials[o.material].transmission);
     whitted::shadow::transmittance(crossed)
 }
