@@ -212,7 +212,7 @@ pub struct TreeRecorder<'s> {
 }
 
 impl<'s> TreeRecorder<'s> {
-    /// An empty recorder for rays through `scene`, intersected with `formula`.
+    /// An empty recorder for rays through `scene`, intersected with `numerics`.
     #[must_use]
     pub fn new(scene: &'s Scene, numerics: Numerics) -> Self {
         Self {

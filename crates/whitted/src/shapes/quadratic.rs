@@ -11,7 +11,7 @@
 //! t₁ = q / a        t₂ = c / q
 //! ```
 //!
-//! [`Formula::Robust`] (the default) uses it; [`Formula::Textbook`] keeps the notes' form so
+//! [`Numerics::Robust`] (the default) uses it; [`Numerics::Textbook`] keeps the notes' form so
 //! that its error can be measured.
 //!
 //! Course book: [Chapter 2, generic objects](../../../../../docs/book/ch02-generic-objects.html) (`docs/src/ch02-generic-objects.md`).
@@ -86,7 +86,7 @@ pub fn discriminant(a: Real, b: Real, c: Real) -> Real {
 
 /// The roots of at² + 2bt + c = 0 given its discriminant Δ = b² − ac (computed by the caller,
 /// which may have a more accurate way than [`discriminant`]): the notes' form for
-/// [`Formula::Textbook`], [`stable_roots`] for [`Formula::Robust`]. Roots that are not finite
+/// [`Numerics::Textbook`], [`stable_roots`] for [`Numerics::Robust`]. Roots that are not finite
 /// are dropped.
 #[must_use]
 pub fn solve_with_discriminant(a: Real, b: Real, c: Real, disc: Real, numerics: Numerics) -> Roots {
