@@ -45,10 +45,10 @@ pub struct Row {
 }
 
 impl Row {
-    fn keys(keys: &[(Key, Action)], short: &'static str, description: impl Into<String>) -> Self {
+    fn keys(keys: Vec<(Key, Action)>, short: &'static str, description: impl Into<String>) -> Self {
         let bindings = keys
-            .iter()
-            .map(|&(key, action)| Binding { key, action })
+            .into_iter()
+            .map(|(key, action)| Binding { key, action })
             .collect();
         Self {
             trigger: Trigger::Keys(bindings),
@@ -127,27 +127,30 @@ fn number(x: Real) -> String {
     format!("{rounded}")
 }
 
+/// Each key with its action, in order.
+fn pairs<const N: usize>(keys: [Key; N], actions: [Action; N]) -> Vec<(Key, Action)> {
+    keys.into_iter().zip(actions).collect()
+}
+
 /// The window's keys, in the order the help lists them.
 #[must_use]
 pub fn keymap() -> Vec<Row> {
-    let move_ = |m| Action::Move(m);
-    let turn = |t| Action::Turn(t);
+    use Key::{Down, Left, Right, Up};
     let chapters: Vec<(Key, Action)> = Chapter::ALL
         .iter()
         .zip(DIGITS)
         .flat_map(|(&c, keys)| keys.map(|k| (k, Action::Chapter(c))))
         .collect();
     let views: Vec<&str> = View::ALL.iter().map(|v| v.name()).collect();
+    let (more, less) = (Action::Depth(1), Action::Depth(-1));
     let one =
-        |key, action, short, description: &str| Row::keys(&[(key, action)], short, description);
+        |key, action, short, description: &str| Row::keys(vec![(key, action)], short, description);
     vec![
         Row::keys(
-            &[
-                (Key::W, move_(Move::Forward)),
-                (Key::A, move_(Move::Left)),
-                (Key::S, move_(Move::Back)),
-                (Key::D, move_(Move::Right)),
-            ],
+            pairs(
+                [Key::W, Key::A, Key::S, Key::D],
+                [Move::Forward, Move::Left, Move::Back, Move::Right].map(Action::Move),
+            ),
             "move",
             format!(
                 "move forward, left, back, right ({}% of the distance to the point looked at; Shift: {}×)",
@@ -156,17 +159,15 @@ pub fn keymap() -> Vec<Row> {
             ),
         ),
         Row::keys(
-            &[(Key::Q, move_(Move::Down)), (Key::E, move_(Move::Up))],
+            pairs([Key::Q, Key::E], [Move::Down, Move::Up].map(Action::Move)),
             "down, up",
             "move down, up (along the scene's `up`)",
         ),
         Row::keys(
-            &[
-                (Key::Left, turn(Turn::Left)),
-                (Key::Right, turn(Turn::Right)),
-                (Key::Up, turn(Turn::Up)),
-                (Key::Down, turn(Turn::Down)),
-            ],
+            pairs(
+                [Left, Right, Up, Down],
+                [Turn::Left, Turn::Right, Turn::Up, Turn::Down].map(Action::Turn),
+            ),
             "turn",
             format!(
                 "turn left, right, up, down by {}° (Shift: {}°); never straight along `up`",
@@ -175,12 +176,10 @@ pub fn keymap() -> Vec<Row> {
             ),
         ),
         Row::keys(
-            &[
-                (Key::Equal, Action::Depth(1)),
-                (Key::NumPadPlus, Action::Depth(1)),
-                (Key::Minus, Action::Depth(-1)),
-                (Key::NumPadMinus, Action::Depth(-1)),
-            ],
+            pairs(
+                [Key::Equal, Key::NumPadPlus, Key::Minus, Key::NumPadMinus],
+                [more, more, less, less],
+            ),
             "depth",
             format!(
                 "one more, one less level of mirror and transmitted rays (`max_depth`, chapter {})",
@@ -188,12 +187,12 @@ pub fn keymap() -> Vec<Row> {
             ),
         ),
         Row::keys(
-            &chapters,
+            chapters,
             "chapter",
             "the chapter whose renderer runs, up to the binary's own",
         ),
         Row::keys(
-            &[(Key::V, Action::NextView)],
+            vec![(Key::V, Action::NextView)],
             "view",
             format!("the next view: {}", views.join(", ")),
         ),
