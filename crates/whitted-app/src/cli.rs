@@ -2,10 +2,10 @@
 //! the chapter alone ([`command`]), reads it, and renders.
 //!
 //! Every binary takes [`Common`]; the other groups come with the chapter that first needs
-//! them: [`Objects`] from chapter 2 (there are objects to view, find and inspect),
-//! [`Accuracy`] from chapter 4 (secondary rays leave surfaces), [`Tracing`] in chapter 5
+//! them: [`Objects`] from [`OBJECTS_FROM`] (objects to view, find and inspect), [`Accuracy`]
+//! from [`ACCURACY_FROM`] (secondary rays leave surfaces), [`Tracing`] from [`TRACING_FROM`]
 //! (recursion and supersampling). Each binary's arguments, as README.md and each chapter's
-//! README list them, are written from [`command`] (a test compares them).
+//! README list them, are written from [`command`] (`tests/docs.rs` compares them).
 //!
 //! Without SCENE the embedded default scene `scenes/showcase.toml` is rendered. The PNG is
 //! sRGB-encoded, as viewers expect; `--encoding linear` writes the linear intensities as bytes

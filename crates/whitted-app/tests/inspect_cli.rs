@@ -1,4 +1,4 @@
-//! `--inspect X,Y [--json]` on chapters 2–5, as a student runs it: the tree printed for a
+//! `--inspect X,Y [--json]` on the chapters that trace objects, as a student runs it: the tree printed for a
 //! pixel of each chapter's scene has the colour and the bytes of that pixel in the `-o` render
 //! (in either `--encoding`), no image is written, and a pixel outside the image is one line
 //! of error with exit status 2.

@@ -142,7 +142,7 @@ pub struct State {
     pub options: Options,
     /// The binary's own chapter: the highest chapter the keys reach.
     pub max_chapter: Chapter,
-    /// Samples per pixel at chapter 5 (earlier chapters take one).
+    /// Samples per pixel from [`TRACING_FROM`] on (earlier chapters take one).
     pub samples: u32,
     /// The camera as the scene file last said it (a reload keeps the moved camera unless the
     /// file's camera changed).
