@@ -1,15 +1,11 @@
-//! The command line every chapter binary shares.
+//! The command line every chapter binary shares: [`main`] builds a chapter's command line from
+//! the chapter alone ([`command`]), reads it, and renders.
 //!
-//! ```text
-//! chNN [SCENE] [-o OUT.png] [--width W] [--height H]      every chapter
-//!      [--encoding srgb|linear] [--quiet] [--window]       every chapter
-//!      [--view color|flat|normals|depth|shadows|rays]      chapters 2–5
-//!      [--inspect X,Y [--json]]                            chapters 2–5
-//!      [--accel none|boxes|extents|octree|bvh] [--no-packets]   chapters 2–5
-//!      [--samples N] [--max-depth N] [--stats]             chapter 5
-//!      [--numerics textbook|robust]                        chapters 4–5
-//!      [--offset fixed|scaled|error-bound]                 chapters 4–5
-//! ```
+//! Every binary takes [`Common`]; the other groups come with the chapter that first needs
+//! them: [`Objects`] from [`OBJECTS_FROM`] (objects to view, find and inspect), [`Accuracy`]
+//! from [`ACCURACY_FROM`] (secondary rays leave surfaces), [`Tracing`] from [`TRACING_FROM`]
+//! (recursion and supersampling). Each binary's arguments, as README.md and each chapter's
+//! README list them, are written from [`command`] (`tests/docs.rs` compares them).
 //!
 //! Without SCENE the embedded default scene `scenes/showcase.toml` is rendered. The PNG is
 //! sRGB-encoded, as viewers expect; `--encoding linear` writes the linear intensities as bytes
@@ -30,8 +26,8 @@ use std::process::ExitCode;
 use std::sync::atomic::{AtomicBool, Ordering};
 use std::time::{Duration, Instant};
 
-use clap::Args;
 use clap::builder::PossibleValue;
+use clap::{Args, FromArgMatches};
 
 use whitted::accel::Accel;
 /// The one line of an exercise not written yet (it lives in [`whitted::error`], where the live
@@ -103,11 +99,11 @@ macro_rules! choice {
 
 choice!(Numerics {
     Numerics::Textbook => "the notes' formulas as printed",
-    Numerics::Robust => "cancellation-free roots and discriminants (default)",
+    Numerics::Robust => "cancellation-free roots and discriminants",
 });
 
 choice!(View {
-    View::Color => "the chapter's colour (default)",
+    View::Color => "the chapter's colour",
     View::Flat => "the material's diffuse colour, unlit",
     View::Normals => "the normal facing the camera, (n + 1)/2",
     View::Depth => "the distance to the nearest hit, near = white, far = grey (scale 1/d)",
@@ -120,22 +116,22 @@ choice!(Accel {
     Accel::Boxes => "a bounding box per object",
     Accel::Extents => "boxes, and projection extents for camera rays",
     Accel::Octree => "cubes subdivided until each holds at most 8 objects",
-    Accel::Bvh => "a bounding volume hierarchy, binned SAH (default)",
+    Accel::Bvh => "a bounding volume hierarchy, binned SAH",
 });
 
 choice!(OffsetKind {
     OffsetKind::Fixed => "accept hits only for t > 1e-4 (world units): the classic",
     OffsetKind::Scaled => "move the origin by 1e-4·max(1, |P|) along the normal",
-    OffsetKind::ErrorBound => "move the origin by a bound on the hit point's rounding error (default)",
+    OffsetKind::ErrorBound => "move the origin by a bound on the hit point's rounding error",
 });
 
 choice!(Encoding {
-    Encoding::Srgb => "encode for screens and image viewers (default)",
+    Encoding::Srgb => "encode for screens and image viewers",
     Encoding::Linear => "the linear intensities as bytes, 0.5 → 128",
 });
 
 choice!(Layout {
-    Layout::Field => "constant size and density over a square of side 2√N (default)",
+    Layout::Field => "constant size and density over a square of side 2√N",
     Layout::Fog => "a fixed square; the radius shrinks as 1/√N",
 });
 
@@ -153,27 +149,42 @@ pub struct Common {
     /// Image height in pixels; alone, the width follows the scene's aspect ratio.
     #[arg(long, value_name = "H", value_parser = clap::value_parser!(u32).range(1..=MAX_SIDE as i64))]
     pub height: Option<u32>,
-    /// How the PNG's bytes encode the linear intensities: sRGB, as screens and viewers expect,
-    /// or the intensities themselves (clamped, times 255). `--inspect` prints the same bytes.
+    /// How the PNG's bytes encode the linear intensities (`--inspect` prints the same bytes).
     #[arg(long, value_parser = choice::<Encoding>(), default_value = Encoding::default().name())]
     pub encoding: Encoding,
     /// No progress bar and no statistics line (errors and warnings are still printed).
     #[arg(short, long)]
     pub quiet: bool,
-    /// Open a live window instead of writing a file: the image refines coarse to fine, keys
-    /// move the camera (WASD, Q/E, arrows) and switch chapter (1-5), view (V) and depth (+/-),
-    /// a click prints and draws the pixel's ray tree, P saves the PNG (to -o), R or saving the
-    /// scene file reloads it, H lists the keys, Esc quits. Without --width/--height the image
-    /// is the scene's size, shrunk to fit 1280×960.
-    #[arg(long)]
+    /// Open a live window instead of writing a file; its help, with the keys, is
+    /// [`window_help`].
+    #[arg(long, help = window_help(false), long_help = window_help(true))]
     pub window: bool,
 }
 
-/// The view switch of chapters 2–5.
+/// The help of `--window`, with the keys from the window's keymap
+/// ([`crate::window::keys`]): in one line (`-h`), or a key a line (`--help`).
+#[must_use]
+pub fn window_help(long: bool) -> String {
+    let what = "Open a live window instead of writing a file: the image refines coarse to fine";
+    if long {
+        format!(
+            "{what}. Without --width/--height the image is the scene's size, shrunk to fit {}×{}. \
+             Its keys (H in the window prints them too):\n{}",
+            WINDOW_FIT.0,
+            WINDOW_FIT.1,
+            crate::window::keys::lines()
+        )
+    } else {
+        format!("{what}; keys: {}", crate::window::keys::summary())
+    }
+}
+
+/// The switches of the chapters that trace objects: what a pixel shows, how the
+/// nearest hit is searched for, and one pixel's ray tree.
 #[derive(Args, Debug, Clone)]
-pub struct ViewArg {
-    /// What each pixel shows: the chapter's colour, the flat material colour, normals, or depth.
-    #[arg(long, value_parser = choice::<View>(), default_value = View::Color.name())]
+pub struct Objects {
+    /// What each pixel shows.
+    #[arg(long, value_parser = choice::<View>(), default_value = View::default().name())]
     pub view: View,
     /// How ray queries are accelerated (notes: "Computational Aspects"); the image is the same
     /// with every choice, only the time changes.
@@ -201,7 +212,7 @@ fn parse_pixel(text: &str) -> Result<(u32, u32), String> {
     Ok((x, y))
 }
 
-/// Chapter 5's tracing controls.
+/// The tracing controls of the chapter with recursion: samples a pixel and depth.
 #[derive(Args, Debug, Clone)]
 pub struct Tracing {
     /// Samples per pixel (jittered from a fixed seed: the same image every run) [default: the scene's, else 1].
@@ -216,25 +227,106 @@ pub struct Tracing {
     pub stats: bool,
 }
 
-/// The accuracy switches of chapters 4 and 5: which intersection formulas, and how secondary
-/// rays leave a surface (see [`whitted::shapes::quadratic`] and [`whitted::offset`]).
+/// The accuracy switches of the chapters with secondary rays: which intersection formulas, and
+/// how secondary rays leave a surface (see [`whitted::shapes::quadratic`] and [`whitted::offset`]).
 #[derive(Args, Debug, Clone)]
 pub struct Accuracy {
-    /// Intersection formulas: the notes' as printed (textbook) or cancellation-free (robust).
-    #[arg(long, alias = "formula", value_parser = choice::<Numerics>(), default_value = Numerics::Robust.name())]
+    /// Which intersection formulas.
+    #[arg(long, alias = "formula", value_parser = choice::<Numerics>(), default_value = Numerics::default().name())]
     pub numerics: Numerics,
-    /// How feeler, mirror and transmitted rays leave a surface: a fixed ε = 1e-4, an ε scaled
-    /// by the hit point's magnitude, or a bound on the hit point's rounding error.
-    #[arg(long, value_parser = choice::<OffsetKind>(), default_value = OffsetKind::ErrorBound.name())]
+    /// How feeler, mirror and transmitted rays leave a surface.
+    #[arg(long, value_parser = choice::<OffsetKind>(), default_value = OffsetKind::default().name())]
     pub offset: OffsetKind,
 }
 
-/// Parses the command line. `--help` and `--version` print and exit 0; any other problem is
-/// printed as one line `error: …` (clap's own first line, with the list that follows it when
-/// it ends in a colon, such as the arguments missing) with exit status 2.
+/// The chapter from which the binaries offer [`Objects`]: the first that traces objects.
+pub const OBJECTS_FROM: Chapter = Chapter::GenericObjects;
+/// The chapter from which the binaries offer [`Accuracy`]: the first with secondary rays.
+pub const ACCURACY_FROM: Chapter = Chapter::Shadows;
+/// The chapter from which the binaries offer [`Tracing`]: the first with recursion.
+pub const TRACING_FROM: Chapter = Chapter::ReflectionRefraction;
+
+/// What a chapter's binary was given: [`Common`], and each other group if the chapter offers
+/// it.
+#[derive(Debug, Clone)]
+pub struct ChapterArgs {
+    /// Every chapter's arguments.
+    pub common: Common,
+    /// From [`OBJECTS_FROM`] on.
+    pub objects: Option<Objects>,
+    /// From [`ACCURACY_FROM`] on.
+    pub accuracy: Option<Accuracy>,
+    /// From [`TRACING_FROM`] on.
+    pub tracing: Option<Tracing>,
+}
+
+impl ChapterArgs {
+    /// Reads the groups `chapter` offers from what [`command`] parsed.
+    pub fn from_matches(chapter: Chapter, m: &clap::ArgMatches) -> Result<Self, clap::Error> {
+        Ok(Self {
+            common: Common::from_arg_matches(m)?,
+            objects: group(chapter, OBJECTS_FROM, m)?,
+            accuracy: group(chapter, ACCURACY_FROM, m)?,
+            tracing: group(chapter, TRACING_FROM, m)?,
+        })
+    }
+}
+
+/// Group `G`, offered from chapter `from`, as `chapter`'s binary was given it.
+fn group<G: clap::FromArgMatches>(
+    chapter: Chapter,
+    from: Chapter,
+    m: &clap::ArgMatches,
+) -> Result<Option<G>, clap::Error> {
+    (chapter >= from)
+        .then(|| G::from_arg_matches(m))
+        .transpose()
+}
+
+/// The command line of `chapter`'s binary: named after the chapter's binary, described as
+/// "Chapter N of whitted, TITLE: `about`", with the argument groups the chapter offers.
+#[must_use]
+pub fn command(chapter: Chapter, about: &str) -> clap::Command {
+    let offer = |cmd, from, add: fn(clap::Command) -> clap::Command| {
+        if chapter >= from { add(cmd) } else { cmd }
+    };
+    let entry = chapter.about();
+    let cmd = clap::Command::new(entry.binary).version(env!("CARGO_PKG_VERSION"));
+    let cmd = Common::augment_args(cmd);
+    let cmd = offer(cmd, OBJECTS_FROM, Objects::augment_args);
+    let cmd = offer(cmd, ACCURACY_FROM, Accuracy::augment_args);
+    // after the groups: each sets the command's description to its own
+    offer(cmd, TRACING_FROM, Tracing::augment_args)
+        .about(format!(
+            "Chapter {} of whitted, {}: {about}",
+            entry.number, entry.title
+        ))
+        .long_about(None)
+}
+
+/// A chapter binary's whole program: reads its command line ([`command`]) and runs it
+/// ([`run`]); returns the exit status.
+#[must_use]
+pub fn main(chapter: Chapter, about: &str) -> ExitCode {
+    let parsed = command(chapter, about)
+        .try_get_matches()
+        .and_then(|m| ChapterArgs::from_matches(chapter, &m));
+    run(chapter, &parsed_or_exit(parsed))
+}
+
+/// Parses the command line of a program built with clap's derive (the chapter binaries use
+/// [`main`]). `--help`, `--version` and errors as [`parsed_or_exit`] says.
 #[must_use]
 pub fn parse_args<T: clap::Parser>() -> T {
-    match T::try_parse() {
+    parsed_or_exit(T::try_parse())
+}
+
+/// The parsed command line, or the exit: `--help` and `--version` print and exit 0; any other
+/// problem is printed as one line `error: …` (clap's own first line, with the list that
+/// follows it when it ends in a colon, such as the arguments missing) with exit status 2.
+#[must_use]
+pub fn parsed_or_exit<T>(parsed: Result<T, clap::Error>) -> T {
+    match parsed {
         Ok(args) => args,
         Err(e) if !e.use_stderr() => {
             // --help, --version: not errors
@@ -300,18 +392,11 @@ pub fn fit(width: u32, height: u32, bound: (u32, u32)) -> (u32, u32) {
     (side(width), side(height))
 }
 
-/// Runs a chapter: read, render, write. Each chapter passes the argument groups it has
-/// (`None` for the others). Returns the exit status (0, or 2 after printing the error).
-pub fn run(
-    binary: &str,
-    chapter: Chapter,
-    common: &Common,
-    view: Option<&ViewArg>,
-    tracing: Option<&Tracing>,
-    accuracy: Option<&Accuracy>,
-) -> ExitCode {
+/// Runs a chapter: read, render, write (or inspect, or open the window). Returns the exit
+/// status (0, or 2 after printing the error).
+pub fn run(chapter: Chapter, args: &ChapterArgs) -> ExitCode {
     quiet_missing_exercises();
-    let run = || run_inner(binary, chapter, common, view, tracing, accuracy);
+    let run = || run_inner(chapter, args);
     match std::panic::catch_unwind(std::panic::AssertUnwindSafe(run)) {
         Ok(Ok(())) => ExitCode::SUCCESS,
         Ok(Err(e)) => {
@@ -339,15 +424,14 @@ fn quiet_missing_exercises() {
     }));
 }
 
-fn run_inner(
-    binary: &str,
-    chapter: Chapter,
-    common: &Common,
-    view: Option<&ViewArg>,
-    tracing: Option<&Tracing>,
-    accuracy: Option<&Accuracy>,
-) -> Result<(), Error> {
-    let inspect = view.and_then(|v| v.inspect);
+fn run_inner(chapter: Chapter, args: &ChapterArgs) -> Result<(), Error> {
+    let ChapterArgs {
+        common,
+        objects,
+        accuracy,
+        tracing,
+    } = args;
+    let inspect = objects.as_ref().and_then(|o| o.inspect);
     if common.window && inspect.is_some() {
         return Err(Error::Usage(
             "--window and --inspect do not go together: click a pixel in the window to inspect it"
@@ -357,7 +441,7 @@ fn run_inner(
     let out = common
         .output
         .clone()
-        .unwrap_or_else(|| PathBuf::from(format!("{binary}.png")));
+        .unwrap_or_else(|| PathBuf::from(format!("{}.png", chapter.about().binary)));
     if inspect.is_none() {
         output::check_destination(&out)?;
     }
@@ -367,10 +451,10 @@ fn run_inner(
     }
     let mut options = Options::for_scene(&scene, chapter);
     (options.width, options.height) = image_size(&scene, common.width, common.height);
-    if let Some(v) = view {
-        options.view = v.view;
-        options.accel = v.accel;
-        options.packets = !v.no_packets;
+    if let Some(o) = objects {
+        options.view = o.view;
+        options.accel = o.accel;
+        options.packets = !o.no_packets;
     }
     if let Some(t) = tracing {
         options.samples = t.samples.unwrap_or(options.samples);
@@ -380,8 +464,8 @@ fn run_inner(
         options.numerics = a.numerics;
         options.offset = a.offset.offset();
     }
-    if let (Some(pixel), Some(v)) = (inspect, view) {
-        return print_tree(&scene, &options, pixel, common.encoding, v.json);
+    if let (Some(pixel), Some(o)) = (inspect, objects) {
+        return print_tree(&scene, &options, pixel, common.encoding, o.json);
     }
     if common.window {
         if common.width.is_none() && common.height.is_none() {
@@ -389,7 +473,6 @@ fn run_inner(
         }
         render::check_size(options.width, options.height)?;
         return crate::window::run(crate::window::Setup {
-            binary: binary.to_string(),
             scene_path: common.scene.clone(),
             scene,
             options,
@@ -412,7 +495,7 @@ fn run_inner(
     output::save(&fb, &out, common.encoding)?;
     if !common.quiet {
         eprintln!("wrote {} ({}×{})", out.display(), fb.width, fb.height);
-        if tracing.is_some_and(|t| t.stats) {
+        if tracing.as_ref().is_some_and(|t| t.stats) {
             eprintln!(
                 "{} sample(s)/px, depth {}, {} thread(s), {} mirror rays by total internal reflection; {}",
                 options.samples,

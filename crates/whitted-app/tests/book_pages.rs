@@ -1,31 +1,16 @@
 //! The pixel each chapter page of the course book inspects ("One pixel, inspected") is what the
 //! chapter binary prints for it today, so the book cannot drift from the code.
 
-use std::path::{Path, PathBuf};
+mod common;
 
-/// The workspace's root: this crate sits in `crates/whitted-app`.
-fn root() -> PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR"))
-        .ancestors()
-        .nth(2)
-        .expect("the crate sits two levels below the workspace's root")
-        .to_path_buf()
-}
+use common::root;
+use whitted::render::Chapter;
+use whitted_app::cli::OBJECTS_FROM;
 
-/// The course book's page of chapter `n` (`docs/src/ch0N-….md`).
-fn page(n: u8) -> String {
-    let dir = root().join("docs/src");
-    let path = std::fs::read_dir(&dir)
-        .unwrap()
-        .map(|e| e.unwrap().path())
-        .find(|p| {
-            p.file_name()
-                .unwrap()
-                .to_string_lossy()
-                .starts_with(&format!("ch0{n}-"))
-        })
-        .unwrap_or_else(|| panic!("no page docs/src/ch0{n}-*"));
-    std::fs::read_to_string(path).unwrap()
+/// The course book's page of `chapter`.
+fn page(chapter: Chapter) -> String {
+    let path = root().join(chapter.about().page());
+    std::fs::read_to_string(&path).unwrap_or_else(|e| panic!("{}: {e}", path.display()))
 }
 
 /// The text of the section `## title` (up to the next `## `).
@@ -38,20 +23,6 @@ fn section<'a>(text: &'a str, title: &str) -> Option<&'a str> {
     })
 }
 
-/// The chapter binaries, by name.
-const BINARIES: [(&str, &str); 4] = [
-    (
-        "ch02_generic_objects",
-        env!("CARGO_BIN_EXE_ch02_generic_objects"),
-    ),
-    ("ch03_shading", env!("CARGO_BIN_EXE_ch03_shading")),
-    ("ch04_shadows", env!("CARGO_BIN_EXE_ch04_shadows")),
-    (
-        "ch05_reflection_refraction",
-        env!("CARGO_BIN_EXE_ch05_reflection_refraction"),
-    ),
-];
-
 /// The text with every digit replaced by `#` (f32 prints other last digits than f64).
 fn digits_masked(text: &str) -> String {
     text.chars()
@@ -59,13 +30,14 @@ fn digits_masked(text: &str) -> String {
         .collect()
 }
 
-/// Chapters 2–5 show one inspected pixel of their scene: the command on the book's page, run
+/// The chapters that trace objects show one inspected pixel of their scene: the command on the book's page, run
 /// now, prints exactly the tree the page shows (in an f32 build, the same lines with other
 /// digits), so the book cannot drift from the code.
 #[test]
 fn the_inspected_pixel_on_each_chapter_page_is_what_the_binary_prints() {
-    for n in 2..=5u8 {
-        let text = page(n);
+    for chapter in Chapter::ALL.into_iter().filter(|&c| c >= OBJECTS_FROM) {
+        let n = chapter.number();
+        let text = page(chapter);
         let body = section(&text, "One pixel, inspected")
             .unwrap_or_else(|| panic!("chapter {n}'s book page has no \"One pixel, inspected\""));
         let block = body
@@ -78,11 +50,11 @@ fn the_inspected_pixel_on_each_chapter_page_is_what_the_binary_prints() {
             .strip_prefix("$ cargo run --release --bin ")
             .and_then(|c| c.split_once(" -- "))
             .unwrap_or_else(|| panic!("chapter {n}: `{command}` is not a cargo run line"));
-        let exe = BINARIES
-            .iter()
-            .find(|(name, _)| *name == bin)
-            .unwrap_or_else(|| panic!("chapter {n}: no binary {bin}"))
-            .1;
+        assert!(
+            Chapter::ALL.iter().any(|c| c.about().binary == bin),
+            "chapter {n}: no chapter's binary is named {bin}"
+        );
+        let exe = common::exe_named(bin);
         assert!(args.contains("--inspect"), "{command}");
         let out = std::process::Command::new(exe)
             .args(args.split_whitespace())

@@ -2,24 +2,13 @@
 //! flags give one line `error: file:line:col: …` with exit status 2 and no panic, and nothing
 //! is written (or overwritten) when a run fails.
 
-use std::path::{Path, PathBuf};
-use std::process::{Command, Output};
+mod common;
 
-const CHAPTERS: [&str; 5] = [
-    env!("CARGO_BIN_EXE_ch01_camera_rays"),
-    env!("CARGO_BIN_EXE_ch02_generic_objects"),
-    env!("CARGO_BIN_EXE_ch03_shading"),
-    env!("CARGO_BIN_EXE_ch04_shadows"),
-    env!("CARGO_BIN_EXE_ch05_reflection_refraction"),
-];
+use std::path::Path;
+use std::process::Output;
 
-fn run(bin: &str, args: &[&str], dir: &Path) -> Output {
-    Command::new(bin)
-        .args(args)
-        .current_dir(dir)
-        .output()
-        .expect("binary runs")
-}
+use common::{exe, run};
+use whitted::render::Chapter;
 
 fn stderr(o: &Output) -> String {
     String::from_utf8_lossy(&o.stderr).into_owned()
@@ -31,21 +20,20 @@ fn png_size(path: &Path) -> (u32, u32) {
 }
 
 /// Every chapter renders the embedded showcase without arguments but a size, to its default
-/// output name, as a PNG of the requested size.
+/// output name (its binary's), as a PNG of the requested size.
 #[test]
 fn every_chapter_renders_the_default_scene() {
     let dir = tempfile::tempdir().unwrap();
-    for bin in CHAPTERS {
-        let o = run(bin, &["--width", "64", "--height", "48"], dir.path());
-        assert!(o.status.success(), "{bin}: {}", stderr(&o));
-        let name = Path::new(bin)
-            .file_name()
-            .unwrap()
-            .to_str()
-            .unwrap()
-            .trim_end_matches(".exe");
-        let out: PathBuf = dir.path().join(format!("{name}.png"));
-        assert_eq!(png_size(&out), (64, 48), "{bin}");
+    for chapter in Chapter::ALL {
+        let name = chapter.about().binary;
+        let o = run(
+            &exe(chapter),
+            &["--width", "64", "--height", "48"],
+            dir.path(),
+        );
+        assert!(o.status.success(), "{name}: {}", stderr(&o));
+        let out = dir.path().join(format!("{name}.png"));
+        assert_eq!(png_size(&out), (64, 48), "{name}");
     }
     // nothing but the images is left behind (no temporary files)
     let mut names: Vec<String> = std::fs::read_dir(dir.path())
@@ -53,7 +41,7 @@ fn every_chapter_renders_the_default_scene() {
         .map(|e| e.unwrap().file_name().into_string().unwrap())
         .collect();
     names.sort();
-    assert_eq!(names.len(), 5, "{names:?}");
+    assert_eq!(names.len(), Chapter::ALL.len(), "{names:?}");
     assert!(
         names
             .iter()
@@ -66,15 +54,27 @@ fn every_chapter_renders_the_default_scene() {
 #[test]
 fn width_alone_keeps_the_aspect_ratio() {
     let dir = tempfile::tempdir().unwrap();
-    let o = run(CHAPTERS[1], &["--width", "80", "-o", "a.png"], dir.path());
+    let o = run(
+        &exe(Chapter::GenericObjects),
+        &["--width", "80", "-o", "a.png"],
+        dir.path(),
+    );
     assert!(o.status.success(), "{}", stderr(&o));
     assert_eq!(png_size(&dir.path().join("a.png")), (80, 60));
 }
 
-/// Each chapter scene in scenes/ renders with its chapter.
+/// Every scene in scenes/ loads, and each chapter has its own there.
 #[test]
 fn every_scene_file_loads() {
-    let scenes = Path::new(concat!(env!("CARGO_MANIFEST_DIR"), "/../..")).join("scenes");
+    for chapter in Chapter::ALL {
+        let path = common::scene(chapter);
+        assert!(
+            path.is_file(),
+            "chapter {chapter:?} has no scene {}",
+            path.display()
+        );
+    }
+    let scenes = common::root().join("scenes");
     let mut count = 0;
     for entry in std::fs::read_dir(&scenes).unwrap() {
         let path = entry.unwrap().path();
@@ -84,7 +84,8 @@ fn every_scene_file_loads() {
             count += 1;
         }
     }
-    assert!(count >= 1);
+    // the showcase and one a chapter at least
+    assert!(count > Chapter::ALL.len(), "{count} scenes");
 }
 
 /// A malformed scene: exit status 2, one line `error: bad.toml:LINE:COL: …` containing what
@@ -94,9 +95,10 @@ fn assert_scene_error(text: &str, line: usize, col: Option<usize>, needle: &str)
     let dir = tempfile::tempdir().unwrap();
     std::fs::write(dir.path().join("bad.toml"), text).unwrap();
     std::fs::write(dir.path().join("out.png"), b"previous image").unwrap();
-    for bin in [CHAPTERS[1], CHAPTERS[4]] {
+    for chapter in [Chapter::GenericObjects, Chapter::ReflectionRefraction] {
+        let bin = chapter.about().binary;
         let o = run(
-            bin,
+            &exe(chapter),
             &["bad.toml", "-o", "out.png", "--width", "16"],
             dir.path(),
         );
@@ -315,7 +317,7 @@ fn bad_flags_and_paths_exit_with_status_2() {
         (&["--view", "sideways"], "sideways"),
     ];
     for (args, needle) in cases {
-        let o = run(CHAPTERS[1], args, dir.path());
+        let o = run(&exe(Chapter::GenericObjects), args, dir.path());
         let err = stderr(&o);
         assert_eq!(o.status.code(), Some(2), "{args:?}: {err}");
         assert_eq!(err.lines().count(), 1, "{args:?}: {err}");
@@ -335,7 +337,7 @@ fn bad_flags_and_paths_exit_with_status_2() {
 #[test]
 fn help_explains_and_exits_zero() {
     let dir = tempfile::tempdir().unwrap();
-    let o = run(CHAPTERS[4], &["--help"], dir.path());
+    let o = run(&exe(Chapter::ReflectionRefraction), &["--help"], dir.path());
     assert_eq!(o.status.code(), Some(0));
     let text = String::from_utf8_lossy(&o.stdout);
     for flag in [
@@ -361,7 +363,7 @@ fn over_unity_material_warns_but_renders() {
     )
     .unwrap();
     let o = run(
-        CHAPTERS[2],
+        &exe(Chapter::Shading),
         &["s.toml", "-o", "s.png", "--width", "16"],
         dir.path(),
     );
@@ -406,4 +408,39 @@ fn command_line_names_are_the_library_names() {
     check::<View>();
     check::<Encoding>();
     check::<Layout>();
+}
+
+/// The binaries are the syllabus's chapters and nothing else: one file `src/bin/NAME.rs` a
+/// chapter, named after the chapter's binary, which answers `--version` with that name (the
+/// name comes from the `Chapter` the file runs); `cargo run` alone runs the last chapter.
+#[test]
+fn the_binaries_are_the_syllabus_chapters() {
+    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("src/bin");
+    let mut files: Vec<String> = std::fs::read_dir(&dir)
+        .unwrap()
+        .map(|e| e.unwrap().file_name().into_string().unwrap())
+        .collect();
+    files.sort();
+    let expected: Vec<String> = Chapter::ALL
+        .iter()
+        .map(|c| format!("{}.rs", c.about().binary))
+        .collect();
+    assert_eq!(files, expected, "src/bin/ against the syllabus's binaries");
+    for chapter in Chapter::ALL {
+        let name = chapter.about().binary;
+        let o = run(&common::exe_named(name), &["--version"], &dir);
+        let said = String::from_utf8_lossy(&o.stdout);
+        assert_eq!(
+            said.split_whitespace().next(),
+            Some(name),
+            "src/bin/{name}.rs runs another chapter: its --version says {said:?}"
+        );
+    }
+    let manifest =
+        std::fs::read_to_string(Path::new(env!("CARGO_MANIFEST_DIR")).join("Cargo.toml")).unwrap();
+    let last = Chapter::ALL[Chapter::ALL.len() - 1].about().binary;
+    assert!(
+        manifest.contains(&format!("default-run = \"{last}\"")),
+        "crates/whitted-app/Cargo.toml: default-run should be the last chapter, {last}"
+    );
 }

@@ -11,8 +11,10 @@
 //! sides, and over dense sweeps. Run in each precision (`--features f32`), they check that
 //! precision's table against that precision's formula.
 
-use std::path::{Path, PathBuf};
-use std::process::{Command, Output};
+mod common;
+
+use std::path::Path;
+use std::process::Output;
 
 use whitted::output::{Encoding, to_byte, to_rgb8};
 use whitted::real::Real;
@@ -20,7 +22,7 @@ use whitted::render::{Chapter, Framebuffer, Options, render};
 
 /// The sRGB byte by the formula, written out here as the module docs write it (the same
 /// operations in the same order as the library's definition).
-fn numerics(x: Real) -> u8 {
+fn by_formula(x: Real) -> u8 {
     if x.is_nan() {
         return 0;
     }
@@ -50,7 +52,7 @@ fn steps() -> Vec<Real> {
             let (mut lo, mut hi) = (Real::to_bits(0.0), Real::to_bits(1.0));
             while hi - lo > 1 {
                 let mid = lo + (hi - lo) / 2;
-                if numerics(Real::from_bits(mid)) > k {
+                if by_formula(Real::from_bits(mid)) > k {
                     hi = mid;
                 } else {
                     lo = mid;
@@ -126,8 +128,8 @@ fn the_fast_srgb_byte_is_the_formulas_byte_everywhere() {
     let mut values: Vec<Real> = Vec::new();
     for (k, &t) in steps.iter().enumerate() {
         // the formula steps up exactly there
-        assert_eq!(usize::from(numerics(t)), k + 1, "step {k} at {t}");
-        assert_eq!(usize::from(numerics(next_down(t))), k, "step {k} at {t}");
+        assert_eq!(usize::from(by_formula(t)), k + 1, "step {k} at {t}");
+        assert_eq!(usize::from(by_formula(next_down(t))), k, "step {k} at {t}");
         let mut below = t;
         let mut above = t;
         values.push(t);
@@ -163,7 +165,7 @@ fn the_fast_srgb_byte_is_the_formulas_byte_everywhere() {
     ]);
     let mut wrong = Vec::new();
     for &x in &values {
-        let (fast, slow) = (Encoding::Srgb.byte(x), numerics(x));
+        let (fast, slow) = (Encoding::Srgb.byte(x), by_formula(x));
         if fast != slow {
             wrong.push(format!("{x:e} (bits {:x}): {fast} ≠ {slow}", x.to_bits()));
         }
@@ -190,24 +192,21 @@ fn the_srgb_byte_is_never_darker_than_the_linear_byte() {
 
 // ---- the command line -------------------------------------------------------------------
 
-const CH03: &str = env!("CARGO_BIN_EXE_ch03_shading");
+/// The chapter whose binary these tests run: the first that shades.
+const SHADING: Chapter = Chapter::Shading;
 
 fn run(args: &[&str], dir: &Path) -> Output {
-    Command::new(CH03)
-        .args(args)
-        .current_dir(dir)
-        .output()
-        .expect("binary runs")
+    common::run(&common::exe(SHADING), args, dir)
 }
 
-fn scene_path() -> PathBuf {
-    Path::new(concat!(env!("CARGO_MANIFEST_DIR"), "/../..")).join("scenes/ch03_shading.toml")
+fn scene_path() -> std::path::PathBuf {
+    common::scene(SHADING)
 }
 
 /// Chapter 3's scene at 64 pixels wide, rendered by the library as the binary renders it.
 fn framebuffer() -> Framebuffer {
     let scene = whitted::scene::load(&scene_path()).unwrap();
-    let mut options = Options::for_scene(&scene, Chapter::Shading);
+    let mut options = Options::for_scene(&scene, SHADING);
     (options.width, options.height) = whitted_app::cli::image_size(&scene, Some(64), None);
     render(&scene, &options).0
 }

@@ -1,47 +1,19 @@
-//! `--inspect X,Y [--json]` on chapters 2–5, as a student runs it: the tree printed for a
+//! `--inspect X,Y [--json]` on the chapters that trace objects, as a student runs it: the tree printed for a
 //! pixel of each chapter's scene has the colour and the bytes of that pixel in the `-o` render
 //! (in either `--encoding`), no image is written, and a pixel outside the image is one line
 //! of error with exit status 2.
 
-use std::path::Path;
-use std::process::{Command, Output};
+mod common;
 
+use common::{exe, run};
 use whitted::output::Encoding;
 use whitted::real::Real;
+use whitted::render::Chapter;
+use whitted_app::cli::OBJECTS_FROM;
 
-/// Chapters 2–5 and their scenes.
-const CHAPTERS: [(&str, &str); 4] = [
-    (
-        env!("CARGO_BIN_EXE_ch02_generic_objects"),
-        "scenes/ch02_generic_objects.toml",
-    ),
-    (
-        env!("CARGO_BIN_EXE_ch03_shading"),
-        "scenes/ch03_shading.toml",
-    ),
-    (
-        env!("CARGO_BIN_EXE_ch04_shadows"),
-        "scenes/ch04_shadows.toml",
-    ),
-    (
-        env!("CARGO_BIN_EXE_ch05_reflection_refraction"),
-        "scenes/ch05_reflection_refraction.toml",
-    ),
-];
-
-fn run(bin: &str, args: &[&str], dir: &Path) -> Output {
-    Command::new(bin)
-        .args(args)
-        .current_dir(dir)
-        .output()
-        .expect("binary runs")
-}
-
-fn scene_path(rel: &str) -> String {
-    Path::new(concat!(env!("CARGO_MANIFEST_DIR"), "/../.."))
-        .join(rel)
-        .display()
-        .to_string()
+/// The chapters that offer `--inspect`.
+fn inspecting() -> impl Iterator<Item = Chapter> {
+    Chapter::ALL.into_iter().filter(|&c| c >= OBJECTS_FROM)
 }
 
 /// For a few pixels of each chapter's scene, in the default sRGB encoding and with
@@ -57,8 +29,9 @@ fn the_inspected_colour_is_the_rendered_pixel_in_every_chapter() {
             Encoding::Srgb => &[],
             Encoding::Linear => &["--encoding", "linear"],
         };
-        for (n, (bin, scene)) in CHAPTERS.iter().enumerate() {
-            let scene = scene_path(scene);
+        for chapter in inspecting() {
+            let (bin, exe) = (chapter.about().binary, exe(chapter));
+            let scene = common::scene(chapter).display().to_string();
             let png = dir.path().join("out.png");
             let size = ["--width", "80"];
             let mut args = vec![
@@ -70,7 +43,7 @@ fn the_inspected_colour_is_the_rendered_pixel_in_every_chapter() {
             ];
             args.extend(flag);
             args.push("-q");
-            let o = run(bin, &args, dir.path());
+            let o = run(&exe, &args, dir.path());
             assert!(
                 o.status.success(),
                 "{bin}: {}",
@@ -86,7 +59,7 @@ fn the_inspected_colour_is_the_rendered_pixel_in_every_chapter() {
                     if json {
                         args.push("--json");
                     }
-                    let o = run(bin, &args, dir.path());
+                    let o = run(&exe, &args, dir.path());
                     assert!(
                         o.status.success(),
                         "{bin}: {}",
@@ -97,7 +70,7 @@ fn the_inspected_colour_is_the_rendered_pixel_in_every_chapter() {
                 let at = 3 * (y * w + x) as usize;
                 let png_bytes = [rgb[at], rgb[at + 1], rgb[at + 2]];
                 let v: serde_json::Value = serde_json::from_slice(&inspect(true)).expect("JSON");
-                assert_eq!(v["chapter"], n + 2);
+                assert_eq!(v["chapter"], chapter.number());
                 assert_eq!(v["pixel"], serde_json::json!([x, y]));
                 assert_eq!(v["encoding"], encoding.name());
                 let rgb: Vec<u8> = v["colour"]
@@ -111,7 +84,7 @@ fn the_inspected_colour_is_the_rendered_pixel_in_every_chapter() {
                 assert_eq!(v["bytes"], serde_json::json!(png_bytes), "{what}");
 
                 let text = String::from_utf8(inspect(false)).unwrap();
-                let head = format!("pixel ({x}, {y}), chapter {}", n + 2);
+                let head = format!("pixel ({x}, {y}), chapter {}", chapter.number());
                 assert!(text.starts_with(&head), "{text}");
                 let shown = format!("{png_bytes:?} in the {} PNG", shown_name(encoding));
                 assert!(text.lines().next().unwrap().contains(&shown), "{text}");
@@ -132,12 +105,12 @@ fn shown_name(encoding: Encoding) -> &'static str {
 }
 
 /// A pixel outside the image, a malformed X,Y, --json alone and --inspect with -o are each one
-/// line `error: …` with exit status 2; chapter 1 has no --inspect.
+/// line `error: …` with exit status 2; the chapters before objects have no --inspect.
 #[test]
 fn bad_inspect_requests_exit_with_status_2() {
     let dir = tempfile::tempdir().unwrap();
-    let ch05 = CHAPTERS[3].0;
-    let cases: [(&str, &[&str], &str); 6] = [
+    let ch05 = &exe(Chapter::ReflectionRefraction);
+    let cases: [(&std::path::Path, &[&str], &str); 6] = [
         (ch05, &["--inspect", "640,0"], "outside the 640×480 image"),
         (ch05, &["--inspect", "0,480"], "outside the 640×480 image"),
         (ch05, &["--inspect", "3x4"], "expected X,Y"),
@@ -160,10 +133,9 @@ fn bad_inspect_requests_exit_with_status_2() {
         );
         assert!(!err.contains("panicked"));
     }
-    let ch01 = env!("CARGO_BIN_EXE_ch01_camera_rays");
-    assert_eq!(
-        run(ch01, &["--inspect", "1,1"], dir.path()).status.code(),
-        Some(2)
-    );
+    for chapter in Chapter::ALL.into_iter().filter(|&c| c < OBJECTS_FROM) {
+        let o = run(&exe(chapter), &["--inspect", "1,1"], dir.path());
+        assert_eq!(o.status.code(), Some(2), "{chapter:?} took --inspect");
+    }
     assert!(std::fs::read_dir(dir.path()).unwrap().next().is_none());
 }

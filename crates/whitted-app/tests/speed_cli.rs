@@ -3,11 +3,12 @@
 
 use std::process::Command;
 
-const CH05: &str = env!("CARGO_BIN_EXE_ch05_reflection_refraction");
-const CH02: &str = env!("CARGO_BIN_EXE_ch02_generic_objects");
+mod common;
 
-fn run(bin: &str, args: &[&str]) -> (i32, String, String) {
-    let out = Command::new(bin)
+use whitted::render::Chapter;
+
+fn run(chapter: Chapter, args: &[&str]) -> (i32, String, String) {
+    let out = Command::new(common::exe(chapter))
         .args(args)
         .output()
         .expect("the binary runs");
@@ -25,7 +26,7 @@ fn an_oversized_image_is_refused_in_one_line_before_any_work() {
     let dir = tempfile::tempdir().unwrap();
     let out = dir.path().join("big.png");
     let (code, _, err) = run(
-        CH05,
+        Chapter::ReflectionRefraction,
         &[
             "-o",
             out.to_str().unwrap(),
@@ -62,14 +63,17 @@ fn every_accel_writes_the_same_png() {
             ];
             args.extend(packets);
             args.push("-q");
-            let (code, _, err) = run(CH05, &args);
+            let (code, _, err) = run(Chapter::ReflectionRefraction, &args);
             assert_eq!(code, 0, "{err}");
             images.push(std::fs::read(&out).unwrap());
         }
     }
     assert_eq!(images.len(), 10);
     assert!(images.iter().all(|i| *i == images[0]));
-    let (code, _, err) = run(CH02, &["-o", "/dev/null.png", "--accel", "kd-tree"]);
+    let (code, _, err) = run(
+        Chapter::GenericObjects,
+        &["-o", "/dev/null.png", "--accel", "kd-tree"],
+    );
     assert_eq!(code, 2, "{err}");
 }
 
@@ -78,9 +82,15 @@ fn every_accel_writes_the_same_png() {
 fn the_last_line_sums_up_the_render_unless_quiet() {
     let dir = tempfile::tempdir().unwrap();
     let out = dir.path().join("s.png");
-    let (code, _, err) = run(CH05, &["-o", out.to_str().unwrap(), "--width", "48", "-q"]);
+    let (code, _, err) = run(
+        Chapter::ReflectionRefraction,
+        &["-o", out.to_str().unwrap(), "--width", "48", "-q"],
+    );
     assert_eq!((code, err.as_str()), (0, ""));
-    let (code, _, err) = run(CH05, &["-o", out.to_str().unwrap(), "--width", "48"]);
+    let (code, _, err) = run(
+        Chapter::ReflectionRefraction,
+        &["-o", out.to_str().unwrap(), "--width", "48"],
+    );
     assert_eq!(code, 0);
     let last = err.lines().last().unwrap();
     assert!(last.starts_with("48×36: rays 1728 primary, "), "{last}");

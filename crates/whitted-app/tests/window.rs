@@ -2,6 +2,8 @@
 //! against the whole-image render, cancelling, the key bindings and what each key changes, the
 //! click-to-pixel mapping after a resize, reloading, and the ray-tree overlay's projection.
 
+mod common;
+
 use std::collections::HashSet;
 use std::sync::Arc;
 use std::sync::atomic::{AtomicUsize, Ordering};
@@ -26,12 +28,11 @@ use whitted::real::{Real, Vec3};
 use whitted::render::{self, Chapter, Finished, Options, Rect, Tracer, View};
 use whitted::scene::{CameraSettings, Scene};
 use whitted_app::window::canvas::Canvas;
+use whitted_app::window::keys::{self, Trigger, action_of};
 use whitted_app::window::overlay::{self, Mark, Overlay, Stroke};
 use whitted_app::window::progressive::{Update, Worker, render_pass};
 use whitted_app::window::schedule::{self, PASSES, STEPS};
-use whitted_app::window::state::{
-    Action, BINDINGS, Command, Input, Move, State, Turn, action_of, click_to_pixel,
-};
+use whitted_app::window::state::{Action, Command, Input, Move, State, Turn, click_to_pixel};
 
 /// Tolerance for positions computed in `Real`.
 const EPS: Real = if cfg!(feature = "f32") { 1e-4 } else { 1e-10 };
@@ -252,8 +253,9 @@ fn a_new_job_cancels_the_render_in_flight() {
 /// No key is bound twice, and every kind of action has a key.
 #[test]
 fn every_action_has_a_key_and_no_key_two_actions() {
-    let keys: HashSet<_> = BINDINGS.iter().map(|b| b.key as usize).collect();
-    assert_eq!(keys.len(), BINDINGS.len());
+    let bindings = keys::bindings();
+    let distinct: HashSet<_> = bindings.iter().map(|b| b.key as usize).collect();
+    assert_eq!(distinct.len(), bindings.len(), "a key is bound twice");
     let mut wanted = vec![
         Action::Depth(1),
         Action::Depth(-1),
@@ -276,9 +278,9 @@ fn every_action_has_a_key_and_no_key_two_actions() {
         .map(Action::Move),
     );
     wanted.extend([Turn::Left, Turn::Right, Turn::Up, Turn::Down].map(Action::Turn));
-    wanted.extend((1..=5).map(Action::Chapter));
+    wanted.extend(Chapter::ALL.map(Action::Chapter));
     for a in wanted {
-        assert!(BINDINGS.iter().any(|b| b.action == a), "{a:?} has no key");
+        assert!(bindings.iter().any(|b| b.action == a), "{a:?} has no key");
     }
 }
 
@@ -299,8 +301,9 @@ fn keys_are_bound_as_the_help_says() {
         (Key::Equal, Action::Depth(1)),
         (Key::NumPadPlus, Action::Depth(1)),
         (Key::Minus, Action::Depth(-1)),
-        (Key::Key1, Action::Chapter(1)),
-        (Key::Key5, Action::Chapter(5)),
+        (Key::Key1, Action::Chapter(Chapter::CameraRays)),
+        (Key::NumPad2, Action::Chapter(Chapter::GenericObjects)),
+        (Key::Key5, Action::Chapter(Chapter::ReflectionRefraction)),
         (Key::V, Action::NextView),
         (Key::C, Action::PrintCamera),
         (Key::P, Action::Save),
@@ -312,15 +315,125 @@ fn keys_are_bound_as_the_help_says() {
         assert_eq!(action_of(key), Some(action), "{key:?}");
     }
     assert_eq!(action_of(Key::Z), None);
+    assert_eq!(action_of(Key::Key6), None, "a digit past the last chapter");
     // moving and turning repeat while held; the rest act once per press
-    for b in BINDINGS {
-        assert_eq!(
-            b.repeat,
-            matches!(b.action, Action::Move(_) | Action::Turn(_)),
-            "{:?}",
-            b.key
+    let repeats = |key| action_of(key).map(Action::repeats);
+    assert_eq!(repeats(Key::W), Some(true));
+    assert_eq!(repeats(Key::Left), Some(true));
+    assert_eq!(repeats(Key::V), Some(false));
+    assert_eq!(repeats(Key::Minus), Some(false));
+}
+
+/// Chapter n's key is the digit n, on the main keyboard and the keypad, for every chapter.
+#[test]
+fn each_chapter_has_its_digit() {
+    let digits = [Key::Key1, Key::Key2, Key::Key3, Key::Key4, Key::Key5];
+    let keypad = [
+        Key::NumPad1,
+        Key::NumPad2,
+        Key::NumPad3,
+        Key::NumPad4,
+        Key::NumPad5,
+    ];
+    assert_eq!(Chapter::ALL.len(), digits.len());
+    for (i, chapter) in Chapter::ALL.into_iter().enumerate() {
+        assert_eq!(usize::from(chapter.number()), i + 1);
+        for key in [digits[i], keypad[i]] {
+            assert_eq!(action_of(key), Some(Action::Chapter(chapter)), "{key:?}");
+        }
+    }
+}
+
+/// The keymap's rows as the help writes them: each key under its label, named as it is
+/// printed on the keyboard.
+#[test]
+fn the_keymap_labels_name_the_keys() {
+    let labels: Vec<String> = keys::keymap().iter().map(keys::Row::label).collect();
+    assert_eq!(
+        labels,
+        [
+            "W A S D",
+            "Q E",
+            "← → ↑ ↓",
+            "+ −",
+            "1 … 5",
+            "V",
+            "C",
+            "P",
+            "R",
+            "H",
+            "Esc",
+            "left click"
+        ]
+    );
+    let views: Vec<&str> = View::ALL.iter().map(|v| v.name()).collect();
+    let keymap = keys::keymap();
+    let v = keymap
+        .iter()
+        .find(|r| matches!(&r.trigger, Trigger::Keys(b) if b.iter().any(|b| b.action == Action::NextView)))
+        .expect("a row for V");
+    assert!(
+        v.description.ends_with(&views.join(", ")),
+        "V lists the views: {}",
+        v.description
+    );
+    assert_eq!(
+        keys::keymap()
+            .iter()
+            .filter(|r| r.trigger == Trigger::LeftClick)
+            .count(),
+        1
+    );
+}
+
+/// `H`, `--window --help` and `--window -h` show every row of the keymap: its keys, and what
+/// they do (a sentence in the help and `--help`, a word or two in `-h`).
+#[test]
+fn the_help_texts_show_every_row_of_the_keymap() {
+    let help = keys::help();
+    let long = whitted_app::cli::window_help(true);
+    let short = whitted_app::cli::window_help(false);
+    for row in keys::keymap() {
+        let label = row.label();
+        for (name, text) in [("H", &help), ("--help", &long)] {
+            let line = text
+                .lines()
+                .find(|l| l.trim_start().starts_with(&label))
+                .unwrap_or_else(|| panic!("{name}: no line for {label}:\n{text}"));
+            assert!(
+                line.ends_with(&row.description),
+                "{name}: {label} should say {:?}, says {line:?}",
+                row.description
+            );
+        }
+        let entry = format!("{label} {}", row.short);
+        assert!(short.contains(&entry), "-h lacks {entry:?}: {short}");
+    }
+    assert!(help.starts_with("keys:\n"), "{help}");
+}
+
+/// What `H` prints after the keys: every stroke and mark of the ray tree's drawing, its look
+/// and its meaning; a dotted stroke is called dotted.
+#[test]
+fn the_help_explains_every_stroke_and_mark() {
+    let help = keys::help();
+    let legend: Vec<(&str, &str)> = Stroke::ALL
+        .iter()
+        .map(|s| s.legend())
+        .chain(Mark::ALL.iter().map(|m| m.legend()))
+        .collect();
+    for (look, meaning) in &legend {
+        assert!(
+            help.lines()
+                .any(|l| l.trim_start().starts_with(look) && l.ends_with(meaning)),
+            "H does not explain {look}: {help}"
         );
     }
+    for s in Stroke::ALL {
+        assert_eq!(s.legend().0.starts_with("dotted"), s.dotted(), "{s:?}");
+    }
+    let looks: HashSet<&str> = legend.iter().map(|l| l.0).collect();
+    assert_eq!(looks.len(), legend.len(), "two strokes or marks look alike");
 }
 
 fn state(chapter: Chapter) -> State {
@@ -406,22 +519,26 @@ fn turning_keeps_the_eye_and_stops_before_looking_straight_up() {
     assert!(angle >= 2.0 - 1e-3, "{angle}° from up");
 }
 
-/// 1–5 switch the chapter up to the binary's own, never past it; chapter 5 brings back the
-/// samples, earlier chapters take one.
+/// The chapter keys switch the chapter up to the binary's own, never past it; chapter 5
+/// brings back the samples, earlier chapters take one.
 #[test]
-fn stage_keys_stop_at_the_binarys_chapter() {
+fn chapter_keys_stop_at_the_binarys_chapter() {
     let mut s = state(Chapter::Shadows);
-    let cmds = s.handle(key(Action::Chapter(5)));
-    assert!(matches!(cmds.as_slice(), [Command::Print(m)] if m.contains("up to chapter 4")));
+    let cmds = s.handle(key(Action::Chapter(Chapter::ReflectionRefraction)));
+    assert!(
+        matches!(cmds.as_slice(), [Command::Print(m)] if m.contains("ch04_shadows goes up to chapter 4")),
+        "{cmds:?}"
+    );
     assert_eq!(s.options.chapter, Chapter::Shadows);
-    assert_eq!(s.handle(key(Action::Chapter(2))), [Command::Render]);
+    let ch2 = key(Action::Chapter(Chapter::GenericObjects));
+    assert_eq!(s.handle(ch2), [Command::Render]);
     assert_eq!(s.options.chapter, Chapter::GenericObjects);
-    assert_eq!(s.handle(key(Action::Chapter(2))), []);
+    assert_eq!(s.handle(key(Action::Chapter(Chapter::GenericObjects))), []);
     let mut s5 = state(Chapter::ReflectionRefraction);
     s5.samples = 4;
-    s5.handle(key(Action::Chapter(3)));
+    s5.handle(key(Action::Chapter(Chapter::Shading)));
     assert_eq!(s5.options.samples, 1);
-    s5.handle(key(Action::Chapter(5)));
+    s5.handle(key(Action::Chapter(Chapter::ReflectionRefraction)));
     assert_eq!(s5.options.samples, 4);
 }
 
@@ -652,7 +769,11 @@ fn the_overlay_of_a_shadowed_pixel_shows_the_blocked_feeler() {
 }
 
 /// Runs a chapter binary with `args` and the environment changed by `env`.
-fn run_binary(bin: &str, args: &[&str], env: &[(&str, Option<&str>)]) -> std::process::Output {
+fn run_binary(
+    bin: &std::path::Path,
+    args: &[&str],
+    env: &[(&str, Option<&str>)],
+) -> std::process::Output {
     let mut cmd = std::process::Command::new(bin);
     cmd.args(args).current_dir(std::env::temp_dir());
     for (k, v) in env {
@@ -664,21 +785,14 @@ fn run_binary(bin: &str, args: &[&str], env: &[(&str, Option<&str>)]) -> std::pr
     cmd.output().unwrap()
 }
 
-const BINARIES: [&str; 5] = [
-    env!("CARGO_BIN_EXE_ch01_camera_rays"),
-    env!("CARGO_BIN_EXE_ch02_generic_objects"),
-    env!("CARGO_BIN_EXE_ch03_shading"),
-    env!("CARGO_BIN_EXE_ch04_shadows"),
-    env!("CARGO_BIN_EXE_ch05_reflection_refraction"),
-];
-
 /// Without a display every chapter binary says so in one line, points to -o, and exits 2.
 #[test]
 fn without_a_display_the_window_is_one_line_of_error() {
-    for bin in BINARIES {
+    for chapter in Chapter::ALL {
+        let bin = chapter.about().binary;
         for display in [None, Some(""), Some(":4093")] {
             let out = run_binary(
-                bin,
+                &common::exe(chapter),
                 &["--window"],
                 &[("DISPLAY", display), ("WAYLAND_DISPLAY", None)],
             );
@@ -704,7 +818,11 @@ fn without_a_display_the_window_is_one_line_of_error() {
 /// --window with --inspect is refused: the window inspects by clicking.
 #[test]
 fn window_and_inspect_do_not_go_together() {
-    let out = run_binary(BINARIES[4], &["--window", "--inspect", "1,1"], &[]);
+    let out = run_binary(
+        &common::exe(Chapter::ReflectionRefraction),
+        &["--window", "--inspect", "1,1"],
+        &[],
+    );
     let err = String::from_utf8_lossy(&out.stderr);
     assert_eq!(out.status.code(), Some(2));
     assert_eq!(err.lines().count(), 1);
@@ -714,11 +832,11 @@ fn window_and_inspect_do_not_go_together() {
 /// Each chapter binary offers --window in its help.
 #[test]
 fn every_chapter_binary_has_a_window() {
-    for bin in BINARIES {
-        let out = run_binary(bin, &["--help"], &[]);
+    for chapter in Chapter::ALL {
+        let out = run_binary(&common::exe(chapter), &["--help"], &[]);
         assert!(
             String::from_utf8_lossy(&out.stdout).contains("--window"),
-            "{bin}"
+            "{chapter:?}"
         );
     }
 }

@@ -8,11 +8,16 @@
 //! `cargo test --test window_e2e -- --ignored`. Keys are held 100 ms, as fingers do: minifb
 //! reads the keyboard once a frame, so a press and release within one frame would be lost.
 
+mod common;
+
 use std::path::{Path, PathBuf};
 use std::process::{Child, Command, Stdio};
 use std::time::{Duration, Instant};
 
-const BIN: &str = env!("CARGO_BIN_EXE_ch05_reflection_refraction");
+use whitted::render::Chapter;
+
+/// The chapter whose binary the window runs: the last, which reaches every chapter.
+const LAST: Chapter = Chapter::ReflectionRefraction;
 
 /// A virtual X server on a display of its own, stopped on drop.
 struct Xvfb {
@@ -206,7 +211,7 @@ impl Drop for Session {
 }
 
 /// Renders the scene file to a PNG with the chapter binary's `-o`, with extra arguments.
-fn reference(bin: &str, scene: &Path, dir: &Path, name: &str, args: &[&str]) -> image::RgbImage {
+fn reference(bin: &Path, scene: &Path, dir: &Path, name: &str, args: &[&str]) -> image::RgbImage {
     let png = dir.join(format!("{name}.png"));
     let out = Command::new(bin)
         .arg(scene)
@@ -245,12 +250,13 @@ fn save_by_rename(path: &Path, text: &str) {
 #[ignore = "needs Xvfb, xdotool and ImageMagick: .ci/run installs them and runs it"]
 fn the_window_refines_inspects_reloads_and_obeys_every_key() {
     let x = Xvfb::start();
+    let bin = &common::exe(LAST);
     let dir = tempfile::tempdir().unwrap();
     let scene = dir.path().join("scene.toml");
     std::fs::write(&scene, whitted_app::cli::SHOWCASE).unwrap();
     let saved = dir.path().join("saved.png");
     let (stdout, stderr) = (dir.path().join("out.txt"), dir.path().join("err.txt"));
-    let child = Command::new(BIN)
+    let child = Command::new(bin)
         .arg(&scene)
         .arg("--window")
         .arg("-o")
@@ -262,7 +268,7 @@ fn the_window_refines_inspects_reloads_and_obeys_every_key() {
         .unwrap();
     let window = xdotool(
         &x.display,
-        &["search", "--sync", "--name", "ch05_reflection_refraction"],
+        &["search", "--sync", "--name", LAST.about().binary],
     )
     .lines()
     .next()
@@ -293,7 +299,7 @@ fn the_window_refines_inspects_reloads_and_obeys_every_key() {
     s.wait_for(true, "image complete: chapter 5, view color", 0);
     std::thread::sleep(Duration::from_millis(200));
     let first = s.shot("01-refined");
-    let want = reference(BIN, &scene, refs.path(), "color", &[]);
+    let want = reference(bin, &scene, refs.path(), "color", &[]);
     assert!(
         differing(&first, &want) < 0.001,
         "{}",
@@ -334,7 +340,7 @@ fn the_window_refines_inspects_reloads_and_obeys_every_key() {
     // 3. V: the next view, flat
     s.key_and_render("v");
     s.wait_for(true, "view flat", 0);
-    let flat = reference(BIN, &scene, refs.path(), "flat", &["--view", "flat"]);
+    let flat = reference(bin, &scene, refs.path(), "flat", &["--view", "flat"]);
     assert!(differing(&s.shot("03-flat"), &flat) < 0.001);
     for (i, view) in ["normals", "depth", "shadows", "rays", "color"]
         .iter()
@@ -342,7 +348,7 @@ fn the_window_refines_inspects_reloads_and_obeys_every_key() {
     {
         s.key_and_render("v");
         s.wait_for(true, &format!("view {view}"), 0);
-        let want = reference(BIN, &scene, refs.path(), view, &["--view", view]);
+        let want = reference(bin, &scene, refs.path(), view, &["--view", view]);
         let mut got = s.shot(&format!("04-{i}-{view}"));
         if *view == "rays" {
             // the heat scale's legend, bottom left: white frame, black (1 ray) to white
@@ -363,27 +369,28 @@ fn the_window_refines_inspects_reloads_and_obeys_every_key() {
         );
     }
 
-    // 4. 1-5: the chapters; 3 is chapter 3's image
+    // 4. the digits: the chapters; 3 is chapter 3's image, as its binary renders it
     s.key_and_render("3");
     s.wait_for(true, "chapter 3, view color", 0);
     let ch3 = reference(
-        env!("CARGO_BIN_EXE_ch03_shading"),
+        &common::exe(Chapter::Shading),
         &scene,
         refs.path(),
         "ch03",
         &[],
     );
-    assert!(differing(&s.shot("05-stage3"), &ch3) < 0.001);
-    for chapter in ["1", "2", "4", "5"] {
-        s.key_and_render(chapter);
-        s.wait_for(true, &format!("chapter {chapter}, "), 0);
+    assert!(differing(&s.shot("05-chapter3"), &ch3) < 0.001);
+    for chapter in Chapter::ALL.into_iter().filter(|&c| c != Chapter::Shading) {
+        let digit = chapter.number().to_string();
+        s.key_and_render(&digit);
+        s.wait_for(true, &format!("chapter {digit}, "), 0);
     }
 
     // 5. -/+: depth 4 differs from depth 5 in the mirror, then back
     s.key_and_render("minus");
     s.key_and_render("minus");
     let shallow = s.shot("06-depth3");
-    let want = reference(BIN, &scene, refs.path(), "depth3", &["--max-depth", "3"]);
+    let want = reference(bin, &scene, refs.path(), "depth3", &["--max-depth", "3"]);
     assert!(differing(&shallow, &want) < 0.001);
     s.key_and_render("plus");
     s.key_and_render("equal");
@@ -453,10 +460,11 @@ fn the_window_refines_inspects_reloads_and_obeys_every_key() {
     s.key("r");
     s.wait_for(false, "scene reloaded", n);
 
-    // 9. H prints the keys; Esc quits with status 0
-    let n = s.count(false, "keys: ");
+    // 9. H prints the keys, as the keymap writes them; Esc quits with status 0
+    let help = whitted_app::window::keys::help();
+    let n = s.count(false, &help);
     s.key("h");
-    s.wait_for(false, "keys: ", n);
+    s.wait_for(false, &help, n);
     s.key("Escape");
     let start = Instant::now();
     let status = loop {

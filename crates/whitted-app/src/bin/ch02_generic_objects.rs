@@ -1,34 +1,16 @@
-//! Chapter 2 — generic objects: the nearest hit of each camera ray.
-//! The chapter: chapters/ch02_generic_objects/README.md and its page of the course book.
+//! The nearest hit of each camera ray.
+//! The chapter's name, number and title are the syllabus's, reached from its
+//! [`Chapter`]; its README is under `chapters/`, its page in the course book.
 
 #![deny(missing_docs)]
 
-use std::process::ExitCode;
-
-use clap::Parser;
 use whitted::render::Chapter;
-use whitted_app::cli::{Common, ViewArg, run};
 
-/// Chapter 2 of whitted: intersects each camera ray with the scene's spheres, planes,
-/// cylinders, cones and convex polyhedra (each a generic shape placed by a matrix M), keeps
-/// the nearest hit and shows it unlit: its material's flat colour, its normal, or its depth.
-#[derive(Parser)]
-#[command(name = "ch02_generic_objects", version)]
-struct Args {
-    #[command(flatten)]
-    common: Common,
-    #[command(flatten)]
-    view: ViewArg,
-}
+/// What `--help` says the binary does, after the chapter's number and title.
+const ABOUT: &str = "intersects each camera ray with the scene's spheres, planes, cylinders, cones and convex \
+    polyhedra (each a generic shape placed by a matrix M), keeps the nearest hit and shows \
+    it unlit: its material's flat colour, its normal, or its depth";
 
-fn main() -> ExitCode {
-    let args: Args = whitted_app::cli::parse_args();
-    run(
-        "ch02_generic_objects",
-        Chapter::GenericObjects,
-        &args.common,
-        Some(&args.view),
-        None,
-        None,
-    )
+fn main() -> std::process::ExitCode {
+    whitted_app::cli::main(Chapter::GenericObjects, ABOUT)
 }

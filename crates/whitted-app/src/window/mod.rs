@@ -7,7 +7,8 @@
 //! | [`schedule`] | the coarse-to-fine passes: blocks of 8, 4, 2, 1 pixels, no pixel traced twice |
 //! | [`progressive`] | the render thread, its rayon pool, and cancelling by generation |
 //! | [`canvas`] | the image as the passes fill it in, and the screen's pixels |
-//! | [`state`] | the keys and what they change: input → state → commands, no display needed |
+//! | [`keys`] | the keymap: every key, what it asks for, and the help written from it |
+//! | [`state`] | what the keys change: input → state → commands, no display needed |
 //! | [`overlay`] | the ray tree of a clicked pixel, projected into the view and drawn |
 //! | [`shell`] | minifb: the window, its loop, reloading the scene file |
 //!
@@ -17,6 +18,7 @@
 //! Course book: [The live window](../../../../docs/book/window.html) (`docs/src/window.md`).
 
 pub mod canvas;
+pub mod keys;
 pub mod overlay;
 pub mod progressive;
 pub mod schedule;

@@ -13,19 +13,9 @@
 //!
 //! Segments are cut where they pass behind the near plane before they are projected. The
 //! camera ray starts at the eye, so it projects to (nearly) a point: the clicked pixel, marked
-//! with a ring. Colours, one per kind of ray ([`Stroke::colour`]):
-//!
-//! | stroke | colour |
-//! |---|---|
-//! | camera ray | white |
-//! | feeler reaching its light | yellow (dotted when no feeler is cast: chapter 3 or `shadows = false`) |
-//! | feeler blocked | red up to the first opaque object (marked ×), dotted red beyond |
-//! | feeler through transparent objects only | orange |
-//! | mirror ray | cyan |
-//! | transmitted ray | magenta |
-//!
-//! Hit points are white squares, lights yellow diamonds. Every stroke has a black outline so
-//! it reads on any image.
+//! with a ring. Each kind of ray has its colour ([`Stroke::colour`]) and each mark its shape;
+//! what they mean ([`Stroke::legend`], [`Mark::legend`]) is printed by `H` and tabled in the
+//! course book. Every stroke has a black outline so it reads on any image.
 //!
 //! Course book: [The live window](../../../../../docs/book/window.html) (`docs/src/window.md`).
 
@@ -56,6 +46,45 @@ pub enum Stroke {
 }
 
 impl Stroke {
+    /// Every stroke, in the order the legend lists them.
+    pub const ALL: [Stroke; 8] = [
+        Stroke::Camera,
+        Stroke::FeelerLit,
+        Stroke::ToLight,
+        Stroke::FeelerPartial,
+        Stroke::FeelerBlocked,
+        Stroke::FeelerBeyond,
+        Stroke::Mirror,
+        Stroke::Transmitted,
+    ];
+
+    /// How the stroke looks, in words, and what it means: its line of the legend.
+    #[must_use]
+    pub fn legend(self) -> (&'static str, &'static str) {
+        match self {
+            Self::Camera => (
+                "white",
+                "the camera ray; from the eye it projects onto the clicked pixel",
+            ),
+            Self::FeelerLit => ("yellow", "a feeler that reaches its light"),
+            Self::ToLight => (
+                "dotted yellow",
+                "towards a light that casts no feeler (no shadows yet, or `shadows = false`)",
+            ),
+            Self::FeelerPartial => (
+                "orange",
+                "a feeler through transparent objects only: part of the light arrives",
+            ),
+            Self::FeelerBlocked => ("red", "a feeler up to the opaque object that blocks it"),
+            Self::FeelerBeyond => (
+                "dotted red",
+                "a blocked feeler, on from its blocker to the light",
+            ),
+            Self::Mirror => ("cyan", "a mirror ray"),
+            Self::Transmitted => ("magenta", "a transmitted ray"),
+        }
+    }
+
     /// The stroke's colour, `0x00RRGGBB`.
     #[must_use]
     pub fn colour(self) -> u32 {
@@ -79,14 +108,30 @@ impl Stroke {
 /// The kinds of mark in the overlay.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Mark {
-    /// A hit point (white square).
+    /// A hit point.
     Hit,
     /// Where an opaque object blocks a feeler (red ×).
     Blocker,
-    /// A light (yellow diamond).
+    /// A light.
     Light,
-    /// The clicked pixel (white ring).
+    /// The clicked pixel.
     Pixel,
+}
+
+impl Mark {
+    /// Every mark, in the order the legend lists them.
+    pub const ALL: [Mark; 4] = [Mark::Pixel, Mark::Hit, Mark::Light, Mark::Blocker];
+
+    /// How the mark looks, in words, and what it means: its line of the legend.
+    #[must_use]
+    pub fn legend(self) -> (&'static str, &'static str) {
+        match self {
+            Self::Pixel => ("white ring", "the clicked pixel"),
+            Self::Hit => ("white square", "a hit point"),
+            Self::Light => ("yellow diamond", "a light"),
+            Self::Blocker => ("red ×", "where an opaque object blocks a feeler"),
+        }
+    }
 }
 
 /// A segment in the world.

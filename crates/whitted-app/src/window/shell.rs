@@ -14,10 +14,11 @@ use std::time::{Duration, Instant, SystemTime};
 use minifb::{Key, KeyRepeat, MouseButton, MouseMode, ScaleMode, Window, WindowOptions};
 
 use super::canvas::Canvas;
+use super::keys;
 use super::overlay::Overlay;
 use super::progressive::{Update, Worker};
 use super::schedule::PASSES;
-use super::state::{BINDINGS, Command, HELP, Input, State};
+use super::state::{Command, Input, State};
 use whitted::accel::Accelerator;
 use whitted::error::Error;
 use whitted::output::{self, Encoding};
@@ -28,15 +29,13 @@ use whitted::scene::{self, Scene};
 
 /// What the window starts from.
 pub struct Setup {
-    /// The binary's name (the title, and the default PNG name).
-    pub binary: String,
     /// The scene file, if any (without one, the built-in showcase: nothing to reload).
     pub scene_path: Option<PathBuf>,
     /// The scene as loaded.
     pub scene: Scene,
     /// The options from the command line (chapter, view, size …).
     pub options: Options,
-    /// The binary's own chapter.
+    /// The binary's own chapter (its name is the window's title).
     pub max_chapter: Chapter,
     /// How the screen and the saved PNG encode intensities.
     pub encoding: Encoding,
@@ -52,7 +51,8 @@ const POLL: Duration = Duration::from_millis(250);
 /// Opens the window and runs it until Esc or the window is closed.
 pub fn run(setup: Setup) -> Result<(), Error> {
     let (w, h) = (setup.options.width, setup.options.height);
-    let mut window = open(&setup.binary, w as usize, h as usize)?;
+    let binary = setup.max_chapter.about().binary;
+    let mut window = open(binary, w as usize, h as usize)?;
     let worker = Worker::spawn(0)?;
     let mut shell = Shell {
         state: State::new(setup.scene, setup.options, setup.max_chapter),
@@ -61,7 +61,7 @@ pub fn run(setup: Setup) -> Result<(), Error> {
         accel: None,
         scales: None,
         worker,
-        binary: setup.binary,
+        binary,
         scene_path: setup.scene_path,
         max_chapter: setup.max_chapter,
         save_to: setup.save_to,
@@ -70,8 +70,9 @@ pub fn run(setup: Setup) -> Result<(), Error> {
         started: Instant::now(),
     };
     if !shell.quiet {
-        eprintln!("{HELP}");
+        eprintln!("{}", keys::help());
     }
+    let bindings = keys::bindings();
     shell.execute(Command::Render);
     let mut stamp = shell.scene_path.as_deref().map(FileStamp::of);
     let mut polled = Instant::now();
@@ -81,8 +82,8 @@ pub fn run(setup: Setup) -> Result<(), Error> {
     while window.is_open() {
         let mut inputs = Vec::new();
         let fast = window.is_key_down(Key::LeftShift) || window.is_key_down(Key::RightShift);
-        for b in BINDINGS {
-            let repeat = if b.repeat {
+        for b in &bindings {
+            let repeat = if b.action.repeats() {
                 KeyRepeat::Yes
             } else {
                 KeyRepeat::No
@@ -200,7 +201,8 @@ struct Shell {
     /// The acceleration structure of the current generation, once the worker has built it.
     accel: Option<(u64, Arc<Accelerator>)>,
     worker: Worker,
-    binary: String,
+    /// The binary's name: the title's start.
+    binary: &'static str,
     scene_path: Option<PathBuf>,
     /// The chapter of the binary, whose parts of the scene file a reload reads.
     max_chapter: Chapter,
@@ -273,7 +275,7 @@ impl Shell {
                     let o = &self.state.options;
                     eprintln!(
                         "image complete: chapter {}, view {}, {}×{} in {:.3} s, {:.2} M rays/s",
-                        o.chapter as u8,
+                        o.chapter.number(),
                         o.view.name(),
                         o.width,
                         o.height,
@@ -341,7 +343,7 @@ impl Shell {
         let mut t = format!(
             "{} — chapter {} · {} · depth {} · pass {}/{PASSES}",
             self.binary,
-            o.chapter as u8,
+            o.chapter.number(),
             o.view.name(),
             o.max_depth,
             c.passes_done

@@ -1,28 +1,13 @@
 //! The window's logic as a state machine: an [`Input`] (a key, a click, a reloaded scene)
 //! changes the [`State`] and returns the [`Command`]s the shell carries out (render, print,
 //! inspect, save, reload, quit). Nothing here touches a display, so every binding and rule is
-//! tested without one.
-//!
-//! | keys | what they do |
-//! |---|---|
-//! | W A S D, Q E | move the camera forward, left, back, right, down, up (Shift: 4× faster) |
-//! | arrows | turn the camera left, right, up, down |
-//! | + − | one more or one less level of mirror and transmitted rays (`max_depth`) |
-//! | 1 … 5 | the chapter: which chapter's renderer runs, up to the binary's own |
-//! | V | the next view: colour, flat, normals, depth, shadow mask, rays per pixel |
-//! | C | print the camera as a `[camera]` table, to paste into the scene |
-//! | P | save the image as a PNG |
-//! | R | reload the scene file (saving it does too) |
-//! | H | print the keys |
-//! | Esc | quit (closing the window does too) |
-//! | left click | print the pixel's ray tree and draw it over the image |
+//! tested without one. The keys and what each asks for are the keymap's ([`super::keys`]).
 //!
 //! Course book: [The live window](../../../../../docs/book/window.html) (`docs/src/window.md`).
 
 use std::sync::Arc;
 
-use minifb::Key;
-
+use crate::cli::{OBJECTS_FROM, TRACING_FROM};
 use whitted::camera::Camera;
 use whitted::error::Error;
 use whitted::real::{Real, Vec3};
@@ -69,8 +54,8 @@ pub enum Action {
     Turn(Turn),
     /// Change the maximum depth by this much.
     Depth(i32),
-    /// Switch to chapter 1 to 5.
-    Chapter(u8),
+    /// Switch to this chapter.
+    Chapter(Chapter),
     /// Cycle the views.
     NextView,
     /// Print the camera as a `[camera]` table.
@@ -85,72 +70,13 @@ pub enum Action {
     Quit,
 }
 
-/// A key, what it does, whether holding it repeats, and its line in the help.
-#[derive(Clone, Copy, Debug)]
-pub struct Binding {
-    /// The key.
-    pub key: Key,
-    /// What it does.
-    pub action: Action,
-    /// Whether holding the key repeats the action (moving and turning).
-    pub repeat: bool,
-}
-
-const fn bind(key: Key, action: Action, repeat: bool) -> Binding {
-    Binding {
-        key,
-        action,
-        repeat,
+impl Action {
+    /// Whether holding its key repeats it: moving and turning do, the rest act once a press.
+    #[must_use]
+    pub fn repeats(self) -> bool {
+        matches!(self, Action::Move(_) | Action::Turn(_))
     }
 }
-
-/// Every key the window reads. The shell polls each of them once per frame.
-pub const BINDINGS: &[Binding] = &[
-    bind(Key::W, Action::Move(Move::Forward), true),
-    bind(Key::S, Action::Move(Move::Back), true),
-    bind(Key::A, Action::Move(Move::Left), true),
-    bind(Key::D, Action::Move(Move::Right), true),
-    bind(Key::Q, Action::Move(Move::Down), true),
-    bind(Key::E, Action::Move(Move::Up), true),
-    bind(Key::Left, Action::Turn(Turn::Left), true),
-    bind(Key::Right, Action::Turn(Turn::Right), true),
-    bind(Key::Up, Action::Turn(Turn::Up), true),
-    bind(Key::Down, Action::Turn(Turn::Down), true),
-    bind(Key::Equal, Action::Depth(1), false),
-    bind(Key::NumPadPlus, Action::Depth(1), false),
-    bind(Key::Minus, Action::Depth(-1), false),
-    bind(Key::NumPadMinus, Action::Depth(-1), false),
-    bind(Key::Key1, Action::Chapter(1), false),
-    bind(Key::Key2, Action::Chapter(2), false),
-    bind(Key::Key3, Action::Chapter(3), false),
-    bind(Key::Key4, Action::Chapter(4), false),
-    bind(Key::Key5, Action::Chapter(5), false),
-    bind(Key::NumPad1, Action::Chapter(1), false),
-    bind(Key::NumPad2, Action::Chapter(2), false),
-    bind(Key::NumPad3, Action::Chapter(3), false),
-    bind(Key::NumPad4, Action::Chapter(4), false),
-    bind(Key::NumPad5, Action::Chapter(5), false),
-    bind(Key::V, Action::NextView, false),
-    bind(Key::C, Action::PrintCamera, false),
-    bind(Key::P, Action::Save, false),
-    bind(Key::R, Action::Reload, false),
-    bind(Key::H, Action::Help, false),
-    bind(Key::Escape, Action::Quit, false),
-];
-
-/// The action bound to `key`, if any.
-#[must_use]
-pub fn action_of(key: Key) -> Option<Action> {
-    BINDINGS.iter().find(|b| b.key == key).map(|b| b.action)
-}
-
-/// The keys, as `H` prints them.
-pub const HELP: &str = "\
-keys: W/S forward/back, A/D left/right, Q/E down/up (Shift: 4x faster);
-      arrows turn; +/- max depth; 1-5 chapter; V next view;
-      C print the camera; P save PNG; R reload the scene; H these keys; Esc quit;
-      left click: the pixel's ray tree, printed and drawn (white camera ray, yellow feeler
-      reaching its light, red feeler blocked (x where), cyan mirror, magenta transmitted)";
 
 /// What the window is told.
 #[derive(Debug)]
@@ -216,7 +142,7 @@ pub struct State {
     pub options: Options,
     /// The binary's own chapter: the highest chapter the keys reach.
     pub max_chapter: Chapter,
-    /// Samples per pixel at chapter 5 (earlier chapters take one).
+    /// Samples per pixel from [`TRACING_FROM`] on (earlier chapters take one).
     pub samples: u32,
     /// The camera as the scene file last said it (a reload keeps the moved camera unless the
     /// file's camera changed).
@@ -267,12 +193,12 @@ impl State {
             Action::Move(m) => self.set_camera(moved(self.camera(), m, MOVE_SHARE * speed)),
             Action::Turn(t) => self.set_camera(turned(self.camera(), t, TURN_DEGREES * speed)),
             Action::Depth(step) => self.change_depth(step),
-            Action::Chapter(n) => self.change_chapter(n),
+            Action::Chapter(c) => self.change_chapter(c),
             Action::NextView => self.next_view(),
             Action::PrintCamera => vec![Command::Print(camera_table(self.camera()))],
             Action::Save => vec![Command::Save],
             Action::Reload => vec![Command::Reload],
-            Action::Help => vec![Command::Print(HELP.into())],
+            Action::Help => vec![Command::Print(super::keys::help())],
             Action::Quit => vec![Command::Quit],
         }
     }
@@ -298,31 +224,31 @@ impl State {
             ))];
         }
         self.options.max_depth = new;
-        if self.options.chapter == Chapter::ReflectionRefraction {
+        if self.options.chapter >= TRACING_FROM {
             vec![Command::Render]
         } else {
             vec![Command::Print(format!(
-                "max depth {new}: it matters from chapter 5 (mirror and transmitted rays)"
+                "max depth {new}: it matters from chapter {} (mirror and transmitted rays)",
+                TRACING_FROM.number()
             ))]
         }
     }
 
-    fn change_chapter(&mut self, n: u8) -> Vec<Command> {
-        let Some(chapter) = Chapter::from_number(n) else {
-            return vec![];
-        };
+    fn change_chapter(&mut self, chapter: Chapter) -> Vec<Command> {
         if chapter > self.max_chapter {
             return vec![Command::Print(format!(
-                "chapter {n} belongs to a later chapter: this binary goes up to chapter {}",
-                self.max_chapter as u8
+                "chapter {} is past this binary's: {} goes up to chapter {}",
+                chapter.number(),
+                self.max_chapter.about().binary,
+                self.max_chapter.number()
             ))];
         }
         if chapter == self.options.chapter {
             return vec![];
         }
         self.options.chapter = chapter;
-        // supersampling belongs to chapter 5, as on the command line
-        self.options.samples = if chapter == Chapter::ReflectionRefraction {
+        // supersampling comes with the tracing controls, as on the command line
+        self.options.samples = if chapter >= TRACING_FROM {
             self.samples
         } else {
             1
@@ -331,11 +257,12 @@ impl State {
     }
 
     fn next_view(&mut self) -> Vec<Command> {
-        if self.options.chapter == Chapter::CameraRays {
-            return vec![Command::Print(
-                "views start at chapter 2: chapter 1 traces no objects, each pixel shows its ray's direction"
-                    .into(),
-            )];
+        if self.options.chapter < OBJECTS_FROM {
+            return vec![Command::Print(format!(
+                "views start at chapter {}: chapter {} traces no objects, each pixel shows its ray's direction",
+                OBJECTS_FROM.number(),
+                self.options.chapter.number()
+            ))];
         }
         let i = View::ALL
             .iter()
