@@ -14,6 +14,11 @@
 //! image was rendered. An image whose framebuffer would pass
 //! [`render::MAX_FRAMEBUFFER_BYTES`] is refused before any work starts.
 //!
+//! With `--compare REF.png` the PNG holds three images side by side, the render, REF.png and
+//! their difference ([`crate::compare`]), and stdout gets one line saying how many pixels
+//! differ and where the first is; the exit status is 0 whether they differ or not. REF.png
+//! must have the render's size (checked before any work starts).
+//!
 //! A render that lasts more than a second shows a progress bar on stderr (only when stderr
 //! is a terminal, and not with `--quiet`). Unless `--quiet`, the last line on stderr gives the
 //! resolution, the rays cast by kind, the time and the millions of rays per second.
@@ -30,6 +35,8 @@ use clap::builder::PossibleValue;
 use clap::{Args, FromArgMatches};
 
 use whitted::accel::Accel;
+
+use crate::compare::{self, Image};
 /// The one line of an exercise not written yet (it lives in [`whitted::error`], where the live
 /// window finds it too).
 pub use whitted::error::missing_exercise;
@@ -159,6 +166,11 @@ pub struct Common {
     /// [`window_help`].
     #[arg(long, help = window_help(false), long_help = window_help(true))]
     pub window: bool,
+    /// Compare the render with REF.png (of the same size): write your render, the reference and
+    /// the differing pixels side by side, and print on stdout how many differ. With --window,
+    /// Tab shows the reference and the difference.
+    #[arg(long, value_name = "REF.png")]
+    pub compare: Option<PathBuf>,
 }
 
 /// The help of `--window`, with the keys from the window's keymap
@@ -196,7 +208,7 @@ pub struct Objects {
     pub no_packets: bool,
     /// Print the ray tree of pixel X,Y (column X, row Y from the top, from 0) — hits, each
     /// light's I_a, I_d, I_s and feeler, mirror and transmitted rays — and exit, writing no image.
-    #[arg(long, value_name = "X,Y", value_parser = parse_pixel, conflicts_with = "output", allow_hyphen_values = true)]
+    #[arg(long, value_name = "X,Y", value_parser = parse_pixel, conflicts_with_all = ["output", "compare"], allow_hyphen_values = true)]
     pub inspect: Option<(u32, u32)>,
     /// With --inspect: print the tree as JSON (its shape: docs/src/inspect.md).
     #[arg(long, requires = "inspect")]
@@ -395,9 +407,16 @@ pub fn fit(width: u32, height: u32, bound: (u32, u32)) -> (u32, u32) {
 /// Runs a chapter: read, render, write (or inspect, or open the window). Returns the exit
 /// status (0, or 2 after printing the error).
 pub fn run(chapter: Chapter, args: &ChapterArgs) -> ExitCode {
+    guard(|| run_inner(chapter, args))
+}
+
+/// Runs `work` and returns the exit status: 0 when it succeeds; 2 after one line on stderr,
+/// `error: …`, when it fails or panics on an exercise not written yet (from any thread: the
+/// line names the exercise, as [`missing_exercise`] writes it). Any other panic goes on as a
+/// panic.
+pub fn guard(work: impl FnOnce() -> Result<(), Error>) -> ExitCode {
     quiet_missing_exercises();
-    let run = || run_inner(chapter, args);
-    match std::panic::catch_unwind(std::panic::AssertUnwindSafe(run)) {
+    match std::panic::catch_unwind(std::panic::AssertUnwindSafe(work)) {
         Ok(Ok(())) => ExitCode::SUCCESS,
         Ok(Err(e)) => {
             eprintln!("error: {e}");
@@ -467,6 +486,13 @@ fn run_inner(chapter: Chapter, args: &ChapterArgs) -> Result<(), Error> {
     if let (Some(pixel), Some(o)) = (inspect, objects) {
         return print_tree(&scene, &options, pixel, common.encoding, o.json);
     }
+    let reference = match &common.compare {
+        Some(path) => Some(Reference {
+            image: Image::read_reference(path)?,
+            path: path.clone(),
+        }),
+        None => None,
+    };
     if common.window {
         if common.width.is_none() && common.height.is_none() {
             (options.width, options.height) = fit(options.width, options.height, WINDOW_FIT);
@@ -480,9 +506,13 @@ fn run_inner(chapter: Chapter, args: &ChapterArgs) -> Result<(), Error> {
             encoding: common.encoding,
             save_to: out,
             quiet: common.quiet,
+            reference,
         });
     }
     render::check_size(options.width, options.height)?;
+    if let Some(r) = &reference {
+        r.check(&out, (options.width, options.height))?;
+    }
     let start = Instant::now();
     let accel = render::build_accel(&scene, &options);
     let progress = Progress::new(
@@ -492,9 +522,24 @@ fn run_inner(chapter: Chapter, args: &ChapterArgs) -> Result<(), Error> {
     let (fb, stats) = render::render_with(&scene, &options, &accel, &|n| progress.advance(n));
     progress.finish();
     let seconds = start.elapsed().as_secs_f64();
-    output::save(&fb, &out, common.encoding)?;
+    match &reference {
+        None => output::save(&fb, &out, common.encoding)?,
+        Some(r) => {
+            let line = r.write_comparison(&fb, common.encoding, &out)?;
+            print_out(&format!("{line}\n"))?;
+        }
+    }
     if !common.quiet {
-        eprintln!("wrote {} ({}×{})", out.display(), fb.width, fb.height);
+        match &reference {
+            None => eprintln!("wrote {} ({}×{})", out.display(), fb.width, fb.height),
+            Some(r) => eprintln!(
+                "wrote {}: your render, {} and the difference, {}×{} each",
+                out.display(),
+                r.path.display(),
+                fb.width,
+                fb.height
+            ),
+        }
         if tracing.as_ref().is_some_and(|t| t.stats) {
             eprintln!(
                 "{} sample(s)/px, depth {}, {} thread(s), {} mirror rays by total internal reflection; {}",
@@ -511,6 +556,54 @@ fn run_inner(chapter: Chapter, args: &ChapterArgs) -> Result<(), Error> {
         eprintln!("{}", summary(fb.width, fb.height, &stats, seconds));
     }
     Ok(())
+}
+
+/// The reference image of `--compare`, and the path it was read from.
+#[derive(Clone, Debug)]
+pub struct Reference {
+    /// The file, as the command line named it.
+    pub path: PathBuf,
+    /// Its pixels.
+    pub image: Image,
+}
+
+impl Reference {
+    /// Checks, before any rendering, that a render of `size` can be compared with the
+    /// reference and written to `out`: the sizes agree, and `out` is not the reference itself.
+    pub fn check(&self, out: &Path, size: (u32, u32)) -> Result<(), Error> {
+        if self.image.size() != size {
+            let sizes = compare::SizeMismatch {
+                render: size,
+                reference: self.image.size(),
+            };
+            return Err(compare::size_error(&self.path, sizes));
+        }
+        let same = |a: &Path, b: &Path| matches!((a.canonicalize(), b.canonicalize()), (Ok(x), Ok(y)) if x == y);
+        if same(out, &self.path) {
+            return Err(Error::Usage(format!(
+                "-o {} is the reference itself: the comparison would replace it; write it elsewhere",
+                out.display()
+            )));
+        }
+        Ok(())
+    }
+
+    /// Compares the render `fb`, in `encoding`, with the reference, writes the three images
+    /// side by side to `out` ([`compare::side_by_side`]: the render, the reference, the
+    /// difference) and returns the line that says how they differ ([`compare::Comparison::line`]).
+    pub fn write_comparison(
+        &self,
+        fb: &render::Framebuffer,
+        encoding: Encoding,
+        out: &Path,
+    ) -> Result<String, Error> {
+        let render = Image::from_framebuffer(fb, encoding);
+        let c = compare::compare(&render, &self.image)
+            .map_err(|sizes| compare::size_error(&self.path, sizes))?;
+        let composite = compare::side_by_side(&[&render, &self.image, &c.difference]);
+        output::write_png(out, composite.width, composite.height, &composite.rgb)?;
+        Ok(c.line())
+    }
 }
 
 /// `--inspect X,Y [--json]`: prints the ray tree of one pixel on stdout, its bytes in

@@ -8,6 +8,8 @@
 //! - [`cli`]: the command line of every chapter binary, built from its chapter (name, number,
 //!   title, argument groups), the render to a PNG, `--inspect`, one-line errors with exit
 //!   status 2;
+//! - [`compare`]: the render beside a reference image with the difference marked, for
+//!   `--compare REF.png` and the window's compare key;
 //! - [`window`]: the live window of `--window`, the image refined coarse to fine as you watch,
 //!   keys for the camera, chapter, view and depth, and the ray tree of a clicked pixel drawn over
 //!   the image.
@@ -17,4 +19,5 @@
 #![deny(missing_docs)]
 
 pub mod cli;
+pub mod compare;
 pub mod window;

@@ -32,7 +32,9 @@ use whitted_app::window::keys::{self, Trigger, action_of};
 use whitted_app::window::overlay::{self, Mark, Overlay, Stroke};
 use whitted_app::window::progressive::{Update, Worker, render_pass};
 use whitted_app::window::schedule::{self, PASSES, STEPS};
-use whitted_app::window::state::{Action, Command, Input, Move, State, Turn, click_to_pixel};
+use whitted_app::window::state::{
+    Action, Command, Input, Move, Picture, State, Turn, click_to_pixel,
+};
 
 /// Tolerance for positions computed in `Real`.
 const EPS: Real = if cfg!(feature = "f32") { 1e-4 } else { 1e-10 };
@@ -260,6 +262,7 @@ fn every_action_has_a_key_and_no_key_two_actions() {
         Action::Depth(1),
         Action::Depth(-1),
         Action::NextView,
+        Action::NextPicture,
         Action::PrintCamera,
         Action::Save,
         Action::Reload,
@@ -305,6 +308,7 @@ fn keys_are_bound_as_the_help_says() {
         (Key::NumPad2, Action::Chapter(Chapter::GenericObjects)),
         (Key::Key5, Action::Chapter(Chapter::ReflectionRefraction)),
         (Key::V, Action::NextView),
+        (Key::Tab, Action::NextPicture),
         (Key::C, Action::PrintCamera),
         (Key::P, Action::Save),
         (Key::R, Action::Reload),
@@ -358,6 +362,7 @@ fn the_keymap_labels_name_the_keys() {
             "+ −",
             "1 … 5",
             "V",
+            "Tab",
             "C",
             "P",
             "R",
@@ -697,6 +702,167 @@ fn reloading_keeps_the_last_good_scene() {
     };
     s.handle(Input::Loaded(Box::new(Ok(recamera))));
     assert_eq!(s.camera().eye, Vec3::new(0.0, 1.0, 9.0));
+}
+
+/// Without `--compare` the compare key shows nothing new: it says, in one line, how to start
+/// with a reference (the chapter's figure, of the chapter's scene).
+#[test]
+fn the_compare_key_without_a_reference_says_how_to_give_one() {
+    let mut s = state(Chapter::Shading);
+    let cmds = s.handle(key(Action::NextPicture));
+    match cmds.as_slice() {
+        [Command::Print(line)] => {
+            assert!(!line.contains('\n'), "one line: {line}");
+            assert!(
+                line.contains("--compare REF.png")
+                    && line.contains("docs/src/figures/ch03_shading.png")
+                    && line.contains("scenes/ch03_shading.toml"),
+                "{line}"
+            );
+        }
+        other => panic!("expected one printed line, got {other:?}"),
+    }
+    assert_eq!(s.picture, Picture::Render);
+    assert_eq!(s.compare_options(), None);
+}
+
+/// With a reference the compare key shows the render, the reference, the difference in turn;
+/// the two last ask for the comparison, the render asks for nothing.
+#[test]
+fn the_compare_key_cycles_render_reference_difference() {
+    let mut s = state(Chapter::Shading).with_reference((24, 12));
+    assert_eq!(s.picture, Picture::Render);
+    assert_eq!(s.handle(key(Action::NextPicture)), [Command::Compare]);
+    assert_eq!(s.picture, Picture::Reference);
+    assert_eq!(s.handle(key(Action::NextPicture)), [Command::Compare]);
+    assert_eq!(s.picture, Picture::Difference);
+    assert_eq!(s.handle(key(Action::NextPicture)), []);
+    assert_eq!(s.picture, Picture::Render);
+    // on the render, a change renders and does not compare
+    assert_eq!(s.handle(key(Action::NextView)), [Command::Render]);
+}
+
+/// The comparison is for the scene file's camera at the reference's size, with the chapter,
+/// view and depth the keys chose: moving the camera leaves it as it was (and the state says
+/// the camera moved); a new view renders and compares anew.
+#[test]
+fn the_comparison_follows_the_keys_but_not_the_camera() {
+    let mut s = state(Chapter::ReflectionRefraction).with_reference((24, 12));
+    s.handle(key(Action::NextPicture));
+    let before = s.compare_options().unwrap();
+    assert_eq!((before.width, before.height), (24, 12));
+    assert_eq!(before.camera.as_ref(), Some(&s.file_camera));
+    assert!(!s.camera_moved());
+
+    let cmds = s.handle(key(Action::Move(Move::Forward)));
+    assert_eq!(cmds, [Command::Render, Command::Compare]);
+    assert!(s.camera_moved());
+    assert_ne!(s.camera(), &s.file_camera);
+    assert_eq!(
+        s.compare_options(),
+        Some(before.clone()),
+        "the camera moved"
+    );
+
+    assert_eq!(
+        s.handle(key(Action::NextView)),
+        [Command::Render, Command::Compare]
+    );
+    let flat = s.compare_options().unwrap();
+    assert_eq!(flat.view, View::Flat);
+    assert_eq!(flat.camera.as_ref(), Some(&s.file_camera));
+    s.handle(key(Action::Depth(-1)));
+    assert_eq!(s.compare_options().unwrap().max_depth, s.options.max_depth);
+    s.handle(key(Action::Chapter(Chapter::Shading)));
+    assert_eq!(s.compare_options().unwrap().chapter, Chapter::Shading);
+    // the live image keeps its own size
+    assert_eq!((s.options.width, s.options.height), (64, 48));
+}
+
+/// While the reference or the difference is shown a click inspects nothing: the line says
+/// how to get back to the render.
+#[test]
+fn a_click_on_the_reference_says_to_show_the_render() {
+    let mut s = state(Chapter::Shading).with_reference((24, 12));
+    s.handle(key(Action::NextPicture));
+    let cmds = s.handle(Input::Click {
+        mouse: (10.0, 10.0),
+        window: (64, 48),
+    });
+    assert!(
+        matches!(cmds.as_slice(), [Command::Print(m)] if m.contains("press Tab")),
+        "{cmds:?}"
+    );
+}
+
+/// The window's comparison renders on its own thread, for the options it is given, and finds
+/// the pixels changed in the reference: here a reference rendered by the chapter binaries'
+/// render with two pixels changed, one by 3 steps (it differs) and one by 2 (it does not).
+#[test]
+fn the_windows_comparison_finds_the_changed_pixels() {
+    use whitted::output::{Encoding, to_rgb8};
+    use whitted_app::cli::Reference;
+    use whitted_app::compare::Image;
+    use whitted_app::window::comparison::Comparer;
+
+    let s = state(Chapter::Shading).with_reference((32, 24));
+    let options = s.compare_options().unwrap();
+    let (fb, _) = render::render(&s.scene, &options);
+    let mut rgb = to_rgb8(&fb, Encoding::Srgb);
+    let at = |x: usize, y: usize| 3 * (y * 32 + x);
+    let shift = |v: u8, by: u8| if v >= 128 { v - by } else { v + by };
+    rgb[at(20, 9) + 1] = shift(rgb[at(20, 9) + 1], 3);
+    rgb[at(4, 2)] = shift(rgb[at(4, 2)], 2);
+    let reference = Reference {
+        path: "ref.png".into(),
+        image: Image::new(32, 24, rgb).unwrap(),
+    };
+    let mut comparer = Comparer::new(reference.clone(), Encoding::Srgb).unwrap();
+    assert_eq!(comparer.status(), "comparing at 32×24…");
+    assert_eq!(
+        comparer.screen(Picture::Difference),
+        Some(reference.image.to_screen().as_slice()),
+        "the reference until the difference is made"
+    );
+    assert_eq!(comparer.screen(Picture::Render), None);
+
+    comparer.ask(&s.scene, options.clone());
+    let said = comparer.wait(Duration::from_secs(60));
+    assert_eq!(
+        said,
+        Some(Ok(
+            "compare: 1 of 768 pixels differ by more than 2/255 (0.13%), by up to 3/255; the first at (20, 9)".into()
+        ))
+    );
+    assert_eq!(
+        comparer.status(),
+        "1 of 768 pixels differ by more than 2/255"
+    );
+    let difference = comparer.screen(Picture::Difference).unwrap();
+    assert_eq!(difference[9 * 32 + 20], 0x00ff_ff00, "3 steps off: yellow");
+    let grey = difference[2 * 32 + 4];
+    assert_eq!(grey >> 16, grey & 0xff, "2 steps off: grey, {grey:06x}");
+    assert_eq!(
+        comparer.screen(Picture::Reference),
+        Some(reference.image.to_screen().as_slice())
+    );
+
+    // the same options again: nothing new is asked, the result stays
+    comparer.ask(&s.scene, options.clone());
+    assert!(comparer.comparison().is_some());
+    assert_eq!(comparer.wait(Duration::from_millis(200)), None);
+    // other options: a new comparison, for the whole image again (flat view differs a lot)
+    let flat = Options {
+        view: View::Flat,
+        ..options
+    };
+    comparer.ask(&s.scene, flat);
+    assert!(comparer.comparison().is_none());
+    let said = comparer.wait(Duration::from_secs(60)).unwrap().unwrap();
+    assert!(
+        said.starts_with("compare: ") && !said.contains(" 1 of 768"),
+        "{said}"
+    );
 }
 
 /// The overlay's projection inverts the camera ray: any point on the ray through a pixel's

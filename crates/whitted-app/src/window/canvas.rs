@@ -109,21 +109,32 @@ impl Canvas {
     /// `frame`, resized to fit. The window then shows them one to one, and the overlay is
     /// drawn at the window's own resolution.
     pub fn blit(&self, frame: &mut Vec<u32>, width: u32, height: u32) {
-        let (w, h) = (self.fb.width, self.fb.height);
-        frame.resize(width as usize * height as usize, 0);
-        if (width, height) == (w, h) {
-            frame.copy_from_slice(&self.screen);
-            return;
-        }
-        let column: Vec<usize> = (0..u64::from(width))
-            .map(|x| (x * u64::from(w) / u64::from(width)) as usize)
-            .collect();
-        for (y, row) in frame.chunks_exact_mut(width as usize).enumerate() {
-            let sy = (y as u64 * u64::from(h) / u64::from(height)) as usize;
-            let src = &self.screen[sy * w as usize..(sy + 1) * w as usize];
-            for (p, &sx) in row.iter_mut().zip(&column) {
-                *p = src[sx];
-            }
+        scale(
+            &self.screen,
+            (self.fb.width, self.fb.height),
+            frame,
+            (width, height),
+        );
+    }
+}
+
+/// Screen pixels `src` of `size` (width, height) scaled to `to` by the nearest pixel, into
+/// `frame`, resized to fit.
+pub fn scale(src: &[u32], size: (u32, u32), frame: &mut Vec<u32>, to: (u32, u32)) {
+    let ((w, h), (width, height)) = (size, to);
+    frame.resize(width as usize * height as usize, 0);
+    if to == size {
+        frame.copy_from_slice(src);
+        return;
+    }
+    let column: Vec<usize> = (0..u64::from(width))
+        .map(|x| (x * u64::from(w) / u64::from(width)) as usize)
+        .collect();
+    for (y, row) in frame.chunks_exact_mut(width as usize).enumerate() {
+        let sy = (y as u64 * u64::from(h) / u64::from(height)) as usize;
+        let line = &src[sy * w as usize..(sy + 1) * w as usize];
+        for (p, &sx) in row.iter_mut().zip(&column) {
+            *p = line[sx];
         }
     }
 }

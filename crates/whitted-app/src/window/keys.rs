@@ -197,6 +197,16 @@ pub fn keymap() -> Vec<Row> {
             format!("the next view: {}", views.join(", ")),
         ),
         one(
+            Key::Tab,
+            Action::NextPicture,
+            "compare",
+            &format!(
+                "with `--compare REF.png`: show your render, the reference, the difference (pixels \
+                 off by more than {}/255 marked) in turn; the title counts the pixels that differ",
+                crate::compare::TOLERANCE
+            ),
+        ),
+        one(
             Key::C,
             Action::PrintCamera,
             "camera",
@@ -248,6 +258,15 @@ pub fn action_of(key: Key) -> Option<Action> {
         .into_iter()
         .find(|b| b.key == key)
         .map(|b| b.action)
+}
+
+/// How the help writes the key bound to `action` ("Tab"), or "its key" if none is.
+#[must_use]
+pub fn label_of(action: Action) -> String {
+    bindings()
+        .into_iter()
+        .find(|b| b.action == action)
+        .map_or_else(|| "its key".into(), |b| key_name(b.key))
 }
 
 /// The keymap in one line: "W A S D move; Q E down, up; …".

@@ -7,6 +7,7 @@
 //! | [`schedule`] | the coarse-to-fine passes: blocks of 8, 4, 2, 1 pixels, no pixel traced twice |
 //! | [`progressive`] | the render thread, its rayon pool, and cancelling by generation |
 //! | [`canvas`] | the image as the passes fill it in, and the screen's pixels |
+//! | [`comparison`] | `--compare`: the render at the reference's size, compared on its own thread |
 //! | [`keys`] | the keymap: every key, what it asks for, and the help written from it |
 //! | [`state`] | what the keys change: input → state → commands, no display needed |
 //! | [`overlay`] | the ray tree of a clicked pixel, projected into the view and drawn |
@@ -18,6 +19,7 @@
 //! Course book: [The live window](../../../../docs/book/window.html) (`docs/src/window.md`).
 
 pub mod canvas;
+pub mod comparison;
 pub mod keys;
 pub mod overlay;
 pub mod progressive;

@@ -9,6 +9,10 @@
 //! the worker compares it with its job's before each tile, so the pass in flight stops at
 //! once and the window drops any tile of an older generation still on its way.
 //!
+//! The thread, its pool and the generations are the [`Worker`]'s; what it does with a job is
+//! a [`Task`]'s: [`Passes`] for the live image, [`super::comparison::Comparing`] for the
+//! comparison with a reference image, each on a worker of its own.
+//!
 //! Course book: [The live window](../../../../../docs/book/window.html) (`docs/src/window.md`).
 
 use std::sync::Arc;
@@ -126,30 +130,89 @@ pub fn render_pass(
     Finished::new(stopped.into_inner(), stats)
 }
 
-/// The render thread and its rayon pool.
-pub struct Worker {
+/// What a [`Worker`]'s thread does with each job.
+pub trait Task: Send + 'static {
+    /// What it sends back to the window.
+    type Update: Send + 'static;
+
+    /// Carries out `job` on `pool`, sending what it has on `updates`; once `cancel()` says
+    /// `true` (a newer job has come) it stops as soon as it can and sends nothing more.
+    fn run(
+        &mut self,
+        pool: &rayon::ThreadPool,
+        job: &Job,
+        cancel: &(dyn Fn() -> bool + Sync),
+        updates: &Sender<Self::Update>,
+    );
+
+    /// The update that says the job of `generation` panicked; `message` is one line. The task
+    /// forgets what it kept from earlier jobs (a panic may have left it half made).
+    fn failed(&mut self, generation: u64, message: String) -> Self::Update;
+}
+
+/// The live image's task: the passes of [`super::schedule`], each tile sent as it is done,
+/// with the acceleration structure kept from one job to the next while it still fits.
+#[derive(Default)]
+pub struct Passes {
+    cache: Option<(AccelKey, Arc<Accelerator>)>,
+}
+
+impl Task for Passes {
+    type Update = Update;
+
+    fn run(
+        &mut self,
+        pool: &rayon::ThreadPool,
+        job: &Job,
+        cancel: &(dyn Fn() -> bool + Sync),
+        updates: &Sender<Update>,
+    ) {
+        run_job(pool, job, &mut self.cache, cancel, updates);
+    }
+
+    fn failed(&mut self, generation: u64, message: String) -> Update {
+        self.cache = None;
+        Update::Failed {
+            generation,
+            message,
+        }
+    }
+}
+
+/// A thread, its rayon pool, and the task it runs on each job.
+pub struct Worker<T: Task = Passes> {
     generation: Arc<AtomicU64>,
     jobs: Option<Sender<Job>>,
-    updates: Receiver<Update>,
+    updates: Receiver<T::Update>,
     thread: Option<JoinHandle<()>>,
 }
 
 impl Worker {
-    /// Starts the render thread with a pool of `threads` threads (0: one per core).
+    /// Starts the render thread of the live image ([`Passes`]) with a pool of `threads`
+    /// threads (0: one per core).
     pub fn spawn(threads: usize) -> Result<Self, Error> {
+        Self::start(threads, "whitted-render", Passes::default())
+    }
+}
+
+impl<T: Task> Worker<T> {
+    /// Starts a thread named `name` that runs `task` on each job, with a pool of `threads`
+    /// threads (0: one per core) named after it.
+    pub fn start(threads: usize, name: &str, mut task: T) -> Result<Self, Error> {
+        let pool_name = name.to_string();
         let pool = rayon::ThreadPoolBuilder::new()
             .num_threads(threads)
-            .thread_name(|i| format!("whitted-render-{i}"))
+            .thread_name(move |i| format!("{pool_name}-{i}"))
             .build()
-            .map_err(|e| Error::Usage(format!("cannot start the render threads: {e}")))?;
+            .map_err(|e| Error::Usage(format!("cannot start the threads of {name}: {e}")))?;
         let generation = Arc::new(AtomicU64::new(0));
         let (jobs, job_rx) = channel::<Job>();
         let (update_tx, updates) = channel();
         let current = Arc::clone(&generation);
         let thread = std::thread::Builder::new()
-            .name("whitted-render".into())
-            .spawn(move || serve(&pool, &job_rx, &update_tx, &current))
-            .map_err(|e| Error::Usage(format!("cannot start the render thread: {e}")))?;
+            .name(name.into())
+            .spawn(move || serve(&pool, &job_rx, &update_tx, &current, &mut task))
+            .map_err(|e| Error::Usage(format!("cannot start the thread {name}: {e}")))?;
         Ok(Self {
             generation,
             jobs: Some(jobs),
@@ -182,18 +245,18 @@ impl Worker {
 
     /// The next update if one is waiting, without blocking.
     #[must_use]
-    pub fn try_update(&self) -> Option<Update> {
+    pub fn try_update(&self) -> Option<T::Update> {
         self.updates.try_recv().ok()
     }
 
     /// The next update, waiting at most `timeout`.
     #[must_use]
-    pub fn wait_update(&self, timeout: Duration) -> Option<Update> {
+    pub fn wait_update(&self, timeout: Duration) -> Option<T::Update> {
         self.updates.recv_timeout(timeout).ok()
     }
 }
 
-impl Drop for Worker {
+impl<T: Task> Drop for Worker<T> {
     fn drop(&mut self) {
         // cancel the job in flight, close the queue, and let the thread finish
         self.generation.fetch_add(1, Ordering::SeqCst);
@@ -204,14 +267,14 @@ impl Drop for Worker {
     }
 }
 
-/// The render thread: takes the newest job, renders its passes until a newer one arrives.
-fn serve(
+/// A worker's thread: takes the newest job and runs the task on it until a newer one arrives.
+fn serve<T: Task>(
     pool: &rayon::ThreadPool,
     jobs: &Receiver<Job>,
-    updates: &Sender<Update>,
+    updates: &Sender<T::Update>,
     current: &AtomicU64,
+    task: &mut T,
 ) {
-    let mut cache: Option<(AccelKey, Arc<Accelerator>)> = None;
     while let Ok(mut job) = jobs.recv() {
         // only the newest job matters
         while let Ok(newer) = jobs.try_recv() {
@@ -221,9 +284,8 @@ fn serve(
             continue;
         }
         let generation = job.generation;
-        let run = std::panic::AssertUnwindSafe(|| {
-            run_job(pool, &job, &mut cache, updates, current);
-        });
+        let cancel = || current.load(Ordering::Relaxed) != generation;
+        let run = std::panic::AssertUnwindSafe(|| task.run(pool, &job, &cancel, updates));
         if let Err(payload) = std::panic::catch_unwind(run) {
             let message = whitted::error::missing_exercise(payload.as_ref()).unwrap_or_else(|| {
                 format!(
@@ -231,11 +293,7 @@ fn serve(
                     whitted::error::panic_message(payload.as_ref())
                 )
             });
-            let _ = updates.send(Update::Failed {
-                generation,
-                message,
-            });
-            cache = None;
+            let _ = updates.send(task.failed(generation, message));
         }
     }
 }
@@ -271,8 +329,8 @@ fn run_job(
     pool: &rayon::ThreadPool,
     job: &Job,
     cache: &mut Option<(AccelKey, Arc<Accelerator>)>,
+    cancel: &(dyn Fn() -> bool + Sync),
     updates: &Sender<Update>,
-    current: &AtomicU64,
 ) {
     let start = Instant::now();
     let generation = job.generation;
@@ -285,7 +343,6 @@ fn run_job(
             a
         }
     };
-    let cancel = || current.load(Ordering::Relaxed) != generation;
     if cancel() {
         return;
     }
@@ -305,7 +362,7 @@ fn run_job(
                 colours,
             });
         };
-        let finished = pool.install(|| render_pass(&tracer, pass, &cancel, &sink));
+        let finished = pool.install(|| render_pass(&tracer, pass, cancel, &sink));
         stats.add(&finished.stats());
         if finished.is_cancelled() {
             return;

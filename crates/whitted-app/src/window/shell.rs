@@ -13,12 +13,14 @@ use std::time::{Duration, Instant, SystemTime};
 
 use minifb::{Key, KeyRepeat, MouseButton, MouseMode, ScaleMode, Window, WindowOptions};
 
-use super::canvas::Canvas;
+use super::canvas::{self, Canvas};
+use super::comparison::Comparer;
 use super::keys;
 use super::overlay::Overlay;
 use super::progressive::{Update, Worker};
 use super::schedule::PASSES;
-use super::state::{Command, Input, State};
+use super::state::{Command, Input, Picture, State};
+use crate::cli::Reference;
 use whitted::accel::Accelerator;
 use whitted::error::Error;
 use whitted::output::{self, Encoding};
@@ -43,6 +45,8 @@ pub struct Setup {
     pub save_to: PathBuf,
     /// No help at the start and no line per finished image.
     pub quiet: bool,
+    /// The reference image of `--compare`, which the compare key shows.
+    pub reference: Option<Reference>,
 }
 
 /// The scene file is polled this often for changes.
@@ -54,8 +58,17 @@ pub fn run(setup: Setup) -> Result<(), Error> {
     let binary = setup.max_chapter.about().binary;
     let mut window = open(binary, w as usize, h as usize)?;
     let worker = Worker::spawn(0)?;
+    let mut state = State::new(setup.scene, setup.options, setup.max_chapter);
+    let comparer = match setup.reference {
+        Some(reference) => {
+            state = state.with_reference(reference.image.size());
+            Some(Comparer::new(reference, setup.encoding)?)
+        }
+        None => None,
+    };
     let mut shell = Shell {
-        state: State::new(setup.scene, setup.options, setup.max_chapter),
+        state,
+        comparer,
         canvas: Canvas::new(w, h, setup.encoding),
         overlay: None,
         accel: None,
@@ -134,13 +147,21 @@ pub fn run(setup: Setup) -> Result<(), Error> {
             (0, _) | (_, 0) => (w, h),
             (fw, fh) => (fw as u32, fh as u32),
         };
-        shell.canvas.blit(&mut frame, fw, fh);
-        if let Some(o) = &shell.overlay {
-            let scale = (fw as Real / w as Real, fh as Real / h as Real);
-            o.draw(&mut frame, fw, fh, scale);
-        }
-        if shell.state.options.view == View::Rays {
-            heat_legend(&mut frame, fw, fh, &shell.canvas);
+        let compared = shell.comparer.as_ref().and_then(|c| {
+            let screen = c.screen(shell.state.picture)?;
+            Some((screen, c.size()))
+        });
+        if let Some((screen, size)) = compared {
+            canvas::scale(screen, size, &mut frame, (fw, fh));
+        } else {
+            shell.canvas.blit(&mut frame, fw, fh);
+            if let Some(o) = &shell.overlay {
+                let scale = (fw as Real / w as Real, fh as Real / h as Real);
+                o.draw(&mut frame, fw, fh, scale);
+            }
+            if shell.state.options.view == View::Rays {
+                heat_legend(&mut frame, fw, fh, &shell.canvas);
+            }
         }
         window
             .update_with_buffer(&frame, fw as usize, fh as usize)
@@ -196,6 +217,8 @@ impl FileStamp {
 /// The window's state and what it drives.
 struct Shell {
     state: State,
+    /// The comparison with the reference of `--compare`.
+    comparer: Option<Comparer>,
     canvas: Canvas,
     overlay: Option<Overlay>,
     /// The acceleration structure of the current generation, once the worker has built it.
@@ -242,13 +265,25 @@ impl Shell {
                 }
                 None => println!("the built-in showcase has no file to reload: name a scene file"),
             },
+            Command::Compare => {
+                if let (Some(c), Some(options)) = (&mut self.comparer, self.state.compare_options())
+                {
+                    c.ask(&self.state.scene, options);
+                }
+            }
             Command::Quit => return true,
         }
         false
     }
 
-    /// Takes every update that has arrived, without waiting.
+    /// Takes every update that has arrived, without waiting: the live render's, and the
+    /// comparison's (its line goes to stdout, as `--compare` prints it).
     fn take_updates(&mut self) {
+        match self.comparer.as_mut().and_then(Comparer::take) {
+            Some(Ok(line)) => println!("{line}"),
+            Some(Err(message)) => eprintln!("error: {message}"),
+            None => {}
+        }
         while let Some(update) = self.worker.try_update() {
             if !self.canvas.apply(&update) {
                 continue; // an older generation's
@@ -336,8 +371,15 @@ impl Shell {
         }
     }
 
-    /// chapter, view, depth, pass, time and M rays/s, and the last error if any.
+    /// chapter, view, depth, pass, time and M rays/s, and the last error if any; for the
+    /// reference and the difference, which they are, the count of pixels that differ, and
+    /// whether the camera has moved from the scene's (which they are for).
     fn title(&self) -> String {
+        if let Some(c) = &self.comparer
+            && self.state.picture != Picture::Render
+        {
+            return self.comparison_title(c);
+        }
         let o = &self.state.options;
         let c = &self.canvas;
         let mut t = format!(
@@ -379,6 +421,29 @@ impl Shell {
             _ => {}
         }
         if let Some(e) = self.failure.as_ref().or(self.state.error.as_ref()) {
+            t += &format!(" · error: {e}");
+        }
+        t
+    }
+
+    /// The title while the reference or the difference is shown.
+    fn comparison_title(&self, c: &Comparer) -> String {
+        let o = &self.state.options;
+        let (w, h) = c.size();
+        let mut t = format!(
+            "{} — {} ({}, {w}×{h}) · chapter {} · {} · depth {} · {}",
+            self.binary,
+            self.state.picture.name(),
+            c.path.display(),
+            o.chapter.number(),
+            o.view.name(),
+            o.max_depth,
+            c.status()
+        );
+        if self.state.camera_moved() {
+            t += " · for the scene's camera, not the moved one";
+        }
+        if let Some(e) = &self.state.error {
             t += &format!(" · error: {e}");
         }
         t

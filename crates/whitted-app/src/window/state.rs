@@ -3,6 +3,11 @@
 //! inspect, save, reload, quit). Nothing here touches a display, so every binding and rule is
 //! tested without one. The keys and what each asks for are the keymap's ([`super::keys`]).
 //!
+//! With a reference image (`--compare REF.png`) the state also says which [`Picture`] is
+//! shown: the live render, the reference, or the difference. The last two are about the
+//! student's image rendered at the reference's size with the scene file's camera
+//! ([`State::compare_options`]): moving the camera changes the live render, not them.
+//!
 //! Course book: [The live window](../../../../../docs/book/window.html) (`docs/src/window.md`).
 
 use std::sync::Arc;
@@ -64,6 +69,8 @@ pub enum Action {
     Save,
     /// Reload the scene file.
     Reload,
+    /// Show the next picture: the render, the reference, the difference.
+    NextPicture,
     /// Print the keys.
     Help,
     /// Quit.
@@ -120,6 +127,9 @@ pub enum Command {
     Save,
     /// Read the scene file again (the answer comes back as [`Input::Loaded`]).
     Reload,
+    /// Compare the student's image with the reference for the state's
+    /// [`State::compare_options`], unless that comparison is already made or under way.
+    Compare,
     /// Close the window.
     Quit,
 }
@@ -132,6 +142,39 @@ pub const TURN_DEGREES: Real = 3.0;
 pub const FAST: Real = 4.0;
 /// The viewing direction stays at least this many degrees away from the up vector.
 pub const MIN_PITCH_GAP: Real = 2.0;
+
+/// What the window shows.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Picture {
+    /// The live render, refined pass by pass.
+    Render,
+    /// The reference image of `--compare`.
+    Reference,
+    /// The reference in grey with the pixels that differ marked ([`crate::compare`]).
+    Difference,
+}
+
+impl Picture {
+    /// The pictures in the order the compare key shows them.
+    pub const ALL: [Self; 3] = [Self::Render, Self::Reference, Self::Difference];
+
+    /// How the title and the help name it.
+    #[must_use]
+    pub fn name(self) -> &'static str {
+        match self {
+            Self::Render => "your render",
+            Self::Reference => "the reference",
+            Self::Difference => "the difference",
+        }
+    }
+
+    /// The one the compare key shows after this one.
+    #[must_use]
+    pub fn next(self) -> Self {
+        let i = Self::ALL.iter().position(|&p| p == self).unwrap_or(0);
+        Self::ALL[(i + 1) % Self::ALL.len()]
+    }
+}
 
 /// The window's state: the last good scene and everything the keys change.
 #[derive(Clone, Debug)]
@@ -149,6 +192,10 @@ pub struct State {
     pub file_camera: CameraSettings,
     /// The last reload's error, shown in the title until a reload succeeds.
     pub error: Option<String>,
+    /// The size of the reference image, (width, height), with `--compare`.
+    pub reference: Option<(u32, u32)>,
+    /// What the window shows: always [`Picture::Render`] without a reference.
+    pub picture: Picture,
 }
 
 impl State {
@@ -164,7 +211,36 @@ impl State {
             max_chapter,
             file_camera,
             error: None,
+            reference: None,
+            picture: Picture::Render,
         }
+    }
+
+    /// The state with a reference image of `size` (width, height) to compare with.
+    #[must_use]
+    pub fn with_reference(mut self, size: (u32, u32)) -> Self {
+        self.reference = Some(size);
+        self
+    }
+
+    /// What the comparison renders: the state's scene, chapter, view and depth at the
+    /// reference's size with the scene file's camera (the reference cannot follow a moved
+    /// camera); `None` without a reference.
+    #[must_use]
+    pub fn compare_options(&self) -> Option<Options> {
+        let (width, height) = self.reference?;
+        Some(Options {
+            width,
+            height,
+            camera: Some(self.file_camera.clone()),
+            ..self.options.clone()
+        })
+    }
+
+    /// Whether the camera has moved away from the scene file's.
+    #[must_use]
+    pub fn camera_moved(&self) -> bool {
+        self.options.camera.as_ref() != Some(&self.file_camera)
     }
 
     /// The camera as moved.
@@ -173,10 +249,18 @@ impl State {
         self.options.camera.as_ref().unwrap_or(&self.scene.camera)
     }
 
-    /// Takes one input and says what to do.
+    /// Takes one input and says what to do. While the reference or the difference is shown,
+    /// every change that renders anew compares anew too.
     pub fn handle(&mut self, input: Input) -> Vec<Command> {
-        match input {
+        let mut commands = match input {
             Input::Key { action, fast } => self.act(action, fast),
+            Input::Click { .. } if self.picture != Picture::Render => {
+                vec![Command::Print(format!(
+                    "a click inspects your render, and {} is shown: press {} to show your render",
+                    self.picture.name(),
+                    super::keys::label_of(Action::NextPicture)
+                ))]
+            }
             Input::Click { mouse, window } => {
                 match click_to_pixel(mouse, window, (self.options.width, self.options.height)) {
                     Some((x, y)) => vec![Command::Inspect { x, y }],
@@ -184,7 +268,14 @@ impl State {
                 }
             }
             Input::Loaded(result) => self.loaded(*result),
+        };
+        if self.picture != Picture::Render
+            && commands.contains(&Command::Render)
+            && !commands.contains(&Command::Compare)
+        {
+            commands.push(Command::Compare);
         }
+        commands
     }
 
     fn act(&mut self, action: Action, fast: bool) -> Vec<Command> {
@@ -198,6 +289,7 @@ impl State {
             Action::PrintCamera => vec![Command::Print(camera_table(self.camera()))],
             Action::Save => vec![Command::Save],
             Action::Reload => vec![Command::Reload],
+            Action::NextPicture => self.next_picture(),
             Action::Help => vec![Command::Print(super::keys::help())],
             Action::Quit => vec![Command::Quit],
         }
@@ -270,6 +362,26 @@ impl State {
             .unwrap_or(0);
         self.options.view = View::ALL[(i + 1) % View::ALL.len()];
         vec![Command::Render]
+    }
+
+    fn next_picture(&mut self) -> Vec<Command> {
+        if self.reference.is_none() {
+            let figure = format!(
+                "docs/src/figures/{}.png",
+                self.options.chapter.about().binary
+            );
+            return vec![Command::Print(format!(
+                "no reference to compare with: start the window with --compare REF.png, such as \
+                 --compare {figure} (chapter {}'s figure, of the scene {})",
+                self.options.chapter.number(),
+                self.options.chapter.about().scene()
+            ))];
+        }
+        self.picture = self.picture.next();
+        match self.picture {
+            Picture::Render => vec![],
+            Picture::Reference | Picture::Difference => vec![Command::Compare],
+        }
     }
 
     fn loaded(&mut self, result: Result<Scene, Error>) -> Vec<Command> {
