@@ -63,26 +63,47 @@ fn crop(composite: &Image, left: u32, width: u32, height: u32) -> Image {
     Image::new(width, height, rgb).unwrap()
 }
 
+/// The share of pixels a render may have off the figures by more than [`TOLERANCE`]: none in
+/// double precision, in which the figures are rendered; in single precision, as many as the
+/// golden tests allow (0.5%: a grazing ray may hit or miss, a refracted one bend another way;
+/// chapter 5's figure has 2 such pixels of 38400).
+const SHARE: f64 = if cfg!(feature = "f32") { 0.005 } else { 0.0 };
+
+/// The count of differing pixels a compare line gives (0 for "the same").
+fn count(line: &str) -> usize {
+    if line.starts_with("compare: the same as the reference") {
+        return 0;
+    }
+    let rest = line
+        .strip_prefix("compare: ")
+        .unwrap_or_else(|| panic!("{line:?}"));
+    let n = rest.split(' ').next().unwrap_or_default();
+    n.parse().unwrap_or_else(|_| panic!("no count in {line:?}"))
+}
+
 /// Every chapter's binary, run as `cargo learn` runs it, finds its render the same as its
-/// figure, says so in one line on stdout, exits 0, and writes the three images side by side:
-/// the render (within the tolerance of the figure), the figure itself, and the figure in grey.
+/// figure (within [`SHARE`]), says so in one line on stdout, exits 0, and writes the three
+/// images side by side: the render, the figure itself, and their difference, grey wherever
+/// nothing differs.
 #[test]
 fn every_chapter_is_the_same_as_its_figure() {
     let dir = tempfile::tempdir().unwrap();
+    let same = format!(
+        "compare: the same as the reference (no pixel differs by more than {TOLERANCE}/255)\n"
+    );
     for chapter in Chapter::ALL {
         let name = chapter.about().binary;
         let reference = figure(chapter);
         let o = compare(chapter, &reference, dir.path(), &[]);
         assert_eq!(o.status.code(), Some(0), "{name}: {}", text(&o.stderr));
-        assert_eq!(
-            text(&o.stdout),
-            format!(
-                "compare: the same as the reference (no pixel differs by more than {TOLERANCE}/255)\n"
-            ),
-            "{name}"
-        );
+        let line = text(&o.stdout);
         let fig = read(&reference);
         let (w, h) = fig.size();
+        let allowed = (SHARE * f64::from(w * h)) as usize;
+        assert!(
+            line == same || (line.lines().count() == 1 && count(&line) <= allowed),
+            "{name}: {line:?}, expected {same:?} (or at most {allowed} pixels differing)"
+        );
         let out = read(&dir.path().join("out.png"));
         assert_eq!(
             out.size(),
@@ -96,14 +117,18 @@ fn every_chapter_is_the_same_as_its_figure() {
         );
         let render = crop(&out, 0, w, h);
         let c = whitted_app::compare::compare(&render, &fig).unwrap();
-        assert!(c.same(), "{name}: the left is the render: {}", c.line());
+        assert_eq!(c.line() + "\n", line, "{name}: the left is the render");
         let diff = crop(&out, 2 * (w + GAP), w, h);
         assert_eq!(diff, c.difference, "{name}: the right is the difference");
-        assert!(
-            diff.rgb
-                .chunks_exact(3)
-                .all(|p| p[0] == p[1] && p[1] == p[2]),
-            "{name}: nothing differs, so the difference is all grey"
+        let grey = diff
+            .rgb
+            .chunks_exact(3)
+            .filter(|p| p[0] == p[1] && p[1] == p[2])
+            .count();
+        assert_eq!(
+            grey,
+            c.pixels - c.differing,
+            "{name}: grey wherever nothing differs"
         );
     }
 }

@@ -2,7 +2,8 @@
 //! one crashes minifb), driven by `xdotool` and captured with ImageMagick's `import`, as a
 //! student would use it: the window opens on the showcase and refines to the image `-o`
 //! writes, a click prints the ray tree and draws it, saving the scene file reloads it, and
-//! every key does what the help says; Esc closes it with exit status 0.
+//! every key does what the help says; Esc closes it with exit status 0. With `--compare
+//! REF.png`, Tab shows the reference and then the difference, which marks the pixels changed.
 //!
 //! Ignored by default (it needs those programs); `.ci/run` installs them and runs
 //! `cargo test --test window_e2e -- --ignored`. Keys are held 100 ms, as fingers do: minifb
@@ -26,33 +27,55 @@ struct Xvfb {
 }
 
 impl Xvfb {
-    /// Starts Xvfb on a display of its own, from :71 on; a display whose server does not come
-    /// up (taken by another run, or a failed X connection) moves on to the next, 10 tries in
-    /// all. Xvfb itself clears the lock file of a server that died.
+    /// Starts Xvfb on a display of its own: Xvfb itself picks a free one (`-displayfd`) and
+    /// writes its number once it takes connections, so tests running at once (these, or
+    /// another checkout's) never share a screen.
     fn start() -> Self {
-        for n in 71..81 {
-            let display = format!(":{n}");
-            let Ok(child) = Command::new("Xvfb")
-                .args([&display, "-screen", "0", "1280x1024x24", "-nolisten", "tcp"])
-                .stdout(Stdio::null())
-                .stderr(Stdio::null())
-                .spawn()
-            else {
-                panic!("Xvfb is not installed (Debian: apt-get install xvfb)");
-            };
-            let mut x = Self { child, display };
-            let start = Instant::now();
-            while start.elapsed() < Duration::from_secs(10) {
-                if let Ok(Some(_)) = x.child.try_wait() {
-                    break; // it failed: try the next display
-                }
-                if xdotool_ok(&x.display) {
-                    return x;
-                }
-                std::thread::sleep(Duration::from_millis(100));
-            }
+        use std::io::BufRead;
+        let Ok(mut child) = Command::new("Xvfb")
+            .args([
+                "-displayfd",
+                "1",
+                "-screen",
+                "0",
+                "1280x1024x24",
+                "-nolisten",
+                "tcp",
+            ])
+            .stdout(Stdio::piped())
+            .stderr(Stdio::null())
+            .spawn()
+        else {
+            panic!("Xvfb is not installed (Debian: apt-get install xvfb)");
+        };
+        let mut number = String::new();
+        if let Some(out) = child.stdout.take() {
+            let _ = std::io::BufReader::new(out).read_line(&mut number);
         }
-        panic!("no Xvfb display could be started on :71 to :80");
+        let number = number.trim().to_string();
+        let mut x = Self {
+            child,
+            display: format!(":{number}"),
+        };
+        assert!(
+            number.parse::<u32>().is_ok(),
+            "Xvfb started no display (it wrote {number:?})"
+        );
+        let start = Instant::now();
+        while !xdotool_ok(&x.display) {
+            assert!(
+                start.elapsed() < Duration::from_secs(10),
+                "Xvfb's display {} does not answer",
+                x.display
+            );
+            assert!(
+                matches!(x.child.try_wait(), Ok(None)),
+                "Xvfb ended on {}",
+                x.display
+            );
+            std::thread::sleep(Duration::from_millis(100));
+        }
+        x
     }
 }
 
@@ -111,7 +134,13 @@ struct Session {
     stdout: PathBuf,
     stderr: PathBuf,
     dir: tempfile::TempDir,
+    /// One window at a time: two renders at once slow each other's frames, and a key held
+    /// 100 ms could then repeat.
+    _alone: std::sync::MutexGuard<'static, ()>,
 }
+
+/// Held by the window open now.
+static ONE_WINDOW: std::sync::Mutex<()> = std::sync::Mutex::new(());
 
 impl Session {
     fn text(path: &Path) -> String {
@@ -246,53 +275,76 @@ fn save_by_rename(path: &Path, text: &str) {
     std::fs::rename(&tmp, path).unwrap();
 }
 
+impl Session {
+    /// Starts an X server and `chapter`'s binary on it with `args` and `--window`, its
+    /// stdout and stderr going to files in `dir`; waits for its window.
+    fn open(chapter: Chapter, args: &[&std::ffi::OsStr], dir: tempfile::TempDir) -> Self {
+        let alone = ONE_WINDOW
+            .lock()
+            .unwrap_or_else(std::sync::PoisonError::into_inner);
+        let x = Xvfb::start();
+        let (stdout, stderr) = (dir.path().join("out.txt"), dir.path().join("err.txt"));
+        let child = Command::new(common::exe(chapter))
+            .args(args)
+            .arg("--window")
+            .env("DISPLAY", &x.display)
+            .stdout(std::fs::File::create(&stdout).unwrap())
+            .stderr(std::fs::File::create(&stderr).unwrap())
+            .spawn()
+            .unwrap();
+        let window = xdotool(
+            &x.display,
+            &["search", "--sync", "--name", chapter.about().binary],
+        )
+        .lines()
+        .next()
+        .unwrap()
+        .to_string();
+        let geo = xdotool(&x.display, &["getwindowgeometry", "--shell", &window]);
+        let field = |k: &str| -> u32 {
+            geo.lines()
+                .find_map(|l| l.strip_prefix(&format!("{k}=")))
+                .unwrap()
+                .parse()
+                .unwrap()
+        };
+        let geometry = (field("X"), field("Y"), field("WIDTH"), field("HEIGHT"));
+        Self {
+            x,
+            child,
+            window,
+            geometry,
+            stdout,
+            stderr,
+            dir,
+            _alone: alone,
+        }
+    }
+
+    /// The window's title now.
+    fn title(&self) -> String {
+        xdotool(&self.x.display, &["getwindowname", &self.window])
+    }
+}
+
 #[test]
 #[ignore = "needs Xvfb, xdotool and ImageMagick: .ci/run installs them and runs it"]
 fn the_window_refines_inspects_reloads_and_obeys_every_key() {
-    let x = Xvfb::start();
     let bin = &common::exe(LAST);
     let dir = tempfile::tempdir().unwrap();
     let scene = dir.path().join("scene.toml");
     std::fs::write(&scene, whitted_app::cli::SHOWCASE).unwrap();
     let saved = dir.path().join("saved.png");
-    let (stdout, stderr) = (dir.path().join("out.txt"), dir.path().join("err.txt"));
-    let child = Command::new(bin)
-        .arg(&scene)
-        .arg("--window")
-        .arg("-o")
-        .arg(&saved)
-        .env("DISPLAY", &x.display)
-        .stdout(std::fs::File::create(&stdout).unwrap())
-        .stderr(std::fs::File::create(&stderr).unwrap())
-        .spawn()
-        .unwrap();
-    let window = xdotool(
-        &x.display,
-        &["search", "--sync", "--name", LAST.about().binary],
-    )
-    .lines()
-    .next()
-    .unwrap()
-    .to_string();
-    let geo = xdotool(&x.display, &["getwindowgeometry", "--shell", &window]);
-    let field = |k: &str| -> u32 {
-        geo.lines()
-            .find_map(|l| l.strip_prefix(&format!("{k}=")))
-            .unwrap()
-            .parse()
-            .unwrap()
-    };
-    let geometry = (field("X"), field("Y"), field("WIDTH"), field("HEIGHT"));
-    assert_eq!((geometry.2, geometry.3), (640, 480), "the showcase's size");
-    let mut s = Session {
-        x,
-        child,
-        window,
-        geometry,
-        stdout,
-        stderr,
+    let mut s = Session::open(
+        LAST,
+        &[scene.as_os_str(), "-o".as_ref(), saved.as_os_str()],
         dir,
-    };
+    );
+    assert_eq!(
+        (s.geometry.2, s.geometry.3),
+        (640, 480),
+        "the showcase's size"
+    );
     let refs = tempfile::tempdir().unwrap();
 
     // 1. it refines to the image -o writes
@@ -452,7 +504,7 @@ fn the_window_refines_inspects_reloads_and_obeys_every_key() {
     let err = std::fs::read_to_string(&s.stderr).unwrap();
     assert!(err.contains("scene.toml:"), "{err}");
     assert_eq!(s.shot("11-kept").get_pixel(2, 2).0, [255, 0, 0]);
-    let title = xdotool(&s.x.display, &["getwindowname", &s.window]);
+    let title = s.title();
     assert!(title.contains("error: "), "{title}");
     // R reloads by hand: the file fixed again
     std::fs::write(&scene, whitted_app::cli::SHOWCASE).unwrap();
@@ -460,11 +512,20 @@ fn the_window_refines_inspects_reloads_and_obeys_every_key() {
     s.key("r");
     s.wait_for(false, "scene reloaded", n);
 
-    // 9. H prints the keys, as the keymap writes them; Esc quits with status 0
+    // 9. H prints the keys, as the keymap writes them; Tab, with no reference, says how to
+    // give one; Esc quits with status 0
     let help = whitted_app::window::keys::help();
     let n = s.count(false, &help);
     s.key("h");
     s.wait_for(false, &help, n);
+    let n = s.count(false, "no reference to compare with");
+    s.key("Tab");
+    s.wait_for(false, "no reference to compare with", n);
+    quit(&mut s);
+}
+
+/// Esc closes the window, and the program ends with status 0.
+fn quit(s: &mut Session) {
     s.key("Escape");
     let start = Instant::now();
     let status = loop {
@@ -478,4 +539,115 @@ fn the_window_refines_inspects_reloads_and_obeys_every_key() {
         std::thread::sleep(Duration::from_millis(50));
     };
     assert!(status.success(), "{status}");
+}
+
+/// `image` scaled to `w` × `h` by the nearest pixel, as the window scales what it shows.
+fn scaled(image: &image::RgbImage, w: u32, h: u32) -> image::RgbImage {
+    let (iw, ih) = image.dimensions();
+    image::RgbImage::from_fn(w, h, |x, y| *image.get_pixel(x * iw / w, y * ih / h))
+}
+
+/// With `--compare REF.png`, Tab shows the reference, then the difference, then the render
+/// again; the reference here is chapter 3's figure with a blue square painted in, so the
+/// difference marks exactly that square, red. The title counts it, and says when the camera
+/// has moved from the scene's.
+#[test]
+#[ignore = "needs Xvfb, xdotool and ImageMagick: .ci/run installs them and runs it"]
+fn the_compare_key_shows_the_reference_and_the_difference() {
+    const CHAPTER: Chapter = Chapter::Shading;
+    let dir = tempfile::tempdir().unwrap();
+    let figure = common::root().join(format!("docs/src/figures/{}.png", CHAPTER.about().binary));
+    let mut reference = image::open(&figure).unwrap().to_rgb8();
+    assert_eq!(reference.dimensions(), (240, 120), "the chapter's figure");
+    // a 20 × 20 square on the dark background, top left
+    for y in 8..28 {
+        for x in 8..28 {
+            reference.put_pixel(x, y, image::Rgb([0, 0, 255]));
+        }
+    }
+    let ref_png = dir.path().join("ref.png");
+    reference.save(&ref_png).unwrap();
+    let scene = common::scene(CHAPTER);
+    let mut s = Session::open(
+        CHAPTER,
+        &[scene.as_os_str(), "--compare".as_ref(), ref_png.as_os_str()],
+        dir,
+    );
+    // the scene's own size, 480 × 240: the reference shows twice as large
+    let (w, h) = (s.geometry.2, s.geometry.3);
+    assert_eq!((w, h), (480, 240), "chapter 3's scene's size");
+    s.wait_for(true, "image complete: chapter 3", 0);
+    std::thread::sleep(Duration::from_millis(200));
+    let render = s.shot("20-render");
+
+    // Tab: the reference, scaled to the window; the comparison is made on the side
+    s.key("Tab");
+    s.wait_for(false, "compare: ", 0);
+    std::thread::sleep(Duration::from_millis(200));
+    let shown = s.shot("21-reference");
+    let want = scaled(&reference, w, h);
+    assert!(
+        differing(&shown, &want) < 0.001,
+        "{}",
+        differing(&shown, &want)
+    );
+    assert_eq!(shown.get_pixel(36, 36).0, [0, 0, 255], "the square, scaled");
+    let line = std::fs::read_to_string(&s.stdout).unwrap();
+    assert!(
+        line.contains("compare: 400 of 28800 pixels differ by more than 2/255 (1.39%), by up to ")
+            && line.contains("; the first at (8, 8)"),
+        "{line}"
+    );
+    let title = s.title();
+    assert!(
+        title.contains("the reference") && title.contains("400 of 28800 pixels differ"),
+        "{title}"
+    );
+
+    // Tab: the difference: the square red, the rest the reference in grey
+    s.key("Tab");
+    std::thread::sleep(Duration::from_millis(300));
+    let difference = s.shot("22-difference");
+    assert_eq!(
+        difference.get_pixel(36, 36).0,
+        [255, 0, 0],
+        "the square, marked"
+    );
+    let grey = difference.get_pixel(240, 200).0;
+    assert!(grey[0] == grey[1] && grey[1] == grey[2], "{grey:?}");
+    assert!(
+        differing(&difference, &shown) > 0.1,
+        "the difference is not the reference"
+    );
+    let marked = difference.pixels().filter(|p| p.0 == [255, 0, 0]).count();
+    assert_eq!(
+        marked,
+        40 * 40,
+        "the square, twice as large, and nothing else red"
+    );
+    assert!(s.title().contains("the difference"), "{}", s.title());
+
+    // W moves the camera: the comparison stays (it is for the scene's camera), and says so
+    s.key("w");
+    std::thread::sleep(Duration::from_millis(300));
+    let title = s.title();
+    assert!(
+        title.contains("for the scene's camera") && title.contains("400 of 28800"),
+        "{title}"
+    );
+    assert_eq!(s.count(false, "compare: "), 1, "no new comparison");
+    assert!(differing(&s.shot("23-moved"), &difference) < 0.001);
+
+    // Tab: the live render again, from the moved camera
+    s.wait_for(true, "image complete: chapter 3", 1);
+    s.key("Tab");
+    std::thread::sleep(Duration::from_millis(300));
+    let moved = s.shot("24-render-again");
+    assert!(differing(&moved, &difference) > 0.1, "back to the render");
+    assert!(
+        differing(&moved, &render) > 0.01,
+        "the moved camera's render"
+    );
+    assert!(!s.title().contains("pixels differ"), "{}", s.title());
+    quit(&mut s);
 }
