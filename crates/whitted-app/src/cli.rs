@@ -35,8 +35,6 @@ use clap::builder::PossibleValue;
 use clap::{Args, FromArgMatches};
 
 use whitted::accel::Accel;
-
-use crate::compare::{self, Image};
 /// The one line of an exercise not written yet (it lives in [`whitted::error`], where the live
 /// window finds it too).
 pub use whitted::error::missing_exercise;
@@ -49,6 +47,8 @@ use whitted::scene::load::{MAX_DEPTH, MAX_SAMPLES, MAX_SIDE};
 use whitted::scene::scatter::Layout;
 use whitted::scene::{self, Scene};
 use whitted::shapes::Numerics;
+
+use crate::compare::{self, Image};
 
 /// The default scene, compiled into every binary (it lives in the library).
 pub use whitted::scene::{SHOWCASE, SHOWCASE_NAME};
@@ -498,6 +498,10 @@ fn run_inner(chapter: Chapter, args: &ChapterArgs) -> Result<(), Error> {
             (options.width, options.height) = fit(options.width, options.height, WINDOW_FIT);
         }
         render::check_size(options.width, options.height)?;
+        if let Some(r) = &reference {
+            // the comparison renders at the reference's size
+            render::check_size(r.image.width, r.image.height)?;
+        }
         return crate::window::run(crate::window::Setup {
             scene_path: common.scene.clone(),
             scene,

@@ -1,6 +1,7 @@
 //! The live window (`--window` on every chapter binary): the image refines as you watch,
-//! the keys move the camera and switch chapter, view and depth, and a click shows the ray tree
-//! of a pixel drawn over the image.
+//! the keys move the camera and switch chapter, view and depth, a click shows the ray tree
+//! of a pixel drawn over the image, and with `--compare REF.png` a key shows the reference and
+//! the difference beside the render.
 //!
 //! | module | what it holds |
 //! |---|---|
