@@ -10,7 +10,7 @@
 //!
 //! The result is written down in [`MAP_PATH`], `chapters/exercise-tests.toml`, next to the
 //! manifest: each `[[tests]]` table names tests (as `target::name`, or a prefix of it) and
-//! the exercises they run. `whitted formulas --deps --write` writes it; `whitted formulas
+//! the exercises they run, by name. `whitted formulas --deps --write` writes it; `whitted formulas
 //! --deps` measures again and [`check`]s the file, which CI does, so the list of what a
 //! handout fails cannot drift from the tests. A handout of the exercises S fails exactly the
 //! tests whose table names one of S ([`expected`]).
@@ -156,8 +156,9 @@ pub fn measure(root: &Path, manifest: &Manifest, options: &Options) -> Result<Me
 }
 
 /// The map's text for the measurements: every test, grouped by the exact set of exercises
-/// it fails without, each group written with `target::prefix_` where a whole prefix shares
-/// the set.
+/// it fails without (named in the manifest's order), each group written with
+/// `target::prefix` where every test of a prefix shares the set: an exercise's test prefix
+/// (`ex_viewing_basis_`), or else the name's first word (`ch1_`, `centre_`).
 #[must_use]
 pub fn map_text(manifest: &Manifest, measured: &Measured) -> String {
     let mut needs: BTreeMap<&TestId, Vec<usize>> =
@@ -185,9 +186,19 @@ pub fn map_text(manifest: &Manifest, measured: &Measured) -> String {
         let mut written: Vec<String> = Vec::new();
         for t in &tests {
             let (target, name) = t.split_once("::").unwrap_or(("", t));
-            let prefix = name
-                .split_once('_')
-                .map(|(head, _)| format!("{target}::{head}_"));
+            let prefix = match manifest.exercise_of_test(crate::learn::test_name(name)) {
+                Some(e) => {
+                    let own = crate::learn::test_name(name);
+                    let module = &name[..name.len() - own.len()];
+                    Some(format!(
+                        "{target}::{module}{}",
+                        manifest.entries[e].exercise.test_prefix()
+                    ))
+                }
+                None => name
+                    .split_once('_')
+                    .map(|(head, _)| format!("{target}::{head}_")),
+            };
             let whole = prefix.filter(|p| {
                 measured
                     .tests
@@ -200,18 +211,40 @@ pub fn map_text(manifest: &Manifest, measured: &Measured) -> String {
                 written.push(entry);
             }
         }
-        let ids = crate::manifest::compress_ids(&manifest.entries, &set);
         out += &format!(
             "\n[[tests]]\ntests = [\n{}]\nneeds = [{}]\n",
             written
                 .iter()
                 .map(|w| format!("    {w:?},\n"))
                 .collect::<String>(),
-            ids.iter()
-                .map(|i| format!("{i:?}"))
-                .collect::<Vec<_>>()
-                .join(", ")
+            wrapped(
+                set.iter()
+                    .map(|&i| format!("{:?}", manifest.entries[i].exercise.name))
+            )
         );
     }
     out
+}
+
+/// Items joined by `, `, on lines of at most 100 characters after the first (indented by 4)
+/// when they do not fit on one.
+fn wrapped(items: impl Iterator<Item = String>) -> String {
+    let items: Vec<String> = items.collect();
+    let one = items.join(", ");
+    if one.len() <= 88 {
+        return one;
+    }
+    let mut out = String::from("\n   ");
+    let mut width = 3;
+    for item in items {
+        if width + item.len() + 2 > 100 {
+            out += "\n   ";
+            width = 3;
+        }
+        out += " ";
+        out += &item;
+        out += ",";
+        width += item.len() + 2;
+    }
+    out + "\n"
 }

@@ -2,7 +2,7 @@
 //! manifest.
 //!
 //! What is graded is the student's code and nothing else: the body of each exercise, the lines
-//! between `// BEGIN SOLUTION 2.3` and `// END SOLUTION` in the student's files. Those bodies
+//! between `// BEGIN SOLUTION sphere_coefficients` and `// END SOLUTION` in the student's files. Those bodies
 //! are put into a copy of the **instructor's** project — its tests, its manifest, its
 //! `Cargo.lock`, its code around the exercises — so a student who edits a test, the manifest
 //! or the renderer gains nothing. An exercise whose markers are missing counts as not written.
@@ -19,7 +19,8 @@
 //!    process with its own time limit: a `todo!()`, a panic, a stack overflow, an abort or an
 //!    endless loop fails the tests it touches and no others.
 //! 3. **Score.** An exercise's points ([`super::manifest::Exercise::points`]) are shared
-//!    equally by its tests, the ones named after it (`ex2_3_…`), public and hidden alike.
+//!    equally by its tests, the ones named after it (`ex_sphere_coefficients_…`), public and
+//!    hidden alike.
 //!
 //! Hidden tests are the instructor's own test files (`--hidden DIR`, each `*.rs` a test target
 //! added to the copy as `tests/hidden_NAME.rs`), compiled against the same public API. Their
@@ -36,7 +37,7 @@ use std::time::{Duration, Instant};
 use super::handout::{self, BEGIN, END, Region};
 use super::learn::test_name;
 use super::manifest::Manifest;
-use super::{Error, cargo, layout, prove};
+use super::{Error, cargo, files, layout, prove};
 
 /// The nextest profile the grader writes into the copy: no retries, no fail-fast, a time
 /// limit per test, and a JUnit file the grader reads.
@@ -110,7 +111,7 @@ impl Status {
 /// One test's result.
 #[derive(Clone, Debug, PartialEq)]
 pub struct TestResult {
-    /// The test's name (`ex2_3_the_discriminant_…`).
+    /// The test's name (`ex_sphere_discriminant_…`).
     pub name: String,
     /// Its test target (`ch02_generic_objects`, `hidden_extra`).
     pub target: String,
@@ -181,13 +182,13 @@ impl Grade {
     }
 }
 
-/// The body a student wrote for the region `r`: the lines between the region's markers in the
-/// same file of the submission. `Err` says why there is none.
-pub fn student_body(submission: &Path, r: &Region, id: &str) -> Result<String, String> {
+/// The body a student wrote for the region `r` of the exercise named `name`: the lines between
+/// the region's markers in the same file of the submission. `Err` says why there is none.
+pub fn student_body(submission: &Path, r: &Region, name: &str) -> Result<String, String> {
     let path = submission.join(&r.file);
     let text = std::fs::read_to_string(&path)
         .map_err(|e| format!("cannot read {}: {e}", r.file.display()))?;
-    let begin = format!("{BEGIN} {id}");
+    let begin = format!("{BEGIN} {name}");
     let mut lines = text.split_inclusive('\n');
     if !lines.by_ref().any(|l| l.trim() == begin) {
         return Err(format!(
@@ -275,13 +276,15 @@ pub fn grade(
         )));
     }
     let chapters: Vec<u8> = match options.chapter {
-        Some(c) if (1..=5).contains(&c) => vec![c],
+        Some(c) if crate::syllabus::chapter(c).is_some() => vec![c],
         Some(c) => {
             return Err(Error::Usage(format!(
-                "--chapter {c}: the chapters are 1 to 5"
+                "--chapter {c}: the chapters are {} to {}",
+                crate::syllabus::FIRST,
+                crate::syllabus::LAST
             )));
         }
-        None => (1..=5).collect(),
+        None => crate::syllabus::CHAPTERS.iter().map(|c| c.number).collect(),
     };
     let student = submission
         .canonicalize()
@@ -295,7 +298,7 @@ pub fn grade(
     let project = match &options.target_dir {
         Some(dir) => {
             let project = dir.join(COPY);
-            prove::sync_project(root, &project, &[".config", STORE])?;
+            files::sync_project(root, &project, &[".config", STORE])?;
             if options.keep {
                 eprintln!("grade: the graded copy is {}", project.display());
             }
@@ -311,7 +314,7 @@ pub fn grade(
                 eprintln!("grade: the graded copy is kept in {}", t.path().display());
             }
             let project = t.path().join("project");
-            prove::copy_project(root, &project)?;
+            files::copy_project(root, &project)?;
             temp = Some(t);
             project
         }
@@ -335,7 +338,7 @@ pub fn grade(
         let mut placed = Vec::with_capacity(files.len());
         for f in &files {
             let (text, lines) = f.text();
-            prove::write_if_changed(&project.join(&f.file), text.as_bytes())?;
+            files::write_if_changed(&project.join(&f.file), text.as_bytes())?;
             placed.push((f.file.clone(), lines));
         }
         let errors = build(&project, &target_dir, &targets)?;
@@ -366,7 +369,7 @@ pub fn grade(
             for f in &mut files {
                 for (r, body) in &mut f.regions {
                     if r.entry == entry {
-                        *body = format!("{}{}\n", r.indent, handout::todo_statement(root, e));
+                        *body = format!("{}{}\n", r.indent, handout::todo_statement(e));
                     }
                 }
             }
@@ -403,9 +406,9 @@ fn splice(
     for r in handout::regions(root, manifest)? {
         let e = &manifest.entries[r.entry];
         let body = if chapters.contains(&e.chapter) {
-            student_body(submission, &r, &e.exercise.id).unwrap_or_else(|why| {
+            student_body(submission, &r, &e.exercise.name).unwrap_or_else(|why| {
                 notes.insert(r.entry, why);
-                format!("{}{}\n", r.indent, handout::todo_statement(root, e))
+                format!("{}{}\n", r.indent, handout::todo_statement(e))
             })
         } else {
             r.solution.clone()
@@ -467,7 +470,7 @@ fn add_hidden(project: &Path, hidden: Option<&Path>) -> Result<Vec<String>, Erro
         let target = format!("hidden_{stem}");
         let to = project.join(layout::core_test_file(&target));
         let bytes = std::fs::read(&f).map_err(|e| Error::io(&f, e))?;
-        prove::write_if_changed(&to, &bytes)?;
+        files::write_if_changed(&to, &bytes)?;
         targets.push(target);
     }
     Ok(targets)
@@ -495,7 +498,7 @@ fn write_profile(project: &Path, timeout: Duration) -> Result<(), Error> {
          store-failure-output = true\n",
         timeout.as_secs().max(1)
     );
-    prove::write_if_changed(&dir.join("nextest.toml"), text.as_bytes()).map(|_| ())
+    files::write_if_changed(&dir.join("nextest.toml"), text.as_bytes()).map(|_| ())
 }
 
 /// A compiler error: the file and line of its primary span, and its message with its place.
@@ -672,10 +675,7 @@ pub fn parse_junit(
                 }
             }
         };
-        let exercise = manifest
-            .entries
-            .iter()
-            .position(|e| name.starts_with(&e.exercise.test_prefix()));
+        let exercise = manifest.exercise_of_test(&name);
         out.push(TestResult {
             hidden: hidden.contains(&target),
             name,
@@ -757,7 +757,8 @@ pub fn chapter_targets(manifest: &Manifest, chapters: &[u8]) -> BTreeSet<String>
         .filter(|t| {
             chapters
                 .iter()
-                .any(|c| t.starts_with(&format!("ch{c:02}_")))
+                .filter_map(|&c| crate::syllabus::chapter(c))
+                .any(|c| *t == c.binary)
         })
         .cloned()
         .collect()

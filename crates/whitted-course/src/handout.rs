@@ -4,15 +4,15 @@
 //!
 //! ```text
 //! pub fn discriminant(a: Real, b: Real, c: Real) -> Real {
-//!     // BEGIN SOLUTION 2.3
+//!     // BEGIN SOLUTION sphere_discriminant
 //!     b * b - a * c
 //!     // END SOLUTION
 //! }
 //! ```
 //!
 //! and [`write()`] copies the project with the chosen regions' bodies replaced by
-//! `todo!("exercise 2.3: The sphere's discriminant — see chapters/ch02_generic_objects/README.md")`,
-//! between the same two marker lines: the student writes the body there, and `whitted grade`
+//! `todo!("exercise sphere_discriminant (2.7): The sphere's discriminant — see chapters/ch02_generic_objects/README.md")`
+//! (the message is the syllabus's, [`crate::syllabus::todo`]), between the same two marker lines: the student writes the body there, and `whitted grade`
 //! takes what is between them.
 //! Exercises not chosen keep their reference code, so a course can hand out one chapter alone
 //! on top of working earlier chapters. The copy holds no solution of a chosen exercise, and
@@ -29,7 +29,7 @@ use std::path::{Path, PathBuf};
 
 use super::manifest::{Entry, Manifest};
 use super::source::Location;
-use super::{Error, layout, prove};
+use super::{Error, files, layout, prove};
 
 pub use super::layout::{BEGIN, END};
 
@@ -54,7 +54,7 @@ pub struct Region {
 }
 
 /// Finds the solution region of every manifest entry (in manifest order): the BEGIN line with
-/// the entry's exercise id and the END line after it, both inside the function's body. A
+/// the entry's exercise name and the END line after it, both inside the function's body. A
 /// region missing, or misnumbered, or a BEGIN marker in `src/` that belongs to no entry, is an
 /// error that names the file and line.
 pub fn regions(root: &Path, manifest: &Manifest) -> Result<Vec<Region>, Error> {
@@ -96,7 +96,7 @@ pub fn regions(root: &Path, manifest: &Manifest) -> Result<Vec<Region>, Error> {
 
 /// The region of entry `e` inside its function's body at `at` in `text`.
 fn region_in(text: &str, entry: usize, e: &Entry, at: &Location) -> Result<Region, Error> {
-    let id = &e.exercise.id;
+    let id = &e.exercise.name;
     let body = &text[at.body.clone()];
     let fail = |what: String| {
         Error::Proof(format!(
@@ -143,36 +143,40 @@ fn region_in(text: &str, entry: usize, e: &Entry, at: &Location) -> Result<Regio
     }))
 }
 
-pub use super::layout::chapter_dir;
-
-/// The statement that replaces a handed-out exercise's region.
+/// The statement that replaces a handed-out exercise's region: `todo!` with the syllabus's
+/// message, which names the exercise, its displayed id and its chapter's README.
 #[must_use]
-pub fn todo_statement(root: &Path, e: &Entry) -> String {
-    let message = format!(
-        "exercise {}: {} — see chapters/{}/README.md",
-        e.exercise.id,
-        e.exercise.title,
-        chapter_dir(root, e.chapter)
+pub fn todo_statement(e: &Entry) -> String {
+    let readme = crate::syllabus::chapter(e.chapter).map_or_else(String::new, |c| c.readme());
+    let message = crate::syllabus::todo::message(
+        &e.exercise.name,
+        &e.exercise.id,
+        &e.exercise.title,
+        &readme,
     );
     format!("todo!({message:?})")
 }
 
-/// Which exercises a handout takes out: those of `chapters` (inclusive range), or those named
-/// in `exercises` (ids), or all when both are empty. An unknown id or chapter is an error.
+/// Which exercises a handout takes out: those of `chapters` (inclusive range), or those given
+/// in `exercises` (names or displayed ids), or all when both are empty. An unknown exercise or
+/// chapter is an error.
 pub fn select(
     manifest: &Manifest,
     chapters: Option<(u8, u8)>,
     exercises: &[String],
 ) -> Result<Vec<usize>, Error> {
     if let Some((lo, hi)) = chapters {
-        if !(1..=5).contains(&lo) || !(1..=5).contains(&hi) || lo > hi {
+        let known = |c: u8| crate::syllabus::chapter(c).is_some();
+        if !known(lo) || !known(hi) || lo > hi {
             let given = if lo == hi {
                 lo.to_string()
             } else {
                 format!("{lo}-{hi}")
             };
             return Err(Error::Usage(format!(
-                "--chapters {given}: expected chapters from 1 to 5, the first not after the last"
+                "--chapters {given}: expected chapters from {} to {}, the first not after the last",
+                crate::syllabus::FIRST,
+                crate::syllabus::LAST
             )));
         }
         return Ok((0..manifest.entries.len())
@@ -184,13 +188,9 @@ pub fn select(
     }
     let mut out = Vec::new();
     for id in exercises {
-        let i = manifest
-            .entries
-            .iter()
-            .position(|e| e.exercise.id == id.trim())
-            .ok_or_else(|| {
+        let i = manifest.find(id).ok_or_else(|| {
                 Error::Usage(format!(
-                    "--exercises: there is no exercise {id} in {} (ids look like 2.3; `cargo learn list` shows them)",
+                    "--exercises: there is no exercise {id} in {} (a name such as sphere_coefficients, or an id such as 2.6; `cargo learn list` shows them)",
                     manifest.file
                 ))
             })?;
@@ -340,7 +340,7 @@ pub fn write(
         .prefix(".whitted-handout-")
         .tempdir_in(&parent)
         .map_err(|e| Error::io(&parent, e))?;
-    let files = prove::project_files(root)?;
+    let files = files::project_files(root)?;
     let tests = &manifest.handout.tests;
     let mut edits: BTreeMap<PathBuf, Vec<&Region>> = BTreeMap::new();
     for r in regions.iter().filter(|r| selected.contains(&r.entry)) {
@@ -369,7 +369,7 @@ pub fn write(
                 None
             }
             _ => match edits.get(file) {
-                Some(rs) => Some(strip(&read()?, rs, root, manifest)),
+                Some(rs) => Some(strip(&read()?, rs, manifest)),
                 None if *file == lib && !selected.is_empty() => Some(read()?),
                 None => None,
             },
@@ -549,8 +549,8 @@ pub fn student_readme(
         )
     };
     let mut chapters = String::new();
-    for (n, title) in (1u8..).zip(super::CHAPTERS) {
-        let dir = chapter_dir(root, n);
+    for chapter in &crate::syllabus::CHAPTERS {
+        let (n, title, dir) = (chapter.number, chapter.title, chapter.binary);
         let count = selected
             .iter()
             .filter(|&&i| manifest.entries[i].chapter == n)
@@ -566,7 +566,7 @@ pub fn student_readme(
 
 /// `text` with each region's body replaced by its exercise's `todo!()`, between the same
 /// marker lines.
-fn strip(text: &str, regions: &[&Region], root: &Path, manifest: &Manifest) -> String {
+fn strip(text: &str, regions: &[&Region], manifest: &Manifest) -> String {
     let mut sorted: Vec<&&Region> = regions.iter().collect();
     sorted.sort_by_key(|r| r.bytes.start);
     let mut out = String::with_capacity(text.len());
@@ -576,8 +576,8 @@ fn strip(text: &str, regions: &[&Region], root: &Path, manifest: &Manifest) -> S
         out.push_str(&text[at..r.bytes.start]);
         // the markers stay: the student writes between them, and `whitted grade` takes
         // exactly what is there
-        out.push_str(&format!("{}{BEGIN} {}\n", r.indent, e.exercise.id));
-        out.push_str(&format!("{}{}\n", r.indent, todo_statement(root, e)));
+        out.push_str(&format!("{}{BEGIN} {}\n", r.indent, e.exercise.name));
+        out.push_str(&format!("{}{}\n", r.indent, todo_statement(e)));
         out.push_str(&format!("{}{END}\n", r.indent));
         at = r.bytes.end;
     }

@@ -61,6 +61,4 @@ pub mod readme;
 pub mod report;
 pub mod source;
 
-pub use whitted_learn::{
-    CHAPTERS, Error, SECTIONS, args, cargo, cli, files, layout, learn, manifest, map,
-};
+pub use whitted_learn::{Error, args, cargo, cli, files, layout, learn, manifest, map, syllabus};

@@ -26,7 +26,7 @@ use clap::{Parser, Subcommand};
 use whitted_course::cli::{find_root, read_manifest};
 use whitted_course::manifest::Manifest;
 use whitted_course::prove::{self, Options};
-use whitted_course::{CHAPTERS, Error};
+use whitted_course::{Error, syllabus};
 
 /// The course tools of whitted, the toolkit for learning classic ray tracing.
 #[derive(Parser)]
@@ -119,7 +119,8 @@ struct GradeArgs {
     #[arg(value_name = "DIR", conflicts_with = "class")]
     submission: Option<PathBuf>,
     /// Grade only this chapter's exercises (1-5).
-    #[arg(long, value_name = "N", value_parser = clap::value_parser!(u8).range(1..=5))]
+    #[arg(long, value_name = "N",
+          value_parser = clap::value_parser!(u8).range(i64::from(syllabus::FIRST)..=i64::from(syllabus::LAST)))]
     chapter: Option<u8>,
     /// The instructor's hidden tests: a directory of .rs test files, each added as a test
     /// target; their tests are named after the exercise they check (ex2_3_…), like the public
@@ -172,7 +173,7 @@ struct HandoutArgs {
     #[arg(long, value_name = "N|A-B", value_parser = whitted_course::handout::parse_chapters,
           conflicts_with = "exercises")]
     chapters: Option<(u8, u8)>,
-    /// Take out these exercises only, by id (comma-separated): 2.3,2.4.
+    /// Take out these exercises only, by name or id (comma-separated): sphere_coefficients,2.7.
     #[arg(long, value_name = "IDS", value_delimiter = ',')]
     exercises: Vec<String>,
     /// The project to copy [default: the nearest Cargo.toml at or above the current directory].
@@ -581,7 +582,10 @@ fn grade(args: &GradeArgs) -> Result<ExitCode, Error> {
             ),
             Err(why) => eprintln!("could not grade {}: {why}", e.student),
         })?;
-        let chapters: Vec<u8> = args.chapter.map_or_else(|| (1..=5).collect(), |c| vec![c]);
+        let chapters: Vec<u8> = args.chapter.map_or_else(
+            || syllabus::CHAPTERS.iter().map(|c| c.number).collect(),
+            |c| vec![c],
+        );
         let mut csv = report::csv_header(&manifest, &chapters) + "\n";
         for e in &entries {
             match &e.grade {
@@ -688,7 +692,8 @@ fn list(root: &Path, manifest: &Manifest) -> Result<(), Error> {
         .max()
         .unwrap_or(0);
     let at_width = places.iter().map(|p| p.chars().count()).max().unwrap_or(0);
-    for (number, title) in (1u8..).zip(CHAPTERS) {
+    for chapter in &syllabus::CHAPTERS {
+        let (number, title) = (chapter.number, chapter.title);
         let entries: Vec<usize> = (0..manifest.entries.len())
             .filter(|&i| manifest.entries[i].chapter == number)
             .collect();

@@ -26,7 +26,6 @@
 use std::collections::BTreeMap;
 use std::io::Write;
 use std::path::{Path, PathBuf};
-use std::process::{Command, Stdio};
 use std::sync::Mutex;
 use std::sync::atomic::{AtomicUsize, Ordering};
 use std::time::{Duration, Instant};
@@ -253,7 +252,7 @@ pub fn poisoned_sources(
                         entry.function
                     )));
                 }
-                inserts.push(match region_start(&text, at, &entry.exercise.id) {
+                inserts.push(match region_start(&text, at, &entry.exercise.name) {
                     Some((offset, indent)) => (offset, format!("{indent}{}\n", guard.trim_start())),
                     // no region: right after the body's opening brace
                     None => (at.body.start + 1, guard),
@@ -270,16 +269,16 @@ pub fn poisoned_sources(
         .collect()
 }
 
-/// Where the solution region `// BEGIN SOLUTION id` of the body at `at` starts its code: the
+/// Where the solution region `// BEGIN SOLUTION name` of the body at `at` starts its code: the
 /// byte after the marker line, and the marker's indentation.
-fn region_start(text: &str, at: &Location, id: &str) -> Option<(usize, String)> {
+fn region_start(text: &str, at: &Location, name: &str) -> Option<(usize, String)> {
     let body = text.get(at.body.clone())?;
     let mut offset = at.body.start;
     for line in body.split_inclusive('\n') {
         let trimmed = line.trim();
         if trimmed
             .strip_prefix(super::handout::BEGIN)
-            .is_some_and(|rest| rest.trim() == id)
+            .is_some_and(|rest| rest.trim() == name)
         {
             let indent = line[..line.len() - line.trim_start().len()].to_string();
             return Some((offset + line.len(), indent));
@@ -322,7 +321,7 @@ impl PoisonedCopy {
         let project = temp.path().join("project");
         let runs = temp.path().join("runs");
         std::fs::create_dir_all(&runs).map_err(|e| Error::io(&runs, e))?;
-        let files = copy_project(root, &project)?;
+        let files = crate::files::copy_project(root, &project)?;
         for (file, text) in poisoned_sources(&project, manifest, locations)? {
             let path = project.join(file);
             std::fs::write(&path, text).map_err(|e| Error::io(&path, e))?;
@@ -533,106 +532,6 @@ fn verdict(run: &cargo::TestRun, filter: &str) -> Verdict {
     } else {
         Verdict::Proven
     }
-}
-
-/// The files to copy, relative to `root`: what git lists (tracked, or untracked and not
-/// ignored), or else every file outside `target/` and `.git/`.
-pub fn project_files(root: &Path) -> Result<Vec<PathBuf>, Error> {
-    let listed = Command::new("git")
-        .args([
-            "ls-files",
-            "-z",
-            "--cached",
-            "--others",
-            "--exclude-standard",
-        ])
-        .current_dir(root)
-        .stderr(Stdio::null())
-        .output();
-    if let Ok(out) = listed
-        && out.status.success()
-    {
-        let text = String::from_utf8_lossy(&out.stdout);
-        return Ok(text
-            .split('\0')
-            .filter(|p| !p.is_empty())
-            .map(PathBuf::from)
-            .filter(|p| root.join(p).is_file())
-            .collect());
-    }
-    let mut files = Vec::new();
-    walk(root, Path::new(""), &mut files)?;
-    Ok(files)
-}
-
-fn walk(root: &Path, dir: &Path, files: &mut Vec<PathBuf>) -> Result<(), Error> {
-    let full = root.join(dir);
-    for entry in std::fs::read_dir(&full).map_err(|e| Error::io(&full, e))? {
-        let entry = entry.map_err(|e| Error::io(&full, e))?;
-        let name = entry.file_name();
-        let relative = dir.join(&name);
-        let kind = entry.file_type().map_err(|e| Error::io(&relative, e))?;
-        if kind.is_dir() {
-            if name != "target" && name != ".git" {
-                walk(root, &relative, files)?;
-            }
-        } else if root.join(&relative).is_file() {
-            files.push(relative);
-        }
-    }
-    Ok(())
-}
-
-/// Copies the project's files from `root` to `dest`; returns how many.
-pub(crate) fn copy_project(root: &Path, dest: &Path) -> Result<usize, Error> {
-    let files = project_files(root)?;
-    for file in &files {
-        let to = dest.join(file);
-        if let Some(parent) = to.parent() {
-            std::fs::create_dir_all(parent).map_err(|e| Error::io(parent, e))?;
-        }
-        std::fs::copy(root.join(file), &to).map_err(|e| Error::io(root.join(file), e))?;
-    }
-    Ok(files.len())
-}
-
-/// Makes `dest` a copy of the project's files at `root`, writing only the files that are
-/// missing or differ, so that cargo (which goes by modification times) rebuilds only what
-/// changed since the last copy, and removing the files the project no longer has (but those
-/// under `keep`, relative to `dest`); returns how many files it wrote.
-pub(crate) fn sync_project(root: &Path, dest: &Path, keep: &[&str]) -> Result<usize, Error> {
-    let files = project_files(root)?;
-    let mut written = 0;
-    for file in &files {
-        let bytes = std::fs::read(root.join(file)).map_err(|e| Error::io(root.join(file), e))?;
-        if write_if_changed(&dest.join(file), &bytes)? {
-            written += 1;
-        }
-    }
-    if dest.is_dir() {
-        let mut present = Vec::new();
-        walk(dest, Path::new(""), &mut present)?;
-        for stale in present.iter().filter(|p| !files.contains(p)) {
-            if !keep.iter().any(|k| stale.starts_with(k)) {
-                let path = dest.join(stale);
-                std::fs::remove_file(&path).map_err(|e| Error::io(&path, e))?;
-            }
-        }
-    }
-    Ok(written)
-}
-
-/// Writes `bytes` to `path` unless it holds them already (creating its directory); returns
-/// whether it wrote.
-pub(crate) fn write_if_changed(path: &Path, bytes: &[u8]) -> Result<bool, Error> {
-    if std::fs::read(path).is_ok_and(|now| now == bytes) {
-        return Ok(false);
-    }
-    if let Some(parent) = path.parent() {
-        std::fs::create_dir_all(parent).map_err(|e| Error::io(parent, e))?;
-    }
-    std::fs::write(path, bytes).map_err(|e| Error::io(path, e))?;
-    Ok(true)
 }
 
 /// Builds the test target `test` of the project at `project` into `target_dir`; returns the

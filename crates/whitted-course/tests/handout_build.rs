@@ -159,11 +159,7 @@ fn reference_body_back(
 ) -> (PathBuf, String, String) {
     let path = student.join(&r.file);
     let now = std::fs::read_to_string(&path).unwrap();
-    let todo = format!(
-        "{}{}\n",
-        r.indent,
-        handout::todo_statement(&root(), &m.entries[i])
-    );
+    let todo = format!("{}{}\n", r.indent, handout::todo_statement(&m.entries[i]));
     let back = now.replacen(&todo, &r.solution, 1);
     (path, now, back)
 }
@@ -307,7 +303,7 @@ fn learn_watch_reruns_on_a_save_by_renaming_and_draws_the_chapter() {
     let i = m
         .entries
         .iter()
-        .position(|e| e.exercise.id == "3.1")
+        .position(|e| e.exercise.name == "ambient")
         .unwrap();
     let dir = tempfile::tempdir().unwrap();
     let student = dir.path().join("w");
@@ -386,9 +382,9 @@ fn each_chapter_renders_over_a_handout_of_the_later_chapters() {
             _ => String::new(),
         }
     };
-    for n in 1..=5u8 {
-        let name = handout::chapter_dir(copy, n);
-        let exe = target_dir().join("debug").join(&name);
+    for chapter in &whitted_course::syllabus::CHAPTERS {
+        let (n, name) = (chapter.number, chapter.binary);
+        let exe = target_dir().join("debug").join(name);
         let png = poisoned.runs.join(format!("{name}.png"));
         let render = |poison: String| {
             Command::new(&exe)
@@ -399,7 +395,7 @@ fn each_chapter_renders_over_a_handout_of_the_later_chapters() {
                 .output()
                 .unwrap()
         };
-        let later = render(range(n + 1..=5));
+        let later = render(range(n + 1..=whitted_course::syllabus::LAST));
         assert!(
             later.status.success(),
             "chapter {n} over a handout of chapters {}–5: {}",
@@ -428,7 +424,7 @@ fn learn_answers_while_the_code_does_not_compile() {
     handout::write(&root(), &m, &first, &student).unwrap();
     let camera = student.join("crates/whitted/src/camera.rs");
     let text_now = std::fs::read_to_string(&camera).unwrap();
-    let todo = handout::todo_statement(&root(), &m.entries[first[1]]);
+    let todo = handout::todo_statement(&m.entries[first[1]]);
     let broken = text_now.replacen(&todo, "let h: Real = near * ; h", 1);
     assert_ne!(broken, text_now);
     std::fs::write(&camera, &broken).unwrap();

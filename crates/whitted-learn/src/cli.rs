@@ -27,9 +27,11 @@ pub struct LearnArgs {
 pub enum LearnCommand {
     /// Every exercise, by chapter, with its state (done, to do, failing) and points.
     List,
-    /// The next hint of an exercise (the next unfinished one without ID); ask again for more.
+    /// The next hint of an exercise (the next unfinished one without EXERCISE); ask again for
+    /// more.
     Hint {
-        /// The exercise, e.g. 2.3.
+        /// The exercise: its id as `list` shows it (2.6) or its name (sphere_coefficients).
+        #[arg(value_name = "EXERCISE")]
         id: Option<String>,
     },
     /// Checks again after every save: the verdict, the progress, and the picture of the
@@ -71,15 +73,11 @@ pub fn learn(args: &LearnArgs) -> Result<ExitCode, Error> {
         }
         Some(LearnCommand::Hint { id }) => {
             let index = match id {
-                Some(id) => manifest
-                    .entries
-                    .iter()
-                    .position(|e| e.exercise.id == id.trim())
-                    .ok_or_else(|| {
-                        Error::Usage(format!(
-                            "there is no exercise {id}: `{COMMAND} list` shows the ids"
-                        ))
-                    })?,
+                Some(id) => manifest.find(id).ok_or_else(|| {
+                    Error::Usage(format!(
+                        "there is no exercise {id}: `{COMMAND} list` shows the ids"
+                    ))
+                })?,
                 // the first not done at the last check: no build, so a hint comes even while
                 // the code does not compile
                 None => match learn::saved_states(&root, &manifest)

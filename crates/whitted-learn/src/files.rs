@@ -1,13 +1,16 @@
-//! The project's files as the course tools read and write them: a place in a text as
-//! `line:col`, and files written atomically.
+//! The project's files as the course tools read, write and copy them: a place in a text as
+//! `line:col`, files written atomically or only when they change, and the project's files
+//! (what git lists) copied or kept in step with a copy, for the proof, the dependency
+//! measurement, handouts, grading and the loop's benchmark.
 //!
-//! The course crate does not depend on the renderer (a student's edit must never rebuild it),
-//! so it keeps these two small helpers of its own.
+//! The course crates do not depend on the renderer (a student's edit must never rebuild
+//! them), so they keep these small helpers of their own.
 //!
 //! Course book: [The instructor's guide](../../../../docs/book/instructor-guide.html) (`docs/src/instructor-guide.md`).
 
 use std::io::Write;
-use std::path::Path;
+use std::path::{Path, PathBuf};
+use std::process::{Command, Stdio};
 
 use crate::Error;
 
@@ -46,4 +49,119 @@ pub fn write_file(path: &Path, bytes: &[u8]) -> Result<(), Error> {
     }
     tmp.persist(path).map_err(|e| Error::io(path, e.error))?;
     Ok(())
+}
+
+/// The files to copy, relative to `root`: what git lists (tracked, or untracked and not
+/// ignored), or else every file outside `target/` and `.git/`.
+pub fn project_files(root: &Path) -> Result<Vec<PathBuf>, Error> {
+    let listed = Command::new("git")
+        .args([
+            "ls-files",
+            "-z",
+            "--cached",
+            "--others",
+            "--exclude-standard",
+        ])
+        .current_dir(root)
+        .stderr(Stdio::null())
+        .output();
+    if let Ok(out) = listed
+        && out.status.success()
+    {
+        let text = String::from_utf8_lossy(&out.stdout);
+        return Ok(text
+            .split('\0')
+            .filter(|p| !p.is_empty())
+            .map(PathBuf::from)
+            .filter(|p| root.join(p).is_file())
+            .collect());
+    }
+    let mut files = Vec::new();
+    walk(root, Path::new(""), &mut files)?;
+    Ok(files)
+}
+
+/// Every file under `root.join(dir)`, outside `target/` and `.git/`, relative to `root`.
+fn walk(root: &Path, dir: &Path, files: &mut Vec<PathBuf>) -> Result<(), Error> {
+    let full = root.join(dir);
+    for entry in std::fs::read_dir(&full).map_err(|e| Error::io(&full, e))? {
+        let entry = entry.map_err(|e| Error::io(&full, e))?;
+        let name = entry.file_name();
+        let relative = dir.join(&name);
+        let kind = entry.file_type().map_err(|e| Error::io(&relative, e))?;
+        if kind.is_dir() {
+            if name != "target" && name != ".git" {
+                walk(root, &relative, files)?;
+            }
+        } else if root.join(&relative).is_file() {
+            files.push(relative);
+        }
+    }
+    Ok(())
+}
+
+/// Copies the project's files from `root` to `dest`; returns how many.
+pub fn copy_project(root: &Path, dest: &Path) -> Result<usize, Error> {
+    let files = project_files(root)?;
+    for file in &files {
+        let to = dest.join(file);
+        if let Some(parent) = to.parent() {
+            std::fs::create_dir_all(parent).map_err(|e| Error::io(parent, e))?;
+        }
+        std::fs::copy(root.join(file), &to).map_err(|e| Error::io(root.join(file), e))?;
+    }
+    Ok(files.len())
+}
+
+/// Makes `dest` a copy of the project's files at `root`, writing only the files that are
+/// missing or differ, so that cargo (which goes by modification times) rebuilds only what
+/// changed since the last copy, and removing the files the project no longer has (but those
+/// under `keep`, relative to `dest`); returns how many files it wrote.
+pub fn sync_project(root: &Path, dest: &Path, keep: &[&str]) -> Result<usize, Error> {
+    let files = project_files(root)?;
+    let mut written = 0;
+    for file in &files {
+        let bytes = std::fs::read(root.join(file)).map_err(|e| Error::io(root.join(file), e))?;
+        if write_if_changed(&dest.join(file), &bytes)? {
+            written += 1;
+        }
+    }
+    if dest.is_dir() {
+        let mut present = Vec::new();
+        walk(dest, Path::new(""), &mut present)?;
+        for stale in present.iter().filter(|p| !files.contains(p)) {
+            if !keep.iter().any(|k| stale.starts_with(k)) {
+                let path = dest.join(stale);
+                std::fs::remove_file(&path).map_err(|e| Error::io(&path, e))?;
+            }
+        }
+    }
+    Ok(written)
+}
+
+/// Writes `bytes` to `path` unless it holds them already (creating its directory); returns
+/// whether it wrote.
+pub fn write_if_changed(path: &Path, bytes: &[u8]) -> Result<bool, Error> {
+    if std::fs::read(path).is_ok_and(|now| now == bytes) {
+        return Ok(false);
+    }
+    if let Some(parent) = path.parent() {
+        std::fs::create_dir_all(parent).map_err(|e| Error::io(parent, e))?;
+    }
+    std::fs::write(path, bytes).map_err(|e| Error::io(path, e))?;
+    Ok(true)
+}
+
+/// Copies every file under `from` to the same place under `to` (creating the directories).
+pub fn copy_tree(from: &Path, to: &Path) -> Result<usize, Error> {
+    let mut files = Vec::new();
+    walk(from, Path::new(""), &mut files)?;
+    for file in &files {
+        let dest = to.join(file);
+        if let Some(parent) = dest.parent() {
+            std::fs::create_dir_all(parent).map_err(|e| Error::io(parent, e))?;
+        }
+        std::fs::copy(from.join(file), &dest).map_err(|e| Error::io(from.join(file), e))?;
+    }
+    Ok(files.len())
 }

@@ -17,7 +17,8 @@
 
 use std::path::{Path, PathBuf};
 
-/// The marker line that opens an exercise's solution region: `// BEGIN SOLUTION 2.3`.
+/// The marker line that opens an exercise's solution region, followed by the exercise's name:
+/// `// BEGIN SOLUTION sphere_coefficients`.
 pub const BEGIN: &str = "// BEGIN SOLUTION";
 /// The marker line that closes it.
 pub const END: &str = "// END SOLUTION";
@@ -77,23 +78,4 @@ pub fn find_root(start: &Path) -> Option<PathBuf> {
         }
     }
     any
-}
-
-/// The directory of chapter `chapter` under `chapters/` (`ch02_generic_objects`), or
-/// `chNN` when there is none.
-#[must_use]
-pub fn chapter_dir(root: &Path, chapter: u8) -> String {
-    let prefix = format!("ch{chapter:02}_");
-    std::fs::read_dir(root.join("chapters"))
-        .ok()
-        .and_then(|dir| {
-            let mut names: Vec<String> = dir
-                .filter_map(|e| e.ok())
-                .map(|e| e.file_name().to_string_lossy().into_owned())
-                .filter(|n| n.starts_with(&prefix))
-                .collect();
-            names.sort();
-            names.into_iter().next()
-        })
-        .unwrap_or_else(|| format!("ch{chapter:02}"))
 }

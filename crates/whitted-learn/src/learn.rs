@@ -2,12 +2,13 @@
 //! exercise first, then the progress of every chapter, hints, the chapter's picture, and all of
 //! it again after every save.
 //!
-//! An exercise is **done** when its own tests (those named `ex2_3_…` for exercise 2.3, in the
-//! test targets of the manifest's `[handout] tests`) all pass. A check goes in two steps, so
+//! An exercise is **done** when its own tests (those named `ex_sphere_coefficients_…` for the
+//! exercise `sphere_coefficients`, in the test targets of the manifest's `[handout] tests`)
+//! all pass. A check goes in two steps, so
 //! that the answer a student waits for comes first:
 //!
 //! 1. **The verdict.** The exercise to look at is the first one that was not done at the last
-//!    check (`.whitted/progress.json`), or exercise 1.1. Only the test target that holds its
+//!    check (`.whitted/progress.json`, by exercise name), or the first. Only the test target that holds its
 //!    tests (by the measured map, `chapters/exercise-tests.toml`) is built and run; if all of
 //!    that target's exercises pass, the next target is, until one is not done. That verdict is
 //!    printed: the exercise, the notes' formula, every failing test of it with its message,
@@ -37,7 +38,7 @@ use std::time::{Duration, Instant};
 use crate::cargo::{self, Build, Built, Stderr, TestOutcome};
 use crate::manifest::{Entry, Manifest};
 use crate::map::{self, Group};
-use crate::{CHAPTERS, Error, layout};
+use crate::{Error, layout};
 
 /// Where `whitted learn` keeps its state and the images it renders, in the project.
 pub const STATE_DIR: &str = ".whitted";
@@ -96,7 +97,7 @@ pub enum State {
     ToDo,
     /// Written, but these of its own tests fail.
     Failing(Vec<String>),
-    /// Its tests stop at the `todo!()` of this other exercise, which comes first.
+    /// Its tests stop at the `todo!()` of this other exercise (its name), which comes first.
     Waiting(String),
     /// It has no test in the handout's targets (a mistake of the course, not the student's).
     NoTests,
@@ -112,7 +113,7 @@ impl State {
             State::Done => "done".into(),
             State::ToDo => "to do".into(),
             State::Failing(_) => "failing".into(),
-            State::Waiting(id) => format!("waits for {id}"),
+            State::Waiting(name) => format!("waits for {name}"),
             State::NoTests => "no tests".into(),
             State::Unknown => "?".into(),
         }
@@ -128,7 +129,7 @@ impl State {
             "failing" => State::Failing(Vec::new()),
             "no tests" => State::NoTests,
             w => match w.strip_prefix("waits for ") {
-                Some(id) => State::Waiting(id.to_string()),
+                Some(name) => State::Waiting(name.to_string()),
                 None => State::Unknown,
             },
         }
@@ -141,12 +142,10 @@ pub fn test_name(full: &str) -> &str {
     full.rsplit("::").next().unwrap_or(full)
 }
 
-/// The exercise id in the message of a handout's `todo!()` (`not yet implemented: exercise
-/// 2.3: …` gives `2.3`).
+/// The name of the exercise whose `todo!()` a test's output `text` stopped at.
 #[must_use]
-pub fn todo_id(text: &str) -> Option<&str> {
-    let rest = &text[text.find("not yet implemented: exercise ")? + 30..];
-    rest.split(':').next().map(str::trim)
+pub fn todo_name(text: &str) -> Option<&str> {
+    whitted_syllabus::todo::find(text).map(|t| t.name)
 }
 
 /// The state of every exercise of `manifest` (in its order) after the test run `run`: those
@@ -183,9 +182,9 @@ pub fn states(manifest: &Manifest, run: &TestRun) -> Vec<State> {
             }
             let stopped_at: Vec<&str> = failed
                 .iter()
-                .filter_map(|n| run.failures.get(n).and_then(|t| todo_id(t)))
+                .filter_map(|n| run.failures.get(n).and_then(|t| todo_name(t)))
                 .collect();
-            if stopped_at.contains(&e.exercise.id.as_str()) {
+            if stopped_at.contains(&e.exercise.name.as_str()) {
                 State::ToDo
             } else if stopped_at.len() == failed.len() {
                 // every failing test stopped at another exercise's todo!(): that one comes first
@@ -212,19 +211,19 @@ pub fn targets_of(manifest: &Manifest, map: &[Group]) -> Vec<Option<String>> {
                 .find(|(_, name)| name.starts_with(&prefix))
                 .map(|(target, _)| target.to_string())
                 .or_else(|| {
-                    let chapter = format!("ch{:02}_", e.chapter);
+                    let binary = whitted_syllabus::chapter(e.chapter)?.binary;
                     manifest
                         .handout
                         .tests
                         .iter()
-                        .find(|t| t.starts_with(&chapter))
+                        .find(|t| *t == binary)
                         .cloned()
                 })
         })
         .collect()
 }
 
-/// The exercises' states at the last check, by exercise id (`.whitted/progress.json`).
+/// The exercises' states at the last check, kept by exercise name (`.whitted/progress.json`).
 #[must_use]
 pub fn saved_states(root: &Path, manifest: &Manifest) -> Vec<State> {
     let saved: BTreeMap<String, String> =
@@ -237,7 +236,7 @@ pub fn saved_states(root: &Path, manifest: &Manifest) -> Vec<State> {
         .iter()
         .map(|e| {
             saved
-                .get(&e.exercise.id)
+                .get(&e.exercise.name)
                 .map_or(State::Unknown, |w| State::from_word(w))
         })
         .collect()
@@ -250,7 +249,7 @@ pub fn save_states(root: &Path, manifest: &Manifest, states: &[State]) -> Result
         .iter()
         .zip(states)
         .filter(|(_, s)| **s != State::Unknown)
-        .map(|(e, s)| (e.exercise.id.as_str(), s.word()))
+        .map(|(e, s)| (e.exercise.name.as_str(), s.word()))
         .collect();
     let dir = root.join(STATE_DIR);
     std::fs::create_dir_all(&dir).map_err(|e| Error::io(&dir, e))?;
@@ -332,7 +331,8 @@ pub fn progress(manifest: &Manifest, states: &[State], style: Style) -> String {
         "{} — {done} of {total} exercises done\n",
         style.strong("progress")
     );
-    for (number, title) in (1u8..).zip(CHAPTERS) {
+    for chapter in &whitted_syllabus::CHAPTERS {
+        let (number, title) = (chapter.number, chapter.title);
         let of: Vec<usize> = (0..total)
             .filter(|&i| manifest.entries[i].chapter == number)
             .collect();
@@ -383,7 +383,10 @@ pub fn verdict(
                 .count();
             format!("{} of its {own} tests fail", f.len())
         }
-        State::Waiting(id) => format!("its tests wait for exercise {id}"),
+        State::Waiting(name) => format!(
+            "its tests wait for exercise {} ({name})",
+            manifest.display(name)
+        ),
         State::NoTests => "it has no test in the handout: tell your instructor".into(),
         State::Done => "done".into(),
         State::Unknown => "not checked".into(),
@@ -421,7 +424,7 @@ pub fn verdict(
     }
     out += &format!(
         "  write it in {}; `{COMMAND} hint` gives a hint\n",
-        match root.and_then(|r| place(r, &x.id)) {
+        match root.and_then(|r| place(r, &x.name)) {
             Some((file, line)) => format!("{}:{line} ({})", file.display(), e.function),
             None => e.function.clone(),
         }
@@ -429,11 +432,11 @@ pub fn verdict(
     out
 }
 
-/// Where the student writes exercise `id`: the file (relative to `root`) and line of its
-/// `// BEGIN SOLUTION id` marker, searched in the renderer's sources.
+/// Where the student writes the exercise named `name`: the file (relative to `root`) and line
+/// of its `// BEGIN SOLUTION name` marker, searched in the renderer's sources.
 #[must_use]
-pub fn place(root: &Path, id: &str) -> Option<(PathBuf, usize)> {
-    let marker = format!("{} {id}", layout::BEGIN);
+pub fn place(root: &Path, name: &str) -> Option<(PathBuf, usize)> {
+    let marker = format!("{} {name}", layout::BEGIN);
     let mut stack = vec![root.join(layout::core_src())];
     while let Some(dir) = stack.pop() {
         let mut entries: Vec<PathBuf> = std::fs::read_dir(&dir)
@@ -464,7 +467,7 @@ fn message_lines(text: &str) -> Vec<&str> {
         .collect()
 }
 
-/// The hint levels shown so far, by exercise id (`.whitted/hints.json`).
+/// The hint levels shown so far, by exercise name (`.whitted/hints.json`).
 pub fn hints_shown(root: &Path) -> BTreeMap<String, usize> {
     std::fs::read_to_string(root.join(STATE_DIR).join("hints.json"))
         .ok()
@@ -478,9 +481,9 @@ pub fn next_hint(root: &Path, manifest: &Manifest, index: usize) -> Result<Strin
     let e: &Entry = &manifest.entries[index];
     let hints = &e.exercise.hints;
     let mut shown = hints_shown(root);
-    let level = shown.get(&e.exercise.id).copied().unwrap_or(0);
+    let level = shown.get(&e.exercise.name).copied().unwrap_or(0);
     let now = (level + 1).min(hints.len());
-    shown.insert(e.exercise.id.clone(), now);
+    shown.insert(e.exercise.name.clone(), now);
     let mut out = format!(
         "exercise {} — {} ({}):\n",
         e.exercise.id, e.exercise.title, e.function
@@ -506,22 +509,25 @@ pub fn list(manifest: &Manifest, states: &[State], style: Style) -> String {
     let id_w = width(&|e| e.exercise.id.chars().count());
     let title_w = width(&|e| e.exercise.title.chars().count());
     let fn_w = width(&|e| e.function.chars().count());
-    let state_w = states
+    let words: Vec<String> = states
         .iter()
-        .map(|s| s.word().chars().count())
-        .max()
-        .unwrap_or(0);
+        .map(|s| match s {
+            State::Waiting(name) => format!("waits for {}", manifest.display(name)),
+            s => s.word(),
+        })
+        .collect();
+    let state_w = words.iter().map(|w| w.chars().count()).max().unwrap_or(0);
     let mut out = String::new();
     let mut chapter = 0;
-    for (e, s) in manifest.entries.iter().zip(states) {
+    for ((e, s), word) in manifest.entries.iter().zip(states).zip(&words) {
         if e.chapter != chapter {
             chapter = e.chapter;
             out += &format!(
                 "chapter {chapter} — {}\n",
-                CHAPTERS[usize::from(chapter) - 1]
+                whitted_syllabus::chapter(chapter).map_or("", |c| c.title)
             );
         }
-        let word = format!("{:<state_w$}", s.word());
+        let word = format!("{word:<state_w$}");
         let word = match s {
             State::Done => style.good(&word),
             State::Failing(_) | State::NoTests => style.bad(&word),
@@ -564,7 +570,7 @@ pub fn newly_done(before: &[State], now: &[State]) -> BTreeSet<usize> {
 #[must_use]
 pub fn drawable_chapter(manifest: &Manifest, states: &[State]) -> Option<u8> {
     let mut out = None;
-    for chapter in 1..=CHAPTERS.len() as u8 {
+    for chapter in whitted_syllabus::CHAPTERS.iter().map(|c| c.number) {
         let mut own = manifest
             .entries
             .iter()
@@ -835,7 +841,7 @@ pub fn check(
         // no picture yet: build chapter 1's binary now, while the student reads, so that the
         // first picture comes seconds after chapter 1 is written, not a build later
         say.status("building the chapter binaries for the first picture (once) …");
-        let first = layout::chapter_dir(root, 1);
+        let first = whitted_syllabus::CHAPTERS[0].binary.to_string();
         build(root, &[], std::slice::from_ref(&first), &say)?;
     }
     Ok(Checked { run, states: all })
@@ -856,7 +862,9 @@ fn build_failure(run: &TestRun, style: Style) -> String {
 /// Renders chapter `chapter`'s scene with the project's own chapter binary (dev profile) into
 /// `.whitted/chNN_name.png`, [`PICTURE_WIDTH`] pixels wide; returns the image's path.
 pub fn render_chapter(root: &Path, chapter: u8) -> Result<PathBuf, Error> {
-    let name = layout::chapter_dir(root, chapter);
+    let about = whitted_syllabus::chapter(chapter)
+        .ok_or_else(|| Error::Usage(format!("there is no chapter {chapter}")))?;
+    let name = about.binary.to_string();
     let say = Say { report: false };
     let built = build(root, &[], std::slice::from_ref(&name), &say)?;
     if !built.success {
@@ -872,7 +880,7 @@ pub fn render_chapter(root: &Path, chapter: u8) -> Result<PathBuf, Error> {
     let dir = root.join(STATE_DIR);
     std::fs::create_dir_all(&dir).map_err(|e| Error::io(&dir, e))?;
     let png = dir.join(format!("{name}.png"));
-    let scene = root.join("scenes").join(format!("{name}.toml"));
+    let scene = root.join(about.scene());
     let mut command = std::process::Command::new(exe);
     if scene.is_file() {
         command.arg(&scene);

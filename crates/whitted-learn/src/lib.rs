@@ -23,34 +23,11 @@ pub mod learn;
 pub mod manifest;
 pub mod map;
 
+/// The course's outline: the chapters (and the notes' sections, the todo!() message), read from
+/// the one table every crate of whitted reads.
+pub use whitted_syllabus as syllabus;
+
 use std::path::PathBuf;
-
-/// The chapters, as the binaries name them (index 0 is chapter 1).
-pub const CHAPTERS: [&str; 5] = [
-    "camera rays",
-    "generic objects",
-    "shading",
-    "shadows",
-    "reflection and refraction",
-];
-
-/// The section titles of the course notes, the only values a manifest's `section` may take.
-pub const SECTIONS: [&str; 14] = [
-    "Principles of Ray Tracing",
-    "Ray Tracing Process",
-    "Generic Objects",
-    "Generic Sphere",
-    "Generic Plane",
-    "Generic Cylinder",
-    "Generic Cone",
-    "Convex Polyhedra",
-    "Computational Aspects",
-    "Shading",
-    "Surface Normals at Intersections",
-    "Shadowing",
-    "Reflection and Refraction",
-    "Lighting Equations",
-];
 
 /// What can go wrong in the course tools, each worded for the person running them.
 #[derive(Debug, thiserror::Error)]

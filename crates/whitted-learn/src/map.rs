@@ -3,7 +3,8 @@
 //! `deps`), read here. `learn` finds in it the test target that decides each exercise.
 //!
 //! Each `[[tests]]` table names tests (as `target::name`, or a prefix of it) and the exercises
-//! they run: without any one of those, each of the tests fails.
+//! they run, by name: without any one of those, each of the tests fails. Names, not displayed
+//! ids, so that inserting an exercise leaves every table as it is.
 //!
 //! Course book: [The instructor's guide](../../../../docs/book/instructor-guide.html) (`docs/src/instructor-guide.md`).
 
@@ -13,7 +14,7 @@ use std::path::Path;
 use crate::Error;
 use crate::manifest::Manifest;
 
-/// A test, as `target::name` (`ch02_generic_objects::ex2_3_…`).
+/// A test, as `target::name` (`ch02_generic_objects::ex_sphere_coefficients_…`).
 pub type TestId = String;
 
 /// Where the map of tests to exercises lives, relative to the project's root.
@@ -67,18 +68,17 @@ pub fn parse_map(text: &str, file: &str, manifest: &Manifest) -> Result<Vec<Grou
             ));
         }
         let mut needs = Vec::new();
-        for id in g.needs.get_ref() {
-            let found = crate::manifest::expand_ids(&manifest.entries, id);
-            if found.is_empty() {
-                return Err(err(
+        for name in g.needs.get_ref() {
+            let found = manifest.by_name(name.trim()).ok_or_else(|| {
+                err(
                     g.needs.span(),
                     format!(
-                        "needs: {id:?} names no exercise of {} (ids look like 2.3, ranges 2.1-2.12, a chapter 3.*)",
+                        "needs: {name:?} names no exercise of {} (the exercises' `name`s, such as \"viewing_basis\")",
                         manifest.file
                     ),
-                ));
-            }
-            needs.extend(found);
+                )
+            })?;
+            needs.push(found);
         }
         needs.sort_unstable();
         needs.dedup();

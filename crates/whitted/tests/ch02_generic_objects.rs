@@ -60,7 +60,7 @@ fn assert_hits(hits: &Hits, expected: &[(Real, Part)]) {
 /// (1, 1, 1) takes x to y, y to z and z to x. A translation by (1, −2, 3) moves a point, not
 /// a direction.
 #[test]
-fn ex2_1_each_step_has_the_matrix_of_its_transformation() {
+fn ex_step_matrix_each_step_has_the_matrix_of_its_transformation() {
     let scale = Step::Scale(vec3(2.0, 3.0, 4.0)).matrix();
     assert_vec_eq(scale.transform_point3(Vec3::ONE), vec3(2.0, 3.0, 4.0), TOL);
     let turn = |step: Step, v: Vec3| step.matrix().transform_vector3(v);
@@ -98,7 +98,7 @@ fn ex2_1_each_step_has_the_matrix_of_its_transformation() {
 /// "Ray Tracing Process": S⁻¹ undoes S — scale by 1/s, rotate by −θ about the same axis,
 /// translate by −t — so S·S⁻¹ = I.
 #[test]
-fn ex2_2_each_step_is_undone_by_its_inverse() {
+fn ex_step_inverse_each_step_is_undone_by_its_inverse() {
     let axis = vec3(1.0, 2.0, -0.5);
     let t = vec3(1.0, -2.0, 3.0);
     let cases = [
@@ -127,7 +127,7 @@ fn ex2_2_each_step_is_undone_by_its_inverse() {
 /// direction (3, 1, 0) as a vector, to (6, 1, 0), not renormalised: the point at t on the
 /// carried ray is M⁻¹ of the point at t on the world ray.
 #[test]
-fn ex2_4_a_ray_moves_its_origin_as_a_point_and_its_direction_as_a_vector() {
+fn ex_ray_in_object_space_a_ray_moves_its_origin_as_a_point_and_its_direction_as_a_vector() {
     let m = Mat4::from_translation(vec3(1.0, 2.0, 3.0)) * Mat4::from_scale(vec3(2.0, 1.0, 0.5));
     let world = ray([1.0, 1.0, 1.0], [3.0, 1.0, 0.0]);
     let local = world.transformed(&m);
@@ -146,7 +146,7 @@ fn ex2_4_a_ray_moves_its_origin_as_a_point_and_its_direction_as_a_vector() {
 /// "Ray Tracing Process": r(t) = e + d·t. For e = (1, 2, 3), d = (0.5, −1, 2): r(0) = e,
 /// r(1) = (1.5, 1, 5), r(2) = (2, 0, 7), r(−1) = (0.5, 3, 1).
 #[test]
-fn ex2_5_r_of_t_is_e_plus_d_t() {
+fn ex_point_on_ray_r_of_t_is_e_plus_d_t() {
     let r = ray([1.0, 2.0, 3.0], [0.5, -1.0, 2.0]);
     assert_vec_eq(r.at(0.0), vec3(1.0, 2.0, 3.0), TOL);
     assert_vec_eq(r.at(1.0), vec3(1.5, 1.0, 5.0), TOL);
@@ -158,7 +158,7 @@ fn ex2_5_r_of_t_is_e_plus_d_t() {
 
 /// "Generic Sphere": t = −b/a ± √(b² − ac)/a; b² − ac < 0 no root, = 0 one, > 0 two.
 #[test]
-fn ex2_9_quadratic_has_no_one_or_two_roots_by_the_sign_of_b2_minus_ac() {
+fn ex_quadratic_roots_quadratic_has_no_one_or_two_roots_by_the_sign_of_b2_minus_ac() {
     for numerics in [Numerics::Textbook, Numerics::Robust] {
         assert_eq!(solve(1.0, 0.0, 1.0, numerics), Roots::None); // t² + 1
         assert_eq!(solve(1.0, -2.0, 4.0, numerics), Roots::One(2.0)); // t² − 4t + 4
@@ -179,7 +179,7 @@ fn ex2_9_quadratic_has_no_one_or_two_roots_by_the_sign_of_b2_minus_ac() {
 /// differently: for a = 3, b = −7, c = b²/a it is one ulp off q/a, in f64 and in f32, and a
 /// tangent ray would seem to cross the surface over a sliver of length 1 ulp.
 #[test]
-fn ex2_8_a_double_root_is_returned_as_two_equal_values() {
+fn ex_stable_roots_a_double_root_is_returned_as_two_equal_values() {
     for (a, b) in [(3.0, -7.0), (3.0, -11.0), (6.0, -7.0), (11.0, -5.0)] {
         let (a, b): (Real, Real) = (a, b);
         let c = b * b / a;
@@ -195,7 +195,7 @@ fn ex2_8_a_double_root_is_returned_as_two_equal_values() {
 /// twice; Δ < 0 or NaN: none. a = 0 (4t − 4 = 0, b = 2, c = −4, Δ = 4): q = −4, q/a = −∞ and
 /// c/q = 1 = −c/(2b), the line's one root; a = b = 0: 0/0, none.
 #[test]
-fn ex2_8_stable_roots_come_in_increasing_order() {
+fn ex_stable_roots_come_in_increasing_order() {
     assert_eq!(stable_roots(1.0, -5.0, 24.0, 1.0), Some((4.0, 6.0)));
     assert_eq!(stable_roots(1.0, 5.0, 24.0, 1.0), Some((-6.0, -4.0)));
     assert_eq!(stable_roots(1.0, -2.0, 4.0, 0.0), Some((2.0, 2.0)));
@@ -213,7 +213,7 @@ fn ex2_8_stable_roots_come_in_increasing_order() {
 /// precision in f64 and f32 alike: the large root q/a needs no subtraction, the small one is
 /// c/q.
 #[test]
-fn ex2_8_the_small_root_keeps_its_digits() {
+fn ex_stable_roots_the_small_root_keeps_its_digits() {
     let (a, b, c) = (1.0, -1e8, 1.0);
     let (t1, t2) = stable_roots(a, b, c, discriminant(a, b, c)).unwrap();
     assert_abs_diff_eq!(t1 / 5e-9, 1.0, epsilon = TOL);
@@ -225,7 +225,7 @@ fn ex2_8_the_small_root_keeps_its_digits() {
 /// drop what is not a finite root (a = 0: the stable form keeps the line's root 1 and drops
 /// −∞) and find nothing for a NaN discriminant.
 #[test]
-fn ex2_9_textbook_roots_lose_the_small_root_and_stable_ones_keep_it() {
+fn ex_quadratic_roots_textbook_roots_lose_the_small_root_and_stable_ones_keep_it() {
     let (a, b, c) = (1.0, -1e8, 1.0);
     assert_eq!(solve(a, b, c, Numerics::Textbook), Roots::Two(0.0, 2e8));
     match solve(a, b, c, Numerics::Robust) {
@@ -251,7 +251,7 @@ fn ex2_9_textbook_roots_lose_the_small_root_and_stable_ones_keep_it() {
 
 /// "Generic Sphere": a = |d|², b = e·d, c = |e|² − 1.
 #[test]
-fn ex2_6_sphere_coefficients_are_d_squared_e_dot_d_and_e_squared_minus_one() {
+fn ex_sphere_coefficients_are_d_squared_e_dot_d_and_e_squared_minus_one() {
     let (a, b, c) = sphere::coefficients(&ray([1.0, 2.0, 3.0], [0.5, -1.0, 2.0]));
     assert_abs_diff_eq!(a, 5.25, epsilon = TOL); // 0.25 + 1 + 4
     assert_abs_diff_eq!(b, 4.5, epsilon = TOL); // 0.5 − 2 + 6
@@ -269,7 +269,7 @@ fn ex2_6_sphere_coefficients_are_d_squared_e_dot_d_and_e_squared_minus_one() {
 /// is (0, ½, 0) and the discriminant exactly 1 − ¼ = ¾, in f32 too, where b² − ac =
 /// 10⁸ − (10⁸ + ¼ − 1) rounds to 0.
 #[test]
-fn ex2_7_sphere_discriminant_is_b2_minus_ac_without_cancellation() {
+fn ex_sphere_discriminant_is_b2_minus_ac_without_cancellation() {
     for (e, d, expected) in [
         ([0.0, 0.0, 5.0], [0.0, 0.0, -1.0], 1.0),
         ([0.0, 2.0, 5.0], [0.0, 0.0, -1.0], -3.0),
@@ -294,7 +294,7 @@ fn ex2_7_sphere_discriminant_is_b2_minus_ac_without_cancellation() {
 
 /// "Surface Normals at Intersections": the generic sphere's normal at P is P.
 #[test]
-fn ex2_10_sphere_normal_is_the_point() {
+fn ex_sphere_normal_is_the_point() {
     for p in [
         vec3(0.6, 0.0, 0.8),
         vec3(0.0, 0.0, -1.0),
@@ -307,7 +307,7 @@ fn ex2_10_sphere_normal_is_the_point() {
 /// "Generic Sphere": a ray through the centre enters at t = 4 and leaves at t = 6, with normals
 /// equal to the hit points ("Surface Normals at Intersections").
 #[test]
-fn ex2_11_sphere_two_hits_with_the_point_as_normal() {
+fn ex_hit_sphere_sphere_two_hits_with_the_point_as_normal() {
     let hits = sphere::intersect(&ray([0.0, 0.0, 5.0], [0.0, 0.0, -1.0]), Numerics::Robust);
     assert_hits(&hits, &[(4.0, Part::Surface), (6.0, Part::Surface)]);
     let [h1, h2] = [hits.as_slice()[0], hits.as_slice()[1]];
@@ -322,7 +322,7 @@ fn ex2_11_sphere_two_hits_with_the_point_as_normal() {
 
 /// "Generic Sphere": b² − ac = 0 grazes (one hit), b² − ac < 0 misses.
 #[test]
-fn ex2_11_sphere_tangent_ray_grazes_once_and_outside_ray_misses() {
+fn ex_hit_sphere_sphere_tangent_ray_grazes_once_and_outside_ray_misses() {
     for numerics in [Numerics::Textbook, Numerics::Robust] {
         let graze = sphere::intersect(&ray([1.0, 0.0, 5.0], [0.0, 0.0, -1.0]), numerics);
         assert_hits(&graze, &[(5.0, Part::Surface)]);
@@ -341,7 +341,7 @@ fn ex2_11_sphere_tangent_ray_grazes_once_and_outside_ray_misses() {
 
 /// "Generic Plane": t = −e_z/d_z, normal (0, 0, 1).
 #[test]
-fn ex2_13_plane_is_hit_at_minus_ez_over_dz() {
+fn ex_hit_plane_plane_is_hit_at_minus_ez_over_dz() {
     let hits = plane::intersect(&ray([3.0, -1.0, 2.0], [1.0, 0.0, -0.5]));
     assert_hits(&hits, &[(4.0, Part::Surface)]);
     assert_vec_eq(hits.as_slice()[0].normal, Vec3::Z, TOL);
@@ -354,7 +354,7 @@ fn ex2_13_plane_is_hit_at_minus_ez_over_dz() {
 /// "Generic Plane": a ray with d_z = 0 is parallel and misses — never ±∞ or NaN, for +0 and −0,
 /// whether it starts off the plane or on it; so does one whose −e_z/d_z overflows.
 #[test]
-fn ex2_13_ray_parallel_to_the_plane_misses() {
+fn ex_hit_plane_ray_parallel_to_the_plane_misses() {
     for dz in [0.0, -0.0] {
         for ez in [1.0, 0.0, -1.0] {
             let hits = plane::intersect(&ray([0.0, 0.0, ez], [1.0, 2.0, dz]));
@@ -373,7 +373,7 @@ fn ex2_13_ray_parallel_to_the_plane_misses() {
 
 /// "Generic Cylinder": a = d_x² + d_y², b = e_x d_x + e_y d_y, c = e_x² + e_y² − 1.
 #[test]
-fn ex2_14_cylinder_coefficients_follow_the_notes() {
+fn ex_cylinder_coefficients_follow_the_notes() {
     let (a, b, c) = cylinder::coefficients(&ray([1.0, 2.0, 3.0], [0.5, -1.0, 2.0]));
     assert_abs_diff_eq!(a, 1.25, epsilon = TOL);
     assert_abs_diff_eq!(b, -1.5, epsilon = TOL);
@@ -385,7 +385,7 @@ fn ex2_14_cylinder_coefficients_follow_the_notes() {
 /// (a miss); with d = (0, 2, 7) (z plays no part): a = 4, b = −10, 100 − 96 = 4. From
 /// (½, 10⁴, 3) along −y the line passes ½ from the axis: exactly ¾, in f32 too.
 #[test]
-fn ex2_15_cylinder_discriminant_is_b2_minus_ac_of_the_wall() {
+fn ex_cylinder_discriminant_is_b2_minus_ac_of_the_wall() {
     for (e, d, expected) in [
         ([0.0, -5.0, 0.5], [0.0, 1.0, 0.0], 1.0),
         ([1.5, -5.0, 0.0], [0.0, 1.0, 0.0], -1.25),
@@ -401,7 +401,7 @@ fn ex2_15_cylinder_discriminant_is_b2_minus_ac_of_the_wall() {
 /// "Surface Normals at Intersections": the cylinder's wall normal is (x, y, 0), its top cap's
 /// (0, 0, 1) and its bottom cap's (0, 0, −1), wherever on the cap.
 #[test]
-fn ex2_16_cylinder_normals_are_x_y_0_on_the_wall_and_plus_minus_z_on_the_caps() {
+fn ex_cylinder_normal_cylinder_normals_are_x_y_0_on_the_wall_and_plus_minus_z_on_the_caps() {
     assert_vec_eq(
         cylinder::normal(Part::Wall, vec3(0.6, 0.8, 0.3)),
         vec3(0.6, 0.8, 0.0),
@@ -425,7 +425,7 @@ fn ex2_16_cylinder_normals_are_x_y_0_on_the_wall_and_plus_minus_z_on_the_caps() 
 /// "Generic Cylinder" and "Surface Normals at Intersections": a ray across the wall hits at
 /// y = ∓1 with normals (x, y, 0).
 #[test]
-fn ex2_17_cylinder_wall_two_hits_with_normals_x_y_0() {
+fn ex_hit_cylinder_cylinder_wall_two_hits_with_normals_x_y_0() {
     for numerics in [Numerics::Textbook, Numerics::Robust] {
         let hits = cylinder::intersect(&ray([0.0, -5.0, 0.5], [0.0, 1.0, 0.0]), numerics);
         assert_hits(&hits, &[(4.0, Part::Wall), (6.0, Part::Wall)]);
@@ -436,7 +436,7 @@ fn ex2_17_cylinder_wall_two_hits_with_normals_x_y_0() {
 
 /// "Generic Cylinder": roots with z outside [−1, 1] do not count, and a tangent ray grazes once.
 #[test]
-fn ex2_17_cylinder_miss_beyond_the_caps_and_tangent_graze() {
+fn ex_hit_cylinder_cylinder_miss_beyond_the_caps_and_tangent_graze() {
     for numerics in [Numerics::Textbook, Numerics::Robust] {
         assert!(cylinder::intersect(&ray([0.0, -5.0, 2.0], [0.0, 1.0, 0.0]), numerics).is_empty());
         assert!(cylinder::intersect(&ray([1.5, -5.0, 0.0], [0.0, 1.0, 0.0]), numerics).is_empty());
@@ -450,7 +450,7 @@ fn ex2_17_cylinder_miss_beyond_the_caps_and_tangent_graze() {
 /// (a = 0) enters through the top cap, normal (0, 0, 1), and leaves through the bottom cap,
 /// normal (0, 0, −1).
 #[test]
-fn ex2_17_cylinder_ray_along_the_axis_crosses_both_caps() {
+fn ex_hit_cylinder_cylinder_ray_along_the_axis_crosses_both_caps() {
     for numerics in [Numerics::Textbook, Numerics::Robust] {
         let hits = cylinder::intersect(&ray([0.3, 0.2, 5.0], [0.0, 0.0, -1.0]), numerics);
         assert_hits(&hits, &[(4.0, Part::TopCap), (6.0, Part::BottomCap)]);
@@ -462,7 +462,7 @@ fn ex2_17_cylinder_ray_along_the_axis_crosses_both_caps() {
 /// "Generic Cylinder": a slanted ray enters through the top cap (inside the unit circle) and
 /// leaves through the wall.
 #[test]
-fn ex2_17_cylinder_ray_from_cap_to_wall() {
+fn ex_hit_cylinder_cylinder_ray_from_cap_to_wall() {
     // e = (0, 0, 2), d = (0.5, 0, −1): z = 1 at t = 1 (x = 0.5, inside); x = 1 at t = 2 (z = 0)
     for numerics in [Numerics::Textbook, Numerics::Robust] {
         let hits = cylinder::intersect(&ray([0.0, 0.0, 2.0], [0.5, 0.0, -1.0]), numerics);
@@ -476,7 +476,7 @@ fn ex2_17_cylinder_ray_from_cap_to_wall() {
 /// "Generic Cone": a = d_x² + d_y² − d_z², b = e_x d_x + e_y d_y + d_z(1 − e_z),
 /// c = e_x² + e_y² − (1 − e_z)².
 #[test]
-fn ex2_18_cone_coefficients_follow_the_notes() {
+fn ex_cone_coefficients_follow_the_notes() {
     let (a, b, c) = cone::coefficients(&ray([1.0, 2.0, 3.0], [0.5, -1.0, 2.0]));
     assert_abs_diff_eq!(a, -2.75, epsilon = TOL); // 0.25 + 1 − 4
     assert_abs_diff_eq!(b, -5.5, epsilon = TOL); // 0.5 − 2 + 2·(1 − 3)
@@ -488,7 +488,7 @@ fn ex2_18_cone_coefficients_follow_the_notes() {
 /// Across the wall at z = 0 along +y from (0, −5, 0): w = (−1, 0, 0), 1 = 25 − 24. Touching it
 /// from (1, −5, 0): w = (−1, 0, −1), 0, a graze.
 #[test]
-fn ex2_19_cone_discriminant_is_b2_minus_ac() {
+fn ex_cone_discriminant_is_b2_minus_ac() {
     for (e, d, expected) in [
         ([1.0, 2.0, 3.0], [0.5, -1.0, 2.0], 33.0),
         ([0.0, -5.0, 0.0], [0.0, 1.0, 0.0], 1.0),
@@ -505,7 +505,7 @@ fn ex2_19_cone_discriminant_is_b2_minus_ac() {
 /// base's (0, 0, −1). At the apex, where (x, y, 1 − z) = 0, the axis (0, 0, 1) (an erratum:
 /// the notes give no normal there).
 #[test]
-fn ex2_20_cone_normals_are_x_y_one_minus_z_on_the_wall_and_minus_z_on_the_base() {
+fn ex_cone_normal_cone_normals_are_x_y_one_minus_z_on_the_wall_and_minus_z_on_the_base() {
     assert_vec_eq(
         cone::normal(Part::Wall, vec3(0.5, 0.0, 0.5)),
         vec3(0.5, 0.0, 0.5),
@@ -529,7 +529,7 @@ fn ex2_20_cone_normals_are_x_y_one_minus_z_on_the_wall_and_minus_z_on_the_base()
 /// "Generic Cone" and "Surface Normals at Intersections": across the wall at z = 0 the radius
 /// is 1 − z = 1, hits at y = ∓1 with normals along (x, y, 1 − z).
 #[test]
-fn ex2_21_cone_wall_two_hits_with_normals_x_y_one_minus_z() {
+fn ex_hit_cone_cone_wall_two_hits_with_normals_x_y_one_minus_z() {
     let k = 1.0 / (2.0 as Real).sqrt();
     for numerics in [Numerics::Textbook, Numerics::Robust] {
         let hits = cone::intersect(&ray([0.0, -5.0, 0.0], [0.0, 1.0, 0.0]), numerics);
@@ -552,7 +552,7 @@ fn ex2_21_cone_wall_two_hits_with_normals_x_y_one_minus_z() {
 /// from below at x = 0.5 the ray enters the base at t = 2 and leaves the wall where
 /// (1 − z)² = 0.25, z = 0.5, t = 3.5.
 #[test]
-fn ex2_21_cone_base_then_wall() {
+fn ex_hit_cone_cone_base_then_wall() {
     let k = 1.0 / (2.0 as Real).sqrt();
     for numerics in [Numerics::Textbook, Numerics::Robust] {
         let hits = cone::intersect(&ray([0.5, 0.0, -3.0], [0.0, 0.0, 1.0]), numerics);
@@ -569,7 +569,7 @@ fn ex2_21_cone_base_then_wall() {
 /// "Generic Cone": the implicit equation also holds on the upper nappe (z > 1), which is not
 /// part of the cone: a ray crossing it misses.
 #[test]
-fn ex2_21_upper_nappe_of_the_double_cone_is_not_hit() {
+fn ex_hit_cone_upper_nappe_of_the_double_cone_is_not_hit() {
     for numerics in [Numerics::Textbook, Numerics::Robust] {
         let hits = cone::intersect(&ray([0.0, -5.0, 1.5], [0.0, 1.0, 0.0]), numerics);
         assert!(hits.is_empty(), "{numerics:?}: {hits:?}");
@@ -580,7 +580,7 @@ fn ex2_21_upper_nappe_of_the_double_cone_is_not_hit() {
 /// where (x, y, 1 − z) = 0; whitted returns the finite unit normal (0, 0, 1) there, then
 /// leaves through the base.
 #[test]
-fn ex2_21_cone_apex_has_a_finite_unit_normal() {
+fn ex_hit_cone_cone_apex_has_a_finite_unit_normal() {
     let hits = cone::intersect(&ray([0.0, 0.0, 3.0], [0.0, 0.0, -1.0]), Numerics::Robust);
     assert_eq!(hits.len(), 2, "{hits:?}");
     let (apex, base) = (hits.as_slice()[0], hits.as_slice()[1]);
@@ -596,7 +596,7 @@ fn ex2_21_cone_apex_has_a_finite_unit_normal() {
 /// "Convex Polyhedra" (erratum): the notes print t = d − n·e / n·d; by precedence that is
 /// d − (n·e)/(n·d), whose point is not on the facet. t = (d − n·e)/(n·d) is.
 #[test]
-fn ex2_22_facet_t_is_d_minus_n_dot_e_all_over_n_dot_d() {
+fn ex_facet_crossing_facet_t_is_d_minus_n_dot_e_all_over_n_dot_d() {
     let facet = polyhedron::Facet::new(Vec3::Z, 1.0).unwrap(); // the plane z = 1
     let r = ray([0.0, 0.0, 5.0], [0.0, 0.0, -2.0]);
     let as_printed = facet.d() - facet.normal().dot(r.origin) / facet.normal().dot(r.dir); // 1 − 5/(−2) = 3.5
@@ -610,7 +610,7 @@ fn ex2_22_facet_t_is_d_minus_n_dot_e_all_over_n_dot_d() {
 /// "Convex Polyhedra": the cube [−1, 1]³ along z: enters facet +z (index 4) at t = 4, leaves
 /// facet −z (index 5) at t = 6, each with its facet's outward normal.
 #[test]
-fn ex2_23_cube_entering_and_leaving_facets() {
+fn ex_hit_polyhedron_cube_entering_and_leaving_facets() {
     let hits = Polyhedron::cube().intersect(&ray([0.2, 0.3, 5.0], [0.0, 0.0, -1.0]));
     assert_hits(&hits, &[(4.0, Part::Facet(4)), (6.0, Part::Facet(5))]);
     assert_vec_eq(hits.as_slice()[0].normal, Vec3::Z, TOL);
@@ -621,7 +621,7 @@ fn ex2_23_cube_entering_and_leaving_facets() {
 /// own rule (Q·n < d is inside) makes d − n·e < 0 *outside* — a miss — and d − n·e > 0 inside,
 /// where the facet does not stop the ray. The notes' table says the opposite.
 #[test]
-fn ex2_23_ray_parallel_to_a_facet_misses_outside_and_passes_inside() {
+fn ex_hit_polyhedron_ray_parallel_to_a_facet_misses_outside_and_passes_inside() {
     let cube = Polyhedron::cube();
     // parallel to the facet y = 1 (index 2), at y = 2: d − n·e = 1 − 2 < 0, outside
     let facet = Polyhedron::cube().facets()[2];
@@ -644,7 +644,7 @@ fn ex2_23_ray_parallel_to_a_facet_misses_outside_and_passes_inside() {
 /// (n·d = 0 and n·e = d) is not outside that facet: along the cube's face y = 1 it enters at
 /// the top (t = 4) and leaves at the bottom (t = 6). Taking n·e ≥ d for "outside" misses it.
 #[test]
-fn ex2_23_a_ray_along_a_face_touches_the_closed_solid() {
+fn ex_hit_polyhedron_a_ray_along_a_face_touches_the_closed_solid() {
     let hits = Polyhedron::cube().intersect(&ray([0.0, 1.0, 5.0], [0.0, 0.0, -1.0]));
     assert_hits(&hits, &[(4.0, Part::Facet(4)), (6.0, Part::Facet(5))]);
 }
@@ -654,7 +654,7 @@ fn ex2_23_a_ray_along_a_face_touches_the_closed_solid() {
 /// which stays −∞; its one hit is the finite bound t_far = 2, where it leaves (entering =
 /// false). From above, going down, the one hit enters.
 #[test]
-fn ex2_23_with_only_a_leaving_bound_the_one_hit_leaves() {
+fn ex_hit_polyhedron_with_only_a_leaving_bound_the_one_hit_leaves() {
     let half_space = Polyhedron::new(vec![polyhedron::Facet::new(Vec3::Z, 0.0).unwrap()]);
     let up = half_space.intersect(&ray([0.0, 0.0, -2.0], [0.0, 0.0, 1.0]));
     assert_hits(&up, &[(2.0, Part::Facet(0))]);
@@ -667,7 +667,7 @@ fn ex2_23_with_only_a_leaving_bound_the_one_hit_leaves() {
 /// "Convex Polyhedra": the octahedron |x| + |y| + |z| ≤ 1 along x at y = 0.25, z = 0.1 spans
 /// |x| ≤ 0.65: t = 4.35 through the facet with normal (1, 1, 1)/√3.
 #[test]
-fn ex2_23_octahedron_hits_through_its_facets() {
+fn ex_hit_polyhedron_octahedron_hits_through_its_facets() {
     let hits = Polyhedron::octahedron().intersect(&ray([5.0, 0.25, 0.1], [-1.0, 0.0, 0.0]));
     assert_eq!(hits.len(), 2);
     assert_abs_diff_eq!(hits.as_slice()[0].t, 4.35, epsilon = 10.0 * TOL);
@@ -680,7 +680,7 @@ fn ex2_23_octahedron_hits_through_its_facets() {
 /// "Convex Polyhedra": the tetrahedron with vertices (1,1,1), (1,−1,−1), (−1,1,−1), (−1,−1,1),
 /// along z at x = 0.2, spans z ∈ [−0.8, 0.8].
 #[test]
-fn ex2_23_tetrahedron_hits_through_its_facets() {
+fn ex_hit_polyhedron_tetrahedron_hits_through_its_facets() {
     let hits = Polyhedron::tetrahedron().intersect(&ray([0.2, 0.0, 5.0], [0.0, 0.0, -1.0]));
     let k = 1.0 / (3.0 as Real).sqrt();
     assert_hits(&hits, &[(4.2, Part::Facet(2)), (5.8, Part::Facet(3))]);
@@ -717,7 +717,7 @@ fn ellipsoid() -> Object {
 
 /// "Ray Tracing Process": M⁻¹ is built from the inverse steps; M·M⁻¹ = I.
 #[test]
-fn ex2_3_inverse_from_inverse_steps_undoes_the_placement() {
+fn ex_placement_from_steps_inverse_from_inverse_steps_undoes_the_placement() {
     let o = ellipsoid();
     let product = o.placement.m() * o.placement.inv();
     assert!(
@@ -738,7 +738,7 @@ fn ex2_3_inverse_from_inverse_steps_undoes_the_placement() {
 /// finds in object space gives the same point in world space: M·(M⁻¹e + M⁻¹d·t) = e + d·t,
 /// under a non-uniform scale.
 #[test]
-fn ex2_12_t_is_the_same_in_world_and_object_space() {
+fn ex_hit_placed_shape_t_is_the_same_in_world_and_object_space() {
     let o = ellipsoid();
     let world = ray([-4.0, -1.0, 2.5], [3.0, -0.5, 0.2]);
     let local = world.transformed(o.placement.inv());
@@ -772,7 +772,7 @@ fn ex2_12_t_is_the_same_in_world_and_object_space() {
 /// seen from the origin along d = (0, 0, −2): the world points (0, 0, −8) and (0, 0, −12) are
 /// at the world ray's t = 4 and 6, and their object-space normals are (0, 0, ±1).
 #[test]
-fn ex2_12_a_placed_shape_is_hit_at_the_world_rays_t() {
+fn ex_hit_placed_shape_a_placed_shape_is_hit_at_the_world_rays_t() {
     let placement = Placement::from_steps(&[
         Step::Scale(Vec3::splat(2.0)),
         Step::Translate(vec3(0.0, 0.0, -10.0)),
@@ -790,7 +790,7 @@ fn ex2_12_a_placed_shape_is_hit_at_the_world_rays_t() {
 /// after it changes nothing; a quarter turn about z turns (1, 0, 0) into (0, 1, 0); the identity
 /// makes the cone's (0, −1, 1) unit.
 #[test]
-fn ex2_26_normals_go_back_by_the_inverse_transpose() {
+fn ex_normal_to_world_normals_go_back_by_the_inverse_transpose() {
     let s = (2.0 as Real).sqrt();
     let stretched = Placement::from_steps(&[Step::Scale(vec3(2.0, 1.0, 1.0))]).unwrap();
     let expected = vec3(1.0, 2.0, 0.0) / (5.0 as Real).sqrt();
@@ -822,7 +822,7 @@ fn ex2_26_normals_go_back_by_the_inverse_transpose() {
 /// (2, 1, 1), the object-space normal n′ = (1, 1, 0)/√2 at P′ = n′ becomes (M⁻¹)ᵀn′ ∝ (1, 2, 0),
 /// perpendicular to the surface; M·n′ ∝ (2, 1, 0) is not.
 #[test]
-fn ex2_26_normal_under_non_uniform_scale_uses_inverse_transpose() {
+fn ex_normal_to_world_normal_under_non_uniform_scale_uses_inverse_transpose() {
     let o = Object::new(
         Shape::Sphere,
         Placement::from_steps(&[Step::Scale(vec3(2.0, 1.0, 1.0))]).unwrap(),
@@ -871,7 +871,7 @@ fn placed_cylinder_from_base_top_radius() {
 
 /// "Ray Tracing Process": a zero scale has no inverse; the placement refuses it.
 #[test]
-fn ex2_3_zero_scale_is_not_invertible() {
+fn ex_placement_from_steps_zero_scale_is_not_invertible() {
     assert!(Placement::from_steps(&[Step::Scale(vec3(1.0, 0.0, 1.0))]).is_none());
     assert!(Placement::from_steps(&[Step::Scale(Vec3::new(1.0, Real::NAN, 1.0))]).is_none());
     assert!(Placement::from_steps(&[Step::Scale(vec3(1.0, 2.0, 1.0))]).is_some());
@@ -880,7 +880,7 @@ fn ex2_3_zero_scale_is_not_invertible() {
 /// "Generic Cone": a ray touching the wall at z = 0 (radius 1) has b² − ac = 0 and grazes once,
 /// with the wall normal (x, y, 1 − z) there.
 #[test]
-fn ex2_21_cone_tangent_ray_grazes_once() {
+fn ex_hit_cone_cone_tangent_ray_grazes_once() {
     let r = ray([1.0, -5.0, 0.0], [0.0, 1.0, 0.0]);
     let (a, b, c) = cone::coefficients(&r);
     assert_abs_diff_eq!(b * b - a * c, 0.0, epsilon = TOL);
@@ -901,7 +901,7 @@ fn ex2_21_cone_tangent_ray_grazes_once() {
 /// at the same t: t_near = t_far, one grazing hit; a little further out it misses
 /// (t_near > t_far).
 #[test]
-fn ex2_23_polyhedron_ray_across_an_edge_grazes_once() {
+fn ex_hit_polyhedron_polyhedron_ray_across_an_edge_grazes_once() {
     let cube = Polyhedron::cube();
     let hits = cube.intersect(&ray([0.0, 0.0, 2.0], [1.0, 0.0, -1.0]));
     assert_hits(&hits, &[(1.0, Part::Facet(4))]);
@@ -979,7 +979,7 @@ fn open_empty_or_flat_facet_sets_are_not_polyhedra() {
 /// so the base it closes on has radius 2. A ray from below at x = 1.5 enters through the base
 /// (a unit disc would let it into a hole) and leaves through the wall where 1 − z = 1.5.
 #[test]
-fn ex2_21_cone_base_has_radius_two() {
+fn ex_hit_cone_cone_base_has_radius_two() {
     let k = 1.0 / (2.0 as Real).sqrt();
     for numerics in [Numerics::Textbook, Numerics::Robust] {
         let hits = cone::intersect(&ray([1.5, 0.0, -3.0], [0.0, 0.0, 1.0]), numerics);
@@ -1066,7 +1066,7 @@ fn nearest_hit_has_the_smallest_positive_t() {
 /// (leaving), a ray from t_min sees the first one past t_min: the one at 2 from t_min = −10 or
 /// 0, the one at 5 from 2 (a hit at exactly t_min does not count) or 3, none from 5 on.
 #[test]
-fn ex2_24_the_visible_hit_is_the_first_after_t_min() {
+fn ex_visible_hit_the_visible_hit_is_the_first_after_t_min() {
     let at = |t: Real, entering: bool| Hit {
         t,
         normal: Vec3::Z,
@@ -1086,7 +1086,7 @@ fn ex2_24_the_visible_hit_is_the_first_after_t_min() {
 /// "Ray Tracing Process", step 5 (the tie rule of `shapes::nearer`): a smaller t wins whatever
 /// the order; of two hits at the same t, the object listed first.
 #[test]
-fn ex2_25_equal_t_goes_to_the_object_listed_first() {
+fn ex_nearer_hit_equal_t_goes_to_the_object_listed_first() {
     assert!(nearer(2.0, 0, 2.0, 1));
     assert!(!nearer(2.0, 1, 2.0, 0));
     assert!(!nearer(2.0, 3, 2.0, 3));
@@ -1143,7 +1143,7 @@ fn coincident_objects_show_the_first_listed_for_every_accel() {
 /// - from inside, e = (0.5, 0.5, 0), d = (1, 0, 0): entering through facet 2 behind the origin
 ///   at t = (2 − 0)/(−1) = −2 (x = −1.5), leaving through facet 1 at t = (2 − 1)/1 = 1.
 #[test]
-fn ex2_23_polyhedron_enters_where_n_dot_d_is_negative_and_leaves_where_positive() {
+fn ex_hit_polyhedron_polyhedron_enters_where_n_dot_d_is_negative_and_leaves_where_positive() {
     let facet =
         |n: [f64; 3], d: f64| polyhedron::Facet::new(vec3(n[0], n[1], n[2]), d as Real).unwrap();
     let prism = Polyhedron::new(vec![
@@ -1202,7 +1202,7 @@ fn entries_are_exactly_0_or_1(m: &Mat4) -> bool {
 /// 180° → (0, −1); 270° → (−1, 0); 450° = 360° + 90° → (1, 0). Turning +z onto ±x, ±y and −z
 /// gives such matrices, which carry +z exactly onto the target and multiply to I exactly.
 #[test]
-fn ex2_3_rotations_by_multiples_of_90_degrees_are_exact() {
+fn ex_placement_from_steps_rotations_by_multiples_of_90_degrees_are_exact() {
     assert_eq!(sin_cos_degrees(90.0), (1.0, 0.0));
     assert_eq!(sin_cos_degrees(-90.0), (-1.0, 0.0));
     assert_eq!(sin_cos_degrees(180.0), (0.0, -1.0));
