@@ -33,7 +33,7 @@ use std::path::{Path, PathBuf};
 
 use serde::Deserialize;
 
-use super::Error;
+use super::ToolError;
 use super::manifest::{error_at, from_toml};
 use crate::files::line_col;
 
@@ -80,15 +80,15 @@ struct RawFigure {
 }
 
 /// Reads the figures' manifest; a mistake is reported as `file:line:col: …`.
-pub fn read_figures(path: &Path) -> Result<Vec<Figure>, Error> {
-    let text = std::fs::read_to_string(path).map_err(|e| Error::io(path, e))?;
+pub fn read_figures(path: &Path) -> Result<Vec<Figure>, ToolError> {
+    let text = std::fs::read_to_string(path).map_err(|e| ToolError::io(path, e))?;
     parse_figures(&text, &path.display().to_string())
 }
 
 /// Checks the manifest text `text`; `file` names it in messages. Each `file` must be a plain
 /// `NAME.png` (no directory) named once, each `binary` one of [`BINARIES`], and `args` must
 /// not say where to write (`-o`/`--output`): the manifest's `file` does.
-pub fn parse_figures(text: &str, file: &str) -> Result<Vec<Figure>, Error> {
+pub fn parse_figures(text: &str, file: &str) -> Result<Vec<Figure>, ToolError> {
     let err = |span: Range<usize>, message: String| error_at(text, file, span, message);
     let raw: RawFigures = from_toml(text, file)?;
     let mut seen: HashMap<String, usize> = HashMap::new();
@@ -142,10 +142,10 @@ pub fn parse_figures(text: &str, file: &str) -> Result<Vec<Figure>, Error> {
 
 /// Renders `figure` to `out` with the binary of that name in `bin_dir`, from `root` (so that
 /// the scene paths of its arguments resolve). The binary's own message is the error.
-pub fn render(figure: &Figure, bin_dir: &Path, root: &Path, out: &Path) -> Result<(), Error> {
+pub fn render(figure: &Figure, bin_dir: &Path, root: &Path, out: &Path) -> Result<(), ToolError> {
     let binary = bin_dir.join(format!("{}{}", figure.binary, std::env::consts::EXE_SUFFIX));
     if !binary.is_file() {
-        return Err(Error::Usage(format!(
+        return Err(ToolError::Usage(format!(
             "{} is not built: run `cargo build --bins` (or --release) first",
             binary.display()
         )));
@@ -157,12 +157,12 @@ pub fn render(figure: &Figure, bin_dir: &Path, root: &Path, out: &Path) -> Resul
         .arg("--quiet")
         .current_dir(root)
         .output()
-        .map_err(|e| Error::io(&binary, e))?;
+        .map_err(|e| ToolError::io(&binary, e))?;
     if result.status.success() {
         Ok(())
     } else {
         let stderr = String::from_utf8_lossy(&result.stderr);
-        Err(Error::Proof(format!(
+        Err(ToolError::Figure(format!(
             "{} {}: {}",
             figure.binary,
             figure.args.join(" "),
@@ -192,7 +192,7 @@ pub enum Difference {
 
 /// Compares two PNGs channel by channel; a difference of at most `tolerance` levels counts as
 /// the same.
-pub fn compare(committed: &Path, fresh: &Path, tolerance: u8) -> Result<Difference, Error> {
+pub fn compare(committed: &Path, fresh: &Path, tolerance: u8) -> Result<Difference, ToolError> {
     let (a, b) = (read_rgba(committed)?, read_rgba(fresh)?);
     if a.0 != b.0 {
         return Ok(Difference::Size(a.0, b.0));
@@ -226,8 +226,9 @@ pub fn compare(committed: &Path, fresh: &Path, tolerance: u8) -> Result<Differen
 }
 
 /// A PNG's size and its pixels as 8-bit RGBA, row by row from the top.
-fn read_rgba(path: &Path) -> Result<((u32, u32), Vec<u8>), Error> {
-    let fail = |e: String| Error::Usage(format!("{}: cannot read the PNG: {e}", path.display()));
+fn read_rgba(path: &Path) -> Result<((u32, u32), Vec<u8>), ToolError> {
+    let fail =
+        |e: String| ToolError::Usage(format!("{}: cannot read the PNG: {e}", path.display()));
     let file = std::fs::File::open(path).map_err(|e| fail(e.to_string()))?;
     let mut decoder = png::Decoder::new(std::io::BufReader::new(file));
     decoder.set_transformations(png::Transformations::EXPAND | png::Transformations::STRIP_16);
@@ -272,12 +273,12 @@ impl std::fmt::Display for Problem {
 }
 
 /// The files under `dir` (and its subdirectories) whose extension is `extension`, sorted.
-pub fn pages(dir: &Path, extension: &str) -> Result<Vec<PathBuf>, Error> {
+pub fn pages(dir: &Path, extension: &str) -> Result<Vec<PathBuf>, ToolError> {
     let mut found = Vec::new();
     let mut stack = vec![dir.to_path_buf()];
     while let Some(d) = stack.pop() {
-        for entry in std::fs::read_dir(&d).map_err(|e| Error::io(&d, e))? {
-            let path = entry.map_err(|e| Error::io(&d, e))?.path();
+        for entry in std::fs::read_dir(&d).map_err(|e| ToolError::io(&d, e))? {
+            let path = entry.map_err(|e| ToolError::io(&d, e))?.path();
             if path.is_dir() {
                 stack.push(path);
             } else if path.extension().is_some_and(|e| e == extension) {
@@ -293,10 +294,10 @@ pub fn pages(dir: &Path, extension: &str) -> Result<Vec<PathBuf>, Error> {
 /// the file must exist, a named anchor must have its `ANCHOR: name` and `ANCHOR_END: name`
 /// lines with something between them, and a line range must lie inside the file. Escaped
 /// links (`\{{#include …}}`) are text, not links.
-pub fn check_includes(src_dir: &Path) -> Result<Vec<Problem>, Error> {
+pub fn check_includes(src_dir: &Path) -> Result<Vec<Problem>, ToolError> {
     let mut problems = Vec::new();
     for page in pages(src_dir, "md")? {
-        let text = std::fs::read_to_string(&page).map_err(|e| Error::io(&page, e))?;
+        let text = std::fs::read_to_string(&page).map_err(|e| ToolError::io(&page, e))?;
         let dir = page.parent().unwrap_or(src_dir);
         for (line, target) in include_links(&text) {
             if let Err(message) = resolve_include(dir, &target) {
@@ -512,11 +513,11 @@ fn ids(html: &str) -> Vec<String> {
 /// (`src=` or a stylesheet over http(s) or `//`); no formula may have failed to render
 /// (KaTeX's `katex-error`, or a `$$` left in the text); and each page named in `chapters`
 /// (e.g. `ch01-camera-rays.html`) must show typeset math and at least one figure.
-pub fn check_html(book_dir: &Path, chapters: &[&str]) -> Result<Vec<Problem>, Error> {
+pub fn check_html(book_dir: &Path, chapters: &[&str]) -> Result<Vec<Problem>, ToolError> {
     let files = pages(book_dir, "html")?;
     let mut texts: BTreeMap<PathBuf, String> = BTreeMap::new();
     for f in &files {
-        let text = std::fs::read_to_string(f).map_err(|e| Error::io(f, e))?;
+        let text = std::fs::read_to_string(f).map_err(|e| ToolError::io(f, e))?;
         texts.insert(f.clone(), text);
     }
     let mut id_cache: HashMap<PathBuf, Vec<String>> = HashMap::new();

@@ -20,9 +20,10 @@
 use std::collections::{BTreeMap, BTreeSet};
 use std::path::Path;
 
-use super::Error;
+use super::ToolError;
+use super::cargo::{TestOutcome, TestRun};
 use super::manifest::Manifest;
-use super::prove::{self, Options, TestOutcome};
+use super::prove::{self, PoisonedRuns};
 
 /// What poisoning each exercise did to the handout's tests.
 #[derive(Clone, Debug, Default, PartialEq, Eq)]
@@ -85,7 +86,11 @@ pub fn check(manifest: &Manifest, map: &[Group], measured: &Measured) -> Vec<Str
 /// Measures the dependencies of the handout's tests on each exercise (see the module's
 /// documentation). `options.features` selects the build's features, `options.jobs` how many
 /// runs go on at once.
-pub fn measure(root: &Path, manifest: &Manifest, options: &Options) -> Result<Measured, Error> {
+pub fn measure(
+    root: &Path,
+    manifest: &Manifest,
+    options: &PoisonedRuns,
+) -> Result<Measured, ToolError> {
     let locations = prove::locate_all(root, manifest)?;
     let poisoned =
         prove::PoisonedCopy::new(root, manifest, &locations, "whitted-deps-", options.keep)?;
@@ -102,41 +107,35 @@ pub fn measure(root: &Path, manifest: &Manifest, options: &Options) -> Result<Me
     )?;
 
     // one run of every target, with the entries `poison` poisoned (none for the baseline)
-    let run_all = |poison: Option<usize>| -> Result<BTreeMap<TestId, TestOutcome>, Error> {
-        let mut out = BTreeMap::new();
+    let run_all = |poison: Option<usize>| -> Result<TestRun, ToolError> {
+        let mut all = TestRun::default();
         for (target, exe) in &exes {
             let log = runs.join(format!(
                 "{target}-{}",
                 poison.map_or("none".into(), |k| k.to_string())
             ));
-            let run = prove::run_tests(exe, copy, None, poison, &log, options.timeout)?;
-            if let Some(why) = run.unfinished {
-                return Err(Error::Proof(format!(
+            let run = prove::run_tests(target, exe, copy, None, poison, &log, options.timeout)?;
+            if let Some(why) = &run.unfinished {
+                return Err(ToolError::Cargo(format!(
                     "tests/{target} with exercise {} poisoned did not finish: {why}",
-                    poison.map_or("none".into(), |k| manifest.entries[k].exercise.id.clone())
+                    poison.map_or("none".into(), |k| manifest.entries[k].exercise.name.clone())
                 )));
             }
-            for (name, outcome) in run.results {
-                out.insert(format!("{target}::{name}"), outcome);
-            }
+            all.merge(run);
         }
-        Ok(out)
+        Ok(all)
     };
     let baseline = run_all(None)?;
-    let red: Vec<&String> = baseline
-        .iter()
-        .filter(|(_, o)| **o == TestOutcome::Failed)
-        .map(|(n, _)| n)
-        .collect();
+    let red = baseline.with(TestOutcome::Failed);
     if !red.is_empty() {
-        return Err(Error::Proof(format!(
+        return Err(ToolError::Baseline(format!(
             "the handout's tests fail without any exercise missing: {red:?}"
         )));
     }
     let tests: BTreeSet<TestId> = baseline
-        .iter()
-        .filter(|(_, o)| **o == TestOutcome::Passed)
-        .map(|(n, _)| n.clone())
+        .with(TestOutcome::Passed)
+        .into_iter()
+        .cloned()
         .collect();
     eprintln!(
         "deps: baseline green ({} tests); taking out each of {} exercises in turn",
@@ -145,11 +144,11 @@ pub fn measure(root: &Path, manifest: &Manifest, options: &Options) -> Result<Me
     );
 
     let all: Vec<usize> = (0..manifest.entries.len()).collect();
-    let failing = prove::in_parallel(&all, options.jobs, |k| {
+    let failing = crate::parallel::in_parallel(&all, options.jobs, |k| {
         Ok(run_all(Some(k))?
+            .with(TestOutcome::Failed)
             .into_iter()
-            .filter(|(_, o)| *o == TestOutcome::Failed)
-            .map(|(n, _)| n)
+            .cloned()
             .collect())
     })?;
     Ok(Measured { tests, failing })
@@ -186,9 +185,9 @@ pub fn map_text(manifest: &Manifest, measured: &Measured) -> String {
         let mut written: Vec<String> = Vec::new();
         for t in &tests {
             let (target, name) = t.split_once("::").unwrap_or(("", t));
-            let prefix = match manifest.exercise_of_test(crate::learn::test_name(name)) {
+            let prefix = match manifest.exercise_of_test(crate::cargo::test_name(name)) {
                 Some(e) => {
-                    let own = crate::learn::test_name(name);
+                    let own = crate::cargo::test_name(name);
                     let module = &name[..name.len() - own.len()];
                     Some(format!(
                         "{target}::{module}{}",

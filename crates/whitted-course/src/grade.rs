@@ -6,7 +6,7 @@
 //! are put into a copy of the **instructor's** project — its tests, its manifest, its
 //! `Cargo.lock`, its code around the exercises — so a student who edits a test, the manifest
 //! or the renderer gains nothing. An exercise whose markers are missing counts as not written.
-//! With a build directory ([`Options::target_dir`]) the copy is kept beside it and rewritten
+//! With a build directory ([`GradeSetup::target_dir`]) the copy is kept beside it and rewritten
 //! file by file for each submission, so that cargo recompiles only the bodies that differ from
 //! the last submission's; without one, it is a fresh temporary directory.
 //!
@@ -31,13 +31,12 @@
 
 use std::collections::{BTreeMap, BTreeSet};
 use std::path::{Path, PathBuf};
-use std::process::Command;
 use std::time::{Duration, Instant};
 
+use super::cargo::test_name;
 use super::handout::{self, BEGIN, END, Region};
-use super::learn::test_name;
 use super::manifest::Manifest;
-use super::{Error, cargo, files, layout, prove};
+use super::{ToolError, cargo, files, layout};
 
 /// The nextest profile the grader writes into the copy: no retries, no fail-fast, a time
 /// limit per test, and a JUnit file the grader reads.
@@ -52,9 +51,9 @@ const COPY: &str = "graded-copy";
 /// The default time limit of one test.
 pub const DEFAULT_TIMEOUT: Duration = Duration::from_secs(20);
 
-/// How to grade.
+/// How a grading is set up: which chapter, the hidden tests, the time limit, where it builds.
 #[derive(Clone, Debug)]
-pub struct Options {
+pub struct GradeSetup {
     /// Grade only this chapter (its exercises and its test file); all five when `None`.
     pub chapter: Option<u8>,
     /// The instructor's hidden tests: a directory of `*.rs` test files.
@@ -70,7 +69,7 @@ pub struct Options {
     pub keep: bool,
 }
 
-impl Default for Options {
+impl Default for GradeSetup {
     fn default() -> Self {
         Self {
             chapter: None,
@@ -265,11 +264,11 @@ pub fn grade(
     root: &Path,
     manifest: &Manifest,
     submission: &Path,
-    options: &Options,
-) -> Result<Grade, Error> {
+    options: &GradeSetup,
+) -> Result<Grade, ToolError> {
     let start = Instant::now();
     if !submission.join(layout::core_src()).is_dir() {
-        return Err(Error::Usage(format!(
+        return Err(ToolError::Usage(format!(
             "{} is not a copy of the handout: it has no {}/ directory",
             submission.display(),
             layout::core_src().display()
@@ -278,7 +277,7 @@ pub fn grade(
     let chapters: Vec<u8> = match options.chapter {
         Some(c) if crate::syllabus::chapter(c).is_some() => vec![c],
         Some(c) => {
-            return Err(Error::Usage(format!(
+            return Err(ToolError::Usage(format!(
                 "--chapter {c}: the chapters are {} to {}",
                 crate::syllabus::FIRST,
                 crate::syllabus::LAST
@@ -308,7 +307,7 @@ pub fn grade(
             let mut t = tempfile::Builder::new()
                 .prefix("whitted-grade-")
                 .tempdir()
-                .map_err(|e| Error::io(std::env::temp_dir(), e))?;
+                .map_err(|e| ToolError::io(std::env::temp_dir(), e))?;
             t.disable_cleanup(options.keep);
             if options.keep {
                 eprintln!("grade: the graded copy is kept in {}", t.path().display());
@@ -401,7 +400,7 @@ fn splice(
     submission: &Path,
     chapters: &[u8],
     notes: &mut BTreeMap<usize, String>,
-) -> Result<Vec<Spliced>, Error> {
+) -> Result<Vec<Spliced>, ToolError> {
     let mut by_file: BTreeMap<PathBuf, Vec<(Region, String)>> = BTreeMap::new();
     for r in handout::regions(root, manifest)? {
         let e = &manifest.entries[r.entry];
@@ -420,7 +419,7 @@ fn splice(
         .map(|(file, mut regions)| {
             regions.sort_by_key(|(r, _)| r.bytes.start);
             let path = root.join(&file);
-            let reference = std::fs::read_to_string(&path).map_err(|e| Error::io(&path, e))?;
+            let reference = std::fs::read_to_string(&path).map_err(|e| ToolError::io(&path, e))?;
             Ok(Spliced {
                 file,
                 reference,
@@ -432,7 +431,7 @@ fn splice(
 
 /// Copies each `*.rs` of the hidden directory into the copy's `tests/` as `hidden_NAME.rs`;
 /// returns the test targets added.
-fn add_hidden(project: &Path, hidden: Option<&Path>) -> Result<Vec<String>, Error> {
+fn add_hidden(project: &Path, hidden: Option<&Path>) -> Result<Vec<String>, ToolError> {
     // a kept copy may hold the hidden tests of an earlier grading
     let tests = project.join(layout::core_tests());
     if let Ok(entries) = std::fs::read_dir(&tests) {
@@ -446,7 +445,7 @@ fn add_hidden(project: &Path, hidden: Option<&Path>) -> Result<Vec<String>, Erro
         return Ok(Vec::new());
     };
     let mut targets = Vec::new();
-    let entries = std::fs::read_dir(dir).map_err(|e| Error::io(dir, e))?;
+    let entries = std::fs::read_dir(dir).map_err(|e| ToolError::io(dir, e))?;
     let mut files: Vec<PathBuf> = entries
         .filter_map(Result::ok)
         .map(|e| e.path())
@@ -454,7 +453,7 @@ fn add_hidden(project: &Path, hidden: Option<&Path>) -> Result<Vec<String>, Erro
         .collect();
     files.sort();
     if files.is_empty() {
-        return Err(Error::Usage(format!(
+        return Err(ToolError::Usage(format!(
             "--hidden {}: the directory holds no .rs test file",
             dir.display()
         )));
@@ -469,7 +468,7 @@ fn add_hidden(project: &Path, hidden: Option<&Path>) -> Result<Vec<String>, Erro
             .collect();
         let target = format!("hidden_{stem}");
         let to = project.join(layout::core_test_file(&target));
-        let bytes = std::fs::read(&f).map_err(|e| Error::io(&f, e))?;
+        let bytes = std::fs::read(&f).map_err(|e| ToolError::io(&f, e))?;
         files::write_if_changed(&to, &bytes)?;
         targets.push(target);
     }
@@ -477,9 +476,9 @@ fn add_hidden(project: &Path, hidden: Option<&Path>) -> Result<Vec<String>, Erro
 }
 
 /// Writes the grading profile into the copy's `.config/nextest.toml`.
-fn write_profile(project: &Path, timeout: Duration) -> Result<(), Error> {
+fn write_profile(project: &Path, timeout: Duration) -> Result<(), ToolError> {
     let dir = project.join(".config");
-    std::fs::create_dir_all(&dir).map_err(|e| Error::io(&dir, e))?;
+    std::fs::create_dir_all(&dir).map_err(|e| ToolError::io(&dir, e))?;
     let text = format!(
         "# written by `whitted grade`: every test in its own process, stopped after its time limit\n\
          [store]\n\
@@ -504,24 +503,13 @@ fn write_profile(project: &Path, timeout: Duration) -> Result<(), Error> {
 /// A compiler error: the file and line of its primary span, and its message with its place.
 type CompileError = ((PathBuf, usize), String);
 
-/// `cargo ARGS -p whitted --test T…` in the copy, building into `target_dir` without debug
-/// information (the grader reads messages, not backtraces: builds twice as fast).
-fn cargo_in(project: &Path, target_dir: &Path, args: &[&str], targets: &[String]) -> Command {
-    let mut command = cargo::command(project, Some(target_dir), false);
-    command.args(args).args(["-p", layout::CORE_PACKAGE]);
-    for t in targets {
-        command.args(["--test", t]);
-    }
-    command
-}
-
 /// Builds the test targets; returns the compiler's errors, each as the primary span's file
 /// and line, and the error's first line with its place (empty when the build succeeded).
 fn build(
     project: &Path,
     target_dir: &Path,
     targets: &[String],
-) -> Result<Vec<CompileError>, Error> {
+) -> Result<Vec<CompileError>, ToolError> {
     let built = cargo::Build {
         project,
         packages: &[layout::CORE_PACKAGE],
@@ -599,42 +587,28 @@ fn run(
     targets: &[String],
     manifest: &Manifest,
     hidden: &[String],
-) -> Result<Vec<TestResult>, Error> {
+) -> Result<Vec<TestResult>, ToolError> {
     // in the copy, not the (perhaps shared) target directory: one report per copy
     let junit = project.join(STORE).join(NEXTEST_PROFILE).join("junit.xml");
     let _ = std::fs::remove_file(&junit);
-    let out = cargo_in(
+    let ran = cargo::Nextest {
         project,
+        package: layout::CORE_PACKAGE,
+        tests: targets,
+        profile: NEXTEST_PROFILE,
         target_dir,
-        &[
-            "nextest",
-            "run",
-            "--locked",
-            "--profile",
-            NEXTEST_PROFILE,
-            "--no-fail-fast",
-            "--no-tests=pass",
-        ],
-        targets,
-    )
-    .env("RUST_BACKTRACE", "0")
-    .env("NO_COLOR", "1")
-    .output()
-    .map_err(|e| Error::Cargo(format!("cannot run cargo nextest: {e}")))?;
-    let text = std::fs::read_to_string(&junit).map_err(|_| {
-        let stderr = String::from_utf8_lossy(&out.stderr);
-        let why = if stderr.contains("no such command: `nextest`") {
-            "cargo-nextest is not installed: cargo install --locked cargo-nextest".to_string()
-        } else {
-            stderr
-                .lines()
-                .rev()
-                .find(|l| !l.trim().is_empty())
-                .unwrap_or("")
-                .to_string()
-        };
-        Error::Cargo(format!("the tests did not run: {why}"))
-    })?;
+    }
+    .run();
+    let text = match (std::fs::read_to_string(&junit), ran) {
+        (Ok(text), _) => text,
+        (Err(_), Err(e)) => return Err(e),
+        (Err(e), Ok(())) => {
+            return Err(ToolError::Cargo(format!(
+                "the tests ran, but nextest wrote no report {}: {e}",
+                junit.display()
+            )));
+        }
+    };
     parse_junit(&text, manifest, hidden)
 }
 
@@ -643,9 +617,9 @@ pub fn parse_junit(
     text: &str,
     manifest: &Manifest,
     hidden: &[String],
-) -> Result<Vec<TestResult>, Error> {
+) -> Result<Vec<TestResult>, ToolError> {
     let doc = roxmltree::Document::parse(text)
-        .map_err(|e| Error::Cargo(format!("cannot read nextest's JUnit report: {e}")))?;
+        .map_err(|e| ToolError::Cargo(format!("cannot read nextest's JUnit report: {e}")))?;
     let mut out = Vec::new();
     for case in doc.descendants().filter(|n| n.has_tag_name("testcase")) {
         let name = test_name(case.attribute("name").unwrap_or("")).to_string();
@@ -784,12 +758,12 @@ pub fn grade_class(
     root: &Path,
     manifest: &Manifest,
     dir: &Path,
-    options: &Options,
+    options: &GradeSetup,
     jobs: usize,
     done: &(dyn Fn(&ClassEntry) + Sync),
-) -> Result<Vec<ClassEntry>, Error> {
+) -> Result<Vec<ClassEntry>, ToolError> {
     let mut submissions: Vec<PathBuf> = std::fs::read_dir(dir)
-        .map_err(|e| Error::io(dir, e))?
+        .map_err(|e| ToolError::io(dir, e))?
         .filter_map(Result::ok)
         .map(|e| e.path())
         .filter(|p| {
@@ -801,7 +775,7 @@ pub fn grade_class(
         .collect();
     submissions.sort();
     if submissions.is_empty() {
-        return Err(Error::Usage(format!(
+        return Err(ToolError::Usage(format!(
             "--class {}: no submission directory in it",
             dir.display()
         )));
@@ -819,7 +793,7 @@ pub fn grade_class(
             })
             .collect(),
     );
-    prove::in_parallel(&items, jobs, |i| {
+    crate::parallel::in_parallel(&items, jobs, |i| {
         let path = &submissions[i];
         let slot = slots
             .lock()

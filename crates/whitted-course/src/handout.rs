@@ -29,7 +29,7 @@ use std::path::{Path, PathBuf};
 
 use super::manifest::{Entry, Manifest};
 use super::source::Location;
-use super::{Error, files, layout, prove};
+use super::{ToolError, files, layout, prove};
 
 pub use super::layout::{BEGIN, END};
 
@@ -57,12 +57,12 @@ pub struct Region {
 /// the entry's exercise name and the END line after it, both inside the function's body. A
 /// region missing, or misnumbered, or a BEGIN marker in `src/` that belongs to no entry, is an
 /// error that names the file and line.
-pub fn regions(root: &Path, manifest: &Manifest) -> Result<Vec<Region>, Error> {
+pub fn regions(root: &Path, manifest: &Manifest) -> Result<Vec<Region>, ToolError> {
     let locations = prove::locate_all(root, manifest)?;
     let mut out = Vec::with_capacity(locations.len());
     for (entry, (e, at)) in manifest.entries.iter().zip(&locations).enumerate() {
         let path = root.join(&at.file);
-        let text = std::fs::read_to_string(&path).map_err(|err| Error::io(&path, err))?;
+        let text = std::fs::read_to_string(&path).map_err(|err| ToolError::io(&path, err))?;
         out.push(region_in(&text, entry, e, at)?);
     }
     // every marker in src/ belongs to a region found above
@@ -71,7 +71,7 @@ pub fn regions(root: &Path, manifest: &Manifest) -> Result<Vec<Region>, Error> {
         known.entry(r.file.clone()).or_default().push(r.bytes.start);
     }
     for file in super::book::pages(&root.join(layout::core_src()), "rs")? {
-        let text = std::fs::read_to_string(&file).map_err(|err| Error::io(&file, err))?;
+        let text = std::fs::read_to_string(&file).map_err(|err| ToolError::io(&file, err))?;
         let relative = file.strip_prefix(root).unwrap_or(&file).to_path_buf();
         let mut offset = 0;
         for (n, line) in text.split_inclusive('\n').enumerate() {
@@ -80,7 +80,7 @@ pub fn regions(root: &Path, manifest: &Manifest) -> Result<Vec<Region>, Error> {
                     .get(&relative)
                     .is_some_and(|starts| starts.contains(&offset))
             {
-                return Err(Error::Proof(format!(
+                return Err(ToolError::Markers(format!(
                     "{}:{}: `{}` belongs to no function of {} (or to another one than its id says)",
                     relative.display(),
                     n + 1,
@@ -95,11 +95,11 @@ pub fn regions(root: &Path, manifest: &Manifest) -> Result<Vec<Region>, Error> {
 }
 
 /// The region of entry `e` inside its function's body at `at` in `text`.
-fn region_in(text: &str, entry: usize, e: &Entry, at: &Location) -> Result<Region, Error> {
+fn region_in(text: &str, entry: usize, e: &Entry, at: &Location) -> Result<Region, ToolError> {
     let id = &e.exercise.name;
     let body = &text[at.body.clone()];
     let fail = |what: String| {
-        Error::Proof(format!(
+        ToolError::Markers(format!(
             "{}:{}: {} (exercise {id}): {what}",
             at.file.display(),
             at.line,
@@ -164,7 +164,7 @@ pub fn select(
     manifest: &Manifest,
     chapters: Option<(u8, u8)>,
     exercises: &[String],
-) -> Result<Vec<usize>, Error> {
+) -> Result<Vec<usize>, ToolError> {
     if let Some((lo, hi)) = chapters {
         let known = |c: u8| crate::syllabus::chapter(c).is_some();
         if !known(lo) || !known(hi) || lo > hi {
@@ -173,7 +173,7 @@ pub fn select(
             } else {
                 format!("{lo}-{hi}")
             };
-            return Err(Error::Usage(format!(
+            return Err(ToolError::Usage(format!(
                 "--chapters {given}: expected chapters from {} to {}, the first not after the last",
                 crate::syllabus::FIRST,
                 crate::syllabus::LAST
@@ -189,7 +189,7 @@ pub fn select(
     let mut out = Vec::new();
     for id in exercises {
         let i = manifest.find(id).ok_or_else(|| {
-                Error::Usage(format!(
+                ToolError::Usage(format!(
                     "--exercises: there is no exercise {id} in {} (a name such as sphere_coefficients, or an id such as 2.6; `cargo learn list` shows them)",
                     manifest.file
                 ))
@@ -318,13 +318,13 @@ pub fn write(
     manifest: &Manifest,
     selected: &[usize],
     out: &Path,
-) -> Result<Handout, Error> {
+) -> Result<Handout, ToolError> {
     if out.exists() {
         let empty = std::fs::read_dir(out)
             .map(|mut d| d.next().is_none())
             .unwrap_or(false);
         if !empty {
-            return Err(Error::Usage(format!(
+            return Err(ToolError::Usage(format!(
                 "{} exists and is not an empty directory: give a new directory for the handout",
                 out.display()
             )));
@@ -335,11 +335,11 @@ pub fn write(
         Some(p) if !p.as_os_str().is_empty() => p.to_path_buf(),
         _ => PathBuf::from("."),
     };
-    std::fs::create_dir_all(&parent).map_err(|e| Error::io(&parent, e))?;
+    std::fs::create_dir_all(&parent).map_err(|e| ToolError::io(&parent, e))?;
     let temp = tempfile::Builder::new()
         .prefix(".whitted-handout-")
         .tempdir_in(&parent)
-        .map_err(|e| Error::io(&parent, e))?;
+        .map_err(|e| ToolError::io(&parent, e))?;
     let files = files::project_files(root)?;
     let tests = &manifest.handout.tests;
     let mut edits: BTreeMap<PathBuf, Vec<&Region>> = BTreeMap::new();
@@ -357,9 +357,9 @@ pub fn write(
         let from = root.join(file);
         let to = temp.path().join(file);
         if let Some(dir) = to.parent() {
-            std::fs::create_dir_all(dir).map_err(|e| Error::io(dir, e))?;
+            std::fs::create_dir_all(dir).map_err(|e| ToolError::io(dir, e))?;
         }
-        let read = || std::fs::read_to_string(&from).map_err(|e| Error::io(&from, e));
+        let read = || std::fs::read_to_string(&from).map_err(|e| ToolError::io(&from, e));
         let text = match part {
             Part::Workspace => Some(workspace_manifest(&read()?)?),
             Part::Readme => Some(student_readme(root, manifest, selected)?),
@@ -379,10 +379,10 @@ pub fn write(
                 if *file == lib && !selected.is_empty() {
                     t = allow_unused(&t);
                 }
-                std::fs::write(&to, t).map_err(|e| Error::io(&to, e))?;
+                std::fs::write(&to, t).map_err(|e| ToolError::io(&to, e))?;
             }
             None => {
-                std::fs::copy(&from, &to).map_err(|e| Error::io(&from, e))?;
+                std::fs::copy(&from, &to).map_err(|e| ToolError::io(&from, e))?;
             }
         }
         written += 1;
@@ -390,21 +390,21 @@ pub fn write(
     // the book's pages last: what they include is the handout's own code, exercises taken out
     for page in &pages {
         let to = temp.path().join(page);
-        let text = std::fs::read_to_string(root.join(page)).map_err(|e| Error::io(page, e))?;
+        let text = std::fs::read_to_string(root.join(page)).map_err(|e| ToolError::io(page, e))?;
         let dir = to.parent().unwrap_or(temp.path());
         let mut expanded = super::book::expand_includes(&text, dir)
-            .map_err(|why| Error::Proof(format!("{}: {why}", page.display())))?;
+            .map_err(|why| ToolError::Project(format!("{}: {why}", page.display())))?;
         if page.file_name().is_some_and(|n| n == "SUMMARY.md") {
             expanded = without_instructors(&expanded);
         }
-        std::fs::write(&to, expanded).map_err(|e| Error::io(&to, e))?;
+        std::fs::write(&to, expanded).map_err(|e| ToolError::io(&to, e))?;
     }
     prune_lock(temp.path());
     let kept = temp.keep();
     if out.exists() {
-        std::fs::remove_dir(out).map_err(|e| Error::io(out, e))?;
+        std::fs::remove_dir(out).map_err(|e| ToolError::io(out, e))?;
     }
-    std::fs::rename(&kept, out).map_err(|e| Error::io(out, e))?;
+    std::fs::rename(&kept, out).map_err(|e| ToolError::io(out, e))?;
     Ok(Handout {
         stripped: selected.to_vec(),
         files: written,
@@ -428,7 +428,7 @@ fn prune_lock(project: &Path) {
 
 /// The handout's workspace manifest: the project's, with only the crates a handout holds as
 /// members (tools and benchmarks stay with the instructor) and a header of its own.
-pub fn workspace_manifest(reference: &str) -> Result<String, Error> {
+pub fn workspace_manifest(reference: &str) -> Result<String, ToolError> {
     let members = format!(
         "members = [{}]",
         [layout::SYLLABUS, layout::CORE, layout::APP, layout::LEARN]
@@ -461,7 +461,7 @@ pub fn workspace_manifest(reference: &str) -> Result<String, Error> {
         out.push('\n');
     }
     if !replaced {
-        return Err(Error::Proof(
+        return Err(ToolError::Project(
             "Cargo.toml: no `members = [...]` line to write the handout's members into".into(),
         ));
     }
@@ -493,12 +493,12 @@ pub const LEFT_PACKAGES: [&str; 6] = [
 
 /// The handout's `.cargo/config.toml`: the project's `learn` alias (the one command of the
 /// student's README) and nothing of the instructor's.
-pub fn cargo_config(reference: &str) -> Result<String, Error> {
+pub fn cargo_config(reference: &str) -> Result<String, ToolError> {
     let learn = reference
         .lines()
         .find(|l| l.trim_start().starts_with("learn ="))
         .ok_or_else(|| {
-            Error::Proof(".cargo/config.toml: no `learn = …` alias for the handout".into())
+            ToolError::Project(".cargo/config.toml: no `learn = …` alias for the handout".into())
         })?;
     Ok(format!(
         "# `cargo learn`: the loop of this handout (crates/whitted-learn), built once, at the test\n\
@@ -532,9 +532,9 @@ pub fn student_readme(
     root: &Path,
     manifest: &Manifest,
     selected: &[usize],
-) -> Result<String, Error> {
+) -> Result<String, ToolError> {
     let path = root.join(README_TEMPLATE);
-    let template = std::fs::read_to_string(&path).map_err(|e| Error::io(&path, e))?;
+    let template = std::fs::read_to_string(&path).map_err(|e| ToolError::io(&path, e))?;
     let ids: Vec<String> = super::manifest::compress_ids(&manifest.entries, selected);
     let exercises = if selected.len() == manifest.entries.len() {
         format!("all {} exercises of the five chapters", selected.len())

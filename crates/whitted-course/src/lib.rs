@@ -56,9 +56,12 @@ pub mod book;
 pub mod deps;
 pub mod grade;
 pub mod handout;
+pub mod parallel;
 pub mod prove;
 pub mod readme;
 pub mod report;
 pub mod source;
 
-pub use whitted_learn::{Error, args, cargo, cli, files, layout, learn, manifest, map, syllabus};
+pub use whitted_learn::{
+    ToolError, args, cargo, cli, files, layout, learn, manifest, map, syllabus,
+};

@@ -25,8 +25,8 @@ use std::process::ExitCode;
 use clap::{Parser, Subcommand};
 use whitted_course::cli::{find_root, read_manifest};
 use whitted_course::manifest::Manifest;
-use whitted_course::prove::{self, Options};
-use whitted_course::{Error, syllabus};
+use whitted_course::prove::{self, PoisonedRuns};
+use whitted_course::{ToolError, syllabus};
 
 /// The course tools of whitted, the toolkit for learning classic ray tracing.
 #[derive(Parser)]
@@ -240,7 +240,7 @@ fn main() -> ExitCode {
     }
 }
 
-fn formulas(args: &Formulas) -> Result<ExitCode, Error> {
+fn formulas(args: &Formulas) -> Result<ExitCode, ToolError> {
     let root = match &args.root {
         Some(root) => root.clone(),
         None => find_root()?,
@@ -265,12 +265,12 @@ fn formulas(args: &Formulas) -> Result<ExitCode, Error> {
         list(&root, &manifest)?;
         return Ok(ExitCode::SUCCESS);
     }
-    let options = Options {
+    let options = PoisonedRuns {
         only: args.only.clone(),
         keep: args.keep,
         timeout: std::time::Duration::from_secs(args.timeout),
         features: args.features.clone(),
-        ..Options::default()
+        ..PoisonedRuns::default()
     };
     let report = prove::prove(&root, &manifest, &options)?;
     eprintln!(
@@ -287,7 +287,7 @@ fn formulas(args: &Formulas) -> Result<ExitCode, Error> {
     let mut out = std::io::stdout().lock();
     report
         .write_table(&manifest, &mut out)
-        .map_err(|e| Error::io("stdout", e))?;
+        .map_err(|e| ToolError::io("stdout", e))?;
     Ok(if report.proven() == report.rows.len() {
         ExitCode::SUCCESS
     } else {
@@ -295,7 +295,7 @@ fn formulas(args: &Formulas) -> Result<ExitCode, Error> {
     })
 }
 
-fn handout(args: &HandoutArgs) -> Result<ExitCode, Error> {
+fn handout(args: &HandoutArgs) -> Result<ExitCode, ToolError> {
     let root = match &args.root {
         Some(root) => root.clone(),
         None => find_root()?,
@@ -325,13 +325,13 @@ fn handout(args: &HandoutArgs) -> Result<ExitCode, Error> {
 
 /// `whitted formulas --deps [--write]`: the measured dependencies, checked against the map
 /// (or written to it).
-fn deps(root: &Path, manifest: &Manifest, args: &Formulas) -> Result<ExitCode, Error> {
+fn deps(root: &Path, manifest: &Manifest, args: &Formulas) -> Result<ExitCode, ToolError> {
     use whitted_course::deps;
-    let options = Options {
+    let options = PoisonedRuns {
         keep: args.keep,
         timeout: std::time::Duration::from_secs(args.timeout),
         features: args.features.clone(),
-        ..Options::default()
+        ..PoisonedRuns::default()
     };
     let measured = deps::measure(root, manifest, &options)?;
     for (e, failing) in manifest.entries.iter().zip(&measured.failing) {
@@ -370,7 +370,7 @@ fn deps(root: &Path, manifest: &Manifest, args: &Formulas) -> Result<ExitCode, E
 }
 
 /// `whitted figures [--check]`: the book's renders, from their manifest.
-fn figures(args: &FiguresArgs) -> Result<ExitCode, Error> {
+fn figures(args: &FiguresArgs) -> Result<ExitCode, ToolError> {
     use whitted_course::book::{self, Difference};
     let root = match &args.root {
         Some(root) => root.clone(),
@@ -381,20 +381,20 @@ fn figures(args: &FiguresArgs) -> Result<ExitCode, Error> {
     if let Some(only) = &args.only {
         figures.retain(|f| f.file.contains(only.as_str()));
         if figures.is_empty() {
-            return Err(Error::Usage(format!(
+            return Err(ToolError::Usage(format!(
                 "--only {only}: no figure of {} has it in its name",
                 manifest.display()
             )));
         }
     }
-    let exe = std::env::current_exe().map_err(|e| Error::io("whitted", e))?;
+    let exe = std::env::current_exe().map_err(|e| ToolError::io("whitted", e))?;
     let bin_dir = exe.parent().unwrap_or(Path::new("."));
     let dir = root.join("docs/src/figures");
-    std::fs::create_dir_all(&dir).map_err(|e| Error::io(&dir, e))?;
+    std::fs::create_dir_all(&dir).map_err(|e| ToolError::io(&dir, e))?;
     let scratch = tempfile::Builder::new()
         .prefix(".figures-")
         .tempdir_in(&dir)
-        .map_err(|e| Error::io(&dir, e))?;
+        .map_err(|e| ToolError::io(&dir, e))?;
     let mut differ = 0;
     for (k, figure) in figures.iter().enumerate() {
         let fresh = scratch.path().join(&figure.file);
@@ -404,7 +404,7 @@ fn figures(args: &FiguresArgs) -> Result<ExitCode, Error> {
         let ms = started.elapsed().as_millis();
         let n = figures.len();
         if !args.check {
-            std::fs::rename(&fresh, &committed).map_err(|e| Error::io(&committed, e))?;
+            std::fs::rename(&fresh, &committed).map_err(|e| ToolError::io(&committed, e))?;
             println!(
                 "[{}/{n}] wrote docs/src/figures/{} ({ms} ms)",
                 k + 1,
@@ -463,7 +463,7 @@ fn figures(args: &FiguresArgs) -> Result<ExitCode, Error> {
 }
 
 /// `whitted book`: checks the includes, builds the book, checks the log and the HTML.
-fn book(args: &BookArgs) -> Result<ExitCode, Error> {
+fn book(args: &BookArgs) -> Result<ExitCode, ToolError> {
     use whitted_course::book;
     let root = match &args.root {
         Some(root) => root.clone(),
@@ -480,7 +480,7 @@ fn book(args: &BookArgs) -> Result<ExitCode, Error> {
         .env("NO_COLOR", "1")
         .output()
         .map_err(|e| {
-            Error::Usage(format!(
+            ToolError::Usage(format!(
                 "cannot run `{}`: {e}: install the book's tools as docs/README.md says (`.ci/run` does)",
                 args.mdbook.display()
             ))
@@ -535,14 +535,14 @@ fn book(args: &BookArgs) -> Result<ExitCode, Error> {
 }
 
 /// `whitted grade`: one submission, or a class.
-fn grade(args: &GradeArgs) -> Result<ExitCode, Error> {
+fn grade(args: &GradeArgs) -> Result<ExitCode, ToolError> {
     use whitted_course::{grade, report};
     let root = match &args.root {
         Some(root) => root.clone(),
         None => find_root()?,
     };
     let manifest = read_manifest(&root)?;
-    let options = grade::Options {
+    let options = grade::GradeSetup {
         chapter: args.chapter,
         hidden: args.hidden.clone(),
         timeout: std::time::Duration::from_secs(args.timeout),
@@ -557,14 +557,14 @@ fn grade(args: &GradeArgs) -> Result<ExitCode, Error> {
     if let Some(hidden) = &args.hidden
         && !hidden.is_dir()
     {
-        return Err(Error::Usage(format!(
+        return Err(ToolError::Usage(format!(
             "--hidden {}: not a directory",
             hidden.display()
         )));
     }
     if let (Some(class), Some(out)) = (&args.class, &args.out) {
-        std::fs::create_dir_all(out).map_err(|e| Error::io(out, e))?;
-        let out = out.canonicalize().map_err(|e| Error::io(out, e))?;
+        std::fs::create_dir_all(out).map_err(|e| ToolError::io(out, e))?;
+        let out = out.canonicalize().map_err(|e| ToolError::io(out, e))?;
         let jobs = args.jobs.map_or_else(
             || std::thread::available_parallelism().map_or(1, usize::from),
             |j| j as usize,
@@ -591,7 +591,7 @@ fn grade(args: &GradeArgs) -> Result<ExitCode, Error> {
             match &e.grade {
                 Ok(g) => {
                     let dir = out.join(&e.student);
-                    std::fs::create_dir_all(&dir).map_err(|err| Error::io(&dir, err))?;
+                    std::fs::create_dir_all(&dir).map_err(|err| ToolError::io(&dir, err))?;
                     write_reports(
                         g,
                         &manifest,
@@ -648,7 +648,7 @@ fn write_reports(
     json: Option<&Path>,
     junit: Option<&Path>,
     csv: Option<&Path>,
-) -> Result<(), Error> {
+) -> Result<(), ToolError> {
     use whitted_course::report;
     if let Some(path) = text {
         write(path, report::table(g, manifest).as_bytes())?;
@@ -656,7 +656,7 @@ fn write_reports(
     if let Some(path) = json {
         let value = report::gradescope(g, manifest);
         let text = serde_json::to_string_pretty(&value)
-            .map_err(|e| Error::Usage(format!("cannot write JSON: {e}")))?;
+            .map_err(|e| ToolError::Usage(format!("cannot write JSON: {e}")))?;
         write(path, (text + "\n").as_bytes())?;
     }
     if let Some(path) = junit {
@@ -674,12 +674,12 @@ fn write_reports(
 }
 
 /// Writes a file atomically (a temporary file renamed into place).
-fn write(path: &Path, bytes: &[u8]) -> Result<(), Error> {
+fn write(path: &Path, bytes: &[u8]) -> Result<(), ToolError> {
     whitted_course::files::write_file(path, bytes)
 }
 
 /// Prints the manifest by chapter: function, file:line, formula, section.
-fn list(root: &Path, manifest: &Manifest) -> Result<(), Error> {
+fn list(root: &Path, manifest: &Manifest) -> Result<(), ToolError> {
     let locations = prove::locate_all(root, manifest)?;
     let places: Vec<String> = locations
         .iter()

@@ -26,13 +26,12 @@
 use std::collections::BTreeMap;
 use std::io::Write;
 use std::path::{Path, PathBuf};
-use std::sync::Mutex;
 use std::sync::atomic::{AtomicUsize, Ordering};
 use std::time::{Duration, Instant};
 
-use super::Error;
-pub use super::cargo::TestOutcome;
-use super::cargo::{self, Build, Stderr};
+use super::ToolError;
+use super::cargo::TestOutcome;
+use super::cargo::{self, Build, Stderr, TestRun};
 use super::layout;
 use super::manifest::Manifest;
 use super::source::{self, Location};
@@ -40,9 +39,10 @@ use super::source::{self, Location};
 /// The environment variable that names the poisoned function's number.
 pub const POISON_VAR: &str = "WHITTED_POISON";
 
-/// How the proof runs.
+/// How the poisoned copy is built and its tests run: the settings of the proof and of the
+/// dependency measurement ([`crate::deps::measure`]).
 #[derive(Clone, Debug)]
-pub struct Options {
+pub struct PoisonedRuns {
     /// Prove only these functions (manifest paths); empty means all.
     pub only: Vec<String>,
     /// Keep the temporary copy of the project (its path is in the report).
@@ -57,7 +57,7 @@ pub struct Options {
     pub features: Vec<String>,
 }
 
-impl Default for Options {
+impl Default for PoisonedRuns {
     fn default() -> Self {
         Self {
             only: Vec::new(),
@@ -186,20 +186,20 @@ pub mod __poison {
 "#;
 
 /// Finds every manifest function under `root`. An error names the entry and the file.
-pub fn locate_all(root: &Path, manifest: &Manifest) -> Result<Vec<Location>, Error> {
+pub fn locate_all(root: &Path, manifest: &Manifest) -> Result<Vec<Location>, ToolError> {
     manifest
         .entries
         .iter()
         .map(|entry| {
             let found =
-                source::locate(root, &entry.function).map_err(|message| Error::Function {
+                source::locate(root, &entry.function).map_err(|message| ToolError::Function {
                     manifest: manifest.file.clone(),
                     line: entry.line,
                     function: entry.function.clone(),
                     message,
                 })?;
             if found.is_const {
-                return Err(Error::Function {
+                return Err(ToolError::Function {
                     manifest: manifest.file.clone(),
                     line: entry.line,
                     function: entry.function.clone(),
@@ -224,7 +224,7 @@ pub fn poisoned_sources(
     root: &Path,
     manifest: &Manifest,
     locations: &[Location],
-) -> Result<BTreeMap<PathBuf, String>, Error> {
+) -> Result<BTreeMap<PathBuf, String>, ToolError> {
     let mut by_file: BTreeMap<PathBuf, Vec<(usize, &Location)>> = BTreeMap::new();
     for (index, at) in locations.iter().enumerate() {
         by_file
@@ -236,7 +236,7 @@ pub fn poisoned_sources(
         .into_iter()
         .map(|(file, found)| {
             let path = root.join(&file);
-            let text = std::fs::read_to_string(&path).map_err(|e| Error::io(&path, e))?;
+            let text = std::fs::read_to_string(&path).map_err(|e| ToolError::io(&path, e))?;
             let mut inserts: Vec<(usize, String)> = Vec::new();
             for (index, at) in found {
                 let entry = &manifest.entries[index];
@@ -245,7 +245,7 @@ pub fn poisoned_sources(
                     .get(at.body.clone())
                     .is_none_or(|b| !b.starts_with('{'))
                 {
-                    return Err(Error::Proof(format!(
+                    return Err(ToolError::Markers(format!(
                         "{}: bytes {:?} are not the body of {}",
                         file.display(),
                         at.body,
@@ -312,24 +312,24 @@ impl PoisonedCopy {
         locations: &[Location],
         prefix: &str,
         keep: bool,
-    ) -> Result<Self, Error> {
+    ) -> Result<Self, ToolError> {
         let mut temp = tempfile::Builder::new()
             .prefix(prefix)
             .tempdir()
-            .map_err(|e| Error::io(std::env::temp_dir(), e))?;
+            .map_err(|e| ToolError::io(std::env::temp_dir(), e))?;
         temp.disable_cleanup(keep);
         let project = temp.path().join("project");
         let runs = temp.path().join("runs");
-        std::fs::create_dir_all(&runs).map_err(|e| Error::io(&runs, e))?;
+        std::fs::create_dir_all(&runs).map_err(|e| ToolError::io(&runs, e))?;
         let files = crate::files::copy_project(root, &project)?;
         for (file, text) in poisoned_sources(&project, manifest, locations)? {
             let path = project.join(file);
-            std::fs::write(&path, text).map_err(|e| Error::io(&path, e))?;
+            std::fs::write(&path, text).map_err(|e| ToolError::io(&path, e))?;
         }
         let lib = project.join(layout::core_lib());
-        let mut lib_text = std::fs::read_to_string(&lib).map_err(|e| Error::io(&lib, e))?;
+        let mut lib_text = std::fs::read_to_string(&lib).map_err(|e| ToolError::io(&lib, e))?;
         lib_text.push_str(POISON_MODULE);
-        std::fs::write(&lib, lib_text).map_err(|e| Error::io(&lib, e))?;
+        std::fs::write(&lib, lib_text).map_err(|e| ToolError::io(&lib, e))?;
         Ok(Self {
             temp,
             project,
@@ -341,7 +341,11 @@ impl PoisonedCopy {
 
 /// Runs the proof for the project at `root` (the directory of `Cargo.toml`). Progress goes to
 /// stderr; the table is the caller's to print with [`Report::write_table`].
-pub fn prove(root: &Path, manifest: &Manifest, options: &Options) -> Result<Report, Error> {
+pub fn prove(
+    root: &Path,
+    manifest: &Manifest,
+    options: &PoisonedRuns,
+) -> Result<Report, ToolError> {
     let started = Instant::now();
     let selected = select(manifest, &options.only)?;
     let locations = locate_all(root, manifest)?;
@@ -366,7 +370,9 @@ pub fn prove(root: &Path, manifest: &Manifest, options: &Options) -> Result<Repo
 
     // the baseline, then each function
     let ran = Instant::now();
+    let target = manifest.prove.test.as_str();
     let baseline = run_tests(
+        target,
         &exe,
         copy,
         None,
@@ -375,19 +381,18 @@ pub fn prove(root: &Path, manifest: &Manifest, options: &Options) -> Result<Repo
         options.timeout,
     )?;
     let red: Vec<&str> = baseline
-        .results
-        .iter()
-        .filter(|(_, o)| *o == TestOutcome::Failed)
-        .map(|(n, _)| n.as_str())
+        .with(TestOutcome::Failed)
+        .into_iter()
+        .map(|n| cargo::test_name(n))
         .collect();
     if let Some(why) = &baseline.unfinished {
-        return Err(Error::Proof(format!(
+        return Err(ToolError::Baseline(format!(
             "the unpoisoned run of tests/{}.rs did not finish ({why}); a proof needs a green baseline",
             manifest.prove.test
         )));
     }
     if !red.is_empty() || !baseline.success {
-        return Err(Error::Proof(format!(
+        return Err(ToolError::Baseline(format!(
             "tests/{}.rs fails without any poison ({}); a proof needs a green baseline: run `cargo test --test {}`",
             manifest.prove.test,
             if red.is_empty() {
@@ -401,25 +406,26 @@ pub fn prove(root: &Path, manifest: &Manifest, options: &Options) -> Result<Repo
             manifest.prove.test
         )));
     }
-    if baseline.results.is_empty() {
-        return Err(Error::Proof(format!(
+    if baseline.outcomes.is_empty() {
+        return Err(ToolError::Baseline(format!(
             "tests/{}.rs has no tests: there is no render path to prove anything on",
             manifest.prove.test
         )));
     }
     eprintln!(
         "proof: baseline green ({} tests); poisoning {} functions, {} at a time",
-        baseline.results.len(),
+        baseline.outcomes.len(),
         selected.len(),
         options.jobs.max(1)
     );
 
     let done = AtomicUsize::new(0);
-    let rows = in_parallel(&selected, options.jobs, |index| {
+    let rows = crate::parallel::in_parallel(&selected, options.jobs, |index| {
         let entry = &manifest.entries[index];
         let filter = manifest.prove.filter_for(entry.chapter);
         let log = runs.join(index.to_string());
         let run = run_tests(
+            target,
             &exe,
             copy,
             Some(&filter),
@@ -442,50 +448,8 @@ pub fn prove(root: &Path, manifest: &Manifest, options: &Options) -> Result<Repo
     })
 }
 
-/// Runs `job` on every item, `jobs` at a time, and returns the results in the items' order.
-/// The first error stops the workers (each finishes the job it is on) and is returned.
-pub(crate) fn in_parallel<T: Send>(
-    items: &[usize],
-    jobs: usize,
-    job: impl Fn(usize) -> Result<T, Error> + Sync,
-) -> Result<Vec<T>, Error> {
-    let next = AtomicUsize::new(0);
-    let results: Mutex<Vec<(usize, T)>> = Mutex::new(Vec::new());
-    let failure: Mutex<Option<Error>> = Mutex::new(None);
-    std::thread::scope(|scope| {
-        for _ in 0..jobs.max(1) {
-            scope.spawn(|| {
-                while let Some(&item) = items.get(next.fetch_add(1, Ordering::SeqCst)) {
-                    if failure.lock().unwrap_or_else(|p| p.into_inner()).is_some() {
-                        break;
-                    }
-                    match job(item) {
-                        Ok(t) => results
-                            .lock()
-                            .unwrap_or_else(|p| p.into_inner())
-                            .push((item, t)),
-                        Err(e) => {
-                            failure
-                                .lock()
-                                .unwrap_or_else(|p| p.into_inner())
-                                .get_or_insert(e);
-                            break;
-                        }
-                    }
-                }
-            });
-        }
-    });
-    if let Some(e) = failure.into_inner().unwrap_or_else(|p| p.into_inner()) {
-        return Err(e);
-    }
-    let mut results = results.into_inner().unwrap_or_else(|p| p.into_inner());
-    results.sort_by_key(|(item, _)| items.iter().position(|i| i == item));
-    Ok(results.into_iter().map(|(_, t)| t).collect())
-}
-
 /// The indices of the entries to prove: those named by `only`, or all.
-fn select(manifest: &Manifest, only: &[String]) -> Result<Vec<usize>, Error> {
+fn select(manifest: &Manifest, only: &[String]) -> Result<Vec<usize>, ToolError> {
     if only.is_empty() {
         return Ok((0..manifest.entries.len()).collect());
     }
@@ -496,7 +460,7 @@ fn select(manifest: &Manifest, only: &[String]) -> Result<Vec<usize>, Error> {
             .iter()
             .position(|e| &e.function == path)
             .ok_or_else(|| {
-                Error::Usage(format!(
+                ToolError::Usage(format!(
                     "--only {path}: no such function in {}",
                     manifest.file
                 ))
@@ -510,19 +474,13 @@ fn select(manifest: &Manifest, only: &[String]) -> Result<Vec<usize>, Error> {
 }
 
 /// What a poisoned run proves.
-fn verdict(run: &cargo::TestRun, filter: &str) -> Verdict {
-    let mut passed: Vec<String> = run
-        .results
-        .iter()
-        .filter(|(_, o)| *o == TestOutcome::Passed)
-        .map(|(n, _)| n.clone())
+fn verdict(run: &TestRun, filter: &str) -> Verdict {
+    let passed: Vec<String> = run
+        .with(TestOutcome::Passed)
+        .into_iter()
+        .map(|n| cargo::test_name(n).to_string())
         .collect();
-    passed.sort(); // libtest reports in the order the tests end
-    let failed = run
-        .results
-        .iter()
-        .filter(|(_, o)| *o == TestOutcome::Failed)
-        .count();
+    let failed = run.with(TestOutcome::Failed).len();
     if !passed.is_empty() {
         Verdict::NotOnPath(passed)
     } else if let Some(why) = &run.unfinished {
@@ -541,10 +499,10 @@ fn build(
     target_dir: &Path,
     test: &str,
     features: &[String],
-) -> Result<PathBuf, Error> {
+) -> Result<PathBuf, ToolError> {
     let mut built = build_tests(project, target_dir, &[test.to_string()], features)?;
     built.remove(test).ok_or_else(|| {
-        Error::Proof(format!(
+        ToolError::Build(format!(
             "cargo built no test executable for {}",
             layout::core_test_file(test).display()
         ))
@@ -558,7 +516,7 @@ pub fn build_tests(
     target_dir: &Path,
     tests: &[String],
     features: &[String],
-) -> Result<BTreeMap<String, PathBuf>, Error> {
+) -> Result<BTreeMap<String, PathBuf>, ToolError> {
     let test = tests.join(", ");
     eprintln!(
         "proof: building the poisoned copy's tests ({test}) into {}{}",
@@ -595,21 +553,22 @@ pub fn build_tests(
     for error in &built.errors {
         eprint!("{}", error.rendered);
     }
-    Err(Error::Proof(format!(
+    Err(ToolError::Build(format!(
         "`cargo test --no-run` of tests {test} fails in the poisoned copy; cargo's and the compiler's messages are above"
     )))
 }
 
-/// Runs the test executable from `project`, with a test-name filter and a poisoned function
-/// (none for the baseline); its output goes to `log.out` and `log.err`.
+/// Runs the test executable of `target` from `project`, with a test-name filter and a
+/// poisoned function (none for the baseline); its output goes to `log.out` and `log.err`.
 pub(crate) fn run_tests(
+    target: &str,
     exe: &Path,
     project: &Path,
     filter: Option<&str>,
     poison: Option<usize>,
     log: &Path,
     timeout: Duration,
-) -> Result<cargo::TestRun, Error> {
+) -> Result<TestRun, ToolError> {
     let mut args: Vec<String> = filter.map(str::to_string).into_iter().collect();
     args.extend(["--test-threads".to_string(), "2".to_string()]);
     let env: Vec<(&str, String)> = poison
@@ -617,6 +576,7 @@ pub(crate) fn run_tests(
         .into_iter()
         .collect();
     cargo::Run {
+        target,
         exe,
         dir: project,
         args: &args,

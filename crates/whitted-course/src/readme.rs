@@ -6,7 +6,7 @@
 
 use std::path::Path;
 
-use super::Error;
+use super::ToolError;
 use super::manifest::Manifest;
 
 /// The heading of the section.
@@ -111,11 +111,11 @@ pub fn replace_section(readme: &str, section: &str) -> String {
 
 /// Rewrites the exercises section of every chapter's README under `root`; returns the
 /// READMEs that changed.
-pub fn write_all(root: &Path, manifest: &Manifest) -> Result<Vec<String>, Error> {
+pub fn write_all(root: &Path, manifest: &Manifest) -> Result<Vec<String>, ToolError> {
     let mut changed = Vec::new();
     for chapter in &crate::syllabus::CHAPTERS {
         let path = root.join(chapter.readme());
-        let text = std::fs::read_to_string(&path).map_err(|e| Error::io(&path, e))?;
+        let text = std::fs::read_to_string(&path).map_err(|e| ToolError::io(&path, e))?;
         let new = replace_section(&text, &section(manifest, chapter));
         if new != text {
             crate::files::write_file(&path, new.as_bytes())?;

@@ -200,13 +200,13 @@ fn mdbooks_log_problems_are_its_warnings_and_errors_but_the_version_notice() {
  INFO Book building has started
 \u{1b}[2m2026-11-29T13:27:40Z\u{1b}[0m \u{1b}[33m WARN\u{1b}[0m mdbook_katex: This mdbook-katex was built against mdbook v0.5.3, but we are being called from mdbook v0.5.4.
 2026-11-29T13:27:40Z  WARN render{item=\"\\frac{a}\"}: mdbook_katex::render: Rendering failed, keeping the original content
-ERROR Error updating \"{{#include x.rs}}\"
+ERROR ToolError updating \"{{#include x.rs}}\"
  INFO HTML book written to `book`
 ";
     let problems = log_problems(log);
     assert_eq!(problems.len(), 2, "{problems:?}");
     assert!(problems[0].contains("Rendering failed"));
-    assert!(problems[1].starts_with("ERROR Error updating"));
+    assert!(problems[1].starts_with("ERROR ToolError updating"));
 }
 
 const PAGE: &str = r##"<html><head>

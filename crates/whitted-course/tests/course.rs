@@ -4,10 +4,11 @@
 
 use std::path::{Path, PathBuf};
 
-use whitted_course::Error;
+use whitted_course::ToolError;
+use whitted_course::cargo::TestOutcome;
 use whitted_course::cargo::parse_libtest;
 use whitted_course::manifest::{self, Entry, Exercise, Prove};
-use whitted_course::prove::{self, TestOutcome, guard, poisoned_sources};
+use whitted_course::prove::{self, guard, poisoned_sources};
 use whitted_course::source::{self, Edit, edit_bodies, locate};
 
 // ── the manifest ────────────────────────────────────────────────────────────────────────────
@@ -46,7 +47,7 @@ tests = ["ch03_shading", "render_paths"]
 #[track_caller]
 fn manifest_error(text: &str) -> (usize, usize, String) {
     match manifest::parse(text, "m.toml") {
-        Err(Error::Manifest {
+        Err(ToolError::Manifest {
             file,
             line,
             col,

@@ -194,7 +194,7 @@ fn a_class_is_graded_as_each_submission_deserves() {
     std::fs::create_dir_all(&hidden).unwrap();
     std::fs::write(hidden.join("extra.rs"), HIDDEN).unwrap();
 
-    let options = grade::Options {
+    let options = grade::GradeSetup {
         chapter: None,
         hidden: Some(hidden),
         timeout: Duration::from_secs(5),

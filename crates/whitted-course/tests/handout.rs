@@ -5,10 +5,11 @@
 use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
 
+use whitted_course::cargo::TestOutcome;
+use whitted_course::cargo::{TestRun, test_name};
 use whitted_course::handout::{self, BEGIN, END};
-use whitted_course::learn::{self, State, Style, TestRun};
+use whitted_course::learn::{self, State, Style};
 use whitted_course::manifest::{self, Manifest};
-use whitted_course::prove::TestOutcome;
 use whitted_course::syllabus::todo;
 
 /// The workspace's root: this crate sits in `crates/whitted-course`.
@@ -582,7 +583,7 @@ fn an_exercises_own_tests_run_only_it_and_exercises_before_it() {
         let own: Vec<&String> = map
             .iter()
             .flat_map(|g| g.tests.iter())
-            .filter(|t| learn::test_name(t).starts_with(&prefix))
+            .filter(|t| test_name(t).starts_with(&prefix))
             .collect();
         assert!(
             !own.is_empty(),

@@ -129,7 +129,7 @@ fn assert_progress(report: &str, m: &Manifest, done: usize, next: Option<usize>)
 
 /// A test's name without its target.
 fn learn_name(t: &str) -> &str {
-    whitted_course::learn::test_name(t)
+    whitted_course::cargo::test_name(t)
 }
 
 /// `whitted learn` (this build's) run on the project at `project`.

@@ -8,7 +8,7 @@ use std::process::ExitCode;
 
 use clap::Subcommand;
 
-use crate::Error;
+use crate::ToolError;
 use crate::manifest::{self, Manifest};
 
 /// The arguments of `learn`.
@@ -45,7 +45,7 @@ pub enum LearnCommand {
 
 /// Runs `learn` as the command line asks: 0 when all went well (whatever the exercises' state),
 /// 1 when the code does not compile, an error otherwise.
-pub fn learn(args: &LearnArgs) -> Result<ExitCode, Error> {
+pub fn learn(args: &LearnArgs) -> Result<ExitCode, ToolError> {
     use crate::learn::{self, COMMAND, State, Style};
     let root = match &args.root {
         Some(root) => root.clone(),
@@ -74,7 +74,7 @@ pub fn learn(args: &LearnArgs) -> Result<ExitCode, Error> {
         Some(LearnCommand::Hint { id }) => {
             let index = match id {
                 Some(id) => manifest.find(id).ok_or_else(|| {
-                    Error::Usage(format!(
+                    ToolError::Usage(format!(
                         "there is no exercise {id}: `{COMMAND} list` shows the ids"
                     ))
                 })?,
@@ -102,10 +102,10 @@ pub fn learn(args: &LearnArgs) -> Result<ExitCode, Error> {
 }
 
 /// The project around the current directory: the nearest whitted workspace at or above it.
-pub fn find_root() -> Result<PathBuf, Error> {
-    let here = std::env::current_dir().map_err(|e| Error::io(".", e))?;
+pub fn find_root() -> Result<PathBuf, ToolError> {
+    let here = std::env::current_dir().map_err(|e| ToolError::io(".", e))?;
     crate::layout::find_root(&here).ok_or_else(|| {
-        Error::Usage(format!(
+        ToolError::Usage(format!(
             "no Cargo.toml in {} or above: run whitted in the project, or give --root DIR",
             here.display()
         ))
@@ -114,13 +114,13 @@ pub fn find_root() -> Result<PathBuf, Error> {
 
 /// Reads the manifest of the project at `root`, named in messages relative to the current
 /// directory when the project is in it.
-pub fn read_manifest(root: &Path) -> Result<Manifest, Error> {
+pub fn read_manifest(root: &Path) -> Result<Manifest, ToolError> {
     let path = root.join(manifest::DEFAULT_PATH);
     let here = std::env::current_dir().ok();
     let name = match path.strip_prefix(here.as_deref().unwrap_or(Path::new("/nowhere"))) {
         Ok(relative) => relative.display().to_string(),
         Err(_) => path.display().to_string(),
     };
-    let text = std::fs::read_to_string(&path).map_err(|e| Error::io(&path, e))?;
+    let text = std::fs::read_to_string(&path).map_err(|e| ToolError::io(&path, e))?;
     manifest::parse(&text, &name)
 }

@@ -12,7 +12,7 @@ use std::io::Write;
 use std::path::{Path, PathBuf};
 use std::process::{Command, Stdio};
 
-use crate::Error;
+use crate::ToolError;
 
 /// The 1-based line and column (in characters) of byte `offset` in `text`.
 #[must_use]
@@ -27,7 +27,7 @@ pub fn line_col(text: &str, offset: usize) -> (usize, usize) {
 
 /// Writes `bytes` to `path` through a temporary file in the same directory, renamed into
 /// place: a reader sees the old file or the whole new one, and a failure leaves the old one.
-pub fn write_file(path: &Path, bytes: &[u8]) -> Result<(), Error> {
+pub fn write_file(path: &Path, bytes: &[u8]) -> Result<(), ToolError> {
     let dir = match path.parent() {
         Some(p) if !p.as_os_str().is_empty() => p,
         _ => Path::new("."),
@@ -35,25 +35,26 @@ pub fn write_file(path: &Path, bytes: &[u8]) -> Result<(), Error> {
     let mut tmp = tempfile::Builder::new()
         .prefix(".whitted-")
         .tempfile_in(dir)
-        .map_err(|e| Error::io(dir, e))?;
+        .map_err(|e| ToolError::io(dir, e))?;
     tmp.write_all(bytes)
         .and_then(|()| tmp.as_file().sync_all())
-        .map_err(|e| Error::io(path, e))?;
+        .map_err(|e| ToolError::io(path, e))?;
     #[cfg(unix)]
     {
         // a temporary file is private (0600); the result should be as readable as any new file
         use std::os::unix::fs::PermissionsExt;
         tmp.as_file()
             .set_permissions(std::fs::Permissions::from_mode(0o644))
-            .map_err(|e| Error::io(path, e))?;
+            .map_err(|e| ToolError::io(path, e))?;
     }
-    tmp.persist(path).map_err(|e| Error::io(path, e.error))?;
+    tmp.persist(path)
+        .map_err(|e| ToolError::io(path, e.error))?;
     Ok(())
 }
 
 /// The files to copy, relative to `root`: what git lists (tracked, or untracked and not
 /// ignored), or else every file outside `target/` and `.git/`.
-pub fn project_files(root: &Path) -> Result<Vec<PathBuf>, Error> {
+pub fn project_files(root: &Path) -> Result<Vec<PathBuf>, ToolError> {
     let listed = Command::new("git")
         .args([
             "ls-files",
@@ -82,13 +83,13 @@ pub fn project_files(root: &Path) -> Result<Vec<PathBuf>, Error> {
 }
 
 /// Every file under `root.join(dir)`, outside `target/` and `.git/`, relative to `root`.
-fn walk(root: &Path, dir: &Path, files: &mut Vec<PathBuf>) -> Result<(), Error> {
+fn walk(root: &Path, dir: &Path, files: &mut Vec<PathBuf>) -> Result<(), ToolError> {
     let full = root.join(dir);
-    for entry in std::fs::read_dir(&full).map_err(|e| Error::io(&full, e))? {
-        let entry = entry.map_err(|e| Error::io(&full, e))?;
+    for entry in std::fs::read_dir(&full).map_err(|e| ToolError::io(&full, e))? {
+        let entry = entry.map_err(|e| ToolError::io(&full, e))?;
         let name = entry.file_name();
         let relative = dir.join(&name);
-        let kind = entry.file_type().map_err(|e| Error::io(&relative, e))?;
+        let kind = entry.file_type().map_err(|e| ToolError::io(&relative, e))?;
         if kind.is_dir() {
             if name != "target" && name != ".git" {
                 walk(root, &relative, files)?;
@@ -101,14 +102,14 @@ fn walk(root: &Path, dir: &Path, files: &mut Vec<PathBuf>) -> Result<(), Error> 
 }
 
 /// Copies the project's files from `root` to `dest`; returns how many.
-pub fn copy_project(root: &Path, dest: &Path) -> Result<usize, Error> {
+pub fn copy_project(root: &Path, dest: &Path) -> Result<usize, ToolError> {
     let files = project_files(root)?;
     for file in &files {
         let to = dest.join(file);
         if let Some(parent) = to.parent() {
-            std::fs::create_dir_all(parent).map_err(|e| Error::io(parent, e))?;
+            std::fs::create_dir_all(parent).map_err(|e| ToolError::io(parent, e))?;
         }
-        std::fs::copy(root.join(file), &to).map_err(|e| Error::io(root.join(file), e))?;
+        std::fs::copy(root.join(file), &to).map_err(|e| ToolError::io(root.join(file), e))?;
     }
     Ok(files.len())
 }
@@ -117,11 +118,12 @@ pub fn copy_project(root: &Path, dest: &Path) -> Result<usize, Error> {
 /// missing or differ, so that cargo (which goes by modification times) rebuilds only what
 /// changed since the last copy, and removing the files the project no longer has (but those
 /// under `keep`, relative to `dest`); returns how many files it wrote.
-pub fn sync_project(root: &Path, dest: &Path, keep: &[&str]) -> Result<usize, Error> {
+pub fn sync_project(root: &Path, dest: &Path, keep: &[&str]) -> Result<usize, ToolError> {
     let files = project_files(root)?;
     let mut written = 0;
     for file in &files {
-        let bytes = std::fs::read(root.join(file)).map_err(|e| Error::io(root.join(file), e))?;
+        let bytes =
+            std::fs::read(root.join(file)).map_err(|e| ToolError::io(root.join(file), e))?;
         if write_if_changed(&dest.join(file), &bytes)? {
             written += 1;
         }
@@ -132,7 +134,7 @@ pub fn sync_project(root: &Path, dest: &Path, keep: &[&str]) -> Result<usize, Er
         for stale in present.iter().filter(|p| !files.contains(p)) {
             if !keep.iter().any(|k| stale.starts_with(k)) {
                 let path = dest.join(stale);
-                std::fs::remove_file(&path).map_err(|e| Error::io(&path, e))?;
+                std::fs::remove_file(&path).map_err(|e| ToolError::io(&path, e))?;
             }
         }
     }
@@ -141,27 +143,27 @@ pub fn sync_project(root: &Path, dest: &Path, keep: &[&str]) -> Result<usize, Er
 
 /// Writes `bytes` to `path` unless it holds them already (creating its directory); returns
 /// whether it wrote.
-pub fn write_if_changed(path: &Path, bytes: &[u8]) -> Result<bool, Error> {
+pub fn write_if_changed(path: &Path, bytes: &[u8]) -> Result<bool, ToolError> {
     if std::fs::read(path).is_ok_and(|now| now == bytes) {
         return Ok(false);
     }
     if let Some(parent) = path.parent() {
-        std::fs::create_dir_all(parent).map_err(|e| Error::io(parent, e))?;
+        std::fs::create_dir_all(parent).map_err(|e| ToolError::io(parent, e))?;
     }
-    std::fs::write(path, bytes).map_err(|e| Error::io(path, e))?;
+    std::fs::write(path, bytes).map_err(|e| ToolError::io(path, e))?;
     Ok(true)
 }
 
 /// Copies every file under `from` to the same place under `to` (creating the directories).
-pub fn copy_tree(from: &Path, to: &Path) -> Result<usize, Error> {
+pub fn copy_tree(from: &Path, to: &Path) -> Result<usize, ToolError> {
     let mut files = Vec::new();
     walk(from, Path::new(""), &mut files)?;
     for file in &files {
         let dest = to.join(file);
         if let Some(parent) = dest.parent() {
-            std::fs::create_dir_all(parent).map_err(|e| Error::io(parent, e))?;
+            std::fs::create_dir_all(parent).map_err(|e| ToolError::io(parent, e))?;
         }
-        std::fs::copy(from.join(file), &dest).map_err(|e| Error::io(from.join(file), e))?;
+        std::fs::copy(from.join(file), &dest).map_err(|e| ToolError::io(from.join(file), e))?;
     }
     Ok(files.len())
 }

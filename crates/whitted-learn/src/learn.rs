@@ -35,10 +35,10 @@ use std::path::{Path, PathBuf};
 use std::sync::atomic::{AtomicBool, Ordering};
 use std::time::{Duration, Instant};
 
-use crate::cargo::{self, Build, Built, Stderr, TestOutcome};
+use crate::cargo::{self, Build, Built, Stderr, TestOutcome, TestRun, test_name};
 use crate::manifest::{Entry, Manifest};
 use crate::map::{self, Group};
-use crate::{Error, layout};
+use crate::{ToolError, layout};
 
 /// Where `whitted learn` keeps its state and the images it renders, in the project.
 pub const STATE_DIR: &str = ".whitted";
@@ -58,35 +58,6 @@ pub const TEST_TIME_LIMIT: Duration = Duration::from_secs(60);
 
 /// The width of the picture rendered after a check, in pixels (the height follows the scene).
 pub const PICTURE_WIDTH: u32 = 320;
-
-/// What the test runs of one check said.
-#[derive(Clone, Debug, Default, PartialEq, Eq)]
-pub struct TestRun {
-    /// Every test's outcome, by `target::name`.
-    pub outcomes: BTreeMap<String, TestOutcome>,
-    /// The output of each failed test (libtest's `---- NAME stdout ----` block), by
-    /// `target::name`.
-    pub failures: BTreeMap<String, String>,
-    /// The test targets that ran.
-    pub targets: BTreeSet<String>,
-    /// The first compiler error, when the project did not build: its one-line place and
-    /// message, then the compiler's whole text.
-    pub build_error: Option<(String, String)>,
-}
-
-impl TestRun {
-    /// Adds a target's run.
-    fn add(&mut self, target: &str, run: &cargo::TestRun) {
-        self.targets.insert(target.to_string());
-        for (name, outcome) in &run.results {
-            self.outcomes.insert(format!("{target}::{name}"), *outcome);
-        }
-        for (name, text) in &run.failures {
-            self.failures
-                .insert(format!("{target}::{name}"), text.clone());
-        }
-    }
-}
 
 /// Where an exercise stands.
 #[derive(Clone, Debug, PartialEq, Eq)]
@@ -134,12 +105,6 @@ impl State {
             },
         }
     }
-}
-
-/// A test's own name, without the target and module path before it.
-#[must_use]
-pub fn test_name(full: &str) -> &str {
-    full.rsplit("::").next().unwrap_or(full)
 }
 
 /// The name of the exercise whose `todo!()` a test's output `text` stopped at.
@@ -243,7 +208,7 @@ pub fn saved_states(root: &Path, manifest: &Manifest) -> Vec<State> {
 }
 
 /// Keeps the states of a complete check for the next one.
-pub fn save_states(root: &Path, manifest: &Manifest, states: &[State]) -> Result<(), Error> {
+pub fn save_states(root: &Path, manifest: &Manifest, states: &[State]) -> Result<(), ToolError> {
     let saved: BTreeMap<&str, String> = manifest
         .entries
         .iter()
@@ -252,9 +217,9 @@ pub fn save_states(root: &Path, manifest: &Manifest, states: &[State]) -> Result
         .map(|(e, s)| (e.exercise.name.as_str(), s.word()))
         .collect();
     let dir = root.join(STATE_DIR);
-    std::fs::create_dir_all(&dir).map_err(|e| Error::io(&dir, e))?;
+    std::fs::create_dir_all(&dir).map_err(|e| ToolError::io(&dir, e))?;
     let text = serde_json::to_string_pretty(&saved)
-        .map_err(|e| Error::Cargo(format!("cannot write the progress: {e}")))?;
+        .map_err(|e| ToolError::Cargo(format!("cannot write the progress: {e}")))?;
     crate::files::write_file(&dir.join("progress.json"), text.as_bytes())
 }
 
@@ -477,7 +442,7 @@ pub fn hints_shown(root: &Path) -> BTreeMap<String, usize> {
 
 /// Shows the next hint of exercise `index` and remembers it; once all are shown, shows them
 /// all again.
-pub fn next_hint(root: &Path, manifest: &Manifest, index: usize) -> Result<String, Error> {
+pub fn next_hint(root: &Path, manifest: &Manifest, index: usize) -> Result<String, ToolError> {
     let e: &Entry = &manifest.entries[index];
     let hints = &e.exercise.hints;
     let mut shown = hints_shown(root);
@@ -495,9 +460,9 @@ pub fn next_hint(root: &Path, manifest: &Manifest, index: usize) -> Result<Strin
         out += "  (ask again for the next one)\n";
     }
     let dir = root.join(STATE_DIR);
-    std::fs::create_dir_all(&dir).map_err(|e| Error::io(&dir, e))?;
+    std::fs::create_dir_all(&dir).map_err(|e| ToolError::io(&dir, e))?;
     let text = serde_json::to_string_pretty(&shown)
-        .map_err(|e| Error::Cargo(format!("cannot write the hints' state: {e}")))?;
+        .map_err(|e| ToolError::Cargo(format!("cannot write the hints' state: {e}")))?;
     crate::files::write_file(&dir.join("hints.json"), text.as_bytes())?;
     Ok(out)
 }
@@ -606,7 +571,7 @@ pub fn picture_chapter(manifest: &Manifest, before: &[State], now: &[State]) -> 
 }
 
 /// A build of the loop: the packages of [`PACKAGES`], cargo's lines shown once it is slow.
-fn build(root: &Path, tests: &[String], bins: &[String], say: &Say) -> Result<Built, Error> {
+fn build(root: &Path, tests: &[String], bins: &[String], say: &Say) -> Result<Built, ToolError> {
     let started = Instant::now();
     let held: std::sync::Mutex<Vec<String>> = std::sync::Mutex::new(Vec::new());
     let showing = AtomicBool::new(false);
@@ -697,7 +662,7 @@ fn check_targets(
     targets: &[String],
     run: &mut TestRun,
     say: &Say,
-) -> Result<bool, Error> {
+) -> Result<bool, ToolError> {
     let built = build(root, targets, &[], say)?;
     if !built.success {
         let rendered = built
@@ -709,12 +674,13 @@ fn check_targets(
     }
     for target in targets {
         let exe = built.executables.get(target).ok_or_else(|| {
-            Error::Cargo(format!(
+            ToolError::Cargo(format!(
                 "cargo built no test executable for {}",
                 layout::core_test_file(target).display()
             ))
         })?;
         let result = cargo::Run {
+            target,
             exe,
             dir: &root.join(layout::CORE),
             args: &[],
@@ -725,12 +691,12 @@ fn check_targets(
         }
         .run()?;
         if let Some(why) = &result.unfinished {
-            return Err(Error::Cargo(format!(
+            return Err(ToolError::Cargo(format!(
                 "the tests of {} did not finish: {why}",
                 layout::core_test_file(target).display()
             )));
         }
-        run.add(target, &result);
+        run.merge(result);
     }
     Ok(true)
 }
@@ -746,7 +712,7 @@ pub fn check(
     style: Style,
     report: bool,
     draw: bool,
-) -> Result<Checked, Error> {
+) -> Result<Checked, ToolError> {
     let say = Say { report };
     let map = map::load_map(root, manifest).unwrap_or_default();
     let target_of = targets_of(manifest, &map);
@@ -861,14 +827,14 @@ fn build_failure(run: &TestRun, style: Style) -> String {
 
 /// Renders chapter `chapter`'s scene with the project's own chapter binary (dev profile) into
 /// `.whitted/chNN_name.png`, [`PICTURE_WIDTH`] pixels wide; returns the image's path.
-pub fn render_chapter(root: &Path, chapter: u8) -> Result<PathBuf, Error> {
+pub fn render_chapter(root: &Path, chapter: u8) -> Result<PathBuf, ToolError> {
     let about = whitted_syllabus::chapter(chapter)
-        .ok_or_else(|| Error::Usage(format!("there is no chapter {chapter}")))?;
+        .ok_or_else(|| ToolError::Usage(format!("there is no chapter {chapter}")))?;
     let name = about.binary.to_string();
     let say = Say { report: false };
     let built = build(root, &[], std::slice::from_ref(&name), &say)?;
     if !built.success {
-        return Err(Error::Cargo(format!(
+        return Err(ToolError::Cargo(format!(
             "chapter {chapter}'s binary does not build: {}",
             built.first_error()
         )));
@@ -876,9 +842,9 @@ pub fn render_chapter(root: &Path, chapter: u8) -> Result<PathBuf, Error> {
     let exe = built
         .executables
         .get(&name)
-        .ok_or_else(|| Error::Cargo(format!("cargo built no binary {name}")))?;
+        .ok_or_else(|| ToolError::Cargo(format!("cargo built no binary {name}")))?;
     let dir = root.join(STATE_DIR);
-    std::fs::create_dir_all(&dir).map_err(|e| Error::io(&dir, e))?;
+    std::fs::create_dir_all(&dir).map_err(|e| ToolError::io(&dir, e))?;
     let png = dir.join(format!("{name}.png"));
     let scene = root.join(about.scene());
     let mut command = std::process::Command::new(exe);
@@ -891,7 +857,7 @@ pub fn render_chapter(root: &Path, chapter: u8) -> Result<PathBuf, Error> {
         .current_dir(root)
         .stdin(std::process::Stdio::null())
         .output()
-        .map_err(|e| Error::Cargo(format!("cannot run {}: {e}", exe.display())))?;
+        .map_err(|e| ToolError::Cargo(format!("cannot run {}: {e}", exe.display())))?;
     if !out.status.success() {
         let err = String::from_utf8_lossy(&out.stderr);
         let line = err
@@ -899,7 +865,9 @@ pub fn render_chapter(root: &Path, chapter: u8) -> Result<PathBuf, Error> {
             .rev()
             .find(|l| l.starts_with("error"))
             .unwrap_or("the render failed");
-        return Err(Error::Cargo(format!("chapter {chapter}'s image: {line}")));
+        return Err(ToolError::Cargo(format!(
+            "chapter {chapter}'s image: {line}"
+        )));
     }
     Ok(png)
 }
@@ -985,7 +953,7 @@ pub fn snapshot(root: &Path) -> BTreeMap<PathBuf, (std::time::SystemTime, u64)> 
 }
 
 /// `learn` itself: one check with its picture; `false` when the code does not compile.
-pub fn once(root: &Path, manifest: &Manifest, style: Style) -> Result<bool, Error> {
+pub fn once(root: &Path, manifest: &Manifest, style: Style) -> Result<bool, ToolError> {
     let known = saved_states(root, manifest);
     let checked = check(root, manifest, &known, style, true, true)?;
     Ok(checked.run.build_error.is_none())
@@ -999,11 +967,11 @@ pub fn watch(
     manifest: &Manifest,
     style: Style,
     cycles: Option<usize>,
-) -> Result<(), Error> {
+) -> Result<(), ToolError> {
     use notify_debouncer_mini::notify::RecursiveMode;
     let (tx, rx) = std::sync::mpsc::channel();
     let fail = |e: notify_debouncer_mini::notify::Error| {
-        Error::Cargo(format!("cannot watch the project's files: {e}"))
+        ToolError::Cargo(format!("cannot watch the project's files: {e}"))
     };
     let mut debouncer =
         notify_debouncer_mini::new_debouncer(std::time::Duration::from_millis(300), tx)

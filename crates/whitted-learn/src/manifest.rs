@@ -21,7 +21,7 @@ use std::path::Path;
 use serde::Deserialize;
 use toml::Spanned;
 
-use super::Error;
+use super::ToolError;
 use crate::files::line_col;
 use whitted_syllabus::SECTIONS;
 
@@ -189,16 +189,16 @@ struct RawEntry {
 }
 
 /// Reads and checks the manifest at `path`; messages name the path as given.
-pub fn load(path: &Path) -> Result<Manifest, Error> {
-    let text = std::fs::read_to_string(path).map_err(|e| Error::io(path, e))?;
+pub fn load(path: &Path) -> Result<Manifest, ToolError> {
+    let text = std::fs::read_to_string(path).map_err(|e| ToolError::io(path, e))?;
     parse(&text, &path.display().to_string())
 }
 
 /// A mistake at byte range `span` of the TOML text `text` of `file`, reported as
 /// `file:line:col: message`.
-pub fn error_at(text: &str, file: &str, span: Range<usize>, message: String) -> Error {
+pub fn error_at(text: &str, file: &str, span: Range<usize>, message: String) -> ToolError {
     let (line, col) = line_col(text, span.start);
-    Error::Manifest {
+    ToolError::Manifest {
         file: file.to_string(),
         line,
         col,
@@ -208,7 +208,7 @@ pub fn error_at(text: &str, file: &str, span: Range<usize>, message: String) -> 
 
 /// Reads TOML text into `T`; a syntax error, a missing or unknown key or a wrong type is
 /// reported where it is, in one line ([`error_at`]).
-pub fn from_toml<T: serde::de::DeserializeOwned>(text: &str, file: &str) -> Result<T, Error> {
+pub fn from_toml<T: serde::de::DeserializeOwned>(text: &str, file: &str) -> Result<T, ToolError> {
     toml::from_str(text).map_err(|e| {
         let message = e.message().trim().replace('\n', " ");
         error_at(text, file, e.span().unwrap_or(0..0), message)
@@ -216,7 +216,7 @@ pub fn from_toml<T: serde::de::DeserializeOwned>(text: &str, file: &str) -> Resu
 }
 
 /// Checks the manifest text `text`; `file` names it in messages.
-pub fn parse(text: &str, file: &str) -> Result<Manifest, Error> {
+pub fn parse(text: &str, file: &str) -> Result<Manifest, ToolError> {
     let err = |span: Range<usize>, message: String| error_at(text, file, span, message);
     let raw: RawManifest = from_toml(text, file)?;
 
@@ -421,8 +421,8 @@ fn exercise(
     raw: &RawEntry,
     id: String,
     table: Range<usize>,
-    err: &impl Fn(Range<usize>, String) -> Error,
-) -> Result<Exercise, Error> {
+    err: &impl Fn(Range<usize>, String) -> ToolError,
+) -> Result<Exercise, ToolError> {
     let missing = |key: &str| {
         err(
             table.clone(),
@@ -442,7 +442,7 @@ fn exercise(
             ),
         ));
     }
-    let text = |key: &str, value: &Option<Spanned<String>>| -> Result<String, Error> {
+    let text = |key: &str, value: &Option<Spanned<String>>| -> Result<String, ToolError> {
         let value = value.as_ref().ok_or_else(|| missing(key))?;
         let t = value.get_ref().trim();
         if t.is_empty() {

@@ -11,11 +11,10 @@
 use std::collections::BTreeSet;
 use std::path::Path;
 
-use crate::Error;
+use crate::ToolError;
 use crate::manifest::Manifest;
 
-/// A test, as `target::name` (`ch02_generic_objects::ex_sphere_coefficients_…`).
-pub type TestId = String;
+pub use crate::cargo::TestId;
 
 /// Where the map of tests to exercises lives, relative to the project's root.
 pub const MAP_PATH: &str = "chapters/exercise-tests.toml";
@@ -52,7 +51,7 @@ struct RawGroup {
 }
 
 /// Reads the map text `text` (`file` names it in messages) against the manifest's exercises.
-pub fn parse_map(text: &str, file: &str, manifest: &Manifest) -> Result<Vec<Group>, Error> {
+pub fn parse_map(text: &str, file: &str, manifest: &Manifest) -> Result<Vec<Group>, ToolError> {
     let err = |span: std::ops::Range<usize>, message: String| {
         crate::manifest::error_at(text, file, span, message)
     };
@@ -91,9 +90,9 @@ pub fn parse_map(text: &str, file: &str, manifest: &Manifest) -> Result<Vec<Grou
 }
 
 /// Reads [`MAP_PATH`] under `root`.
-pub fn load_map(root: &Path, manifest: &Manifest) -> Result<Vec<Group>, Error> {
+pub fn load_map(root: &Path, manifest: &Manifest) -> Result<Vec<Group>, ToolError> {
     let path = root.join(MAP_PATH);
-    let text = std::fs::read_to_string(&path).map_err(|e| Error::io(&path, e))?;
+    let text = std::fs::read_to_string(&path).map_err(|e| ToolError::io(&path, e))?;
     parse_map(&text, MAP_PATH, manifest)
 }
 
