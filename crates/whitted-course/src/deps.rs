@@ -10,7 +10,7 @@
 //!
 //! The result is written down in [`MAP_PATH`], `chapters/exercise-tests.toml`, next to the
 //! manifest: each `[[tests]]` table names tests (as `target::name`, or a prefix of it) and
-//! the exercises they run, by name. `whitted formulas --deps --write` writes it; `whitted formulas
+//! the exercises they run, by name. `whitted formulas deps --write` writes it; `whitted formulas
 //! --deps` measures again and [`check`]s the file, which CI does, so the list of what a
 //! handout fails cannot drift from the tests. A handout of the exercises S fails exactly the
 //! tests whose table names one of S ([`expected`]).
@@ -23,7 +23,9 @@ use std::path::Path;
 use super::ToolError;
 use super::cargo::{TestOutcome, TestRun};
 use super::manifest::Manifest;
-use super::prove::{self, PoisonedRuns};
+use super::poison;
+use super::prove::PoisonedRuns;
+use super::source;
 
 /// What poisoning each exercise did to the handout's tests.
 #[derive(Clone, Debug, Default, PartialEq, Eq)]
@@ -91,15 +93,15 @@ pub fn measure(
     manifest: &Manifest,
     options: &PoisonedRuns,
 ) -> Result<Measured, ToolError> {
-    let locations = prove::locate_all(root, manifest)?;
+    let locations = source::locate_all(root, manifest)?;
     let poisoned =
-        prove::PoisonedCopy::new(root, manifest, &locations, "whitted-deps-", options.keep)?;
+        poison::PoisonedCopy::new(root, manifest, &locations, "whitted-deps-", options.keep)?;
     let (copy, runs) = (&poisoned.project, &poisoned.runs);
     let target_dir = options
         .target_dir
         .clone()
         .unwrap_or_else(|| root.join("target").join("prove"));
-    let exes = prove::build_tests(
+    let exes = poison::build_tests(
         copy,
         &target_dir,
         &manifest.handout.tests,
@@ -114,7 +116,7 @@ pub fn measure(
                 "{target}-{}",
                 poison.map_or("none".into(), |k| k.to_string())
             ));
-            let run = prove::run_tests(target, exe, copy, None, poison, &log, options.timeout)?;
+            let run = poison::run_tests(target, exe, copy, None, poison, &log, options.timeout)?;
             if let Some(why) = &run.unfinished {
                 return Err(ToolError::Cargo(format!(
                     "tests/{target} with exercise {} poisoned did not finish: {why}",
@@ -175,8 +177,8 @@ pub fn map_text(manifest: &Manifest, measured: &Measured) -> String {
     }
     let mut out = String::from(
         "# Which exercises each test of a handout runs: without any one of them, the test fails.\n\
-         # Measured by `whitted formulas --deps --write` (each exercise poisoned in turn); do not\n\
-         # edit. CI measures again and checks this file (`whitted formulas --deps`).\n",
+         # Measured by `whitted formulas deps --write` (each exercise poisoned in turn); do not\n\
+         # edit. CI measures again and checks this file (`whitted formulas deps`).\n",
     );
     // the groups in the order of their first exercise, tests that need none last
     let mut ordered: Vec<(Vec<usize>, Vec<&TestId>)> = groups.into_iter().collect();

@@ -29,7 +29,7 @@ use std::path::{Path, PathBuf};
 
 use super::manifest::{Entry, Manifest};
 use super::source::Location;
-use super::{ToolError, files, layout, prove};
+use super::{ToolError, files, layout};
 
 pub use super::layout::{BEGIN, END};
 
@@ -58,7 +58,7 @@ pub struct Region {
 /// region missing, or misnumbered, or a BEGIN marker in `src/` that belongs to no entry, is an
 /// error that names the file and line.
 pub fn regions(root: &Path, manifest: &Manifest) -> Result<Vec<Region>, ToolError> {
-    let locations = prove::locate_all(root, manifest)?;
+    let locations = super::source::locate_all(root, manifest)?;
     let mut out = Vec::with_capacity(locations.len());
     for (entry, (e, at)) in manifest.entries.iter().zip(&locations).enumerate() {
         let path = root.join(&at.file);
@@ -596,4 +596,35 @@ fn allow_unused(lib: &str) -> String {
         }
     }
     format!("{}{LIB_ALLOW}{}", &lib[..at], &lib[at..])
+}
+
+/// `whitted handout`: writes the handout of the exercises chosen (see [`select`]) into `out`
+/// and says what it holds.
+pub fn command(
+    root: &Path,
+    manifest: &Manifest,
+    chapters: Option<(u8, u8)>,
+    exercises: &[String],
+    out: &Path,
+) -> Result<std::process::ExitCode, ToolError> {
+    let selected = select(manifest, chapters, exercises)?;
+    let made = write(root, manifest, &selected, out)?;
+    let ids: Vec<&str> = made
+        .stripped
+        .iter()
+        .map(|&i| manifest.entries[i].exercise.id.as_str())
+        .collect();
+    println!(
+        "wrote {} ({} files): {} exercise{} to write ({}); in it, run `cargo learn`",
+        out.display(),
+        made.files,
+        ids.len(),
+        if ids.len() == 1 { "" } else { "s" },
+        if ids.len() == manifest.entries.len() {
+            "all".to_string()
+        } else {
+            ids.join(", ")
+        }
+    );
+    Ok(std::process::ExitCode::SUCCESS)
 }

@@ -1,5 +1,5 @@
 //! The "Exercises" section of each chapter's README, written from the manifest so that the
-//! README and the manifest cannot say different things: `whitted formulas --readmes`
+//! README and the manifest cannot say different things: `whitted formulas readmes`
 //! rewrites the sections, and a test checks they are current.
 //!
 //! Course book: [The student's guide](../../../../docs/book/student-guide.html) (`docs/src/student-guide.md`).

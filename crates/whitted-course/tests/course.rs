@@ -1,6 +1,6 @@
 //! The course tools: the manifest of formula functions (`chapters/formulas.toml`), the locator
 //! that finds a function's body in the source, and the poison guards the proof puts there.
-//! The proof itself (`whitted formulas --prove`) builds the project and runs in CI.
+//! The proof itself (`whitted formulas prove`) builds the project and runs in CI.
 
 use std::path::{Path, PathBuf};
 
@@ -8,7 +8,7 @@ use whitted_course::ToolError;
 use whitted_course::cargo::TestOutcome;
 use whitted_course::cargo::parse_libtest;
 use whitted_course::manifest::{self, Entry, Exercise, Prove};
-use whitted_course::prove::{self, guard, poisoned_sources};
+use whitted_course::poison::{guard, poisoned_sources};
 use whitted_course::source::{self, Edit, edit_bodies, locate};
 
 // ── the manifest ────────────────────────────────────────────────────────────────────────────
@@ -203,7 +203,7 @@ fn the_projects_manifest_names_functions_that_exist() {
         .unwrap();
     let m = manifest::load(&root.join(manifest::DEFAULT_PATH)).unwrap();
     assert!(m.entries.len() >= 30, "{} entries", m.entries.len());
-    let found = prove::locate_all(root, &m).unwrap();
+    let found = whitted_course::source::locate_all(root, &m).unwrap();
     let ambient = m
         .entries
         .iter()
@@ -376,7 +376,9 @@ fn the_proof_refuses_a_const_fn() {
         .replace("camera::near_plane_half_height", "geo::area")
         .replace("shading::ambient", "geo::fixed");
     let m = manifest::parse(&text, "m.toml").unwrap();
-    let err = prove::locate_all(dir.path(), &m).unwrap_err().to_string();
+    let err = whitted_course::source::locate_all(dir.path(), &m)
+        .unwrap_err()
+        .to_string();
     assert_eq!(
         err,
         "m.toml:17: geo::fixed: is a const fn (crates/whitted/src/geo.rs:30): its body cannot test the poison switch"
@@ -420,7 +422,7 @@ fn poisoned_sources_number_each_function_by_its_entry() {
         .replace("camera::near_plane_half_height", "geo::Rect::fmt")
         .replace("shading::ambient", "geo::area");
     let m = manifest::parse(&text, "m.toml").unwrap();
-    let found = prove::locate_all(dir.path(), &m).unwrap();
+    let found = whitted_course::source::locate_all(dir.path(), &m).unwrap();
     let files = poisoned_sources(dir.path(), &m, &found).unwrap();
     assert_eq!(files.len(), 1);
     let edited = &files[Path::new("crates/whitted/src/geo.rs")];

@@ -9,7 +9,7 @@
 //! - A handout of chapter 4 alone fails exactly chapter 4's tests; putting its reference bodies
 //!   back one by one turns its exercises green in order, and `whitted learn` ends at N of N.
 //! - Across all chapters, exercise by exercise: in a copy where every exercise from the k-th
-//!   on is switched off (the poison switch of `whitted formulas --prove`, one build for all
+//!   on is switched off (the poison switch of `whitted formulas prove`, one build for all
 //!   steps), `whitted learn` shows k of N done and exercise k next, for k = 0 … N.
 //! - `whitted learn watch` reruns when a file is saved by renaming, and draws the chapter.
 
@@ -21,7 +21,6 @@ use whitted_course::cargo::{TestOutcome, parse_libtest};
 use whitted_course::deps;
 use whitted_course::handout;
 use whitted_course::manifest::{self, Manifest};
-use whitted_course::prove;
 
 /// The workspace's root: this crate sits in `crates/whitted-course`.
 fn root() -> PathBuf {
@@ -60,7 +59,8 @@ fn text(o: &Output) -> String {
 /// Builds the handout's test targets in `project` and runs each: the failed and the passed
 /// tests, as `target::name`.
 fn run_tests(project: &Path, m: &Manifest) -> (BTreeSet<String>, BTreeSet<String>) {
-    let exes = prove::build_tests(project, &target_dir(), &m.handout.tests, &[]).unwrap();
+    let exes =
+        whitted_course::poison::build_tests(project, &target_dir(), &m.handout.tests, &[]).unwrap();
     let (mut failed, mut passed) = (BTreeSet::new(), BTreeSet::new());
     for (target, exe) in exes {
         let out = Command::new(&exe)
@@ -283,9 +283,10 @@ fn exercise_by_exercise_learn_counts_up_to_all_of_them() {
     let m = manifest();
     let n = m.entries.len();
     // a copy of the project with every exercise behind the poison switch
-    let locations = prove::locate_all(&root(), &m).unwrap();
+    let locations = whitted_course::source::locate_all(&root(), &m).unwrap();
     let poisoned =
-        prove::PoisonedCopy::new(&root(), &m, &locations, "whitted-learn-", false).unwrap();
+        whitted_course::poison::PoisonedCopy::new(&root(), &m, &locations, "whitted-learn-", false)
+            .unwrap();
     let copy = &poisoned.project;
 
     for k in 0..=n {
@@ -363,9 +364,15 @@ fn learn_watch_reruns_on_a_save_by_renaming_and_draws_the_chapter() {
 #[ignore = "builds a poisoned copy's chapter binaries (a minute); .ci/run runs it"]
 fn each_chapter_renders_over_a_handout_of_the_later_chapters() {
     let m = manifest();
-    let locations = prove::locate_all(&root(), &m).unwrap();
-    let poisoned =
-        prove::PoisonedCopy::new(&root(), &m, &locations, "whitted-chapters-", false).unwrap();
+    let locations = whitted_course::source::locate_all(&root(), &m).unwrap();
+    let poisoned = whitted_course::poison::PoisonedCopy::new(
+        &root(),
+        &m,
+        &locations,
+        "whitted-chapters-",
+        false,
+    )
+    .unwrap();
     let copy = &poisoned.project;
     let built = cargo()
         .args(["build", "-p", "whitted-app", "--bins"])

@@ -1,5 +1,5 @@
 //! The map of which tests of a handout need which exercises, `chapters/exercise-tests.toml`:
-//! measured by the instructor's tools (`whitted formulas --deps --write`, see the course crate's
+//! measured by the instructor's tools (`whitted formulas deps --write`, see the course crate's
 //! `deps`), read here. `learn` finds in it the test target that decides each exercise.
 //!
 //! Each `[[tests]]` table names tests (as `target::name`, or a prefix of it) and the exercises

@@ -1,5 +1,7 @@
 //! Building the graded copy, and blaming each compiler error on the exercise whose body holds
 //! it: that body goes back to its `todo!()` and the build is tried again.
+//!
+//! Course book: [The instructor's guide](../../../../../docs/book/instructor-guide.html) (`docs/src/instructor-guide.md`).
 
 use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};

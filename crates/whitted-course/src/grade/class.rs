@@ -1,5 +1,7 @@
 //! Grading a class: every submission of a directory, a few at a time, each worker with a build
 //! directory of its own.
+//!
+//! Course book: [The instructor's guide](../../../../../docs/book/instructor-guide.html) (`docs/src/instructor-guide.md`).
 
 use std::path::{Path, PathBuf};
 

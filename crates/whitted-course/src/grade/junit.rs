@@ -1,5 +1,7 @@
 //! Reading nextest's JUnit report: each test's status, the exercise its name says, and why it
 //! failed in a line.
+//!
+//! Course book: [The instructor's guide](../../../../../docs/book/instructor-guide.html) (`docs/src/instructor-guide.md`).
 
 use super::{Status, TestResult};
 use crate::ToolError;

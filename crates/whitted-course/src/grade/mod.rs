@@ -31,6 +31,7 @@
 
 mod blame;
 mod class;
+pub mod command;
 mod junit;
 mod nextest;
 mod splice;

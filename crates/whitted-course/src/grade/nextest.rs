@@ -1,5 +1,7 @@
 //! Running the graded copy's tests with cargo-nextest, each in its own process under its time
 //! limit: the profile the grader writes, and the run that leaves nextest's JUnit report.
+//!
+//! Course book: [The instructor's guide](../../../../../docs/book/instructor-guide.html) (`docs/src/instructor-guide.md`).
 
 use std::path::Path;
 use std::time::Duration;

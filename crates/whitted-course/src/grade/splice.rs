@@ -1,6 +1,8 @@
 //! The graded copy's sources: the student's body of each graded exercise, taken from between
 //! its markers and put into the instructor's file, and the instructor's hidden tests beside the
 //! public ones.
+//!
+//! Course book: [The instructor's guide](../../../../../docs/book/instructor-guide.html) (`docs/src/instructor-guide.md`).
 
 use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
