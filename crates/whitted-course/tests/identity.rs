@@ -5,10 +5,10 @@
 
 use std::path::{Path, PathBuf};
 
-use whitted_course::handout;
 use whitted_course::learn::{self, State};
 use whitted_course::manifest::{self, Manifest};
 use whitted_course::map;
+use whitted_course::{files, handout};
 
 /// The workspace's root: this crate sits in `crates/whitted-course`.
 fn root() -> PathBuf {
@@ -36,30 +36,14 @@ points = 1
 
 "#;
 
-/// Copies the files under `from` to `to`.
-fn copy_tree(from: &Path, to: &Path) {
-    for entry in std::fs::read_dir(from).unwrap() {
-        let entry = entry.unwrap();
-        let (src, dst) = (entry.path(), to.join(entry.file_name()));
-        if src.is_dir() {
-            copy_tree(&src, &dst);
-        } else {
-            std::fs::create_dir_all(to).unwrap();
-            std::fs::copy(&src, &dst).unwrap();
-        }
-    }
-}
-
 /// A copy of the project's sources and chapters/ with the exercise inserted before chapter 2's
 /// third, and the manifests before and after.
 fn inserted() -> (tempfile::TempDir, Manifest, Manifest) {
     let root = root();
     let dir = tempfile::tempdir().unwrap();
-    copy_tree(
-        &root.join("crates/whitted/src"),
-        &dir.path().join("crates/whitted/src"),
-    );
-    copy_tree(&root.join("chapters"), &dir.path().join("chapters"));
+    for part in ["crates/whitted/src", "chapters"] {
+        files::copy_tree(&root.join(part), &dir.path().join(part)).unwrap();
+    }
     let ray = dir.path().join("crates/whitted/src/ray.rs");
     let text = std::fs::read_to_string(&ray).unwrap();
     std::fs::write(&ray, text + INSERTED_FN).unwrap();

@@ -103,13 +103,25 @@ fn walk(root: &Path, dir: &Path, files: &mut Vec<PathBuf>) -> Result<(), ToolErr
 
 /// Copies the project's files from `root` to `dest`; returns how many.
 pub fn copy_project(root: &Path, dest: &Path) -> Result<usize, ToolError> {
-    let files = project_files(root)?;
-    for file in &files {
-        let to = dest.join(file);
-        if let Some(parent) = to.parent() {
+    copy_files(root, dest, &project_files(root)?)
+}
+
+/// Copies every file under `from` to the same place under `to`; returns how many.
+pub fn copy_tree(from: &Path, to: &Path) -> Result<usize, ToolError> {
+    let mut files = Vec::new();
+    walk(from, Path::new(""), &mut files)?;
+    copy_files(from, to, &files)
+}
+
+/// Copies `files` (relative) from under `from` to the same places under `to`, creating the
+/// directories; returns how many.
+fn copy_files(from: &Path, to: &Path, files: &[PathBuf]) -> Result<usize, ToolError> {
+    for file in files {
+        let dest = to.join(file);
+        if let Some(parent) = dest.parent() {
             std::fs::create_dir_all(parent).map_err(|e| ToolError::io(parent, e))?;
         }
-        std::fs::copy(root.join(file), &to).map_err(|e| ToolError::io(root.join(file), e))?;
+        std::fs::copy(from.join(file), &dest).map_err(|e| ToolError::io(from.join(file), e))?;
     }
     Ok(files.len())
 }
@@ -152,18 +164,4 @@ pub fn write_if_changed(path: &Path, bytes: &[u8]) -> Result<bool, ToolError> {
     }
     std::fs::write(path, bytes).map_err(|e| ToolError::io(path, e))?;
     Ok(true)
-}
-
-/// Copies every file under `from` to the same place under `to` (creating the directories).
-pub fn copy_tree(from: &Path, to: &Path) -> Result<usize, ToolError> {
-    let mut files = Vec::new();
-    walk(from, Path::new(""), &mut files)?;
-    for file in &files {
-        let dest = to.join(file);
-        if let Some(parent) = dest.parent() {
-            std::fs::create_dir_all(parent).map_err(|e| ToolError::io(parent, e))?;
-        }
-        std::fs::copy(from.join(file), &dest).map_err(|e| ToolError::io(from.join(file), e))?;
-    }
-    Ok(files.len())
 }

@@ -58,10 +58,24 @@ pub fn core_tests() -> PathBuf {
     Path::new(CORE).join("tests")
 }
 
-/// The file of the test target `name` of the renderer (`crates/whitted/tests/NAME.rs`).
+/// The file of the test target `name` of the renderer (`crates/whitted/tests/NAME.rs`), where a
+/// new target is written.
 #[must_use]
 pub fn core_test_file(name: &str) -> PathBuf {
     core_tests().join(format!("{name}.rs"))
+}
+
+/// The root file of the renderer's test target `name` in the project at `root`, as cargo finds
+/// it: `crates/whitted/tests/NAME.rs`, or `crates/whitted/tests/NAME/main.rs` for a target of
+/// several files (relative to `root`).
+#[must_use]
+pub fn core_test_target(root: &Path, name: &str) -> PathBuf {
+    let dir = core_tests().join(name).join("main.rs");
+    if root.join(&dir).is_file() {
+        dir
+    } else {
+        core_test_file(name)
+    }
 }
 
 /// The nearest directory at or above `start` that is a whitted project (a `Cargo.toml` beside

@@ -676,7 +676,7 @@ fn check_targets(
         let exe = built.executables.get(target).ok_or_else(|| {
             ToolError::Cargo(format!(
                 "cargo built no test executable for {}",
-                layout::core_test_file(target).display()
+                layout::core_test_target(root, target).display()
             ))
         })?;
         let result = cargo::Run {
@@ -693,7 +693,7 @@ fn check_targets(
         if let Some(why) = &result.unfinished {
             return Err(ToolError::Cargo(format!(
                 "the tests of {} did not finish: {why}",
-                layout::core_test_file(target).display()
+                layout::core_test_target(root, target).display()
             )));
         }
         run.merge(result);
@@ -735,7 +735,7 @@ pub fn check(
                 say.status(&format!(
                     "checking exercise {} ({}) …",
                     manifest.entries[next].exercise.id,
-                    layout::core_test_file(&t).display()
+                    layout::core_test_target(root, &t).display()
                 ));
                 if !check_targets(root, &[t], &mut run, &say)? {
                     say.report(&build_failure(&run, style));
