@@ -320,16 +320,18 @@ impl Page {
                 main_range = Some(start..=end);
                 page.main = (tag.inner_html(parser), start);
             }
-            tags.push((start, name, tag.attributes().is_class_member("katex"), {
-                let src = attributes.get("src").flatten().map(|v| text(v));
-                src.is_some_and(|s| s.starts_with("figures/"))
-            }));
+            let figure = name == "img"
+                && attributes
+                    .get("src")
+                    .flatten()
+                    .is_some_and(|v| text(v).starts_with("figures/"));
+            tags.push((start, attributes.is_class_member("katex"), figure));
         }
         let inside = |at: usize| main_range.as_ref().is_none_or(|r| r.contains(&at));
-        for (start, name, katex, figure) in tags {
+        for (start, katex, figure) in tags {
             if inside(start) {
                 page.math |= katex;
-                page.figure |= name == "img" && figure;
+                page.figure |= figure;
             }
         }
         page

@@ -173,7 +173,7 @@ pub fn targets_of(manifest: &Manifest, map: &[Group]) -> Vec<Option<String>> {
             map.iter()
                 .flat_map(|g| &g.tests)
                 .filter_map(|t| t.split_once("::"))
-                .find(|(_, name)| name.starts_with(&prefix))
+                .find(|(_, name)| test_name(name).starts_with(&prefix))
                 .map(|(target, _)| target.to_string())
                 .or_else(|| {
                     let binary = whitted_syllabus::chapter(e.chapter)?.binary;

@@ -1,6 +1,7 @@
 //! The generic cone with its base: the quadratic, the discriminant by a cross product, the normals, the hits through wall, base and apex ("Generic Cone").
 
 use super::*;
+use whitted::shapes::cone;
 
 /// "Generic Cone": a = d_x² + d_y² − d_z², b = e_x d_x + e_y d_y + d_z(1 − e_z),
 /// c = e_x² + e_y² − (1 − e_z)².

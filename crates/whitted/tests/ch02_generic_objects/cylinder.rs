@@ -1,6 +1,7 @@
 //! The generic cylinder with its caps: the wall's quadratic, the normals, the hits through wall and caps ("Generic Cylinder").
 
 use super::*;
+use whitted::shapes::cylinder;
 
 /// "Generic Cylinder": a = d_x² + d_y², b = e_x d_x + e_y d_y, c = e_x² + e_y² − 1.
 #[test]

@@ -19,9 +19,7 @@ use whitted::render::{Chapter, Options, Tracer};
 use whitted::shapes::quadratic::{
     Numerics, Roots, discriminant, solve, solve_with_discriminant, stable_roots,
 };
-use whitted::shapes::{
-    Hit, Hits, Object, Part, Polyhedron, Shape, cone, cylinder, nearer, plane, polyhedron, sphere,
-};
+use whitted::shapes::{Hit, Hits, Object, Part, Polyhedron, Shape, nearer};
 use whitted::transform::{Placement, Step, rotation_from_z, sin_cos_degrees};
 
 fn ray(e: [f64; 3], d: [f64; 3]) -> Ray {

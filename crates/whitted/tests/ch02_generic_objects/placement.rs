@@ -1,6 +1,7 @@
 //! Placement: the steps' matrices and their inverses (M, M⁻¹), rays into object space, a point of a ray, placed shapes hit at the world ray's t, normals back by (M⁻¹)ᵀ ("Ray Tracing Process", "Surface Normals at Intersections").
 
 use super::*;
+use whitted::shapes::sphere;
 
 /// "Ray Tracing Process" (q = M·q′): each kind of step has the matrix of its transformation.
 /// A scale by (2, 3, 4) takes (1, 1, 1) to (2, 3, 4). Right-handed quarter turns, exactly:

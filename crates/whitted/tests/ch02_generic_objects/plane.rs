@@ -1,6 +1,7 @@
 //! The generic plane z = 0: hit at t = −e_z/d_z, and parallel rays ("Generic Plane").
 
 use super::*;
+use whitted::shapes::plane;
 
 /// "Generic Plane": t = −e_z/d_z, normal (0, 0, 1).
 #[test]

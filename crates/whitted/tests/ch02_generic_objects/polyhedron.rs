@@ -1,6 +1,7 @@
 //! Convex polyhedra: where a ray crosses a facet's plane, clipping a ray by the facets, the presets ("Convex Polyhedra").
 
 use super::*;
+use whitted::shapes::polyhedron;
 
 /// "Convex Polyhedra" (erratum): the notes print t = d − n·e / n·d; by precedence that is
 /// d − (n·e)/(n·d), whose point is not on the facet. t = (d − n·e)/(n·d) is.

@@ -1,6 +1,7 @@
 //! The generic sphere: its quadratic, discriminant, normal and hits ("Generic Sphere").
 
 use super::*;
+use whitted::shapes::sphere;
 
 /// "Generic Sphere": a = |d|², b = e·d, c = |e|² − 1.
 #[test]
