@@ -95,8 +95,9 @@ pub fn deps(
     let measured = deps::measure(root, manifest, runs)?;
     for (e, failing) in manifest.entries.iter().zip(&measured.failing) {
         println!(
-            "{:<5} {:<44} {:>3} of {} tests fail without it",
+            "{:<5} {:<22} {:<44} {:>3} of {} tests fail without it",
             e.exercise.id,
+            e.exercise.name,
             e.function,
             failing.len(),
             measured.tests.len()
