@@ -5,7 +5,7 @@
 //! student's tests, the scenes, the chapter READMEs, the course book's pages, the window's
 //! chapter keys and the course tools all read [`CHAPTERS`], and nothing else lists them.
 //! Beside them, the section titles of the notes ([`SECTIONS`]) that the exercises cite, and
-//! the message of an exercise not written yet ([`todo`]): a handout writes it into each
+//! the message of an exercise not written yet ([`todo`](mod@todo)): a handout writes it into each
 //! exercise's `todo!()`, and the renderer's error lines, `cargo learn` and the grader read it
 //! back.
 //!

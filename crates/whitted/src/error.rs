@@ -58,7 +58,7 @@ pub fn line_col(text: &str, offset: usize) -> (usize, usize) {
 }
 
 /// The prefix of the panic a handout's `todo!("exercise NAME (2.3): …")` raises (its format is
-/// the syllabus's, [`whitted_syllabus::todo`]).
+/// the syllabus's, [`whitted_syllabus::todo`](mod@whitted_syllabus::todo)).
 pub const MISSING: &str = whitted_syllabus::todo::PANIC_START;
 
 /// The message of a panic, when it is a string.
