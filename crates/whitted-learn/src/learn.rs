@@ -551,8 +551,9 @@ pub fn drawable_chapter(manifest: &Manifest, states: &[State]) -> Option<u8> {
 }
 
 /// The chapter whose picture a check draws: of the chapters the code can draw now (see
-/// [`drawable_chapter`]), the newest one that was not all done at the last check (the chapter
-/// that turned green), else the newest of them.
+/// [`drawable_chapter`]), the first one that was not all done at the last check (the chapter
+/// that turned green; when one exercise turns several green, as the first of chapter 3 may
+/// turn chapters 3 to 5, the one the student was working in), else the newest of them.
 #[must_use]
 pub fn picture_chapter(manifest: &Manifest, before: &[State], now: &[State]) -> Option<u8> {
     let drawable = drawable_chapter(manifest, now)?;
@@ -565,7 +566,6 @@ pub fn picture_chapter(manifest: &Manifest, before: &[State], now: &[State]) -> 
             .all(|(_, s)| *s == State::Done)
     };
     (1..=drawable)
-        .rev()
         .find(|&c| !green(before, c))
         .or(Some(drawable))
 }

@@ -18,7 +18,8 @@ pub fn parse_junit(
         .map_err(|e| ToolError::Cargo(format!("cannot read nextest's JUnit report: {e}")))?;
     let mut out = Vec::new();
     for case in doc.descendants().filter(|n| n.has_tag_name("testcase")) {
-        let name = test_name(case.attribute("name").unwrap_or("")).to_string();
+        // the name within its target, module path and all (`sphere::ex_hit_sphere_…`)
+        let name = case.attribute("name").unwrap_or("").to_string();
         let class = case.attribute("classname").unwrap_or("");
         let target = class.rsplit("::").next().unwrap_or(class).to_string();
         let failure = case
@@ -45,7 +46,7 @@ pub fn parse_junit(
                 }
             }
         };
-        let exercise = manifest.exercise_of_test(&name);
+        let exercise = manifest.exercise_of_test(test_name(&name));
         out.push(TestResult {
             hidden: hidden.contains(&target),
             name,

@@ -114,7 +114,8 @@ impl Status {
 /// One test's result.
 #[derive(Clone, Debug, PartialEq)]
 pub struct TestResult {
-    /// The test's name (`ex_sphere_discriminant_…`).
+    /// The test's name within its target, with its module path (`ex_near_plane_half_width_…`,
+    /// `sphere::ex_sphere_discriminant_…`).
     pub name: String,
     /// Its test target (`ch02_generic_objects`, `hidden_extra`).
     pub target: String,
