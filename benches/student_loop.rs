@@ -13,12 +13,11 @@
 //!     [--no-grade]  skip the grading
 //! ```
 //!
-//! It measures this workspace's layout (`cargo learn`: the verdict is the first line of the
-//! report, the picture the `picture:` line after it) and the single-crate layout before it
-//! (`cargo run --release --bin whitted -- learn`, the command that handout documented, whose
-//! report comes at its end; the picture is `cargo run --release --bin chNN …`, as that
-//! handout's README said), so that both are measured by one command. Times are wall-clock,
-//! medians and 90th percentiles of the saves; the machine should be otherwise idle.
+//! The verdict is the first line of `cargo learn`'s report, the picture the `picture:` line after
+//! it. Every cargo it runs is the course tools' one runner ([`whitted_learn::cargo::command`]),
+//! every exercise is found by its name's markers, and copies are [`whitted_learn::files`]'.
+//! Times are wall-clock, medians and 90th percentiles of the saves; the machine should be
+//! otherwise idle.
 
 use std::io::{BufRead, BufReader};
 use std::path::{Path, PathBuf};
@@ -28,51 +27,20 @@ use std::time::{Duration, Instant};
 use whitted_learn::layout::{BEGIN, END};
 use whitted_learn::manifest;
 
-/// The two layouts this benchmark knows.
-#[derive(Clone, Copy, Debug, PartialEq)]
-enum Layout {
-    /// This workspace: crates/whitted, `cargo learn`.
-    Workspace,
-    /// The single crate before it: src/, `cargo run --release --bin whitted -- learn`.
-    SingleCrate,
-}
+/// The reference project's `whitted` tool, as cargo's arguments.
+const TOOL: [&str; 8] = [
+    "run",
+    "--release",
+    "-q",
+    "-p",
+    "whitted-course",
+    "--bin",
+    "whitted",
+    "--",
+];
 
-impl Layout {
-    fn of(project: &Path) -> Layout {
-        if project.join("crates/whitted-learn").is_dir() {
-            Layout::Workspace
-        } else {
-            Layout::SingleCrate
-        }
-    }
-
-    /// The command a student runs for a verdict, in the handout.
-    fn verdict(self) -> Vec<&'static str> {
-        match self {
-            Layout::Workspace => vec!["learn"],
-            Layout::SingleCrate => vec!["run", "--release", "--bin", "whitted", "--", "learn"],
-        }
-    }
-
-    /// The reference project's `whitted` tool, as a command run in `project`.
-    fn tool(self) -> Vec<&'static str> {
-        match self {
-            Layout::Workspace => {
-                vec![
-                    "run",
-                    "--release",
-                    "-q",
-                    "-p",
-                    "whitted-course",
-                    "--bin",
-                    "whitted",
-                    "--",
-                ]
-            }
-            Layout::SingleCrate => vec!["run", "--release", "-q", "--bin", "whitted", "--"],
-        }
-    }
-}
+/// The command a student runs for a verdict, in the handout.
+const VERDICT: [&str; 1] = ["learn"];
 
 struct Args {
     project: PathBuf,
@@ -121,13 +89,10 @@ fn args() -> Result<Args, String> {
     Ok(out)
 }
 
+/// `cargo ARGS` in `dir`, building into `dir`'s own `target/`, without colour.
 fn cargo(dir: &Path, args: &[&str]) -> Command {
-    let mut c = Command::new(whitted_learn::cargo::program());
-    c.args(args)
-        .current_dir(dir)
-        .env_remove("CARGO_TARGET_DIR")
-        .env("NO_COLOR", "1")
-        .stdin(Stdio::null());
+    let mut c = whitted_learn::cargo::command(dir, Some(&dir.join("target")), true);
+    c.args(args).env("NO_COLOR", "1");
     c
 }
 
@@ -166,17 +131,17 @@ fn timed(
 }
 
 /// Writes a fresh handout of every exercise of `project` into `dir`.
-fn handout(project: &Path, layout: Layout, dir: &Path) {
-    let mut args = layout.tool();
+fn handout(project: &Path, dir: &Path) {
     let out = dir.to_str().expect("a UTF-8 path");
+    let mut args = TOOL.to_vec();
     args.extend(["handout", "--out", out]);
     let status = cargo(project, &args).status().expect("cargo runs");
     assert!(status.success(), "the handout could not be written");
 }
 
-/// The reference body of exercise `id`: the lines between its markers in `project`'s `file`.
-fn region(text: &str, id: &str) -> Option<(usize, usize)> {
-    let begin = format!("{BEGIN} {id}");
+/// The body of the exercise named `name` in `text`: the bytes between its markers.
+fn region(text: &str, name: &str) -> Option<(usize, usize)> {
+    let begin = format!("{BEGIN} {name}");
     let mut offset = 0;
     let mut start = None;
     for line in text.split_inclusive('\n') {
@@ -192,9 +157,9 @@ fn region(text: &str, id: &str) -> Option<(usize, usize)> {
     None
 }
 
-/// The file of the handout (relative) that holds exercise `id`'s markers.
-fn file_of(dir: &Path, id: &str) -> Option<PathBuf> {
-    let begin = format!("{BEGIN} {id}");
+/// The file of the handout (relative) that holds the markers of the exercise named `name`.
+fn file_of(dir: &Path, name: &str) -> Option<PathBuf> {
+    let begin = format!("{BEGIN} {name}");
     let mut stack = vec![dir.to_path_buf()];
     while let Some(d) = stack.pop() {
         for entry in std::fs::read_dir(&d).ok()?.flatten() {
@@ -216,29 +181,16 @@ fn file_of(dir: &Path, id: &str) -> Option<PathBuf> {
     None
 }
 
-/// Puts exercise `id`'s reference body back into the handout: one save.
-fn put_back(project: &Path, dir: &Path, id: &str) {
+/// Puts the reference body of the exercise named `name` back into the handout: one save.
+fn put_back(project: &Path, dir: &Path, name: &str) {
     let file =
-        file_of(dir, id).unwrap_or_else(|| panic!("exercise {id}: no markers in the handout"));
+        file_of(dir, name).unwrap_or_else(|| panic!("exercise {name}: no markers in the handout"));
     let reference = std::fs::read_to_string(project.join(&file)).expect("the reference file");
     let mine = std::fs::read_to_string(dir.join(&file)).expect("the handout's file");
-    let (a, b) = region(&reference, id).expect("the reference region");
-    let (c, d) = region(&mine, id).expect("the handout's region");
+    let (a, b) = region(&reference, name).expect("the reference region");
+    let (c, d) = region(&mine, name).expect("the handout's region");
     let text = format!("{}{}{}", &mine[..c], &reference[a..b], &mine[d..]);
     std::fs::write(dir.join(&file), text).expect("the save");
-}
-
-/// Copies the files under `from` to `to`.
-fn copy_dir(from: &Path, to: &Path) {
-    for entry in std::fs::read_dir(from).expect("a directory").flatten() {
-        let (src, dst) = (entry.path(), to.join(entry.file_name()));
-        if src.is_dir() {
-            copy_dir(&src, &dst);
-        } else {
-            std::fs::create_dir_all(to).expect("a directory");
-            std::fs::copy(&src, &dst).expect("a copy");
-        }
-    }
 }
 
 fn size(dir: &Path) -> u64 {
@@ -278,26 +230,22 @@ fn main() {
             std::process::exit(2);
         }
     };
-    let layout = Layout::of(&args.project);
     let m = manifest::load(&args.project.join(manifest::DEFAULT_PATH)).expect("the manifest");
-    eprintln!("student's loop of {} ({layout:?})", args.project.display());
+    eprintln!("student's loop of {}", args.project.display());
     // the reference's own tool, built before anything is timed
-    let mut warm = layout.tool();
+    let mut warm = TOOL.to_vec();
     warm.push("--version");
     let _ = cargo(&args.project, &warm).output();
 
-    let verdict_marks: &[&str] = match layout {
-        Layout::Workspace => &["✗", "✓"],
-        Layout::SingleCrate => &[],
-    };
-    let picture_mark = (layout == Layout::Workspace).then_some("✓ picture:");
+    let verdict_marks: &[&str] = &["✗", "✓"];
+    let picture_mark = Some("✓ picture:");
     let temp = tempfile::tempdir().expect("a temporary directory");
     let mut firsts = Vec::new();
     let mut dir = PathBuf::new();
     for run in 0..args.runs.max(1) {
         dir = temp.path().join(format!("handout-{run}"));
-        handout(&args.project, layout, &dir);
-        let (verdict, _, _) = timed(cargo(&dir, &layout.verdict()), verdict_marks, None);
+        handout(&args.project, &dir);
+        let (verdict, _, _) = timed(cargo(&dir, &VERDICT), verdict_marks, None);
         eprintln!(
             "first verdict on a fresh handout: {:.1} s",
             verdict.as_secs_f64()
@@ -315,66 +263,23 @@ fn main() {
     let mut to_picture = Vec::new();
     // a second submission for the grading: this student half-way, chapters 1 and 2 written
     let halfway = temp.path().join("halfway");
-    let sources = match layout {
-        Layout::Workspace => "crates/whitted/src",
-        Layout::SingleCrate => "src",
-    };
+    let sources = whitted_learn::layout::core_src();
     for (i, e) in m.entries.iter().enumerate() {
-        put_back(&args.project, &dir, &e.exercise.id);
+        put_back(&args.project, &dir, &e.exercise.name);
         let written = i + 1;
         if m.entries.get(written).is_some_and(|next| next.chapter == 3) && e.chapter == 2 {
-            copy_dir(&dir.join(sources), &halfway.join(sources));
+            whitted_learn::files::copy_tree(&dir.join(&sources), &halfway.join(&sources))
+                .expect("a copy of the sources");
         }
         if !chosen.contains(&i) {
             continue;
         }
-        // the newest chapter whose exercises are all back
-        let drawable = (1..=5u8)
-            .take_while(|c| {
-                m.entries[..written]
-                    .iter()
-                    .filter(|x| x.chapter == *c)
-                    .count()
-                    == m.entries.iter().filter(|x| x.chapter == *c).count()
-            })
-            .last();
-        let (verdict, picture, _) =
-            timed(cargo(&dir, &layout.verdict()), verdict_marks, picture_mark);
-        let picture = match (layout, drawable) {
-            (Layout::Workspace, Some(_)) => picture,
-            (Layout::SingleCrate, Some(c)) => {
-                // the picture as that handout's README has it: a release build of the chapter
-                let name = whitted_learn::layout::chapter_dir(&dir, c);
-                let scene = format!("scenes/{name}.toml");
-                let out = dir.join(".picture.png");
-                let o = out.to_str().expect("UTF-8");
-                let (t, _, _) = timed(
-                    cargo(
-                        &dir,
-                        &[
-                            "run",
-                            "--release",
-                            "-q",
-                            "--bin",
-                            &name,
-                            "--",
-                            &scene,
-                            "-o",
-                            o,
-                            "--quiet",
-                        ],
-                    ),
-                    &[],
-                    None,
-                );
-                Some(verdict + t)
-            }
-            _ => None,
-        };
+        let (verdict, picture, _) = timed(cargo(&dir, &VERDICT), verdict_marks, picture_mark);
         eprintln!(
-            "save {} (exercise {}): verdict {:.2} s{}",
+            "save {} (exercise {} {}): verdict {:.2} s{}",
             to_verdict.len() + 1,
             e.exercise.id,
+            e.exercise.name,
             verdict.as_secs_f64(),
             picture.map_or(String::new(), |p| format!(
                 ", picture {:.2} s",
@@ -393,7 +298,7 @@ fn main() {
     let mut grade = None;
     if args.grade {
         let graded = |submission: &Path| {
-            let mut g = layout.tool();
+            let mut g = TOOL.to_vec();
             g.extend(["grade", submission.to_str().expect("UTF-8")]);
             let started = Instant::now();
             let out = cargo(&args.project, &g).output().expect("cargo runs");
@@ -413,7 +318,7 @@ fn main() {
         grade = Some(second);
     }
 
-    println!("| measure | {layout:?} |");
+    println!("| measure | this project |");
     println!("|---|---:|");
     println!(
         "| first verdict on a fresh handout (median of {}) | {:.1} s |",

@@ -199,7 +199,7 @@ fn the_road_of_one_pixel_holds_no_speed_machinery() {
     for word in ["packet", "tile", "mailbox", "counters", "rayon", "block"] {
         assert!(!code.contains(word), "the road's code mentions `{word}`");
     }
-    // marker lines do not count: the exercises' (`// BEGIN SOLUTION 3.7`, `// END SOLUTION`)
+    // marker lines do not count: the exercises' (`// BEGIN SOLUTION local_light`, `// END SOLUTION`)
     // and the course book's (`// ANCHOR: ch3_shade`, `// ANCHOR_END: ch3_shade`)
     let lines = text
         .lines()

@@ -1,18 +1,5 @@
-//! The course book (`docs/`, an mdBook): its figures, and the checks that keep it honest.
-//!
-//! Every render in the book is made by a chapter binary from a scene of the repository; the
-//! manifest `docs/figures.toml` lists them, one `[[figure]]` table each:
-//!
-//! ```toml
-//! [[figure]]
-//! file = "ch02-normals.png"          # under docs/src/figures/
-//! binary = "ch02_generic_objects"     # one of the five chapter binaries
-//! args = ["scenes/ch02_generic_objects.toml", "--view", "normals", "--width", "320"]
-//! ```
-//!
-//! `whitted figures` renders them all (`BINARY ARGS -o docs/src/figures/FILE`, from the
-//! project's root); `whitted figures --check` renders them to a temporary directory and
-//! compares each with the committed PNG, pixel by pixel, within [`TOLERANCE`].
+//! The course book (`docs/`, an mdBook): the checks that keep it honest. (Its figures are
+//! [`crate::figures`].)
 //!
 //! `whitted book` builds the book and fails on what mdBook and its preprocessors only log:
 //!
@@ -28,227 +15,11 @@
 //! Course book: [Introduction](../../../../docs/book/introduction.html) (`docs/src/introduction.md`).
 
 use std::collections::{BTreeMap, HashMap};
-use std::ops::Range;
 use std::path::{Path, PathBuf};
+use std::process::ExitCode;
 
-use serde::Deserialize;
-
-use super::Error;
-use super::manifest::{error_at, from_toml};
+use super::ToolError;
 use crate::files::line_col;
-
-/// The largest difference, in 8-bit levels, between a committed figure and a fresh render of
-/// it that `whitted figures --check` accepts: floating point may round the last bit
-/// differently on another machine, and one level is 1/255.
-pub const TOLERANCE: u8 = 1;
-
-/// The chapter binaries a figure may name.
-pub const BINARIES: [&str; 5] = [
-    "ch01_camera_rays",
-    "ch02_generic_objects",
-    "ch03_shading",
-    "ch04_shadows",
-    "ch05_reflection_refraction",
-];
-
-/// One render of the book, as the manifest lists it.
-#[derive(Debug, Clone, PartialEq, Eq)]
-pub struct Figure {
-    /// The PNG's name under `docs/src/figures/`.
-    pub file: String,
-    /// The chapter binary that renders it.
-    pub binary: String,
-    /// Its arguments, all but `-o`; paths are relative to the project's root.
-    pub args: Vec<String>,
-    /// The line of the manifest where its table starts.
-    pub line: usize,
-}
-
-#[derive(Deserialize)]
-#[serde(deny_unknown_fields)]
-struct RawFigures {
-    #[serde(default)]
-    figure: Vec<toml::Spanned<RawFigure>>,
-}
-
-#[derive(Deserialize)]
-#[serde(deny_unknown_fields)]
-struct RawFigure {
-    file: toml::Spanned<String>,
-    binary: toml::Spanned<String>,
-    args: Vec<String>,
-}
-
-/// Reads the figures' manifest; a mistake is reported as `file:line:col: …`.
-pub fn read_figures(path: &Path) -> Result<Vec<Figure>, Error> {
-    let text = std::fs::read_to_string(path).map_err(|e| Error::io(path, e))?;
-    parse_figures(&text, &path.display().to_string())
-}
-
-/// Checks the manifest text `text`; `file` names it in messages. Each `file` must be a plain
-/// `NAME.png` (no directory) named once, each `binary` one of [`BINARIES`], and `args` must
-/// not say where to write (`-o`/`--output`): the manifest's `file` does.
-pub fn parse_figures(text: &str, file: &str) -> Result<Vec<Figure>, Error> {
-    let err = |span: Range<usize>, message: String| error_at(text, file, span, message);
-    let raw: RawFigures = from_toml(text, file)?;
-    let mut seen: HashMap<String, usize> = HashMap::new();
-    let mut figures = Vec::new();
-    for spanned in &raw.figure {
-        let raw = spanned.get_ref();
-        let name = raw.file.get_ref();
-        let plain = !name.contains(['/', '\\']) && name.len() > 4 && name.ends_with(".png");
-        if !plain {
-            return Err(err(
-                raw.file.span(),
-                format!("file `{name}` must be a name ending in .png, without a directory"),
-            ));
-        }
-        let (line, _) = line_col(text, spanned.span().start);
-        if let Some(first) = seen.insert(name.clone(), line) {
-            return Err(err(
-                raw.file.span(),
-                format!("file `{name}` is listed twice (first on line {first})"),
-            ));
-        }
-        if !BINARIES.contains(&raw.binary.get_ref().as_str()) {
-            return Err(err(
-                raw.binary.span(),
-                format!(
-                    "binary `{}` is not a chapter binary (one of {})",
-                    raw.binary.get_ref(),
-                    BINARIES.join(", ")
-                ),
-            ));
-        }
-        if let Some(o) = raw
-            .args
-            .iter()
-            .find(|a| *a == "-o" || a.starts_with("--output"))
-        {
-            return Err(err(
-                spanned.span(),
-                format!("args must not contain `{o}`: the figure's `file` says where it goes"),
-            ));
-        }
-        figures.push(Figure {
-            file: name.clone(),
-            binary: raw.binary.get_ref().clone(),
-            args: raw.args.clone(),
-            line,
-        });
-    }
-    Ok(figures)
-}
-
-/// Renders `figure` to `out` with the binary of that name in `bin_dir`, from `root` (so that
-/// the scene paths of its arguments resolve). The binary's own message is the error.
-pub fn render(figure: &Figure, bin_dir: &Path, root: &Path, out: &Path) -> Result<(), Error> {
-    let binary = bin_dir.join(format!("{}{}", figure.binary, std::env::consts::EXE_SUFFIX));
-    if !binary.is_file() {
-        return Err(Error::Usage(format!(
-            "{} is not built: run `cargo build --bins` (or --release) first",
-            binary.display()
-        )));
-    }
-    let result = std::process::Command::new(&binary)
-        .args(&figure.args)
-        .arg("-o")
-        .arg(out)
-        .arg("--quiet")
-        .current_dir(root)
-        .output()
-        .map_err(|e| Error::io(&binary, e))?;
-    if result.status.success() {
-        Ok(())
-    } else {
-        let stderr = String::from_utf8_lossy(&result.stderr);
-        Err(Error::Proof(format!(
-            "{} {}: {}",
-            figure.binary,
-            figure.args.join(" "),
-            stderr.trim()
-        )))
-    }
-}
-
-/// How a fresh render differs from the committed figure.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum Difference {
-    /// Every channel of every pixel is within [`TOLERANCE`].
-    Same,
-    /// The two images do not have the same size: (committed, fresh), as (width, height).
-    Size((u32, u32), (u32, u32)),
-    /// `pixels` pixels have a channel off by more than the tolerance, at most by `largest`
-    /// levels; `first` is the first such pixel, (x, y) from the top left.
-    Pixels {
-        /// How many pixels differ.
-        pixels: usize,
-        /// The largest difference of a channel, in 8-bit levels.
-        largest: u8,
-        /// The first pixel that differs.
-        first: (u32, u32),
-    },
-}
-
-/// Compares two PNGs channel by channel; a difference of at most `tolerance` levels counts as
-/// the same.
-pub fn compare(committed: &Path, fresh: &Path, tolerance: u8) -> Result<Difference, Error> {
-    let (a, b) = (read_rgba(committed)?, read_rgba(fresh)?);
-    if a.0 != b.0 {
-        return Ok(Difference::Size(a.0, b.0));
-    }
-    let mut pixels = 0;
-    let mut largest = 0;
-    let mut first = None;
-    let width = a.0.0 as usize;
-    for (i, (p, q)) in a.1.chunks_exact(4).zip(b.1.chunks_exact(4)).enumerate() {
-        let (x, y) = ((i % width) as u32, (i / width) as u32);
-        let off = p
-            .iter()
-            .zip(q)
-            .map(|(u, v)| u.abs_diff(*v))
-            .max()
-            .unwrap_or(0);
-        if off > tolerance {
-            pixels += 1;
-            largest = largest.max(off);
-            first.get_or_insert((x, y));
-        }
-    }
-    Ok(match first {
-        None => Difference::Same,
-        Some(first) => Difference::Pixels {
-            pixels,
-            largest,
-            first,
-        },
-    })
-}
-
-/// A PNG's size and its pixels as 8-bit RGBA, row by row from the top.
-fn read_rgba(path: &Path) -> Result<((u32, u32), Vec<u8>), Error> {
-    let fail = |e: String| Error::Usage(format!("{}: cannot read the PNG: {e}", path.display()));
-    let file = std::fs::File::open(path).map_err(|e| fail(e.to_string()))?;
-    let mut decoder = png::Decoder::new(std::io::BufReader::new(file));
-    decoder.set_transformations(png::Transformations::EXPAND | png::Transformations::STRIP_16);
-    let mut reader = decoder.read_info().map_err(|e| fail(e.to_string()))?;
-    let mut buf = vec![0; reader.output_buffer_size().unwrap_or(0)];
-    let info = reader
-        .next_frame(&mut buf)
-        .map_err(|e| fail(e.to_string()))?;
-    let samples = info.color_type.samples();
-    let rgba = buf[..info.buffer_size()]
-        .chunks_exact(samples)
-        .flat_map(|p| match *p {
-            [g] => [g, g, g, 255],
-            [g, a] => [g, g, g, a],
-            [r, g, b] => [r, g, b, 255],
-            [r, g, b, a, ..] => [r, g, b, a],
-            [] => [0, 0, 0, 0],
-        })
-        .collect();
-    Ok(((info.width, info.height), rgba))
-}
 
 /// A problem found in the book, where it is.
 #[derive(Debug, Clone, PartialEq, Eq)]
@@ -272,12 +43,12 @@ impl std::fmt::Display for Problem {
 }
 
 /// The files under `dir` (and its subdirectories) whose extension is `extension`, sorted.
-pub fn pages(dir: &Path, extension: &str) -> Result<Vec<PathBuf>, Error> {
+pub fn pages(dir: &Path, extension: &str) -> Result<Vec<PathBuf>, ToolError> {
     let mut found = Vec::new();
     let mut stack = vec![dir.to_path_buf()];
     while let Some(d) = stack.pop() {
-        for entry in std::fs::read_dir(&d).map_err(|e| Error::io(&d, e))? {
-            let path = entry.map_err(|e| Error::io(&d, e))?.path();
+        for entry in std::fs::read_dir(&d).map_err(|e| ToolError::io(&d, e))? {
+            let path = entry.map_err(|e| ToolError::io(&d, e))?.path();
             if path.is_dir() {
                 stack.push(path);
             } else if path.extension().is_some_and(|e| e == extension) {
@@ -293,10 +64,10 @@ pub fn pages(dir: &Path, extension: &str) -> Result<Vec<PathBuf>, Error> {
 /// the file must exist, a named anchor must have its `ANCHOR: name` and `ANCHOR_END: name`
 /// lines with something between them, and a line range must lie inside the file. Escaped
 /// links (`\{{#include …}}`) are text, not links.
-pub fn check_includes(src_dir: &Path) -> Result<Vec<Problem>, Error> {
+pub fn check_includes(src_dir: &Path) -> Result<Vec<Problem>, ToolError> {
     let mut problems = Vec::new();
     for page in pages(src_dir, "md")? {
-        let text = std::fs::read_to_string(&page).map_err(|e| Error::io(&page, e))?;
+        let text = std::fs::read_to_string(&page).map_err(|e| ToolError::io(&page, e))?;
         let dir = page.parent().unwrap_or(src_dir);
         for (line, target) in include_links(&text) {
             if let Err(message) = resolve_include(dir, &target) {
@@ -478,33 +249,98 @@ fn strip_ansi(text: &str) -> String {
     out
 }
 
-/// The values of the attribute `name` in the tags of `html`, each with its line.
-fn attributes(html: &str, name: &str) -> Vec<(usize, String)> {
-    let mut found = Vec::new();
-    let needle = format!(" {name}=");
-    let mut from = 0;
-    while let Some(i) = html[from..].find(&needle) {
-        let start = from + i + needle.len();
-        let quote = html[start..].chars().next();
-        let value = match quote {
-            Some(q @ ('"' | '\'')) => html[start + 1..]
-                .find(q)
-                .map(|end| &html[start + 1..start + 1 + end]),
-            _ => html[start..]
-                .find(|c: char| c.is_whitespace() || c == '>')
-                .map(|end| &html[start..start + end]),
+/// What the checks read of one page of the built book, parsed as HTML (with `tl`).
+#[derive(Debug, Default)]
+struct Page {
+    /// Every `src` and `href` value, with its attribute's name, its line and whether its tag
+    /// links a stylesheet (`<link rel="stylesheet">`).
+    links: Vec<Link>,
+    /// The `id`s of its elements.
+    ids: Vec<String>,
+    /// The line of the first element of class `katex-error`, if any.
+    katex_error: Option<usize>,
+    /// The inner HTML of its `<main>` (the whole page without one), and where it starts.
+    main: (String, usize),
+    /// Whether `<main>` holds typeset math (an element of class `katex`).
+    math: bool,
+    /// Whether `<main>` holds an image of `figures/`.
+    figure: bool,
+}
+
+/// A `src` or `href` of a page.
+#[derive(Debug)]
+struct Link {
+    attribute: &'static str,
+    value: String,
+    line: usize,
+    stylesheet: bool,
+}
+
+impl Page {
+    /// Reads `html`; a page that does not parse reads as empty.
+    fn read(html: &str) -> Page {
+        let Ok(dom) = tl::parse(html, tl::ParserOptions::default()) else {
+            return Page::default();
         };
-        if let Some(v) = value {
-            found.push((line_col(html, start).0, v.replace("&amp;", "&")));
+        let parser = dom.parser();
+        let text = |b: &tl::Bytes| b.as_utf8_str().replace("&amp;", "&");
+        let mut page = Page {
+            main: (html.to_string(), 0),
+            ..Page::default()
+        };
+        let mut main_range = None;
+        let mut tags = Vec::new();
+        for tag in dom.nodes().iter().filter_map(tl::Node::as_tag) {
+            let (start, end) = tag.boundaries(parser);
+            let name = tag.name().as_utf8_str().to_ascii_lowercase();
+            let attributes = tag.attributes();
+            let line = line_col(html, start).0;
+            let stylesheet = name == "link"
+                && attributes
+                    .get("rel")
+                    .flatten()
+                    .is_some_and(|r| text(r).split_whitespace().any(|w| w == "stylesheet"));
+            for attribute in ["src", "href"] {
+                if let Some(Some(value)) = attributes.get(attribute) {
+                    page.links.push(Link {
+                        attribute,
+                        value: text(value),
+                        line,
+                        stylesheet,
+                    });
+                }
+            }
+            if let Some(id) = attributes.id() {
+                page.ids.push(text(id));
+            }
+            if attributes.is_class_member("katex-error") && page.katex_error.is_none() {
+                page.katex_error = Some(line);
+            }
+            if name == "main" && main_range.is_none() {
+                main_range = Some(start..=end);
+                page.main = (tag.inner_html(parser), start);
+            }
+            let figure = name == "img"
+                && attributes
+                    .get("src")
+                    .flatten()
+                    .is_some_and(|v| text(v).starts_with("figures/"));
+            tags.push((start, attributes.is_class_member("katex"), figure));
         }
-        from = start;
+        let inside = |at: usize| main_range.as_ref().is_none_or(|r| r.contains(&at));
+        for (start, katex, figure) in tags {
+            if inside(start) {
+                page.math |= katex;
+                page.figure |= figure;
+            }
+        }
+        page
     }
-    found
 }
 
 /// The `id`s of the elements of `html`.
 fn ids(html: &str) -> Vec<String> {
-    attributes(html, "id").into_iter().map(|(_, v)| v).collect()
+    Page::read(html).ids
 }
 
 /// Checks the built book under `book_dir`: every relative `href` and `src` must name a file
@@ -512,16 +348,17 @@ fn ids(html: &str) -> Vec<String> {
 /// (`src=` or a stylesheet over http(s) or `//`); no formula may have failed to render
 /// (KaTeX's `katex-error`, or a `$$` left in the text); and each page named in `chapters`
 /// (e.g. `ch01-camera-rays.html`) must show typeset math and at least one figure.
-pub fn check_html(book_dir: &Path, chapters: &[&str]) -> Result<Vec<Problem>, Error> {
+pub fn check_html(book_dir: &Path, chapters: &[&str]) -> Result<Vec<Problem>, ToolError> {
     let files = pages(book_dir, "html")?;
     let mut texts: BTreeMap<PathBuf, String> = BTreeMap::new();
     for f in &files {
-        let text = std::fs::read_to_string(f).map_err(|e| Error::io(f, e))?;
+        let text = std::fs::read_to_string(f).map_err(|e| ToolError::io(f, e))?;
         texts.insert(f.clone(), text);
     }
     let mut id_cache: HashMap<PathBuf, Vec<String>> = HashMap::new();
     let mut problems = Vec::new();
     for (page, html) in &texts {
+        let read = Page::read(html);
         // mdBook's 404 page sets `<base href="/">` (the site's root): its links start there
         let dir = if html.contains("<base href=\"/\"") {
             book_dir
@@ -535,100 +372,86 @@ pub fn check_html(book_dir: &Path, chapters: &[&str]) -> Result<Vec<Problem>, Er
                 message,
             });
         };
-        for (attribute, loads) in [("src", true), ("href", false)] {
-            for (line, value) in attributes(html, attribute) {
-                let remote = value.starts_with("http://")
-                    || value.starts_with("https://")
-                    || value.starts_with("//");
-                if remote {
-                    let stylesheet = !loads && is_stylesheet_link(html, &value);
-                    if loads || stylesheet {
-                        problem(line, format!("loads `{value}` from the network"));
-                    }
-                    continue;
+        for link in &read.links {
+            let (attribute, value, line) = (link.attribute, link.value.as_str(), link.line);
+            let loads = attribute == "src";
+            let remote = value.starts_with("http://")
+                || value.starts_with("https://")
+                || value.starts_with("//");
+            if remote {
+                if loads || link.stylesheet {
+                    problem(line, format!("loads `{value}` from the network"));
                 }
-                if value.contains(':') && !value.starts_with('#') {
-                    continue; // mailto:, javascript:, data: …
-                }
-                let (path, fragment) = match value.split_once('#') {
-                    Some((p, f)) => (p, Some(f)),
-                    None => (value.as_str(), None),
+                continue;
+            }
+            if value.contains(':') && !value.starts_with('#') {
+                continue; // mailto:, javascript:, data: …
+            }
+            let (path, fragment) = match value.split_once('#') {
+                Some((p, f)) => (p, Some(f)),
+                None => (value, None),
+            };
+            let path = path.split('?').next().unwrap_or(path);
+            let target = if path.is_empty() {
+                page.clone()
+            } else {
+                let t = match path.strip_prefix('/') {
+                    Some(from_root) => book_dir.join(percent_decode(from_root)),
+                    None => dir.join(percent_decode(path)),
                 };
-                let path = path.split('?').next().unwrap_or(path);
-                let target = if path.is_empty() {
-                    page.clone()
-                } else {
-                    let t = match path.strip_prefix('/') {
-                        Some(from_root) => book_dir.join(percent_decode(from_root)),
-                        None => dir.join(percent_decode(path)),
-                    };
-                    if t.is_dir() { t.join("index.html") } else { t }
-                };
-                if !target.is_file() {
+                if t.is_dir() { t.join("index.html") } else { t }
+            };
+            if !target.is_file() {
+                problem(
+                    line,
+                    format!("`{attribute}=\"{value}\"`: no such file in the book"),
+                );
+                continue;
+            }
+            if let Some(fragment) = fragment.filter(|f| !f.is_empty())
+                && target.extension().is_some_and(|e| e == "html")
+            {
+                let known = id_cache.entry(target.clone()).or_insert_with(|| {
+                    texts
+                        .get(&target)
+                        .map(|t| ids(t))
+                        .or_else(|| std::fs::read_to_string(&target).ok().map(|t| ids(&t)))
+                        .unwrap_or_default()
+                });
+                let fragment = percent_decode(fragment);
+                if !known.contains(&fragment) {
                     problem(
                         line,
-                        format!("`{attribute}=\"{value}\"`: no such file in the book"),
+                        format!("`{attribute}=\"{value}\"`: the page has no `id=\"{fragment}\"`"),
                     );
-                    continue;
-                }
-                if let Some(fragment) = fragment.filter(|f| !f.is_empty())
-                    && target.extension().is_some_and(|e| e == "html")
-                {
-                    let known = id_cache.entry(target.clone()).or_insert_with(|| {
-                        texts
-                            .get(&target)
-                            .map(|t| ids(t))
-                            .or_else(|| std::fs::read_to_string(&target).ok().map(|t| ids(&t)))
-                            .unwrap_or_default()
-                    });
-                    let fragment = percent_decode(fragment);
-                    if !known.contains(&fragment) {
-                        problem(
-                            line,
-                            format!(
-                                "`{attribute}=\"{value}\"`: the page has no `id=\"{fragment}\"`"
-                            ),
-                        );
-                    }
                 }
             }
         }
-        if let Some(i) = html.find("katex-error") {
-            problem(
-                line_col(html, i).0,
-                "a formula failed to render".to_string(),
-            );
+        if let Some(line) = read.katex_error {
+            problem(line, "a formula failed to render".to_string());
         }
-        let start = html.find("<main>").unwrap_or(0);
-        let end = html[start..]
-            .find("</main>")
-            .map_or(html.len(), |j| start + j);
-        let main = &html[start..end];
+        let (main, start) = &read.main;
         if let Some(i) = main.find("$$") {
+            let at = html
+                .get(*start..)
+                .and_then(|h| h.find("$$"))
+                .map_or(i, |j| start + j);
             problem(
-                line_col(html, start + i).0,
+                line_col(html, at).0,
                 "`$$` left in the text: a formula was not typeset".to_string(),
             );
         }
         let name = page.file_name().and_then(|n| n.to_str()).unwrap_or("");
         if chapters.contains(&name) {
-            if !main.contains("class=\"katex\"") {
+            if !read.math {
                 problem(0, "a chapter page without typeset math".to_string());
             }
-            if !main.contains("<img src=\"figures/") {
+            if !read.figure {
                 problem(0, "a chapter page without a figure".to_string());
             }
         }
     }
     Ok(problems)
-}
-
-/// Whether `html` links `url` as a stylesheet (`<link rel="stylesheet" href="url">`).
-fn is_stylesheet_link(html: &str, url: &str) -> bool {
-    html.match_indices("<link").any(|(i, _)| {
-        let tag = &html[i..html[i..].find('>').map_or(html.len(), |j| i + j)];
-        tag.contains(url) && tag.contains("stylesheet")
-    })
 }
 
 /// `%XX` escapes of a URL path decoded (as UTF-8; an invalid escape is kept as it is).
@@ -650,4 +473,70 @@ fn percent_decode(text: &str) -> String {
         }
     }
     String::from_utf8_lossy(&out).into_owned()
+}
+
+/// `whitted book`: checks the includes, builds the book with `mdbook`, checks its log and the
+/// HTML; status 1 when a problem is found (each printed as file:line: …).
+pub fn command(root: &Path, mdbook: &Path) -> Result<ExitCode, ToolError> {
+    let docs = root.join("docs");
+    let mut problems: Vec<String> = check_includes(&docs.join("src"))?
+        .iter()
+        .map(ToString::to_string)
+        .collect();
+    let out = std::process::Command::new(mdbook)
+        .arg("build")
+        .arg(&docs)
+        .env("NO_COLOR", "1")
+        .output()
+        .map_err(|e| {
+            ToolError::Usage(format!(
+                "cannot run `{}`: {e}: install the book's tools as docs/README.md says (`.ci/run` does)",
+                mdbook.display()
+            ))
+        })?;
+    let log = format!(
+        "{}{}",
+        String::from_utf8_lossy(&out.stdout),
+        String::from_utf8_lossy(&out.stderr)
+    );
+    problems.extend(
+        log_problems(&log)
+            .into_iter()
+            .map(|l| format!("mdbook: {l}")),
+    );
+    if !out.status.success() {
+        problems.push(format!("mdbook build failed ({})", out.status));
+    } else {
+        let chapters: Vec<String> = crate::syllabus::CHAPTERS
+            .iter()
+            .map(|c| format!("{}.html", c.book))
+            .collect();
+        let chapters: Vec<&str> = chapters.iter().map(String::as_str).collect();
+        let built = docs.join("book");
+        for chapter in &chapters {
+            if !built.join(chapter).is_file() {
+                problems.push(format!(
+                    "docs/book/{chapter}: the chapter page was not built"
+                ));
+            }
+        }
+        problems.extend(
+            check_html(&built, &chapters)?
+                .iter()
+                .map(ToString::to_string),
+        );
+    }
+    for p in &problems {
+        println!("{p}");
+    }
+    if problems.is_empty() {
+        println!(
+            "the book is built and clean: {}",
+            docs.join("book/index.html").display()
+        );
+        Ok(ExitCode::SUCCESS)
+    } else {
+        println!("{} problems in the book", problems.len());
+        Ok(ExitCode::from(1))
+    }
 }

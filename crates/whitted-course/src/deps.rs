@@ -10,7 +10,7 @@
 //!
 //! The result is written down in [`MAP_PATH`], `chapters/exercise-tests.toml`, next to the
 //! manifest: each `[[tests]]` table names tests (as `target::name`, or a prefix of it) and
-//! the exercises they run. `whitted formulas --deps --write` writes it; `whitted formulas
+//! the exercises they run, by name. `whitted formulas deps --write` writes it; `whitted formulas
 //! --deps` measures again and [`check`]s the file, which CI does, so the list of what a
 //! handout fails cannot drift from the tests. A handout of the exercises S fails exactly the
 //! tests whose table names one of S ([`expected`]).
@@ -20,9 +20,12 @@
 use std::collections::{BTreeMap, BTreeSet};
 use std::path::Path;
 
-use super::Error;
+use super::ToolError;
+use super::cargo::{TestOutcome, TestRun};
 use super::manifest::Manifest;
-use super::prove::{self, Options, TestOutcome};
+use super::poison;
+use super::prove::PoisonedRuns;
+use super::source;
 
 /// What poisoning each exercise did to the handout's tests.
 #[derive(Clone, Debug, Default, PartialEq, Eq)]
@@ -85,16 +88,20 @@ pub fn check(manifest: &Manifest, map: &[Group], measured: &Measured) -> Vec<Str
 /// Measures the dependencies of the handout's tests on each exercise (see the module's
 /// documentation). `options.features` selects the build's features, `options.jobs` how many
 /// runs go on at once.
-pub fn measure(root: &Path, manifest: &Manifest, options: &Options) -> Result<Measured, Error> {
-    let locations = prove::locate_all(root, manifest)?;
+pub fn measure(
+    root: &Path,
+    manifest: &Manifest,
+    options: &PoisonedRuns,
+) -> Result<Measured, ToolError> {
+    let locations = source::locate_all(root, manifest)?;
     let poisoned =
-        prove::PoisonedCopy::new(root, manifest, &locations, "whitted-deps-", options.keep)?;
+        poison::PoisonedCopy::new(root, manifest, &locations, "whitted-deps-", options.keep)?;
     let (copy, runs) = (&poisoned.project, &poisoned.runs);
     let target_dir = options
         .target_dir
         .clone()
         .unwrap_or_else(|| root.join("target").join("prove"));
-    let exes = prove::build_tests(
+    let exes = poison::build_tests(
         copy,
         &target_dir,
         &manifest.handout.tests,
@@ -102,41 +109,35 @@ pub fn measure(root: &Path, manifest: &Manifest, options: &Options) -> Result<Me
     )?;
 
     // one run of every target, with the entries `poison` poisoned (none for the baseline)
-    let run_all = |poison: Option<usize>| -> Result<BTreeMap<TestId, TestOutcome>, Error> {
-        let mut out = BTreeMap::new();
+    let run_all = |poison: Option<usize>| -> Result<TestRun, ToolError> {
+        let mut all = TestRun::default();
         for (target, exe) in &exes {
             let log = runs.join(format!(
                 "{target}-{}",
                 poison.map_or("none".into(), |k| k.to_string())
             ));
-            let run = prove::run_tests(exe, copy, None, poison, &log, options.timeout)?;
-            if let Some(why) = run.unfinished {
-                return Err(Error::Proof(format!(
+            let run = poison::run_tests(target, exe, copy, None, poison, &log, options.timeout)?;
+            if let Some(why) = &run.unfinished {
+                return Err(ToolError::Cargo(format!(
                     "tests/{target} with exercise {} poisoned did not finish: {why}",
-                    poison.map_or("none".into(), |k| manifest.entries[k].exercise.id.clone())
+                    poison.map_or("none".into(), |k| manifest.entries[k].exercise.name.clone())
                 )));
             }
-            for (name, outcome) in run.results {
-                out.insert(format!("{target}::{name}"), outcome);
-            }
+            all.merge(run);
         }
-        Ok(out)
+        Ok(all)
     };
     let baseline = run_all(None)?;
-    let red: Vec<&String> = baseline
-        .iter()
-        .filter(|(_, o)| **o == TestOutcome::Failed)
-        .map(|(n, _)| n)
-        .collect();
+    let red = baseline.with(TestOutcome::Failed);
     if !red.is_empty() {
-        return Err(Error::Proof(format!(
+        return Err(ToolError::Baseline(format!(
             "the handout's tests fail without any exercise missing: {red:?}"
         )));
     }
     let tests: BTreeSet<TestId> = baseline
-        .iter()
-        .filter(|(_, o)| **o == TestOutcome::Passed)
-        .map(|(n, _)| n.clone())
+        .with(TestOutcome::Passed)
+        .into_iter()
+        .cloned()
         .collect();
     eprintln!(
         "deps: baseline green ({} tests); taking out each of {} exercises in turn",
@@ -145,19 +146,20 @@ pub fn measure(root: &Path, manifest: &Manifest, options: &Options) -> Result<Me
     );
 
     let all: Vec<usize> = (0..manifest.entries.len()).collect();
-    let failing = prove::in_parallel(&all, options.jobs, |k| {
+    let failing = crate::parallel::in_parallel(&all, options.jobs, |k| {
         Ok(run_all(Some(k))?
+            .with(TestOutcome::Failed)
             .into_iter()
-            .filter(|(_, o)| *o == TestOutcome::Failed)
-            .map(|(n, _)| n)
+            .cloned()
             .collect())
     })?;
     Ok(Measured { tests, failing })
 }
 
 /// The map's text for the measurements: every test, grouped by the exact set of exercises
-/// it fails without, each group written with `target::prefix_` where a whole prefix shares
-/// the set.
+/// it fails without (named in the manifest's order), each group written with
+/// `target::prefix` where every test of a prefix shares the set: an exercise's test prefix
+/// (`ex_viewing_basis_`), or else the name's first word (`ch1_`, `centre_`).
 #[must_use]
 pub fn map_text(manifest: &Manifest, measured: &Measured) -> String {
     let mut needs: BTreeMap<&TestId, Vec<usize>> =
@@ -175,8 +177,8 @@ pub fn map_text(manifest: &Manifest, measured: &Measured) -> String {
     }
     let mut out = String::from(
         "# Which exercises each test of a handout runs: without any one of them, the test fails.\n\
-         # Measured by `whitted formulas --deps --write` (each exercise poisoned in turn); do not\n\
-         # edit. CI measures again and checks this file (`whitted formulas --deps`).\n",
+         # Measured by `whitted formulas deps --write` (each exercise poisoned in turn); do not\n\
+         # edit. CI measures again and checks this file (`whitted formulas deps`).\n",
     );
     // the groups in the order of their first exercise, tests that need none last
     let mut ordered: Vec<(Vec<usize>, Vec<&TestId>)> = groups.into_iter().collect();
@@ -185,9 +187,19 @@ pub fn map_text(manifest: &Manifest, measured: &Measured) -> String {
         let mut written: Vec<String> = Vec::new();
         for t in &tests {
             let (target, name) = t.split_once("::").unwrap_or(("", t));
-            let prefix = name
-                .split_once('_')
-                .map(|(head, _)| format!("{target}::{head}_"));
+            let prefix = match manifest.exercise_of_test(crate::cargo::test_name(name)) {
+                Some(e) => {
+                    let own = crate::cargo::test_name(name);
+                    let module = &name[..name.len() - own.len()];
+                    Some(format!(
+                        "{target}::{module}{}",
+                        manifest.entries[e].exercise.test_prefix()
+                    ))
+                }
+                None => name
+                    .split_once('_')
+                    .map(|(head, _)| format!("{target}::{head}_")),
+            };
             let whole = prefix.filter(|p| {
                 measured
                     .tests
@@ -200,18 +212,40 @@ pub fn map_text(manifest: &Manifest, measured: &Measured) -> String {
                 written.push(entry);
             }
         }
-        let ids = crate::manifest::compress_ids(&manifest.entries, &set);
         out += &format!(
             "\n[[tests]]\ntests = [\n{}]\nneeds = [{}]\n",
             written
                 .iter()
                 .map(|w| format!("    {w:?},\n"))
                 .collect::<String>(),
-            ids.iter()
-                .map(|i| format!("{i:?}"))
-                .collect::<Vec<_>>()
-                .join(", ")
+            wrapped(
+                set.iter()
+                    .map(|&i| format!("{:?}", manifest.entries[i].exercise.name))
+            )
         );
     }
     out
+}
+
+/// Items joined by `, `, on lines of at most 100 characters after the first (indented by 4)
+/// when they do not fit on one.
+fn wrapped(items: impl Iterator<Item = String>) -> String {
+    let items: Vec<String> = items.collect();
+    let one = items.join(", ");
+    if one.len() <= 88 {
+        return one;
+    }
+    let mut out = String::from("\n   ");
+    let mut width = 3;
+    for item in items {
+        if width + item.len() + 2 > 100 {
+            out += "\n   ";
+            width = 3;
+        }
+        out += " ";
+        out += &item;
+        out += ",";
+        width += item.len() + 2;
+    }
+    out + "\n"
 }

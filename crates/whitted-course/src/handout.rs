@@ -4,15 +4,15 @@
 //!
 //! ```text
 //! pub fn discriminant(a: Real, b: Real, c: Real) -> Real {
-//!     // BEGIN SOLUTION 2.3
+//!     // BEGIN SOLUTION sphere_discriminant
 //!     b * b - a * c
 //!     // END SOLUTION
 //! }
 //! ```
 //!
 //! and [`write()`] copies the project with the chosen regions' bodies replaced by
-//! `todo!("exercise 2.3: The sphere's discriminant — see chapters/ch02_generic_objects/README.md")`,
-//! between the same two marker lines: the student writes the body there, and `whitted grade`
+//! `todo!("exercise sphere_discriminant (2.7): The sphere's discriminant — see chapters/ch02_generic_objects/README.md")`
+//! (the message is the syllabus's, [`crate::syllabus::todo`]), between the same two marker lines: the student writes the body there, and `whitted grade`
 //! takes what is between them.
 //! Exercises not chosen keep their reference code, so a course can hand out one chapter alone
 //! on top of working earlier chapters. The copy holds no solution of a chosen exercise, and
@@ -29,7 +29,7 @@ use std::path::{Path, PathBuf};
 
 use super::manifest::{Entry, Manifest};
 use super::source::Location;
-use super::{Error, layout, prove};
+use super::{ToolError, files, layout};
 
 pub use super::layout::{BEGIN, END};
 
@@ -54,15 +54,15 @@ pub struct Region {
 }
 
 /// Finds the solution region of every manifest entry (in manifest order): the BEGIN line with
-/// the entry's exercise id and the END line after it, both inside the function's body. A
+/// the entry's exercise name and the END line after it, both inside the function's body. A
 /// region missing, or misnumbered, or a BEGIN marker in `src/` that belongs to no entry, is an
 /// error that names the file and line.
-pub fn regions(root: &Path, manifest: &Manifest) -> Result<Vec<Region>, Error> {
-    let locations = prove::locate_all(root, manifest)?;
+pub fn regions(root: &Path, manifest: &Manifest) -> Result<Vec<Region>, ToolError> {
+    let locations = super::source::locate_all(root, manifest)?;
     let mut out = Vec::with_capacity(locations.len());
     for (entry, (e, at)) in manifest.entries.iter().zip(&locations).enumerate() {
         let path = root.join(&at.file);
-        let text = std::fs::read_to_string(&path).map_err(|err| Error::io(&path, err))?;
+        let text = std::fs::read_to_string(&path).map_err(|err| ToolError::io(&path, err))?;
         out.push(region_in(&text, entry, e, at)?);
     }
     // every marker in src/ belongs to a region found above
@@ -71,7 +71,7 @@ pub fn regions(root: &Path, manifest: &Manifest) -> Result<Vec<Region>, Error> {
         known.entry(r.file.clone()).or_default().push(r.bytes.start);
     }
     for file in super::book::pages(&root.join(layout::core_src()), "rs")? {
-        let text = std::fs::read_to_string(&file).map_err(|err| Error::io(&file, err))?;
+        let text = std::fs::read_to_string(&file).map_err(|err| ToolError::io(&file, err))?;
         let relative = file.strip_prefix(root).unwrap_or(&file).to_path_buf();
         let mut offset = 0;
         for (n, line) in text.split_inclusive('\n').enumerate() {
@@ -80,7 +80,7 @@ pub fn regions(root: &Path, manifest: &Manifest) -> Result<Vec<Region>, Error> {
                     .get(&relative)
                     .is_some_and(|starts| starts.contains(&offset))
             {
-                return Err(Error::Proof(format!(
+                return Err(ToolError::Markers(format!(
                     "{}:{}: `{}` belongs to no function of {} (or to another one than its id says)",
                     relative.display(),
                     n + 1,
@@ -95,11 +95,11 @@ pub fn regions(root: &Path, manifest: &Manifest) -> Result<Vec<Region>, Error> {
 }
 
 /// The region of entry `e` inside its function's body at `at` in `text`.
-fn region_in(text: &str, entry: usize, e: &Entry, at: &Location) -> Result<Region, Error> {
-    let id = &e.exercise.id;
+fn region_in(text: &str, entry: usize, e: &Entry, at: &Location) -> Result<Region, ToolError> {
+    let id = &e.exercise.name;
     let body = &text[at.body.clone()];
     let fail = |what: String| {
-        Error::Proof(format!(
+        ToolError::Markers(format!(
             "{}:{}: {} (exercise {id}): {what}",
             at.file.display(),
             at.line,
@@ -143,36 +143,40 @@ fn region_in(text: &str, entry: usize, e: &Entry, at: &Location) -> Result<Regio
     }))
 }
 
-pub use super::layout::chapter_dir;
-
-/// The statement that replaces a handed-out exercise's region.
+/// The statement that replaces a handed-out exercise's region: `todo!` with the syllabus's
+/// message, which names the exercise, its displayed id and its chapter's README.
 #[must_use]
-pub fn todo_statement(root: &Path, e: &Entry) -> String {
-    let message = format!(
-        "exercise {}: {} — see chapters/{}/README.md",
-        e.exercise.id,
-        e.exercise.title,
-        chapter_dir(root, e.chapter)
+pub fn todo_statement(e: &Entry) -> String {
+    let readme = crate::syllabus::chapter(e.chapter).map_or_else(String::new, |c| c.readme());
+    let message = crate::syllabus::todo::message(
+        &e.exercise.name,
+        &e.exercise.id,
+        &e.exercise.title,
+        &readme,
     );
     format!("todo!({message:?})")
 }
 
-/// Which exercises a handout takes out: those of `chapters` (inclusive range), or those named
-/// in `exercises` (ids), or all when both are empty. An unknown id or chapter is an error.
+/// Which exercises a handout takes out: those of `chapters` (inclusive range), or those given
+/// in `exercises` (names or displayed ids), or all when both are empty. An unknown exercise or
+/// chapter is an error.
 pub fn select(
     manifest: &Manifest,
     chapters: Option<(u8, u8)>,
     exercises: &[String],
-) -> Result<Vec<usize>, Error> {
+) -> Result<Vec<usize>, ToolError> {
     if let Some((lo, hi)) = chapters {
-        if !(1..=5).contains(&lo) || !(1..=5).contains(&hi) || lo > hi {
+        let known = |c: u8| crate::syllabus::chapter(c).is_some();
+        if !known(lo) || !known(hi) || lo > hi {
             let given = if lo == hi {
                 lo.to_string()
             } else {
                 format!("{lo}-{hi}")
             };
-            return Err(Error::Usage(format!(
-                "--chapters {given}: expected chapters from 1 to 5, the first not after the last"
+            return Err(ToolError::Usage(format!(
+                "--chapters {given}: expected chapters from {} to {}, the first not after the last",
+                crate::syllabus::FIRST,
+                crate::syllabus::LAST
             )));
         }
         return Ok((0..manifest.entries.len())
@@ -184,13 +188,9 @@ pub fn select(
     }
     let mut out = Vec::new();
     for id in exercises {
-        let i = manifest
-            .entries
-            .iter()
-            .position(|e| e.exercise.id == id.trim())
-            .ok_or_else(|| {
-                Error::Usage(format!(
-                    "--exercises: there is no exercise {id} in {} (ids look like 2.3; `cargo learn list` shows them)",
+        let i = manifest.find(id).ok_or_else(|| {
+                ToolError::Usage(format!(
+                    "--exercises: there is no exercise {id} in {} (a name such as sphere_coefficients, or an id such as 2.6; `cargo learn list` shows them)",
                     manifest.file
                 ))
             })?;
@@ -318,13 +318,13 @@ pub fn write(
     manifest: &Manifest,
     selected: &[usize],
     out: &Path,
-) -> Result<Handout, Error> {
+) -> Result<Handout, ToolError> {
     if out.exists() {
         let empty = std::fs::read_dir(out)
             .map(|mut d| d.next().is_none())
             .unwrap_or(false);
         if !empty {
-            return Err(Error::Usage(format!(
+            return Err(ToolError::Usage(format!(
                 "{} exists and is not an empty directory: give a new directory for the handout",
                 out.display()
             )));
@@ -335,12 +335,12 @@ pub fn write(
         Some(p) if !p.as_os_str().is_empty() => p.to_path_buf(),
         _ => PathBuf::from("."),
     };
-    std::fs::create_dir_all(&parent).map_err(|e| Error::io(&parent, e))?;
+    std::fs::create_dir_all(&parent).map_err(|e| ToolError::io(&parent, e))?;
     let temp = tempfile::Builder::new()
         .prefix(".whitted-handout-")
         .tempdir_in(&parent)
-        .map_err(|e| Error::io(&parent, e))?;
-    let files = prove::project_files(root)?;
+        .map_err(|e| ToolError::io(&parent, e))?;
+    let files = files::project_files(root)?;
     let tests = &manifest.handout.tests;
     let mut edits: BTreeMap<PathBuf, Vec<&Region>> = BTreeMap::new();
     for r in regions.iter().filter(|r| selected.contains(&r.entry)) {
@@ -357,9 +357,9 @@ pub fn write(
         let from = root.join(file);
         let to = temp.path().join(file);
         if let Some(dir) = to.parent() {
-            std::fs::create_dir_all(dir).map_err(|e| Error::io(dir, e))?;
+            std::fs::create_dir_all(dir).map_err(|e| ToolError::io(dir, e))?;
         }
-        let read = || std::fs::read_to_string(&from).map_err(|e| Error::io(&from, e));
+        let read = || std::fs::read_to_string(&from).map_err(|e| ToolError::io(&from, e));
         let text = match part {
             Part::Workspace => Some(workspace_manifest(&read()?)?),
             Part::Readme => Some(student_readme(root, manifest, selected)?),
@@ -369,7 +369,7 @@ pub fn write(
                 None
             }
             _ => match edits.get(file) {
-                Some(rs) => Some(strip(&read()?, rs, root, manifest)),
+                Some(rs) => Some(strip(&read()?, rs, manifest)),
                 None if *file == lib && !selected.is_empty() => Some(read()?),
                 None => None,
             },
@@ -379,10 +379,10 @@ pub fn write(
                 if *file == lib && !selected.is_empty() {
                     t = allow_unused(&t);
                 }
-                std::fs::write(&to, t).map_err(|e| Error::io(&to, e))?;
+                std::fs::write(&to, t).map_err(|e| ToolError::io(&to, e))?;
             }
             None => {
-                std::fs::copy(&from, &to).map_err(|e| Error::io(&from, e))?;
+                std::fs::copy(&from, &to).map_err(|e| ToolError::io(&from, e))?;
             }
         }
         written += 1;
@@ -390,21 +390,21 @@ pub fn write(
     // the book's pages last: what they include is the handout's own code, exercises taken out
     for page in &pages {
         let to = temp.path().join(page);
-        let text = std::fs::read_to_string(root.join(page)).map_err(|e| Error::io(page, e))?;
+        let text = std::fs::read_to_string(root.join(page)).map_err(|e| ToolError::io(page, e))?;
         let dir = to.parent().unwrap_or(temp.path());
         let mut expanded = super::book::expand_includes(&text, dir)
-            .map_err(|why| Error::Proof(format!("{}: {why}", page.display())))?;
+            .map_err(|why| ToolError::Project(format!("{}: {why}", page.display())))?;
         if page.file_name().is_some_and(|n| n == "SUMMARY.md") {
             expanded = without_instructors(&expanded);
         }
-        std::fs::write(&to, expanded).map_err(|e| Error::io(&to, e))?;
+        std::fs::write(&to, expanded).map_err(|e| ToolError::io(&to, e))?;
     }
     prune_lock(temp.path());
     let kept = temp.keep();
     if out.exists() {
-        std::fs::remove_dir(out).map_err(|e| Error::io(out, e))?;
+        std::fs::remove_dir(out).map_err(|e| ToolError::io(out, e))?;
     }
-    std::fs::rename(&kept, out).map_err(|e| Error::io(out, e))?;
+    std::fs::rename(&kept, out).map_err(|e| ToolError::io(out, e))?;
     Ok(Handout {
         stripped: selected.to_vec(),
         files: written,
@@ -428,7 +428,7 @@ fn prune_lock(project: &Path) {
 
 /// The handout's workspace manifest: the project's, with only the crates a handout holds as
 /// members (tools and benchmarks stay with the instructor) and a header of its own.
-pub fn workspace_manifest(reference: &str) -> Result<String, Error> {
+pub fn workspace_manifest(reference: &str) -> Result<String, ToolError> {
     let members = format!(
         "members = [{}]",
         [layout::SYLLABUS, layout::CORE, layout::APP, layout::LEARN]
@@ -461,7 +461,7 @@ pub fn workspace_manifest(reference: &str) -> Result<String, Error> {
         out.push('\n');
     }
     if !replaced {
-        return Err(Error::Proof(
+        return Err(ToolError::Project(
             "Cargo.toml: no `members = [...]` line to write the handout's members into".into(),
         ));
     }
@@ -493,12 +493,12 @@ pub const LEFT_PACKAGES: [&str; 6] = [
 
 /// The handout's `.cargo/config.toml`: the project's `learn` alias (the one command of the
 /// student's README) and nothing of the instructor's.
-pub fn cargo_config(reference: &str) -> Result<String, Error> {
+pub fn cargo_config(reference: &str) -> Result<String, ToolError> {
     let learn = reference
         .lines()
         .find(|l| l.trim_start().starts_with("learn ="))
         .ok_or_else(|| {
-            Error::Proof(".cargo/config.toml: no `learn = …` alias for the handout".into())
+            ToolError::Project(".cargo/config.toml: no `learn = …` alias for the handout".into())
         })?;
     Ok(format!(
         "# `cargo learn`: the loop of this handout (crates/whitted-learn), built once, at the test\n\
@@ -532,9 +532,9 @@ pub fn student_readme(
     root: &Path,
     manifest: &Manifest,
     selected: &[usize],
-) -> Result<String, Error> {
+) -> Result<String, ToolError> {
     let path = root.join(README_TEMPLATE);
-    let template = std::fs::read_to_string(&path).map_err(|e| Error::io(&path, e))?;
+    let template = std::fs::read_to_string(&path).map_err(|e| ToolError::io(&path, e))?;
     let ids: Vec<String> = super::manifest::compress_ids(&manifest.entries, selected);
     let exercises = if selected.len() == manifest.entries.len() {
         format!("all {} exercises of the five chapters", selected.len())
@@ -549,8 +549,8 @@ pub fn student_readme(
         )
     };
     let mut chapters = String::new();
-    for (n, title) in (1u8..).zip(super::CHAPTERS) {
-        let dir = chapter_dir(root, n);
+    for chapter in &crate::syllabus::CHAPTERS {
+        let (n, title, dir) = (chapter.number, chapter.title, chapter.binary);
         let count = selected
             .iter()
             .filter(|&&i| manifest.entries[i].chapter == n)
@@ -566,7 +566,7 @@ pub fn student_readme(
 
 /// `text` with each region's body replaced by its exercise's `todo!()`, between the same
 /// marker lines.
-fn strip(text: &str, regions: &[&Region], root: &Path, manifest: &Manifest) -> String {
+fn strip(text: &str, regions: &[&Region], manifest: &Manifest) -> String {
     let mut sorted: Vec<&&Region> = regions.iter().collect();
     sorted.sort_by_key(|r| r.bytes.start);
     let mut out = String::with_capacity(text.len());
@@ -576,8 +576,8 @@ fn strip(text: &str, regions: &[&Region], root: &Path, manifest: &Manifest) -> S
         out.push_str(&text[at..r.bytes.start]);
         // the markers stay: the student writes between them, and `whitted grade` takes
         // exactly what is there
-        out.push_str(&format!("{}{BEGIN} {}\n", r.indent, e.exercise.id));
-        out.push_str(&format!("{}{}\n", r.indent, todo_statement(root, e)));
+        out.push_str(&format!("{}{BEGIN} {}\n", r.indent, e.exercise.name));
+        out.push_str(&format!("{}{}\n", r.indent, todo_statement(e)));
         out.push_str(&format!("{}{END}\n", r.indent));
         at = r.bytes.end;
     }
@@ -596,4 +596,35 @@ fn allow_unused(lib: &str) -> String {
         }
     }
     format!("{}{LIB_ALLOW}{}", &lib[..at], &lib[at..])
+}
+
+/// `whitted handout`: writes the handout of the exercises chosen (see [`select`]) into `out`
+/// and says what it holds.
+pub fn command(
+    root: &Path,
+    manifest: &Manifest,
+    chapters: Option<(u8, u8)>,
+    exercises: &[String],
+    out: &Path,
+) -> Result<std::process::ExitCode, ToolError> {
+    let selected = select(manifest, chapters, exercises)?;
+    let made = write(root, manifest, &selected, out)?;
+    let ids: Vec<&str> = made
+        .stripped
+        .iter()
+        .map(|&i| manifest.entries[i].exercise.id.as_str())
+        .collect();
+    println!(
+        "wrote {} ({} files): {} exercise{} to write ({}); in it, run `cargo learn`",
+        out.display(),
+        made.files,
+        ids.len(),
+        if ids.len() == 1 { "" } else { "s" },
+        if ids.len() == manifest.entries.len() {
+            "all".to_string()
+        } else {
+            ids.join(", ")
+        }
+    );
+    Ok(std::process::ExitCode::SUCCESS)
 }

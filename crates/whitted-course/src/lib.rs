@@ -20,7 +20,7 @@
 //! chapter = 1
 //! section = "Principles of Ray Tracing"
 //! formula = "H = N·tan(θ/2)"
-//! id = "1.2"                # the exercise: chapter.k in the file's order
+//! name = "half_height"      # the exercise's name; its displayed id (1.2) is its place
 //! title = "Half the near plane's height"
 //! task = "Return H = N·tan(θ/2) …"
 //! hints = ["a nudge", "nearly the answer"]
@@ -32,35 +32,44 @@
 //! - [`manifest`] reads and checks the file; a mistake is reported as `file:line:col: …`;
 //! - [`source`] finds each function in `src/` (following `pub use` re-exports) and the exact
 //!   bytes of its body;
-//! - [`prove`] poisons one function at a time in a copy of the project and checks that every
-//!   render path of the function's chapter then fails. A function that a render path can avoid
-//!   is not the only place its formula is computed, or not a place that matters;
+//! - [`poison`] makes a copy of the project with every function behind a switch that makes
+//!   it panic, builds its tests once and runs them with one function poisoned at a time;
+//! - [`prove`] checks on it that every render path of a function's chapter fails with the
+//!   function poisoned. A function that a render path can avoid is not the only place its
+//!   formula is computed, or not a place that matters;
 //! - [`handout`] writes a student's copy, each chosen exercise's solution region
-//!   (`// BEGIN SOLUTION 2.3` … `// END SOLUTION`) replaced by its `todo!()`;
+//!   (`// BEGIN SOLUTION sphere_coefficients` … `// END SOLUTION`) replaced by its `todo!()`;
 //! - [`deps`] measures which tests each exercise's absence fails, and keeps the result in
 //!   `chapters/exercise-tests.toml`: what a handout fails, exactly;
 //! - [`learn`] is the student's loop: progress, the next exercise, hints, rerun on save (with
-//!   the manifest, the map and the cargo runner it is the crate `whitted-learn`, which a
-//!   handout holds instead of this one);
+//!   the manifest, the map, the files and the cargo runner it is the crate `whitted-learn`,
+//!   which a handout holds instead of this one);
 //! - [`readme`] writes each chapter README's exercises from the manifest;
 //! - [`grade`] grades a student's copy, or a class, with the instructor's tests (public and
 //!   hidden), each test in its own process under a time limit; [`report`] writes the table,
-//!   Gradescope's `results.json`, JUnit XML and gradebook CSV.
+//!   Gradescope's `results.json`, JUnit XML and gradebook CSV;
+//! - [`figures`] renders the course book's figures and compares them; [`book`] checks the
+//!   built book.
 //!
-//! The binary `whitted` exposes them: `whitted formulas [--prove | --deps [--write] |
-//! --readmes]`, `whitted handout`, `whitted learn [list | hint | watch]`, `whitted grade`.
+//! The binary `whitted` exposes them: `whitted formulas [list | prove | deps [--write] |
+//! readmes]` ([`formulas`]), `whitted handout`, `whitted learn [list | hint | watch]`,
+//! `whitted grade`, `whitted figures [--check]`, `whitted book`.
 //!
 //! Course book: [The instructor's guide](../../../docs/book/instructor-guide.html) (`docs/src/instructor-guide.md`).
 
 pub mod book;
 pub mod deps;
+pub mod figures;
+pub mod formulas;
 pub mod grade;
 pub mod handout;
+pub mod parallel;
+pub mod poison;
 pub mod prove;
 pub mod readme;
 pub mod report;
 pub mod source;
 
 pub use whitted_learn::{
-    CHAPTERS, Error, SECTIONS, args, cargo, cli, files, layout, learn, manifest, map,
+    ToolError, args, cargo, cli, files, layout, learn, manifest, map, syllabus,
 };

@@ -7,10 +7,7 @@
 //!
 //! 1. every file that git knows (tracked, or new and not ignored) is copied to a temporary
 //!    directory (without git, every file outside `target/` and `.git/`);
-//! 2. in the copy, each manifest function `K` gets a first statement
-//!    `if crate::__poison::on(K) { todo!("poisoned: PATH") }`, and `src/lib.rs` gets the hidden
-//!    module `__poison`, whose `on(k)` is true when the environment variable `WHITTED_POISON`
-//!    holds `k` (read once);
+//! 2. in the copy, every manifest function is put behind the poison switch ([`crate::poison`]);
 //! 3. the test target is built once (`cargo test --no-run`), into `target/prove` of the real
 //!    project so that the dependencies are compiled only the first time;
 //! 4. the tests run once unpoisoned: all must pass, since a proof needs a green baseline;
@@ -23,27 +20,19 @@
 //!
 //! Course book: [The instructor's guide](../../../../docs/book/instructor-guide.html) (`docs/src/instructor-guide.md`).
 
-use std::collections::BTreeMap;
 use std::io::Write;
 use std::path::{Path, PathBuf};
-use std::process::{Command, Stdio};
-use std::sync::Mutex;
 use std::sync::atomic::{AtomicUsize, Ordering};
 use std::time::{Duration, Instant};
 
-use super::Error;
-pub use super::cargo::TestOutcome;
-use super::cargo::{self, Build, Stderr};
-use super::layout;
+use super::cargo::{self, TestOutcome, TestRun};
 use super::manifest::Manifest;
-use super::source::{self, Location};
+use super::{ToolError, poison};
 
-/// The environment variable that names the poisoned function's number.
-pub const POISON_VAR: &str = "WHITTED_POISON";
-
-/// How the proof runs.
+/// How the poisoned copy is built and its tests run: the settings of the proof and of the
+/// dependency measurement ([`crate::deps::measure`]).
 #[derive(Clone, Debug)]
-pub struct Options {
+pub struct PoisonedRuns {
     /// Prove only these functions (manifest paths); empty means all.
     pub only: Vec<String>,
     /// Keep the temporary copy of the project (its path is in the report).
@@ -58,7 +47,7 @@ pub struct Options {
     pub features: Vec<String>,
 }
 
-impl Default for Options {
+impl Default for PoisonedRuns {
     fn default() -> Self {
         Self {
             only: Vec::new(),
@@ -154,201 +143,20 @@ impl Report {
     }
 }
 
-/// The statement that poisons function number `index` (its path is `function`).
-#[must_use]
-pub fn guard(index: usize, function: &str) -> String {
-    format!(" if crate::__poison::on({index}) {{ todo!(\"poisoned: {function}\") }}")
-}
-
-/// The module appended to the copy's `src/lib.rs`.
-pub const POISON_MODULE: &str = r#"
-
-/// The poison switch of `whitted formulas --prove`; it exists only in the proof's copy.
-#[doc(hidden)]
-pub mod __poison {
-    /// Whether formula function `k` is poisoned: `WHITTED_POISON` lists it (read once), as
-    /// numbers and ranges: `3`, `3,7`, `10-48`.
-    pub fn on(k: usize) -> bool {
-        static POISONED: std::sync::OnceLock<Vec<(usize, usize)>> = std::sync::OnceLock::new();
-        POISONED
-            .get_or_init(|| {
-                let text = std::env::var("WHITTED_POISON").unwrap_or_default();
-                text.split(',')
-                    .filter_map(|part| {
-                        let (a, b) = part.split_once('-').unwrap_or((part, part));
-                        Some((a.trim().parse().ok()?, b.trim().parse().ok()?))
-                    })
-                    .collect()
-            })
-            .iter()
-            .any(|&(a, b)| (a..=b).contains(&k))
-    }
-}
-"#;
-
-/// Finds every manifest function under `root`. An error names the entry and the file.
-pub fn locate_all(root: &Path, manifest: &Manifest) -> Result<Vec<Location>, Error> {
-    manifest
-        .entries
-        .iter()
-        .map(|entry| {
-            let found =
-                source::locate(root, &entry.function).map_err(|message| Error::Function {
-                    manifest: manifest.file.clone(),
-                    line: entry.line,
-                    function: entry.function.clone(),
-                    message,
-                })?;
-            if found.is_const {
-                return Err(Error::Function {
-                    manifest: manifest.file.clone(),
-                    line: entry.line,
-                    function: entry.function.clone(),
-                    message: format!(
-                        "is a const fn ({}:{}): its body cannot test the poison switch",
-                        found.file.display(),
-                        found.line
-                    ),
-                });
-            }
-            Ok(found)
-        })
-        .collect()
-}
-
-/// The poisoned text of each source file that holds manifest functions: every body at
-/// `locations` (in manifest order) gets its guard — first thing in the exercise's solution
-/// region when the body has one (so that poisoning a function does what a handout's
-/// `todo!()` does, and code before the region, such as a chapter's stage check, still runs),
-/// else first thing in the body. Files are read under `root`.
-pub fn poisoned_sources(
-    root: &Path,
-    manifest: &Manifest,
-    locations: &[Location],
-) -> Result<BTreeMap<PathBuf, String>, Error> {
-    let mut by_file: BTreeMap<PathBuf, Vec<(usize, &Location)>> = BTreeMap::new();
-    for (index, at) in locations.iter().enumerate() {
-        by_file
-            .entry(at.file.clone())
-            .or_default()
-            .push((index, at));
-    }
-    by_file
-        .into_iter()
-        .map(|(file, found)| {
-            let path = root.join(&file);
-            let text = std::fs::read_to_string(&path).map_err(|e| Error::io(&path, e))?;
-            let mut inserts: Vec<(usize, String)> = Vec::new();
-            for (index, at) in found {
-                let entry = &manifest.entries[index];
-                let guard = guard(index, &entry.function);
-                if text
-                    .get(at.body.clone())
-                    .is_none_or(|b| !b.starts_with('{'))
-                {
-                    return Err(Error::Proof(format!(
-                        "{}: bytes {:?} are not the body of {}",
-                        file.display(),
-                        at.body,
-                        entry.function
-                    )));
-                }
-                inserts.push(match region_start(&text, at, &entry.exercise.id) {
-                    Some((offset, indent)) => (offset, format!("{indent}{}\n", guard.trim_start())),
-                    // no region: right after the body's opening brace
-                    None => (at.body.start + 1, guard),
-                });
-            }
-            // from the end, so that the offsets before each insertion stay right
-            let mut edited = text;
-            inserts.sort_by_key(|(offset, _)| std::cmp::Reverse(*offset));
-            for (offset, line) in inserts {
-                edited.insert_str(offset, &line);
-            }
-            Ok((file, edited))
-        })
-        .collect()
-}
-
-/// Where the solution region `// BEGIN SOLUTION id` of the body at `at` starts its code: the
-/// byte after the marker line, and the marker's indentation.
-fn region_start(text: &str, at: &Location, id: &str) -> Option<(usize, String)> {
-    let body = text.get(at.body.clone())?;
-    let mut offset = at.body.start;
-    for line in body.split_inclusive('\n') {
-        let trimmed = line.trim();
-        if trimmed
-            .strip_prefix(super::handout::BEGIN)
-            .is_some_and(|rest| rest.trim() == id)
-        {
-            let indent = line[..line.len() - line.trim_start().len()].to_string();
-            return Some((offset + line.len(), indent));
-        }
-        offset += line.len();
-    }
-    None
-}
-
-/// A copy of the project in a temporary directory, every manifest function behind the poison
-/// switch (see [`poisoned_sources`] and [`POISON_MODULE`]), and a directory for test runs'
-/// output beside it.
-pub struct PoisonedCopy {
-    /// The temporary directory (removed when dropped, unless kept).
-    pub temp: tempfile::TempDir,
-    /// The copy of the project.
-    pub project: PathBuf,
-    /// Where the test runs' output goes.
-    pub runs: PathBuf,
-    /// How many files were copied.
-    pub files: usize,
-}
-
-impl PoisonedCopy {
-    /// Copies the project at `root` into a new temporary directory named `prefix…`, poisons
-    /// the functions at `locations` (in manifest order) and adds the switch to `src/lib.rs`.
-    /// `keep` keeps the directory, even when a later step fails.
-    pub fn new(
-        root: &Path,
-        manifest: &Manifest,
-        locations: &[Location],
-        prefix: &str,
-        keep: bool,
-    ) -> Result<Self, Error> {
-        let mut temp = tempfile::Builder::new()
-            .prefix(prefix)
-            .tempdir()
-            .map_err(|e| Error::io(std::env::temp_dir(), e))?;
-        temp.disable_cleanup(keep);
-        let project = temp.path().join("project");
-        let runs = temp.path().join("runs");
-        std::fs::create_dir_all(&runs).map_err(|e| Error::io(&runs, e))?;
-        let files = copy_project(root, &project)?;
-        for (file, text) in poisoned_sources(&project, manifest, locations)? {
-            let path = project.join(file);
-            std::fs::write(&path, text).map_err(|e| Error::io(&path, e))?;
-        }
-        let lib = project.join(layout::core_lib());
-        let mut lib_text = std::fs::read_to_string(&lib).map_err(|e| Error::io(&lib, e))?;
-        lib_text.push_str(POISON_MODULE);
-        std::fs::write(&lib, lib_text).map_err(|e| Error::io(&lib, e))?;
-        Ok(Self {
-            temp,
-            project,
-            runs,
-            files,
-        })
-    }
-}
-
 /// Runs the proof for the project at `root` (the directory of `Cargo.toml`). Progress goes to
 /// stderr; the table is the caller's to print with [`Report::write_table`].
-pub fn prove(root: &Path, manifest: &Manifest, options: &Options) -> Result<Report, Error> {
+pub fn prove(
+    root: &Path,
+    manifest: &Manifest,
+    options: &PoisonedRuns,
+) -> Result<Report, ToolError> {
     let started = Instant::now();
     let selected = select(manifest, &options.only)?;
-    let locations = locate_all(root, manifest)?;
+    let locations = crate::source::locate_all(root, manifest)?;
 
     // the copy, poisoned
-    let poisoned = PoisonedCopy::new(root, manifest, &locations, "whitted-prove-", options.keep)?;
+    let poisoned =
+        poison::PoisonedCopy::new(root, manifest, &locations, "whitted-prove-", options.keep)?;
     let (temp, copy, runs) = (&poisoned.temp, &poisoned.project, &poisoned.runs);
     eprintln!(
         "proof: {} files copied to {}; poisoning {} functions",
@@ -362,12 +170,14 @@ pub fn prove(root: &Path, manifest: &Manifest, options: &Options) -> Result<Repo
         .target_dir
         .clone()
         .unwrap_or_else(|| root.join("target").join("prove"));
-    let exe = build(copy, &target_dir, &manifest.prove.test, &options.features)?;
+    let exe = poison::build_one(copy, &target_dir, &manifest.prove.test, &options.features)?;
     let build_time = started.elapsed();
 
     // the baseline, then each function
     let ran = Instant::now();
-    let baseline = run_tests(
+    let target = manifest.prove.test.as_str();
+    let baseline = poison::run_tests(
+        target,
         &exe,
         copy,
         None,
@@ -376,19 +186,18 @@ pub fn prove(root: &Path, manifest: &Manifest, options: &Options) -> Result<Repo
         options.timeout,
     )?;
     let red: Vec<&str> = baseline
-        .results
-        .iter()
-        .filter(|(_, o)| *o == TestOutcome::Failed)
-        .map(|(n, _)| n.as_str())
+        .with(TestOutcome::Failed)
+        .into_iter()
+        .map(|n| cargo::test_name(n))
         .collect();
     if let Some(why) = &baseline.unfinished {
-        return Err(Error::Proof(format!(
+        return Err(ToolError::Baseline(format!(
             "the unpoisoned run of tests/{}.rs did not finish ({why}); a proof needs a green baseline",
             manifest.prove.test
         )));
     }
     if !red.is_empty() || !baseline.success {
-        return Err(Error::Proof(format!(
+        return Err(ToolError::Baseline(format!(
             "tests/{}.rs fails without any poison ({}); a proof needs a green baseline: run `cargo test --test {}`",
             manifest.prove.test,
             if red.is_empty() {
@@ -402,25 +211,26 @@ pub fn prove(root: &Path, manifest: &Manifest, options: &Options) -> Result<Repo
             manifest.prove.test
         )));
     }
-    if baseline.results.is_empty() {
-        return Err(Error::Proof(format!(
+    if baseline.outcomes.is_empty() {
+        return Err(ToolError::Baseline(format!(
             "tests/{}.rs has no tests: there is no render path to prove anything on",
             manifest.prove.test
         )));
     }
     eprintln!(
         "proof: baseline green ({} tests); poisoning {} functions, {} at a time",
-        baseline.results.len(),
+        baseline.outcomes.len(),
         selected.len(),
         options.jobs.max(1)
     );
 
     let done = AtomicUsize::new(0);
-    let rows = in_parallel(&selected, options.jobs, |index| {
+    let rows = crate::parallel::in_parallel(&selected, options.jobs, |index| {
         let entry = &manifest.entries[index];
         let filter = manifest.prove.filter_for(entry.chapter);
         let log = runs.join(index.to_string());
-        let run = run_tests(
+        let run = poison::run_tests(
+            target,
             &exe,
             copy,
             Some(&filter),
@@ -443,50 +253,8 @@ pub fn prove(root: &Path, manifest: &Manifest, options: &Options) -> Result<Repo
     })
 }
 
-/// Runs `job` on every item, `jobs` at a time, and returns the results in the items' order.
-/// The first error stops the workers (each finishes the job it is on) and is returned.
-pub(crate) fn in_parallel<T: Send>(
-    items: &[usize],
-    jobs: usize,
-    job: impl Fn(usize) -> Result<T, Error> + Sync,
-) -> Result<Vec<T>, Error> {
-    let next = AtomicUsize::new(0);
-    let results: Mutex<Vec<(usize, T)>> = Mutex::new(Vec::new());
-    let failure: Mutex<Option<Error>> = Mutex::new(None);
-    std::thread::scope(|scope| {
-        for _ in 0..jobs.max(1) {
-            scope.spawn(|| {
-                while let Some(&item) = items.get(next.fetch_add(1, Ordering::SeqCst)) {
-                    if failure.lock().unwrap_or_else(|p| p.into_inner()).is_some() {
-                        break;
-                    }
-                    match job(item) {
-                        Ok(t) => results
-                            .lock()
-                            .unwrap_or_else(|p| p.into_inner())
-                            .push((item, t)),
-                        Err(e) => {
-                            failure
-                                .lock()
-                                .unwrap_or_else(|p| p.into_inner())
-                                .get_or_insert(e);
-                            break;
-                        }
-                    }
-                }
-            });
-        }
-    });
-    if let Some(e) = failure.into_inner().unwrap_or_else(|p| p.into_inner()) {
-        return Err(e);
-    }
-    let mut results = results.into_inner().unwrap_or_else(|p| p.into_inner());
-    results.sort_by_key(|(item, _)| items.iter().position(|i| i == item));
-    Ok(results.into_iter().map(|(_, t)| t).collect())
-}
-
 /// The indices of the entries to prove: those named by `only`, or all.
-fn select(manifest: &Manifest, only: &[String]) -> Result<Vec<usize>, Error> {
+fn select(manifest: &Manifest, only: &[String]) -> Result<Vec<usize>, ToolError> {
     if only.is_empty() {
         return Ok((0..manifest.entries.len()).collect());
     }
@@ -497,7 +265,7 @@ fn select(manifest: &Manifest, only: &[String]) -> Result<Vec<usize>, Error> {
             .iter()
             .position(|e| &e.function == path)
             .ok_or_else(|| {
-                Error::Usage(format!(
+                ToolError::Usage(format!(
                     "--only {path}: no such function in {}",
                     manifest.file
                 ))
@@ -511,19 +279,13 @@ fn select(manifest: &Manifest, only: &[String]) -> Result<Vec<usize>, Error> {
 }
 
 /// What a poisoned run proves.
-fn verdict(run: &cargo::TestRun, filter: &str) -> Verdict {
-    let mut passed: Vec<String> = run
-        .results
-        .iter()
-        .filter(|(_, o)| *o == TestOutcome::Passed)
-        .map(|(n, _)| n.clone())
+fn verdict(run: &TestRun, filter: &str) -> Verdict {
+    let passed: Vec<String> = run
+        .with(TestOutcome::Passed)
+        .into_iter()
+        .map(|n| cargo::test_name(n).to_string())
         .collect();
-    passed.sort(); // libtest reports in the order the tests end
-    let failed = run
-        .results
-        .iter()
-        .filter(|(_, o)| *o == TestOutcome::Failed)
-        .count();
+    let failed = run.with(TestOutcome::Failed).len();
     if !passed.is_empty() {
         Verdict::NotOnPath(passed)
     } else if let Some(why) = &run.unfinished {
@@ -533,199 +295,4 @@ fn verdict(run: &cargo::TestRun, filter: &str) -> Verdict {
     } else {
         Verdict::Proven
     }
-}
-
-/// The files to copy, relative to `root`: what git lists (tracked, or untracked and not
-/// ignored), or else every file outside `target/` and `.git/`.
-pub fn project_files(root: &Path) -> Result<Vec<PathBuf>, Error> {
-    let listed = Command::new("git")
-        .args([
-            "ls-files",
-            "-z",
-            "--cached",
-            "--others",
-            "--exclude-standard",
-        ])
-        .current_dir(root)
-        .stderr(Stdio::null())
-        .output();
-    if let Ok(out) = listed
-        && out.status.success()
-    {
-        let text = String::from_utf8_lossy(&out.stdout);
-        return Ok(text
-            .split('\0')
-            .filter(|p| !p.is_empty())
-            .map(PathBuf::from)
-            .filter(|p| root.join(p).is_file())
-            .collect());
-    }
-    let mut files = Vec::new();
-    walk(root, Path::new(""), &mut files)?;
-    Ok(files)
-}
-
-fn walk(root: &Path, dir: &Path, files: &mut Vec<PathBuf>) -> Result<(), Error> {
-    let full = root.join(dir);
-    for entry in std::fs::read_dir(&full).map_err(|e| Error::io(&full, e))? {
-        let entry = entry.map_err(|e| Error::io(&full, e))?;
-        let name = entry.file_name();
-        let relative = dir.join(&name);
-        let kind = entry.file_type().map_err(|e| Error::io(&relative, e))?;
-        if kind.is_dir() {
-            if name != "target" && name != ".git" {
-                walk(root, &relative, files)?;
-            }
-        } else if root.join(&relative).is_file() {
-            files.push(relative);
-        }
-    }
-    Ok(())
-}
-
-/// Copies the project's files from `root` to `dest`; returns how many.
-pub(crate) fn copy_project(root: &Path, dest: &Path) -> Result<usize, Error> {
-    let files = project_files(root)?;
-    for file in &files {
-        let to = dest.join(file);
-        if let Some(parent) = to.parent() {
-            std::fs::create_dir_all(parent).map_err(|e| Error::io(parent, e))?;
-        }
-        std::fs::copy(root.join(file), &to).map_err(|e| Error::io(root.join(file), e))?;
-    }
-    Ok(files.len())
-}
-
-/// Makes `dest` a copy of the project's files at `root`, writing only the files that are
-/// missing or differ, so that cargo (which goes by modification times) rebuilds only what
-/// changed since the last copy, and removing the files the project no longer has (but those
-/// under `keep`, relative to `dest`); returns how many files it wrote.
-pub(crate) fn sync_project(root: &Path, dest: &Path, keep: &[&str]) -> Result<usize, Error> {
-    let files = project_files(root)?;
-    let mut written = 0;
-    for file in &files {
-        let bytes = std::fs::read(root.join(file)).map_err(|e| Error::io(root.join(file), e))?;
-        if write_if_changed(&dest.join(file), &bytes)? {
-            written += 1;
-        }
-    }
-    if dest.is_dir() {
-        let mut present = Vec::new();
-        walk(dest, Path::new(""), &mut present)?;
-        for stale in present.iter().filter(|p| !files.contains(p)) {
-            if !keep.iter().any(|k| stale.starts_with(k)) {
-                let path = dest.join(stale);
-                std::fs::remove_file(&path).map_err(|e| Error::io(&path, e))?;
-            }
-        }
-    }
-    Ok(written)
-}
-
-/// Writes `bytes` to `path` unless it holds them already (creating its directory); returns
-/// whether it wrote.
-pub(crate) fn write_if_changed(path: &Path, bytes: &[u8]) -> Result<bool, Error> {
-    if std::fs::read(path).is_ok_and(|now| now == bytes) {
-        return Ok(false);
-    }
-    if let Some(parent) = path.parent() {
-        std::fs::create_dir_all(parent).map_err(|e| Error::io(parent, e))?;
-    }
-    std::fs::write(path, bytes).map_err(|e| Error::io(path, e))?;
-    Ok(true)
-}
-
-/// Builds the test target `test` of the project at `project` into `target_dir`; returns the
-/// test executable.
-fn build(
-    project: &Path,
-    target_dir: &Path,
-    test: &str,
-    features: &[String],
-) -> Result<PathBuf, Error> {
-    let mut built = build_tests(project, target_dir, &[test.to_string()], features)?;
-    built.remove(test).ok_or_else(|| {
-        Error::Proof(format!(
-            "cargo built no test executable for {}",
-            layout::core_test_file(test).display()
-        ))
-    })
-}
-
-/// Builds the renderer's test targets `tests` of the project at `project` into `target_dir`;
-/// returns each one's executable, by target name. Cargo's lines go to stderr.
-pub fn build_tests(
-    project: &Path,
-    target_dir: &Path,
-    tests: &[String],
-    features: &[String],
-) -> Result<BTreeMap<String, PathBuf>, Error> {
-    let test = tests.join(", ");
-    eprintln!(
-        "proof: building the poisoned copy's tests ({test}) into {}{}",
-        target_dir.display(),
-        if features.is_empty() {
-            String::new()
-        } else {
-            format!(" with --features {}", features.join(","))
-        }
-    );
-    let built = Build {
-        project,
-        packages: &[layout::CORE_PACKAGE],
-        tests,
-        bins: &[],
-        profile: None,
-        features,
-        target_dir: Some(target_dir),
-        // no debug info: a panic's message is all the proof reads (measured in a single
-        // crate: a warm build 60 s → 26 s, each test binary 100 MB → 4 MB)
-        debug_info: false,
-        locked: true,
-        stderr: Stderr::Inherit,
-    }
-    .run()?;
-    let exes: BTreeMap<String, PathBuf> = built
-        .executables
-        .into_iter()
-        .filter(|(name, _)| tests.contains(name))
-        .collect();
-    if built.success && exes.len() == tests.len() {
-        return Ok(exes);
-    }
-    for error in &built.errors {
-        eprint!("{}", error.rendered);
-    }
-    Err(Error::Proof(format!(
-        "`cargo test --no-run` of tests {test} fails in the poisoned copy; cargo's and the compiler's messages are above"
-    )))
-}
-
-/// Runs the test executable from `project`, with a test-name filter and a poisoned function
-/// (none for the baseline); its output goes to `log.out` and `log.err`.
-pub(crate) fn run_tests(
-    exe: &Path,
-    project: &Path,
-    filter: Option<&str>,
-    poison: Option<usize>,
-    log: &Path,
-    timeout: Duration,
-) -> Result<cargo::TestRun, Error> {
-    let mut args: Vec<String> = filter.map(str::to_string).into_iter().collect();
-    args.extend(["--test-threads".to_string(), "2".to_string()]);
-    let env: Vec<(&str, String)> = poison
-        .map(|k| (POISON_VAR, k.to_string()))
-        .into_iter()
-        .collect();
-    cargo::Run {
-        exe,
-        dir: project,
-        args: &args,
-        env: &env,
-        // a blessing run would overwrite the goldens and pass
-        env_remove: &[POISON_VAR, "WHITTED_BLESS"],
-        log: Some(log),
-        timeout,
-    }
-    .run()
 }

@@ -1,12 +1,12 @@
 //! The "Exercises" section of each chapter's README, written from the manifest so that the
-//! README and the manifest cannot say different things: `whitted formulas --readmes`
+//! README and the manifest cannot say different things: `whitted formulas readmes`
 //! rewrites the sections, and a test checks they are current.
 //!
 //! Course book: [The student's guide](../../../../docs/book/student-guide.html) (`docs/src/student-guide.md`).
 
 use std::path::Path;
 
-use super::Error;
+use super::ToolError;
 use super::manifest::Manifest;
 
 /// The heading of the section.
@@ -21,7 +21,17 @@ pub const ANCHOR_END: &str = "<!-- ANCHOR_END: exercises -->";
 
 /// The section for chapter `chapter`, heading included, ending with a newline.
 #[must_use]
-pub fn section(manifest: &Manifest, chapter: u8, chapter_dir: &str) -> String {
+pub fn section(manifest: &Manifest, chapter: &crate::syllabus::Chapter) -> String {
+    let (binary, number) = (chapter.binary, chapter.number);
+    let first = manifest.entries.iter().find(|e| e.chapter == number);
+    let example = first.map_or_else(String::new, |e| {
+        format!(
+            " (`{}…` for {}, the exercise `{}`)",
+            e.exercise.test_prefix(),
+            e.exercise.id,
+            e.exercise.name
+        )
+    });
     let commands = [
         (
             "cargo learn".to_string(),
@@ -32,7 +42,10 @@ pub fn section(manifest: &Manifest, chapter: u8, chapter_dir: &str) -> String {
             "a hint, then a stronger one",
         ),
         (
-            format!("cargo test -p whitted --test {chapter_dir} ex{chapter}_"),
+            format!(
+                "cargo test -p whitted --test {binary} {}",
+                crate::manifest::TEST_PREFIX
+            ),
             "this chapter's exercise tests (--features f32: in single precision)",
         ),
     ];
@@ -48,18 +61,18 @@ pub fn section(manifest: &Manifest, chapter: u8, chapter_dir: &str) -> String {
          In a handout (`whitted handout`, see `docs/src/student-guide.md`) its body is `todo!()`; write\n\
          it, then run\n\n\
          ```text\n{lines}```\n\n\
-         An exercise's tests are named after it (`ex{chapter}_1_…` for {chapter}.1) and may use \
-         the exercises before it.\n"
+         An exercise's tests are named after it{example} and may use the exercises before it.\n"
     );
-    for e in manifest.entries.iter().filter(|e| e.chapter == chapter) {
+    for e in manifest.entries.iter().filter(|e| e.chapter == number) {
         let x = &e.exercise;
         out += &format!(
-            "\n### {} {} ({} point{})\n\n`{}` — the notes, \"{}\": {}\n\n{}\n",
+            "\n### {} {} ({} point{})\n\n`{}` (the exercise `{}`) — the notes, \"{}\": {}\n\n{}\n",
             x.id,
             x.title,
             x.points,
             if x.points == 1 { "" } else { "s" },
             e.function,
+            x.name,
             e.section,
             e.formula,
             x.task
@@ -98,16 +111,15 @@ pub fn replace_section(readme: &str, section: &str) -> String {
 
 /// Rewrites the exercises section of every chapter's README under `root`; returns the
 /// READMEs that changed.
-pub fn write_all(root: &Path, manifest: &Manifest) -> Result<Vec<String>, Error> {
+pub fn write_all(root: &Path, manifest: &Manifest) -> Result<Vec<String>, ToolError> {
     let mut changed = Vec::new();
-    for chapter in 1..=5u8 {
-        let dir = super::handout::chapter_dir(root, chapter);
-        let path = root.join("chapters").join(&dir).join("README.md");
-        let text = std::fs::read_to_string(&path).map_err(|e| Error::io(&path, e))?;
-        let new = replace_section(&text, &section(manifest, chapter, &dir));
+    for chapter in &crate::syllabus::CHAPTERS {
+        let path = root.join(chapter.readme());
+        let text = std::fs::read_to_string(&path).map_err(|e| ToolError::io(&path, e))?;
+        let new = replace_section(&text, &section(manifest, chapter));
         if new != text {
             crate::files::write_file(&path, new.as_bytes())?;
-            changed.push(format!("chapters/{dir}/README.md"));
+            changed.push(chapter.readme());
         }
     }
     Ok(changed)

@@ -384,3 +384,36 @@ pub fn edit_bodies(text: &str, edits: &[(Range<usize>, Edit)]) -> Result<String,
     out.push_str(&text[copied..]);
     Ok(out)
 }
+
+/// Finds every manifest function under `root`. An error names the entry and the file.
+pub fn locate_all(
+    root: &Path,
+    manifest: &crate::manifest::Manifest,
+) -> Result<Vec<Location>, crate::ToolError> {
+    manifest
+        .entries
+        .iter()
+        .map(|entry| {
+            let found =
+                locate(root, &entry.function).map_err(|message| crate::ToolError::Function {
+                    manifest: manifest.file.clone(),
+                    line: entry.line,
+                    function: entry.function.clone(),
+                    message,
+                })?;
+            if found.is_const {
+                return Err(crate::ToolError::Function {
+                    manifest: manifest.file.clone(),
+                    line: entry.line,
+                    function: entry.function.clone(),
+                    message: format!(
+                        "is a const fn ({}:{}): its body cannot test the poison switch",
+                        found.file.display(),
+                        found.line
+                    ),
+                });
+            }
+            Ok(found)
+        })
+        .collect()
+}

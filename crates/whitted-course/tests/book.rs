@@ -5,9 +5,9 @@
 use std::path::{Path, PathBuf};
 
 use whitted_course::book::{
-    self, Difference, Figure, check_html, check_includes, compare, include_links, log_problems,
-    parse_figures, resolve_include,
+    self, check_html, check_includes, include_links, log_problems, resolve_include,
 };
+use whitted_course::figures::{self, Difference, Figure, compare, parse_figures};
 
 /// The workspace's root: this crate sits in `crates/whitted-course`.
 fn root() -> PathBuf {
@@ -200,13 +200,13 @@ fn mdbooks_log_problems_are_its_warnings_and_errors_but_the_version_notice() {
  INFO Book building has started
 \u{1b}[2m2026-11-29T13:27:40Z\u{1b}[0m \u{1b}[33m WARN\u{1b}[0m mdbook_katex: This mdbook-katex was built against mdbook v0.5.3, but we are being called from mdbook v0.5.4.
 2026-11-29T13:27:40Z  WARN render{item=\"\\frac{a}\"}: mdbook_katex::render: Rendering failed, keeping the original content
-ERROR Error updating \"{{#include x.rs}}\"
+ERROR ToolError updating \"{{#include x.rs}}\"
  INFO HTML book written to `book`
 ";
     let problems = log_problems(log);
     assert_eq!(problems.len(), 2, "{problems:?}");
     assert!(problems[0].contains("Rendering failed"));
-    assert!(problems[1].starts_with("ERROR Error updating"));
+    assert!(problems[1].starts_with("ERROR ToolError updating"));
 }
 
 const PAGE: &str = r##"<html><head>
@@ -345,9 +345,12 @@ fn figures_compare_within_one_level_and_report_what_differs() {
         2,
     );
     let tall = png(d, "tall.png", &base, 1);
-    assert_eq!(compare(&a, &a, book::TOLERANCE).unwrap(), Difference::Same);
     assert_eq!(
-        compare(&a, &near, book::TOLERANCE).unwrap(),
+        compare(&a, &a, figures::TOLERANCE).unwrap(),
+        Difference::Same
+    );
+    assert_eq!(
+        compare(&a, &near, figures::TOLERANCE).unwrap(),
         Difference::Same
     );
     assert_eq!(
@@ -359,7 +362,7 @@ fn figures_compare_within_one_level_and_report_what_differs() {
         }
     );
     assert_eq!(
-        compare(&a, &far, book::TOLERANCE).unwrap(),
+        compare(&a, &far, figures::TOLERANCE).unwrap(),
         Difference::Pixels {
             pixels: 2,
             largest: 9,
@@ -367,7 +370,7 @@ fn figures_compare_within_one_level_and_report_what_differs() {
         }
     );
     assert_eq!(
-        compare(&a, &tall, book::TOLERANCE).unwrap(),
+        compare(&a, &tall, figures::TOLERANCE).unwrap(),
         Difference::Size((2, 2), (1, 4))
     );
 }
@@ -377,7 +380,7 @@ fn figures_compare_within_one_level_and_report_what_differs() {
 #[test]
 fn every_figure_of_the_book_is_in_the_manifest_and_every_entry_is_committed() {
     let root = root();
-    let figures = book::read_figures(&root.join("docs/figures.toml")).unwrap();
+    let figures = figures::read_figures(&root.join("docs/figures.toml")).unwrap();
     let listed: Vec<&str> = figures.iter().map(|f| f.file.as_str()).collect();
     let dir = root.join("docs/src/figures");
     let mut on_disk: Vec<String> = std::fs::read_dir(&dir)

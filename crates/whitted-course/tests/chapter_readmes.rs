@@ -6,7 +6,7 @@
 
 use std::path::{Path, PathBuf};
 
-use whitted_course::{manifest, source};
+use whitted_course::{manifest, source, syllabus};
 
 /// The workspace's root: this crate sits in `crates/whitted-course`.
 fn root() -> PathBuf {
@@ -17,23 +17,14 @@ fn root() -> PathBuf {
         .to_path_buf()
 }
 
-/// The entry of `dir` (below the project's root) whose name starts with `prefix`.
-fn entry(dir: &str, prefix: &str) -> PathBuf {
-    std::fs::read_dir(root().join(dir))
-        .unwrap()
-        .map(|e| e.unwrap().path())
-        .find(|p| p.file_name().unwrap().to_string_lossy().starts_with(prefix))
-        .unwrap_or_else(|| panic!("nothing named {dir}/{prefix}*"))
-}
-
 /// The README of chapter `n`.
 fn readme(n: u8) -> String {
-    std::fs::read_to_string(entry("chapters", &format!("ch0{n}_")).join("README.md")).unwrap()
+    std::fs::read_to_string(root().join(syllabus::chapter(n).unwrap().readme())).unwrap()
 }
 
 /// The course book's page of chapter `n` (`docs/src/ch0N-….md`).
 fn page(n: u8) -> String {
-    std::fs::read_to_string(entry("docs/src", &format!("ch0{n}-"))).unwrap()
+    std::fs::read_to_string(root().join(syllabus::chapter(n).unwrap().page())).unwrap()
 }
 
 /// The text of the section `## title` (up to the next `## `).
@@ -116,7 +107,7 @@ fn the_path_of_one_pixel_names_real_functions() {
     let modules = modules(&root);
     let mut checked = 0;
     let mut missing = Vec::new();
-    for n in 1..=5 {
+    for n in syllabus::CHAPTERS.iter().map(|c| c.number) {
         let text = page(n);
         let path_section = section(&text, "The path of one pixel")
             .unwrap_or_else(|| panic!("chapter {n}'s book page has no \"The path of one pixel\""));
@@ -150,23 +141,49 @@ fn every_formula_function_is_in_its_chapters_readme() {
     assert!(absent.is_empty(), "not in their README: {absent:?}");
 }
 
-/// Each chapter README's "## Exercises" section is the one the manifest writes (ids, titles,
-/// functions, tasks, in order): `cargo run --bin whitted -- formulas --readmes` rewrites them.
+/// Each chapter README's "## Exercises" section is the one the manifest writes (ids, names,
+/// titles, functions, tasks, in order): `cargo run --bin whitted -- formulas readmes` rewrites
+/// them.
 #[test]
 fn each_readme_lists_its_chapters_exercises_from_the_manifest() {
     let root = root();
     let m = manifest::load(&root.join(manifest::DEFAULT_PATH)).unwrap();
-    for n in 1..=5u8 {
-        let dir = whitted_course::handout::chapter_dir(&root, n);
+    for chapter in &syllabus::CHAPTERS {
+        let n = chapter.number;
         let text = readme(n);
-        let want = whitted_course::readme::section(&m, n, &dir);
+        let want = whitted_course::readme::section(&m, chapter);
         assert_eq!(
             whitted_course::readme::replace_section(&text, &want),
             text,
-            "chapter {n}'s exercises differ from the manifest: run `cargo run --bin whitted -- formulas --readmes`"
+            "chapter {n}'s exercises differ from the manifest: run `cargo run --bin whitted -- formulas readmes`"
         );
         for e in m.entries.iter().filter(|e| e.chapter == n) {
             assert!(text.contains(&format!("### {} {}", e.exercise.id, e.exercise.title)));
+            assert!(text.contains(&format!("(the exercise `{}`)", e.exercise.name)));
         }
+    }
+}
+
+/// The course book's table of contents (`docs/src/SUMMARY.md`) links every chapter's page, in
+/// the syllabus's order and with its title, and each page opens with its chapter's heading.
+#[test]
+fn the_book_lists_each_chapters_page_in_order() {
+    let summary = std::fs::read_to_string(root().join("docs/src/SUMMARY.md")).unwrap();
+    let mut last = 0;
+    for chapter in &syllabus::CHAPTERS {
+        let (n, heading) = (chapter.number, chapter.heading());
+        let link = format!("[{n}. {heading}]({}.md)", chapter.book);
+        let at = summary
+            .find(&link)
+            .unwrap_or_else(|| panic!("docs/src/SUMMARY.md does not link {link}"));
+        assert!(at > last, "chapter {n} is out of order in SUMMARY.md");
+        last = at;
+        let first = page(n).lines().next().unwrap_or("").to_string();
+        assert_eq!(
+            first,
+            format!("# Chapter {n} — {heading}"),
+            "{}",
+            chapter.page()
+        );
     }
 }

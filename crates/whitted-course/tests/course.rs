@@ -1,13 +1,14 @@
 //! The course tools: the manifest of formula functions (`chapters/formulas.toml`), the locator
 //! that finds a function's body in the source, and the poison guards the proof puts there.
-//! The proof itself (`whitted formulas --prove`) builds the project and runs in CI.
+//! The proof itself (`whitted formulas prove`) builds the project and runs in CI.
 
 use std::path::{Path, PathBuf};
 
-use whitted_course::Error;
+use whitted_course::ToolError;
+use whitted_course::cargo::TestOutcome;
 use whitted_course::cargo::parse_libtest;
 use whitted_course::manifest::{self, Entry, Exercise, Prove};
-use whitted_course::prove::{self, TestOutcome, guard, poisoned_sources};
+use whitted_course::poison::{guard, poisoned_sources};
 use whitted_course::source::{self, Edit, edit_bodies, locate};
 
 // ── the manifest ────────────────────────────────────────────────────────────────────────────
@@ -19,20 +20,20 @@ filter = "ch{chapter}_"
 
 [[formula]]
 function = "camera::near_plane_half_height"
+name = "half_height"
 chapter = 1
 section = "Principles of Ray Tracing"
 formula = "H = N·tan(θ/2)"
-id = "1.1"
 title = "The near plane's half height"
 task = "Return H."
 hints = ["Half the angle.", "Degrees to radians."]
 points = 2
 [[formula]]
 function = "shading::ambient"
+name = "ambient"
 chapter = 3
 section = "Shading"
 formula = "I_a = ρ_a·I_m"
-id = "3.1"
 title = "Ambient light"
 task = "Return ρ_a·I_m."
 hints = ["Per channel.", "A product of two vectors."]
@@ -46,7 +47,7 @@ tests = ["ch03_shading", "render_paths"]
 #[track_caller]
 fn manifest_error(text: &str) -> (usize, usize, String) {
     match manifest::parse(text, "m.toml") {
-        Err(Error::Manifest {
+        Err(ToolError::Manifest {
             file,
             line,
             col,
@@ -82,6 +83,7 @@ fn a_good_manifest_reads_every_entry_in_order() {
                 formula: "H = N·tan(θ/2)".into(),
                 line: 7,
                 exercise: Exercise {
+                    name: "half_height".into(),
                     id: "1.1".into(),
                     title: "The near plane's half height".into(),
                     task: "Return H.".into(),
@@ -96,6 +98,7 @@ fn a_good_manifest_reads_every_entry_in_order() {
                 formula: "I_a = ρ_a·I_m".into(),
                 line: 17,
                 exercise: Exercise {
+                    name: "ambient".into(),
                     id: "3.1".into(),
                     title: "Ambient light".into(),
                     task: "Return ρ_a·I_m.".into(),
@@ -112,7 +115,7 @@ fn a_good_manifest_reads_every_entry_in_order() {
 fn an_unknown_key_is_an_error_at_its_line_and_column() {
     let text = GOOD.replace("chapter = 3\n", "chapter = 3\ncolour = \"red\"\n");
     let (line, col, message) = manifest_error(&text);
-    assert_eq!((line, col), (19, 1));
+    assert_eq!((line, col), (20, 1));
     assert!(message.starts_with("unknown field `colour`"), "{message}");
 
     let text = GOOD.replace("filter =", "jobs = 2\nfilter =");
@@ -139,12 +142,12 @@ fn a_chapter_outside_one_to_five_is_an_error() {
     for bad in ["0", "6", "-1"] {
         let text = GOOD.replace("chapter = 3", &format!("chapter = {bad}"));
         let (line, col, message) = manifest_error(&text);
-        assert_eq!((line, col), (18, 11), "chapter = {bad}");
+        assert_eq!((line, col), (19, 11), "chapter = {bad}");
         assert_eq!(message, format!("chapter: expected 1 to 5, found {bad}"));
     }
     let text = GOOD.replace("chapter = 3", "chapter = \"three\"");
     let (line, col, _) = manifest_error(&text);
-    assert_eq!((line, col), (18, 11));
+    assert_eq!((line, col), (19, 11));
 }
 
 /// A section must be one of the notes' titles, and a function a path of at least two names.
@@ -152,7 +155,7 @@ fn a_chapter_outside_one_to_five_is_an_error() {
 fn an_unknown_section_or_a_malformed_path_is_an_error() {
     let text = GOOD.replace("section = \"Shading\"", "section = \"Shadows\"");
     let (line, col, message) = manifest_error(&text);
-    assert_eq!((line, col), (19, 11));
+    assert_eq!((line, col), (20, 11));
     assert!(
         message.starts_with("section: \"Shadows\" is not a section of the course notes"),
         "{message}"
@@ -200,7 +203,7 @@ fn the_projects_manifest_names_functions_that_exist() {
         .unwrap();
     let m = manifest::load(&root.join(manifest::DEFAULT_PATH)).unwrap();
     assert!(m.entries.len() >= 30, "{} entries", m.entries.len());
-    let found = prove::locate_all(root, &m).unwrap();
+    let found = whitted_course::source::locate_all(root, &m).unwrap();
     let ambient = m
         .entries
         .iter()
@@ -373,7 +376,9 @@ fn the_proof_refuses_a_const_fn() {
         .replace("camera::near_plane_half_height", "geo::area")
         .replace("shading::ambient", "geo::fixed");
     let m = manifest::parse(&text, "m.toml").unwrap();
-    let err = prove::locate_all(dir.path(), &m).unwrap_err().to_string();
+    let err = whitted_course::source::locate_all(dir.path(), &m)
+        .unwrap_err()
+        .to_string();
     assert_eq!(
         err,
         "m.toml:17: geo::fixed: is a const fn (crates/whitted/src/geo.rs:30): its body cannot test the poison switch"
@@ -417,7 +422,7 @@ fn poisoned_sources_number_each_function_by_its_entry() {
         .replace("camera::near_plane_half_height", "geo::Rect::fmt")
         .replace("shading::ambient", "geo::area");
     let m = manifest::parse(&text, "m.toml").unwrap();
-    let found = prove::locate_all(dir.path(), &m).unwrap();
+    let found = whitted_course::source::locate_all(dir.path(), &m).unwrap();
     let files = poisoned_sources(dir.path(), &m, &found).unwrap();
     assert_eq!(files.len(), 1);
     let edited = &files[Path::new("crates/whitted/src/geo.rs")];
@@ -487,9 +492,8 @@ fn libtest_results_are_read_line_by_line() {
 
 // ── the exercises ───────────────────────────────────────────────────────────────────────────
 
-/// Every exercise key is required; the id must be chapter.k in the file's order; two or three
-/// hints; points 1 to 100; `needs` only names earlier exercises. Each mistake is reported at
-/// its line and column.
+/// Every exercise key is required, the name a snake_case word; two or three hints; points 1
+/// to 100. Each mistake is reported at its line and column.
 #[test]
 fn the_exercise_keys_are_checked_where_they_stand() {
     let text = GOOD.replace("points = 1\n", "");
@@ -497,10 +501,28 @@ fn the_exercise_keys_are_checked_where_they_stand() {
     assert_eq!(line, 16, "{message}");
     assert!(message.contains("`points` is missing"), "{message}");
 
-    let text = GOOD.replace("id = \"3.1\"", "id = \"3.2\"");
-    let (line, col, message) = manifest_error(&text);
-    assert_eq!((line, col), (21, 6));
-    assert!(message.starts_with("id: expected \"3.1\""), "{message}");
+    let text = GOOD.replace("name = \"ambient\"\n", "");
+    let (line, _, message) = manifest_error(&text);
+    assert_eq!(line, 16, "{message}");
+    assert!(message.contains("`name` is missing"), "{message}");
+
+    for bad in [
+        "Ambient",
+        "ambient_",
+        "_ambient",
+        "amb__ient",
+        "3ambient",
+        "am-bient",
+        "",
+    ] {
+        let text = GOOD.replace("name = \"ambient\"", &format!("name = {bad:?}"));
+        let (line, col, message) = manifest_error(&text);
+        assert_eq!((line, col), (18, 8), "{bad:?}");
+        assert!(
+            message.starts_with("name: expected a snake_case name"),
+            "{message}"
+        );
+    }
 
     let text = GOOD.replace(
         "hints = [\"Per channel.\", \"A product of two vectors.\"]",
@@ -519,36 +541,65 @@ fn the_exercise_keys_are_checked_where_they_stand() {
     assert_eq!(message, "points: expected 1 to 100, found 0");
 }
 
-/// The exercise's own tests are those named after its id, and 2.1 is not a prefix of 2.10.
+/// Two exercises cannot share a name, and no name followed by `_` may begin another (a test
+/// `ex_half_height_of_x_…` would then be both exercises'): both are refused at the second
+/// name, naming the line of the first.
 #[test]
-fn an_exercises_tests_are_named_after_its_id() {
+fn names_are_unique_and_none_begins_another() {
+    for (second, says) in [
+        (
+            "half_height",
+            "name \"half_height\" is taken (by the exercise on line 7)",
+        ),
+        (
+            "half_height_of_x",
+            "name \"half_height_of_x\": `half_height_` begins `half_height_of_x` (line 7 has the other)",
+        ),
+        (
+            "half",
+            "name \"half\": `half_` begins `half_height` (line 7 has the other)",
+        ),
+    ] {
+        let text = GOOD.replace("name = \"ambient\"", &format!("name = {second:?}"));
+        let (line, col, message) = manifest_error(&text);
+        assert_eq!((line, col), (18, 8), "{second}");
+        assert!(message.starts_with(says), "{second}: {message}");
+    }
+    // a name that only shares a first word is fine: `half_` does not begin `halves`
+    let text = GOOD
+        .replace("name = \"half_height\"", "name = \"half\"")
+        .replace("name = \"ambient\"", "name = \"halves\"");
+    assert!(manifest::parse(&text, "m.toml").is_ok());
+}
+
+/// An exercise's own tests are those named `ex_NAME_…`; a test is found by its name or its
+/// displayed id, and a test belongs to the exercise whose prefix it has, or to none.
+#[test]
+fn an_exercises_tests_are_named_after_its_name() {
     let m = manifest::parse(GOOD, "m.toml").unwrap();
-    assert_eq!(m.entries[1].exercise.test_prefix(), "ex3_1_");
-    let ten = Exercise {
-        id: "2.10".into(),
-        ..m.entries[1].exercise.clone()
-    };
-    assert!(
-        !"ex2_10_x".starts_with(
-            &Exercise {
-                id: "2.1".into(),
-                ..ten.clone()
-            }
-            .test_prefix()
-        )
-    );
-    assert!("ex2_10_x".starts_with(&ten.test_prefix()));
+    assert_eq!(m.entries[1].exercise.test_prefix(), "ex_ambient_");
+    assert_eq!(m.entries[0].exercise.test_prefix(), "ex_half_height_");
+    assert_eq!(m.find("ambient"), Some(1));
+    assert_eq!(m.find(" 3.1 "), Some(1));
+    assert_eq!(m.find("1.1"), Some(0));
+    assert_eq!(m.find("3.2"), None);
+    assert_eq!(m.display("ambient"), "3.1");
+    assert_eq!(m.display("gone"), "gone");
+    assert_eq!(m.exercise_of_test("ex_ambient_is_a_product"), Some(1));
+    assert_eq!(m.exercise_of_test("ex_half_height_at_90"), Some(0));
+    assert_eq!(m.exercise_of_test("ex_ambient"), None);
+    assert_eq!(m.exercise_of_test("ambient_is_a_product"), None);
 }
 
 /// The map of tests to exercises (chapters/exercise-tests.toml) names tests by prefix and
-/// the exercises they need by id, range or whole chapter; a handout of some exercises is
-/// expected to fail the tests that need one of them; an id that names nothing is an error.
+/// the exercises they need by name; a handout of some exercises is expected to fail the tests
+/// that need one of them; a name that names nothing (an old id among them) is an error.
 #[test]
 fn the_test_map_names_tests_and_the_exercises_they_need() {
     use whitted_course::deps;
     let m = manifest::parse(GOOD, "m.toml").unwrap();
     let map = deps::parse_map(
-        "[[tests]]\ntests = [\"render_paths::ch3_\"]\nneeds = [\"1.*\", \"3.1\"]\n\n[[tests]]\ntests = [\"ch03_shading::ex3_1_\"]\nneeds = [\"3.1\"]\n",
+        "[[tests]]\ntests = [\"render_paths::ch3_\"]\nneeds = [\"half_height\", \"ambient\"]\n\n[[tests]]\ntests = [\"ch03_shading::ex_ambient_\"]\nneeds = [\"ambient\"]\n",
         "map.toml",
         &m,
     )
@@ -557,7 +608,7 @@ fn the_test_map_names_tests_and_the_exercises_they_need() {
     assert!(map[0].matches("render_paths::ch3_road") && !map[0].matches("render_paths::ch4_road"));
     let tests = [
         "render_paths::ch3_road",
-        "ch03_shading::ex3_1_works",
+        "ch03_shading::ex_ambient_works",
         "render_paths::ch4_road",
     ]
     .map(String::from)
@@ -567,13 +618,13 @@ fn the_test_map_names_tests_and_the_exercises_they_need() {
     assert_eq!(deps::expected(&map, &tests, &[1]).len(), 2);
     assert_eq!(manifest::compress_ids(&m.entries, &[1, 0]), ["1.*", "3.*"]);
     let bad = deps::parse_map(
-        "[[tests]]\ntests = [\"x::y\"]\nneeds = [\"3.9\"]\n",
+        "[[tests]]\ntests = [\"x::y\"]\nneeds = [\"3.1\"]\n",
         "map.toml",
         &m,
     );
+    let message = bad.unwrap_err().to_string();
     assert!(
-        bad.unwrap_err()
-            .to_string()
-            .starts_with("map.toml:3:9: needs: \"3.9\" names no exercise")
+        message.starts_with("map.toml:3:9: needs: \"3.1\" names no exercise"),
+        "{message}"
     );
 }

@@ -24,9 +24,9 @@ fn manifest() -> Manifest {
     manifest::load(&root().join(manifest::DEFAULT_PATH)).unwrap()
 }
 
-/// The region of exercise `id` in the reference.
+/// The region of exercise `id` (a name or a displayed id) in the reference.
 fn region(m: &Manifest, id: &str) -> Region {
-    let i = m.entries.iter().position(|e| e.exercise.id == id).unwrap();
+    let i = m.find(id).unwrap();
     handout::regions(&root(), m).unwrap().swap_remove(i)
 }
 
@@ -43,26 +43,34 @@ fn the_students_body_is_what_lies_between_the_markers() {
     let m = manifest();
     let r = region(&m, "1.2");
     let dir = tempfile::tempdir().unwrap();
-    let file = "fn a() {\n    // BEGIN SOLUTION 1.2\n    let x = 1; // mine\n    x * 2\n    // END SOLUTION\n}\n";
+    let file = "fn a() {\n    // BEGIN SOLUTION near_plane_half_height\n    let x = 1; // mine\n    x * 2\n    // END SOLUTION\n}\n";
     write(dir.path(), &r.file, file);
     assert_eq!(
-        grade::student_body(dir.path(), &r, "1.2").unwrap(),
+        grade::student_body(dir.path(), &r, "near_plane_half_height").unwrap(),
         "    let x = 1; // mine\n    x * 2\n"
     );
     write(dir.path(), &r.file, "fn a() { 1 }\n");
-    let why = grade::student_body(dir.path(), &r, "1.2").unwrap_err();
-    assert!(why.contains("`// BEGIN SOLUTION 1.2` is missing"), "{why}");
-    write(dir.path(), &r.file, "    // BEGIN SOLUTION 1.2\n    1\n}\n");
-    let why = grade::student_body(dir.path(), &r, "1.2").unwrap_err();
+    let why = grade::student_body(dir.path(), &r, "near_plane_half_height").unwrap_err();
+    assert!(
+        why.contains("`// BEGIN SOLUTION near_plane_half_height` is missing"),
+        "{why}"
+    );
+    write(
+        dir.path(),
+        &r.file,
+        "    // BEGIN SOLUTION near_plane_half_height\n    1\n}\n",
+    );
+    let why = grade::student_body(dir.path(), &r, "near_plane_half_height").unwrap_err();
     assert!(why.contains("not closed"), "{why}");
     // another exercise's marker before the END does not close this one
     write(
         dir.path(),
         &r.file,
-        "// BEGIN SOLUTION 1.2\n1\n// BEGIN SOLUTION 1.3\n// END SOLUTION\n",
+        "// BEGIN SOLUTION near_plane_half_height\n1\n// BEGIN SOLUTION near_plane_half_width\n// END SOLUTION\n",
     );
-    assert!(grade::student_body(dir.path(), &r, "1.2").is_err());
-    let missing = grade::student_body(&dir.path().join("nowhere"), &r, "1.2").unwrap_err();
+    assert!(grade::student_body(dir.path(), &r, "near_plane_half_height").is_err());
+    let missing =
+        grade::student_body(&dir.path().join("nowhere"), &r, "near_plane_half_height").unwrap_err();
     assert!(missing.contains("cannot read"), "{missing}");
 }
 
@@ -71,27 +79,30 @@ fn the_students_body_is_what_lies_between_the_markers() {
 const JUNIT: &str = r#"<?xml version="1.0" encoding="UTF-8"?>
 <testsuites name="nextest-run" tests="6" failures="5">
   <testsuite name="whitted::ch01_camera_rays" tests="5" failures="4">
-    <testcase name="ex1_2_half_height_is_near_times_tangent_of_half_the_angle" classname="whitted::ch01_camera_rays" time="0.01"/>
-    <testcase name="ex1_2_viewing_angle_is_converted_from_degrees" classname="whitted::ch01_camera_rays" time="0.1">
-      <failure message="thread panicked" type="test failure with exit code 101">thread &apos;ex1_2_viewing_angle_is_converted_from_degrees&apos; (9915) panicked at tests/ch01_camera_rays.rs:2:28:
+    <testcase name="ex_near_plane_half_height_half_height_is_near_times_tangent_of_half_the_angle" classname="whitted::ch01_camera_rays" time="0.01"/>
+    <testcase name="ex_near_plane_half_height_viewing_angle_is_converted_from_degrees" classname="whitted::ch01_camera_rays" time="0.1">
+      <failure message="thread panicked" type="test failure with exit code 101">thread &apos;ex_near_plane_half_height_viewing_angle_is_converted_from_degrees&apos; (9915) panicked at tests/ch01_camera_rays.rs:2:28:
 assertion `left == right` failed: H for 90° &amp; N = 1
   left: 0.5
  right: 1
 note: run with `RUST_BACKTRACE=1` environment variable to display a backtrace</failure>
     </testcase>
-    <testcase name="ex1_3_half_width_is_half_height_times_aspect" classname="whitted::ch01_camera_rays" time="0.1">
+    <testcase name="ex_near_plane_half_width_half_width_is_half_height_times_aspect" classname="whitted::ch01_camera_rays" time="0.1">
       <failure message="thread panicked" type="test failure with exit code 101">thread &apos;x&apos; panicked at src/camera.rs:43:5:
-not yet implemented: exercise 1.3: Half the near plane's width — see chapters/ch01_camera_rays/README.md</failure>
+not yet implemented: exercise near_plane_half_width (1.3): Half the near plane's width — see chapters/ch01_camera_rays/README.md</failure>
     </testcase>
-    <testcase name="ex1_4_pixel_formula_spans_the_near_plane_corner_to_corner" classname="whitted::ch01_camera_rays" time="20.0">
+    <testcase name="ex_pixel_on_near_plane_pixel_formula_spans_the_near_plane_corner_to_corner" classname="whitted::ch01_camera_rays" time="20.0">
       <failure type="test timeout"/>
     </testcase>
-    <testcase name="ex1_7_ray_colour_is_unit_direction_plus_one_over_two" classname="whitted::ch01_camera_rays" time="0.01">
+    <testcase name="ex_direction_colour_ray_colour_is_unit_direction_plus_one_over_two" classname="whitted::ch01_camera_rays" time="0.01">
       <failure message="process aborted with signal 6 (SIGABRT)" type="test abort">process aborted with signal 6 (SIGABRT)</failure>
     </testcase>
   </testsuite>
+  <testsuite name="whitted::ch02_generic_objects" tests="1" failures="0">
+    <testcase name="sphere::ex_hit_sphere_sphere_two_hits_with_the_point_as_normal" classname="whitted::ch02_generic_objects" time="0.01"/>
+  </testsuite>
   <testsuite name="whitted::hidden_extra" tests="1" failures="1">
-    <testcase name="ex1_2_secret_check" classname="whitted::hidden_extra" time="0.01">
+    <testcase name="ex_near_plane_half_height_secret_check" classname="whitted::hidden_extra" time="0.01">
       <failure type="test failure with exit code 101">thread &apos;y&apos; panicked at tests/hidden_extra.rs:3:5:
 the secret value</failure>
     </testcase>
@@ -109,34 +120,44 @@ fn junit_results(m: &Manifest) -> Vec<TestResult> {
 fn nextests_junit_report_is_read_test_by_test() {
     let m = manifest();
     let results = junit_results(&m);
-    assert_eq!(results.len(), 6);
+    assert_eq!(results.len(), 7);
     let by = |name: &str| results.iter().find(|t| t.name == name).unwrap();
     let id = |t: &TestResult| m.entries[t.exercise.unwrap()].exercise.id.clone();
-    let pass = by("ex1_2_half_height_is_near_times_tangent_of_half_the_angle");
+    let pass = by("ex_near_plane_half_height_half_height_is_near_times_tangent_of_half_the_angle");
     assert_eq!(
         (pass.status.clone(), id(pass), pass.hidden),
         (Status::Passed, "1.2".into(), false)
     );
     assert_eq!(pass.target, "ch01_camera_rays");
-    let fail = by("ex1_2_viewing_angle_is_converted_from_degrees");
+    let fail = by("ex_near_plane_half_height_viewing_angle_is_converted_from_degrees");
     assert_eq!(fail.status, Status::Failed);
     assert_eq!(
         fail.message,
         "assertion `left == right` failed: H for 90° & N = 1 /   left: 0.5 /  right: 1"
     );
-    let todo = by("ex1_3_half_width_is_half_height_times_aspect");
+    let todo = by("ex_near_plane_half_width_half_width_is_half_height_times_aspect");
     assert!(
         todo.message
-            .starts_with("not written (not yet implemented: exercise 1.3")
+            .starts_with("not written (not yet implemented: exercise near_plane_half_width (1.3)")
     );
-    let slow = by("ex1_4_pixel_formula_spans_the_near_plane_corner_to_corner");
+    let slow = by("ex_pixel_on_near_plane_pixel_formula_spans_the_near_plane_corner_to_corner");
     assert_eq!(slow.status, Status::TimedOut);
-    let crash = by("ex1_7_ray_colour_is_unit_direction_plus_one_over_two");
+    let crash = by("ex_direction_colour_ray_colour_is_unit_direction_plus_one_over_two");
     assert_eq!(crash.status, Status::Crashed);
     assert!(crash.message.contains("SIGABRT") && crash.message.contains("stack overflow"));
-    let secret = by("ex1_2_secret_check");
+    let secret = by("ex_near_plane_half_height_secret_check");
     assert!(secret.hidden && secret.target == "hidden_extra");
     assert_eq!(id(secret), "1.2");
+    // a test in a module of its target keeps its module path, and its exercise by its own name
+    let module = by("sphere::ex_hit_sphere_sphere_two_hits_with_the_point_as_normal");
+    assert_eq!(
+        (module.target.as_str(), id(module), module.status.clone()),
+        (
+            "ch02_generic_objects",
+            m.entries[m.find("hit_sphere").unwrap()].exercise.id.clone(),
+            Status::Passed
+        )
+    );
     assert!(grade::parse_junit("<testsuites", &m, &[]).is_err());
 }
 
@@ -144,7 +165,8 @@ fn nextests_junit_report_is_read_test_by_test() {
 /// test, failed; 1.4 (2 points) one test, timed out; 1.7 one crash; the rest of chapter 1
 /// has no test in this report.
 fn graded(m: &Manifest) -> Grade {
-    let tests = junit_results(m);
+    let mut tests = junit_results(m);
+    tests.retain(|t| t.exercise.is_some_and(|e| m.entries[e].chapter == 1));
     let chapter1: Vec<usize> = (0..m.entries.len())
         .filter(|&i| m.entries[i].chapter == 1)
         .collect();
@@ -241,8 +263,12 @@ fn the_table_explains_each_lost_point() {
     let e13 = &m.entries.iter().find(|e| e.exercise.id == "1.3").unwrap();
     assert!(t.contains(&e13.formula), "{t}");
     assert!(t.contains("note: does not compile"));
-    assert!(t.contains("✗ ex1_4_pixel_formula_spans_the_near_plane_corner_to_corner: timed out"));
-    assert!(t.contains("✗ ex1_2_secret_check (hidden): failed: the secret value"));
+    assert!(t.contains(
+        "✗ ex_pixel_on_near_plane_pixel_formula_spans_the_near_plane_corner_to_corner: timed out"
+    ));
+    assert!(
+        t.contains("✗ ex_near_plane_half_height_secret_check (hidden): failed: the secret value")
+    );
 }
 
 /// JUnit is well-formed XML with a suite per chapter and the failures; the CSV row has a
@@ -288,8 +314,10 @@ fn a_failures_message_is_its_panic() {
         "no panic here"
     );
     assert!(
-        grade::panic_message("thread 'a' panicked at x:\nnot yet implemented: exercise 2.1: t")
-            .starts_with("not written")
+        grade::panic_message(
+            "thread 'a' panicked at x:\nnot yet implemented: exercise step_matrix (2.1): t"
+        )
+        .starts_with("not written")
     );
 }
 

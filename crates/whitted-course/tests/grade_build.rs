@@ -21,7 +21,7 @@ use std::time::Duration;
 
 use whitted_course::grade::{self, ClassEntry, Grade, Status};
 use whitted_course::manifest::{self, Manifest};
-use whitted_course::{deps, handout, prove};
+use whitted_course::{deps, files, handout};
 
 /// The workspace's root: this crate sits in `crates/whitted-course`.
 fn root() -> PathBuf {
@@ -36,23 +36,22 @@ fn manifest() -> Manifest {
     manifest::load(&root().join(manifest::DEFAULT_PATH)).unwrap()
 }
 
-fn index(m: &Manifest, id: &str) -> usize {
-    m.entries
-        .iter()
-        .position(|e| e.exercise.id == id)
-        .unwrap_or_else(|| panic!("no exercise {id}"))
+/// The entry of the exercise named `name`.
+fn index(m: &Manifest, name: &str) -> usize {
+    m.by_name(name)
+        .unwrap_or_else(|| panic!("no exercise named {name}"))
 }
 
 /// A copy of the reference project at `to`.
 fn copy(to: &Path) {
-    for f in prove::project_files(&root()).unwrap() {
+    for f in files::project_files(&root()).unwrap() {
         let dest = to.join(&f);
         std::fs::create_dir_all(dest.parent().unwrap()).unwrap();
         std::fs::copy(root().join(&f), dest).unwrap();
     }
 }
 
-/// Replaces the body of exercise `id` in the copy at `dir` with `body`.
+/// Replaces the body of the exercise named `id` in the copy at `dir` with `body`.
 fn set_body(dir: &Path, m: &Manifest, id: &str, body: &str) {
     let r = &handout::regions(&root(), m).unwrap()[index(m, id)];
     let path = dir.join(&r.file);
@@ -91,7 +90,7 @@ const HIDDEN: &str = r#"
 use whitted::camera::near_plane_half_height;
 
 #[test]
-fn ex1_2_hidden_a_right_angle_sees_as_high_as_it_is_far() {
+fn ex_near_plane_half_height_hidden_a_right_angle_sees_as_high_as_it_is_far() {
     assert!((near_plane_half_height(2.0, 90.0) - 2.0).abs() < 1e-6);
 }
 "#;
@@ -142,16 +141,21 @@ fn a_class_is_graded_as_each_submission_deserves() {
     set_body(
         &broken,
         &m,
-        "5.2",
+        "critical_angle",
         "    std::hint::black_box(critical_angle_sine(std::hint::black_box(n1), n2))",
     );
     set_body(
         &broken,
         &m,
-        "1.7",
+        "direction_colour",
         "    loop {\n        std::hint::black_box(d);\n    }",
     );
-    set_body(&broken, &m, "2.22", "    facet.d() + \"not a number\"");
+    set_body(
+        &broken,
+        &m,
+        "facet_crossing",
+        "    facet.d() + \"not a number\"",
+    );
     // 4. a handout whose tests and manifest were edited to win points
     let all: Vec<usize> = (0..m.entries.len()).collect();
     let tampered = class.join("tampered");
@@ -159,7 +163,7 @@ fn a_class_is_graded_as_each_submission_deserves() {
     for t in std::fs::read_dir(tampered.join("crates/whitted/tests")).unwrap() {
         let p = t.unwrap().path();
         if p.extension().is_some_and(|x| x == "rs") {
-            std::fs::write(&p, "#[test]\nfn ex1_1_always() {}\n").unwrap();
+            std::fs::write(&p, "#[test]\nfn ex_viewing_basis_always() {}\n").unwrap();
         }
     }
     let mpath = tampered.join(manifest::DEFAULT_PATH);
@@ -190,7 +194,7 @@ fn a_class_is_graded_as_each_submission_deserves() {
     std::fs::create_dir_all(&hidden).unwrap();
     std::fs::write(hidden.join("extra.rs"), HIDDEN).unwrap();
 
-    let options = grade::Options {
+    let options = grade::GradeSetup {
         chapter: None,
         hidden: Some(hidden),
         timeout: Duration::from_secs(5),
@@ -245,7 +249,11 @@ fn a_class_is_graded_as_each_submission_deserves() {
 
     // the broken one: graded, and only what those three exercises carry is lost
     let b = find(&entries, "broken");
-    let three = [index(&m, "5.2"), index(&m, "1.7"), index(&m, "2.22")];
+    let three = [
+        index(&m, "critical_angle"),
+        index(&m, "direction_colour"),
+        index(&m, "facet_crossing"),
+    ];
     assert_eq!(failed(b), deps::expected(&map, &all_tests, &three));
     let own = |id: &str| -> Vec<Status> {
         let i = index(&m, id);
@@ -255,15 +263,20 @@ fn a_class_is_graded_as_each_submission_deserves() {
             .map(|t| t.status.clone())
             .collect()
     };
-    assert!(own("5.2").contains(&Status::Crashed), "the stack overflow");
     assert!(
-        own("1.7").iter().all(|s| *s == Status::TimedOut),
+        own("critical_angle").contains(&Status::Crashed),
+        "the stack overflow"
+    );
+    assert!(
+        own("direction_colour")
+            .iter()
+            .all(|s| *s == Status::TimedOut),
         "the endless loop"
     );
     let e222 = b
         .exercises
         .iter()
-        .find(|e| e.entry == index(&m, "2.22"))
+        .find(|e| e.entry == index(&m, "facet_crossing"))
         .unwrap();
     assert!(
         e222.note

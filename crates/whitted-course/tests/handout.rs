@@ -5,10 +5,12 @@
 use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
 
+use whitted_course::cargo::TestOutcome;
+use whitted_course::cargo::{TestRun, test_name};
 use whitted_course::handout::{self, BEGIN, END};
-use whitted_course::learn::{self, State, Style, TestRun};
+use whitted_course::learn::{self, State, Style};
 use whitted_course::manifest::{self, Manifest};
-use whitted_course::prove::TestOutcome;
+use whitted_course::syllabus::todo;
 
 /// The workspace's root: this crate sits in `crates/whitted-course`.
 fn root() -> PathBuf {
@@ -42,7 +44,7 @@ fn texts(dir: &Path) -> BTreeMap<PathBuf, String> {
     out
 }
 
-/// Every manifest function has exactly one solution region, numbered with its exercise id,
+/// Every manifest function has exactly one solution region, marked with its exercise's name,
 /// and no other BEGIN SOLUTION marker is in src/.
 #[test]
 fn every_exercise_has_one_solution_region_in_its_function() {
@@ -60,7 +62,7 @@ fn every_exercise_has_one_solution_region_in_its_function() {
         assert!(
             region
                 .trim_start()
-                .starts_with(&format!("{BEGIN} {}", e.exercise.id))
+                .starts_with(&format!("{BEGIN} {}\n", e.exercise.name))
         );
         assert!(region.trim_end().ends_with(END));
     }
@@ -71,7 +73,7 @@ fn every_exercise_has_one_solution_region_in_its_function() {
 /// the handout's test looks for them.
 fn unique_lines(m: &Manifest) -> Vec<(String, Vec<String>)> {
     let root = root();
-    let project: BTreeMap<PathBuf, String> = whitted_course::prove::project_files(&root)
+    let project: BTreeMap<PathBuf, String> = whitted_course::files::project_files(&root)
         .unwrap()
         .into_iter()
         .filter_map(|f| Some((f.clone(), std::fs::read_to_string(root.join(&f)).ok()?)))
@@ -132,9 +134,21 @@ fn a_full_handout_holds_no_solution_and_no_instructor_material() {
     }
     let all_text: String = files.values().cloned().collect();
     for e in &m.entries {
-        let todo = handout::todo_statement(&root(), e);
+        let todo = handout::todo_statement(e);
         assert_eq!(all_text.matches(&todo).count(), 1, "{todo}");
-        assert!(todo.contains(&format!("exercise {}: {}", e.exercise.id, e.exercise.title)));
+        let readme = whitted_course::syllabus::chapter(e.chapter)
+            .unwrap()
+            .readme();
+        assert_eq!(
+            todo,
+            format!(
+                "todo!(\"exercise {} ({}): {} — see {readme}\")",
+                e.exercise.name,
+                e.exercise.id,
+                e.exercise.title.replace('"', "\\\"")
+            )
+        );
+        assert!(root().join(&readme).is_file(), "{readme}");
     }
     // each exercise's markers stay, around its todo!() and nothing else: the student writes
     // between them, and `whitted grade` takes what is there
@@ -145,17 +159,9 @@ fn a_full_handout_holds_no_solution_and_no_instructor_material() {
     {
         let lines: Vec<&str> = t.lines().map(str::trim).collect();
         for (i, l) in lines.iter().enumerate() {
-            if let Some(id) = l.strip_prefix(BEGIN) {
-                let e = m
-                    .entries
-                    .iter()
-                    .find(|e| e.exercise.id == id.trim())
-                    .unwrap();
-                assert_eq!(
-                    lines[i + 1],
-                    handout::todo_statement(&root(), e),
-                    "{path:?}"
-                );
+            if let Some(name) = l.strip_prefix(BEGIN) {
+                let e = &m.entries[m.by_name(name.trim()).unwrap()];
+                assert_eq!(lines[i + 1], handout::todo_statement(e), "{path:?}");
                 assert_eq!(lines[i + 2], END, "{path:?}");
                 marked += 1;
             }
@@ -176,8 +182,12 @@ fn a_full_handout_holds_no_solution_and_no_instructor_material() {
         }
     }
     for t in &m.handout.tests {
-        assert!(files.contains_key(&tests.join(format!("{t}.rs"))), "{t}");
+        let file = tests.join(format!("{t}.rs"));
+        let dir = tests.join(t).join("main.rs");
+        assert!(files.contains_key(&file) || files.contains_key(&dir), "{t}");
     }
+    // a target of several files goes whole: chapter 2's, one module per shape
+    assert!(files.contains_key(&tests.join("ch02_generic_objects/sphere.rs")));
     assert!(files.contains_key(&tests.join("common/mod.rs")));
     assert!(files.contains_key(Path::new("chapters/formulas.toml")));
     assert!(files.contains_key(Path::new(".cargo/config.toml")));
@@ -311,7 +321,7 @@ fn a_chapter_handout_keeps_the_other_chapters_reference_code() {
     for r in handout::regions(&root(), &m).unwrap() {
         let text = std::fs::read_to_string(out.join(&r.file)).unwrap();
         let kept = text.contains(&r.solution);
-        let todo = text.contains(&handout::todo_statement(&root(), &m.entries[r.entry]));
+        let todo = text.contains(&handout::todo_statement(&m.entries[r.entry]));
         if m.entries[r.entry].chapter == 4 {
             assert!(todo && !kept, "exercise {}", m.entries[r.entry].exercise.id);
         } else {
@@ -320,21 +330,23 @@ fn a_chapter_handout_keeps_the_other_chapters_reference_code() {
     }
 }
 
-/// Choosing exercises: by id, by chapter range, or all; unknown ids and chapters are errors.
+/// Choosing exercises: by name or displayed id, by chapter range, or all; unknown exercises
+/// and chapters are errors.
 #[test]
-fn exercises_are_chosen_by_id_or_chapter() {
+fn exercises_are_chosen_by_name_id_or_chapter() {
     let m = manifest();
     assert_eq!(
         handout::select(&m, None, &[]).unwrap().len(),
         m.entries.len()
     );
-    let two = handout::select(&m, None, &["2.3".into(), "1.1".into()]).unwrap();
+    let two = handout::select(&m, None, &["2.3".into(), "viewing_basis".into()]).unwrap();
     assert_eq!(
         two.iter()
             .map(|&i| m.entries[i].exercise.id.as_str())
             .collect::<Vec<_>>(),
         ["1.1", "2.3"]
     );
+    assert_eq!(m.entries[two[0]].exercise.name, "viewing_basis");
     let early = handout::select(&m, Some((1, 3)), &[]).unwrap();
     assert!(early.iter().all(|&i| m.entries[i].chapter <= 3));
     assert_eq!(
@@ -378,6 +390,11 @@ fn a_handout_never_writes_over_a_directory_in_use() {
 
 // ── whitted learn, from a test run ──────────────────────────────────────────────────────────
 
+/// The binary (and test target) of chapter `n`.
+fn binary(n: u8) -> &'static str {
+    whitted_course::syllabus::chapter(n).unwrap().binary
+}
+
 /// A test run of every handout target in which exercises before `done` pass and the others
 /// stop at their todo!().
 fn run_with_done(m: &Manifest, done: usize) -> TestRun {
@@ -386,7 +403,7 @@ fn run_with_done(m: &Manifest, done: usize) -> TestRun {
         ..TestRun::default()
     };
     for (i, e) in m.entries.iter().enumerate() {
-        let name = format!("ch0{}::{}works", e.chapter, e.exercise.test_prefix());
+        let name = format!("{}::{}works", binary(e.chapter), e.exercise.test_prefix());
         if i < done {
             run.outcomes.insert(name, TestOutcome::Passed);
         } else {
@@ -394,8 +411,8 @@ fn run_with_done(m: &Manifest, done: usize) -> TestRun {
             run.failures.insert(
                 name,
                 format!(
-                    "thread 'x' panicked at src/a.rs:1:1:\nnot yet implemented: exercise {}: {}\n",
-                    e.exercise.id, e.exercise.title
+                    "thread 'x' panicked at src/a.rs:1:1:\nnot yet implemented: {}\n",
+                    todo::message(&e.exercise.name, &e.exercise.id, &e.exercise.title, "R.md")
                 ),
             );
         }
@@ -456,15 +473,21 @@ fn learn_gives_the_verdict_and_the_progress() {
     );
     assert_eq!(learn::drawable_chapter(&m, &states), Some(5));
     // the picture: the chapter that turned green, else the newest the code draws
-    let i31 = m
-        .entries
-        .iter()
-        .position(|e| e.exercise.id == "3.1")
-        .unwrap();
+    let i31 = m.find("3.1").unwrap();
     let mut before = states.clone();
     before[i31] = State::ToDo;
     assert_eq!(learn::picture_chapter(&m, &before, &states), Some(3));
     assert_eq!(learn::picture_chapter(&m, &states, &states), Some(5));
+    // the first exercise of chapter 3 turns chapters 3 to 5 green at once (their road's tests
+    // waited for it): the picture is chapter 3's, where the student was working
+    let mut waiting = states.clone();
+    for (j, e) in m.entries.iter().enumerate().filter(|(_, e)| e.chapter >= 3) {
+        if e.exercise.name == "ambient" || j == m.entries.len() - 1 {
+            waiting[j] = State::Waiting("ambient".into());
+        }
+    }
+    waiting[i31] = State::ToDo;
+    assert_eq!(learn::picture_chapter(&m, &waiting, &states), Some(3));
     let eight = learn::states(&m, &run_with_done(&m, 8));
     assert_eq!(learn::picture_chapter(&m, &eight, &eight), Some(1));
     assert_eq!(
@@ -483,29 +506,32 @@ fn learn_tells_written_but_wrong_from_not_written() {
     let mut run = run_with_done(&m, 0);
     let name = |i: usize| {
         format!(
-            "ch0{}::{}works",
-            m.entries[i].chapter,
+            "{}::{}works",
+            binary(m.entries[i].chapter),
             m.entries[i].exercise.test_prefix()
         )
     };
     run.failures
         .insert(name(0), "assertion `left == right` failed".into());
     run.outcomes.remove(&name(1));
-    let other = m.entries[0].exercise.id.clone();
+    let other = &m.entries[0].exercise;
     run.failures.insert(
         name(2),
-        format!("panicked at x:\nnot yet implemented: exercise {other}: …\n"),
+        format!(
+            "panicked at x:\nnot yet implemented: {}\n",
+            todo::message(&other.name, &other.id, "…", "R.md")
+        ),
     );
     let states = learn::states(&m, &run);
     assert_eq!(states[0], State::Failing(vec![name(0)]));
     assert_eq!(states[1], State::NoTests);
-    assert_eq!(states[2], State::Waiting(other.clone()));
+    assert_eq!(states[2], State::Waiting(other.name.clone()));
     let list = learn::list(&m, &states, Style::plain());
     for word in [
         "failing",
         "no tests",
         "to do",
-        &format!("waits for {other}"),
+        &format!("waits for {}", other.id),
     ] {
         assert!(list.contains(word), "{word}: {list}");
     }
@@ -532,16 +558,16 @@ fn learn_tells_written_but_wrong_from_not_written() {
     assert!(learn::states(&m, &run).iter().all(|s| *s == State::Unknown));
 }
 
-/// The id in a todo!()'s panic message is read back, wherever the message sits.
+/// The name in a todo!()'s panic message is read back, wherever the message sits.
 #[test]
 fn the_todo_message_names_its_exercise() {
     assert_eq!(
-        learn::todo_id(
-            "thread 't' panicked at a.rs:1:1:\nnot yet implemented: exercise 2.13: The plane — see …"
+        learn::todo_name(
+            "thread 't' panicked at a.rs:1:1:\nnot yet implemented: exercise hit_plane (2.13): The plane — see …"
         ),
-        Some("2.13")
+        Some("hit_plane")
     );
-    assert_eq!(learn::todo_id("assertion failed"), None);
+    assert_eq!(learn::todo_name("assertion failed"), None);
 }
 
 /// libtest's failure blocks are read per test.
@@ -576,7 +602,7 @@ fn an_exercises_own_tests_run_only_it_and_exercises_before_it() {
         let own: Vec<&String> = map
             .iter()
             .flat_map(|g| g.tests.iter())
-            .filter(|t| learn::test_name(t).starts_with(&prefix))
+            .filter(|t| test_name(t).starts_with(&prefix))
             .collect();
         assert!(
             !own.is_empty(),

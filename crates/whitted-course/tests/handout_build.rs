@@ -9,7 +9,7 @@
 //! - A handout of chapter 4 alone fails exactly chapter 4's tests; putting its reference bodies
 //!   back one by one turns its exercises green in order, and `whitted learn` ends at N of N.
 //! - Across all chapters, exercise by exercise: in a copy where every exercise from the k-th
-//!   on is switched off (the poison switch of `whitted formulas --prove`, one build for all
+//!   on is switched off (the poison switch of `whitted formulas prove`, one build for all
 //!   steps), `whitted learn` shows k of N done and exercise k next, for k = 0 … N.
 //! - `whitted learn watch` reruns when a file is saved by renaming, and draws the chapter.
 
@@ -21,7 +21,6 @@ use whitted_course::cargo::{TestOutcome, parse_libtest};
 use whitted_course::deps;
 use whitted_course::handout;
 use whitted_course::manifest::{self, Manifest};
-use whitted_course::prove;
 
 /// The workspace's root: this crate sits in `crates/whitted-course`.
 fn root() -> PathBuf {
@@ -60,7 +59,8 @@ fn text(o: &Output) -> String {
 /// Builds the handout's test targets in `project` and runs each: the failed and the passed
 /// tests, as `target::name`.
 fn run_tests(project: &Path, m: &Manifest) -> (BTreeSet<String>, BTreeSet<String>) {
-    let exes = prove::build_tests(project, &target_dir(), &m.handout.tests, &[]).unwrap();
+    let exes =
+        whitted_course::poison::build_tests(project, &target_dir(), &m.handout.tests, &[]).unwrap();
     let (mut failed, mut passed) = (BTreeSet::new(), BTreeSet::new());
     for (target, exe) in exes {
         let out = Command::new(&exe)
@@ -129,7 +129,7 @@ fn assert_progress(report: &str, m: &Manifest, done: usize, next: Option<usize>)
 
 /// A test's name without its target.
 fn learn_name(t: &str) -> &str {
-    whitted_course::learn::test_name(t)
+    whitted_course::cargo::test_name(t)
 }
 
 /// `whitted learn` (this build's) run on the project at `project`.
@@ -159,11 +159,7 @@ fn reference_body_back(
 ) -> (PathBuf, String, String) {
     let path = student.join(&r.file);
     let now = std::fs::read_to_string(&path).unwrap();
-    let todo = format!(
-        "{}{}\n",
-        r.indent,
-        handout::todo_statement(&root(), &m.entries[i])
-    );
+    let todo = format!("{}{}\n", r.indent, handout::todo_statement(&m.entries[i]));
     let back = now.replacen(&todo, &r.solution, 1);
     (path, now, back)
 }
@@ -287,9 +283,10 @@ fn exercise_by_exercise_learn_counts_up_to_all_of_them() {
     let m = manifest();
     let n = m.entries.len();
     // a copy of the project with every exercise behind the poison switch
-    let locations = prove::locate_all(&root(), &m).unwrap();
+    let locations = whitted_course::source::locate_all(&root(), &m).unwrap();
     let poisoned =
-        prove::PoisonedCopy::new(&root(), &m, &locations, "whitted-learn-", false).unwrap();
+        whitted_course::poison::PoisonedCopy::new(&root(), &m, &locations, "whitted-learn-", false)
+            .unwrap();
     let copy = &poisoned.project;
 
     for k in 0..=n {
@@ -307,7 +304,7 @@ fn learn_watch_reruns_on_a_save_by_renaming_and_draws_the_chapter() {
     let i = m
         .entries
         .iter()
-        .position(|e| e.exercise.id == "3.1")
+        .position(|e| e.exercise.name == "ambient")
         .unwrap();
     let dir = tempfile::tempdir().unwrap();
     let student = dir.path().join("w");
@@ -367,9 +364,15 @@ fn learn_watch_reruns_on_a_save_by_renaming_and_draws_the_chapter() {
 #[ignore = "builds a poisoned copy's chapter binaries (a minute); .ci/run runs it"]
 fn each_chapter_renders_over_a_handout_of_the_later_chapters() {
     let m = manifest();
-    let locations = prove::locate_all(&root(), &m).unwrap();
-    let poisoned =
-        prove::PoisonedCopy::new(&root(), &m, &locations, "whitted-chapters-", false).unwrap();
+    let locations = whitted_course::source::locate_all(&root(), &m).unwrap();
+    let poisoned = whitted_course::poison::PoisonedCopy::new(
+        &root(),
+        &m,
+        &locations,
+        "whitted-chapters-",
+        false,
+    )
+    .unwrap();
     let copy = &poisoned.project;
     let built = cargo()
         .args(["build", "-p", "whitted-app", "--bins"])
@@ -386,9 +389,9 @@ fn each_chapter_renders_over_a_handout_of_the_later_chapters() {
             _ => String::new(),
         }
     };
-    for n in 1..=5u8 {
-        let name = handout::chapter_dir(copy, n);
-        let exe = target_dir().join("debug").join(&name);
+    for chapter in &whitted_course::syllabus::CHAPTERS {
+        let (n, name) = (chapter.number, chapter.binary);
+        let exe = target_dir().join("debug").join(name);
         let png = poisoned.runs.join(format!("{name}.png"));
         let render = |poison: String| {
             Command::new(&exe)
@@ -399,7 +402,7 @@ fn each_chapter_renders_over_a_handout_of_the_later_chapters() {
                 .output()
                 .unwrap()
         };
-        let later = render(range(n + 1..=5));
+        let later = render(range(n + 1..=whitted_course::syllabus::LAST));
         assert!(
             later.status.success(),
             "chapter {n} over a handout of chapters {}–5: {}",
@@ -428,7 +431,7 @@ fn learn_answers_while_the_code_does_not_compile() {
     handout::write(&root(), &m, &first, &student).unwrap();
     let camera = student.join("crates/whitted/src/camera.rs");
     let text_now = std::fs::read_to_string(&camera).unwrap();
-    let todo = handout::todo_statement(&root(), &m.entries[first[1]]);
+    let todo = handout::todo_statement(&m.entries[first[1]]);
     let broken = text_now.replacen(&todo, "let h: Real = near * ; h", 1);
     assert_ne!(broken, text_now);
     std::fs::write(&camera, &broken).unwrap();

@@ -80,12 +80,26 @@ fn cargo_mutants_examines_exactly_the_exercise_functions() {
         "examine_globs should be the files of the manifest's functions:\n{}",
         paste(&globs)
     );
+    let named: Vec<String> = manifest
+        .entries
+        .iter()
+        .zip(&regexes)
+        .map(|(e, r)| format!("    # {}\n    {r:?},", e.exercise.name))
+        .collect();
     assert_eq!(
         config.examine_re,
         regexes,
         "examine_re should be, in the manifest's order:\n{}",
-        paste(&regexes)
+        named.join("\n")
     );
+    // each regex under its exercise's name, so that the list reads by exercise
+    let text = std::fs::read_to_string(root.join(".cargo/mutants.toml")).unwrap();
+    for line in &named {
+        assert!(
+            text.contains(line.as_str()),
+            "examine_re should hold, as written:\n{line}"
+        );
+    }
 }
 
 #[test]

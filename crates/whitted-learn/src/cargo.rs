@@ -11,14 +11,14 @@
 //!
 //! Course book: [The instructor's guide](../../../../docs/book/instructor-guide.html) (`docs/src/instructor-guide.md`).
 
-use std::collections::BTreeMap;
+use std::collections::{BTreeMap, BTreeSet};
 use std::ffi::OsString;
 use std::io::{BufRead, BufReader};
 use std::path::{Path, PathBuf};
 use std::process::{Command, Stdio};
 use std::time::{Duration, Instant};
 
-use crate::Error;
+use crate::ToolError;
 
 /// The cargo to run: `$CARGO` when a cargo started this program, else `cargo` on the PATH.
 #[must_use]
@@ -147,7 +147,7 @@ impl Built {
 
 impl Build<'_> {
     /// Runs the build; `Err` only when cargo cannot be started.
-    pub fn run(&self) -> Result<Built, Error> {
+    pub fn run(&self) -> Result<Built, ToolError> {
         let started = Instant::now();
         let mut command = command(self.project, self.target_dir, self.debug_info);
         if self.tests.is_empty() {
@@ -183,7 +183,7 @@ impl Build<'_> {
         });
         let mut child = command
             .spawn()
-            .map_err(|e| Error::Cargo(format!("cannot run cargo: {e}")))?;
+            .map_err(|e| ToolError::Cargo(format!("cannot run cargo: {e}")))?;
         let stdout = child.stdout.take();
         let stderr = child.stderr.take();
         let mut built = Built::default();
@@ -211,7 +211,7 @@ impl Build<'_> {
         built.stderr = kept;
         built.success = child
             .wait()
-            .map_err(|e| Error::Cargo(format!("waiting for cargo: {e}")))?
+            .map_err(|e| ToolError::Cargo(format!("waiting for cargo: {e}")))?
             .success();
         built.elapsed = started.elapsed();
         Ok(built)
@@ -252,6 +252,65 @@ fn read_message(line: &str, built: &mut Built) {
             });
         }
         _ => {}
+    }
+}
+
+/// `cargo nextest run` of test targets, each test in its own process: how the grader runs a
+/// submission's tests. Its report is the JUnit file the profile names (the caller's to read).
+pub struct Nextest<'a> {
+    /// The project (the workspace's directory).
+    pub project: &'a Path,
+    /// The package whose test targets run (`-p`).
+    pub package: &'a str,
+    /// The test targets (`--test NAME`), built before.
+    pub tests: &'a [String],
+    /// The nextest profile (in the project's `.config/nextest.toml`).
+    pub profile: &'a str,
+    /// Where cargo builds.
+    pub target_dir: &'a Path,
+}
+
+impl Nextest<'_> {
+    /// Runs the tests, without colour or backtraces, every test to the end (no fail-fast);
+    /// `Err` when nextest cannot be started or is not installed, with its last line.
+    pub fn run(&self) -> Result<(), ToolError> {
+        let mut command = command(self.project, Some(self.target_dir), false);
+        command.args([
+            "nextest",
+            "run",
+            "--locked",
+            "--profile",
+            self.profile,
+            "--no-fail-fast",
+            "--no-tests=pass",
+            "-p",
+            self.package,
+        ]);
+        for t in self.tests {
+            command.args(["--test", t]);
+        }
+        let out = command
+            .env("RUST_BACKTRACE", "0")
+            .env("NO_COLOR", "1")
+            .output()
+            .map_err(|e| ToolError::Cargo(format!("cannot run cargo nextest: {e}")))?;
+        let stderr = String::from_utf8_lossy(&out.stderr);
+        if stderr.contains("no such command: `nextest`") {
+            return Err(ToolError::Cargo(
+                "cargo-nextest is not installed: cargo install --locked cargo-nextest".into(),
+            ));
+        }
+        if out.status.success() || out.status.code() == Some(100) {
+            return Ok(()); // 100: some tests failed, which is what grading measures
+        }
+        Err(ToolError::Cargo(format!(
+            "cargo nextest failed: {}",
+            stderr
+                .lines()
+                .rev()
+                .find(|l| !l.trim().is_empty())
+                .unwrap_or("")
+        )))
     }
 }
 
@@ -314,21 +373,82 @@ pub fn failure_blocks(stdout: &str) -> BTreeMap<String, String> {
     out
 }
 
-/// One run of a test executable.
-#[derive(Clone, Debug, Default)]
+/// A test, as `target::name` (`ch02_generic_objects::sphere::ex_sphere_coefficients_…`).
+pub type TestId = String;
+
+/// What runs of test executables said: the one record of test results that the loop, the
+/// proof and the dependency measurement read. Tests are keyed `target::name`, so runs of
+/// several targets go into one ([`TestRun::merge`]).
+#[derive(Clone, Debug, Default, PartialEq, Eq)]
 pub struct TestRun {
-    /// Each test's outcome, in the order libtest reported them.
-    pub results: Vec<(String, TestOutcome)>,
-    /// The output of each failed test, by name.
-    pub failures: BTreeMap<String, String>,
-    /// Whether the process ended with success.
+    /// Each test's outcome.
+    pub outcomes: BTreeMap<TestId, TestOutcome>,
+    /// The output of each failed test (libtest's `---- NAME stdout ----` block).
+    pub failures: BTreeMap<TestId, String>,
+    /// The test targets that ran.
+    pub targets: BTreeSet<String>,
+    /// Whether every process ended with success.
     pub success: bool,
-    /// Why the run did not finish normally (time limit, crash), if it did not.
+    /// Why a run did not finish normally (time limit, crash), if one did not.
     pub unfinished: Option<String>,
+    /// When the targets did not build: the first compiler error's one-line place and message,
+    /// then the compiler's whole text of it; nothing ran.
+    pub build_error: Option<(String, String)>,
+}
+
+impl TestRun {
+    /// The run of target `target` whose libtest output is `stdout`.
+    #[must_use]
+    pub fn from_libtest(target: &str, stdout: &str) -> Self {
+        let id = |name: &str| format!("{target}::{name}");
+        Self {
+            outcomes: parse_libtest(stdout)
+                .into_iter()
+                .map(|(name, outcome)| (id(&name), outcome))
+                .collect(),
+            failures: failure_blocks(stdout)
+                .into_iter()
+                .map(|(name, text)| (id(&name), text))
+                .collect(),
+            targets: BTreeSet::from([target.to_string()]),
+            success: true,
+            unfinished: None,
+            build_error: None,
+        }
+    }
+
+    /// Adds the results of `other` (of other targets) to these.
+    pub fn merge(&mut self, other: TestRun) {
+        let first = self.targets.is_empty();
+        self.outcomes.extend(other.outcomes);
+        self.failures.extend(other.failures);
+        self.targets.extend(other.targets);
+        self.success = (first || self.success) && other.success;
+        self.unfinished = self.unfinished.take().or(other.unfinished);
+        self.build_error = self.build_error.take().or(other.build_error);
+    }
+
+    /// The tests that ended with `outcome`, in name order.
+    #[must_use]
+    pub fn with(&self, outcome: TestOutcome) -> Vec<&TestId> {
+        self.outcomes
+            .iter()
+            .filter(|(_, o)| **o == outcome)
+            .map(|(n, _)| n)
+            .collect()
+    }
+}
+
+/// A test's own name, without the target and module path before it.
+#[must_use]
+pub fn test_name(full: &str) -> &str {
+    full.rsplit("::").next().unwrap_or(full)
 }
 
 /// How to run a test executable.
 pub struct Run<'a> {
+    /// The test target it is (the key of its tests in the [`TestRun`]).
+    pub target: &'a str,
     /// The executable.
     pub exe: &'a Path,
     /// Its working directory.
@@ -348,7 +468,7 @@ pub struct Run<'a> {
 impl Run<'_> {
     /// Runs the executable and reads libtest's report; `Err` only when it cannot be started or
     /// its output cannot be written.
-    pub fn run(&self) -> Result<TestRun, Error> {
+    pub fn run(&self) -> Result<TestRun, ToolError> {
         let mut command = Command::new(self.exe);
         command
             .args(self.args)
@@ -365,7 +485,8 @@ impl Run<'_> {
         let (out_path, err_path) = match self.log {
             Some(log) => (log.with_extension("out"), log.with_extension("err")),
             None => {
-                let dir = tempfile::tempdir().map_err(|e| Error::io(std::env::temp_dir(), e))?;
+                let dir =
+                    tempfile::tempdir().map_err(|e| ToolError::io(std::env::temp_dir(), e))?;
                 let run = Run {
                     log: Some(&dir.path().join("run")),
                     ..*self
@@ -373,13 +494,13 @@ impl Run<'_> {
                 return run.run();
             }
         };
-        let stdout = std::fs::File::create(&out_path).map_err(|e| Error::io(&out_path, e))?;
-        let stderr = std::fs::File::create(&err_path).map_err(|e| Error::io(&err_path, e))?;
+        let stdout = std::fs::File::create(&out_path).map_err(|e| ToolError::io(&out_path, e))?;
+        let stderr = std::fs::File::create(&err_path).map_err(|e| ToolError::io(&err_path, e))?;
         let mut child = command
             .stdout(stdout)
             .stderr(stderr)
             .spawn()
-            .map_err(|e| Error::Cargo(format!("cannot run {}: {e}", self.exe.display())))?;
+            .map_err(|e| ToolError::Cargo(format!("cannot run {}: {e}", self.exe.display())))?;
         let started = Instant::now();
         let (status, unfinished) = loop {
             match child.try_wait() {
@@ -397,14 +518,14 @@ impl Run<'_> {
                 }
                 Ok(None) => std::thread::sleep(Duration::from_millis(5)),
                 Err(e) => {
-                    return Err(Error::Cargo(format!(
+                    return Err(ToolError::Cargo(format!(
                         "waiting for {}: {e}",
                         self.exe.display()
                     )));
                 }
             }
         };
-        let text = std::fs::read_to_string(&out_path).map_err(|e| Error::io(&out_path, e))?;
+        let text = std::fs::read_to_string(&out_path).map_err(|e| ToolError::io(&out_path, e))?;
         // a test process that ends without libtest's summary line crashed (abort, signal)
         let unfinished = unfinished.or_else(|| {
             (!text.contains("test result:")).then(|| {
@@ -416,10 +537,9 @@ impl Run<'_> {
             })
         });
         Ok(TestRun {
-            results: parse_libtest(&text),
-            failures: failure_blocks(&text),
             success: status.is_some_and(|s| s.success()),
             unfinished,
+            ..TestRun::from_libtest(self.target, &text)
         })
     }
 }

@@ -8,7 +8,7 @@ use std::process::ExitCode;
 
 use clap::Subcommand;
 
-use crate::Error;
+use crate::ToolError;
 use crate::manifest::{self, Manifest};
 
 /// The arguments of `learn`.
@@ -27,9 +27,11 @@ pub struct LearnArgs {
 pub enum LearnCommand {
     /// Every exercise, by chapter, with its state (done, to do, failing) and points.
     List,
-    /// The next hint of an exercise (the next unfinished one without ID); ask again for more.
+    /// The next hint of an exercise (the next unfinished one without EXERCISE); ask again for
+    /// more.
     Hint {
-        /// The exercise, e.g. 2.3.
+        /// The exercise: its id as `list` shows it (2.6) or its name (sphere_coefficients).
+        #[arg(value_name = "EXERCISE")]
         id: Option<String>,
     },
     /// Checks again after every save: the verdict, the progress, and the picture of the
@@ -43,7 +45,7 @@ pub enum LearnCommand {
 
 /// Runs `learn` as the command line asks: 0 when all went well (whatever the exercises' state),
 /// 1 when the code does not compile, an error otherwise.
-pub fn learn(args: &LearnArgs) -> Result<ExitCode, Error> {
+pub fn learn(args: &LearnArgs) -> Result<ExitCode, ToolError> {
     use crate::learn::{self, COMMAND, State, Style};
     let root = match &args.root {
         Some(root) => root.clone(),
@@ -71,15 +73,11 @@ pub fn learn(args: &LearnArgs) -> Result<ExitCode, Error> {
         }
         Some(LearnCommand::Hint { id }) => {
             let index = match id {
-                Some(id) => manifest
-                    .entries
-                    .iter()
-                    .position(|e| e.exercise.id == id.trim())
-                    .ok_or_else(|| {
-                        Error::Usage(format!(
-                            "there is no exercise {id}: `{COMMAND} list` shows the ids"
-                        ))
-                    })?,
+                Some(id) => manifest.find(id).ok_or_else(|| {
+                    ToolError::Usage(format!(
+                        "there is no exercise {id}: `{COMMAND} list` shows the ids"
+                    ))
+                })?,
                 // the first not done at the last check: no build, so a hint comes even while
                 // the code does not compile
                 None => match learn::saved_states(&root, &manifest)
@@ -104,10 +102,10 @@ pub fn learn(args: &LearnArgs) -> Result<ExitCode, Error> {
 }
 
 /// The project around the current directory: the nearest whitted workspace at or above it.
-pub fn find_root() -> Result<PathBuf, Error> {
-    let here = std::env::current_dir().map_err(|e| Error::io(".", e))?;
+pub fn find_root() -> Result<PathBuf, ToolError> {
+    let here = std::env::current_dir().map_err(|e| ToolError::io(".", e))?;
     crate::layout::find_root(&here).ok_or_else(|| {
-        Error::Usage(format!(
+        ToolError::Usage(format!(
             "no Cargo.toml in {} or above: run whitted in the project, or give --root DIR",
             here.display()
         ))
@@ -116,13 +114,13 @@ pub fn find_root() -> Result<PathBuf, Error> {
 
 /// Reads the manifest of the project at `root`, named in messages relative to the current
 /// directory when the project is in it.
-pub fn read_manifest(root: &Path) -> Result<Manifest, Error> {
+pub fn read_manifest(root: &Path) -> Result<Manifest, ToolError> {
     let path = root.join(manifest::DEFAULT_PATH);
     let here = std::env::current_dir().ok();
     let name = match path.strip_prefix(here.as_deref().unwrap_or(Path::new("/nowhere"))) {
         Ok(relative) => relative.display().to_string(),
         Err(_) => path.display().to_string(),
     };
-    let text = std::fs::read_to_string(&path).map_err(|e| Error::io(&path, e))?;
+    let text = std::fs::read_to_string(&path).map_err(|e| ToolError::io(&path, e))?;
     manifest::parse(&text, &name)
 }

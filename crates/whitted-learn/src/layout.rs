@@ -17,7 +17,8 @@
 
 use std::path::{Path, PathBuf};
 
-/// The marker line that opens an exercise's solution region: `// BEGIN SOLUTION 2.3`.
+/// The marker line that opens an exercise's solution region, followed by the exercise's name:
+/// `// BEGIN SOLUTION sphere_coefficients`.
 pub const BEGIN: &str = "// BEGIN SOLUTION";
 /// The marker line that closes it.
 pub const END: &str = "// END SOLUTION";
@@ -57,10 +58,24 @@ pub fn core_tests() -> PathBuf {
     Path::new(CORE).join("tests")
 }
 
-/// The file of the test target `name` of the renderer (`crates/whitted/tests/NAME.rs`).
+/// The file of the test target `name` of the renderer (`crates/whitted/tests/NAME.rs`), where a
+/// new target is written.
 #[must_use]
 pub fn core_test_file(name: &str) -> PathBuf {
     core_tests().join(format!("{name}.rs"))
+}
+
+/// The root file of the renderer's test target `name` in the project at `root`, as cargo finds
+/// it: `crates/whitted/tests/NAME.rs`, or `crates/whitted/tests/NAME/main.rs` for a target of
+/// several files (relative to `root`).
+#[must_use]
+pub fn core_test_target(root: &Path, name: &str) -> PathBuf {
+    let dir = core_tests().join(name).join("main.rs");
+    if root.join(&dir).is_file() {
+        dir
+    } else {
+        core_test_file(name)
+    }
 }
 
 /// The nearest directory at or above `start` that is a whitted project (a `Cargo.toml` beside
@@ -77,23 +92,4 @@ pub fn find_root(start: &Path) -> Option<PathBuf> {
         }
     }
     any
-}
-
-/// The directory of chapter `chapter` under `chapters/` (`ch02_generic_objects`), or
-/// `chNN` when there is none.
-#[must_use]
-pub fn chapter_dir(root: &Path, chapter: u8) -> String {
-    let prefix = format!("ch{chapter:02}_");
-    std::fs::read_dir(root.join("chapters"))
-        .ok()
-        .and_then(|dir| {
-            let mut names: Vec<String> = dir
-                .filter_map(|e| e.ok())
-                .map(|e| e.file_name().to_string_lossy().into_owned())
-                .filter(|n| n.starts_with(&prefix))
-                .collect();
-            names.sort();
-            names.into_iter().next()
-        })
-        .unwrap_or_else(|| format!("ch{chapter:02}"))
 }

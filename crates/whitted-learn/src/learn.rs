@@ -2,12 +2,13 @@
 //! exercise first, then the progress of every chapter, hints, the chapter's picture, and all of
 //! it again after every save.
 //!
-//! An exercise is **done** when its own tests (those named `ex2_3_…` for exercise 2.3, in the
-//! test targets of the manifest's `[handout] tests`) all pass. A check goes in two steps, so
+//! An exercise is **done** when its own tests (those named `ex_sphere_coefficients_…` for the
+//! exercise `sphere_coefficients`, in the test targets of the manifest's `[handout] tests`)
+//! all pass. A check goes in two steps, so
 //! that the answer a student waits for comes first:
 //!
 //! 1. **The verdict.** The exercise to look at is the first one that was not done at the last
-//!    check (`.whitted/progress.json`), or exercise 1.1. Only the test target that holds its
+//!    check (`.whitted/progress.json`, by exercise name), or the first. Only the test target that holds its
 //!    tests (by the measured map, `chapters/exercise-tests.toml`) is built and run; if all of
 //!    that target's exercises pass, the next target is, until one is not done. That verdict is
 //!    printed: the exercise, the notes' formula, every failing test of it with its message,
@@ -34,10 +35,10 @@ use std::path::{Path, PathBuf};
 use std::sync::atomic::{AtomicBool, Ordering};
 use std::time::{Duration, Instant};
 
-use crate::cargo::{self, Build, Built, Stderr, TestOutcome};
+use crate::cargo::{self, Build, Built, Stderr, TestOutcome, TestRun, test_name};
 use crate::manifest::{Entry, Manifest};
 use crate::map::{self, Group};
-use crate::{CHAPTERS, Error, layout};
+use crate::{ToolError, layout};
 
 /// Where `whitted learn` keeps its state and the images it renders, in the project.
 pub const STATE_DIR: &str = ".whitted";
@@ -58,35 +59,6 @@ pub const TEST_TIME_LIMIT: Duration = Duration::from_secs(60);
 /// The width of the picture rendered after a check, in pixels (the height follows the scene).
 pub const PICTURE_WIDTH: u32 = 320;
 
-/// What the test runs of one check said.
-#[derive(Clone, Debug, Default, PartialEq, Eq)]
-pub struct TestRun {
-    /// Every test's outcome, by `target::name`.
-    pub outcomes: BTreeMap<String, TestOutcome>,
-    /// The output of each failed test (libtest's `---- NAME stdout ----` block), by
-    /// `target::name`.
-    pub failures: BTreeMap<String, String>,
-    /// The test targets that ran.
-    pub targets: BTreeSet<String>,
-    /// The first compiler error, when the project did not build: its one-line place and
-    /// message, then the compiler's whole text.
-    pub build_error: Option<(String, String)>,
-}
-
-impl TestRun {
-    /// Adds a target's run.
-    fn add(&mut self, target: &str, run: &cargo::TestRun) {
-        self.targets.insert(target.to_string());
-        for (name, outcome) in &run.results {
-            self.outcomes.insert(format!("{target}::{name}"), *outcome);
-        }
-        for (name, text) in &run.failures {
-            self.failures
-                .insert(format!("{target}::{name}"), text.clone());
-        }
-    }
-}
-
 /// Where an exercise stands.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub enum State {
@@ -96,7 +68,7 @@ pub enum State {
     ToDo,
     /// Written, but these of its own tests fail.
     Failing(Vec<String>),
-    /// Its tests stop at the `todo!()` of this other exercise, which comes first.
+    /// Its tests stop at the `todo!()` of this other exercise (its name), which comes first.
     Waiting(String),
     /// It has no test in the handout's targets (a mistake of the course, not the student's).
     NoTests,
@@ -112,7 +84,7 @@ impl State {
             State::Done => "done".into(),
             State::ToDo => "to do".into(),
             State::Failing(_) => "failing".into(),
-            State::Waiting(id) => format!("waits for {id}"),
+            State::Waiting(name) => format!("waits for {name}"),
             State::NoTests => "no tests".into(),
             State::Unknown => "?".into(),
         }
@@ -128,25 +100,17 @@ impl State {
             "failing" => State::Failing(Vec::new()),
             "no tests" => State::NoTests,
             w => match w.strip_prefix("waits for ") {
-                Some(id) => State::Waiting(id.to_string()),
+                Some(name) => State::Waiting(name.to_string()),
                 None => State::Unknown,
             },
         }
     }
 }
 
-/// A test's own name, without the target and module path before it.
+/// The name of the exercise whose `todo!()` a test's output `text` stopped at.
 #[must_use]
-pub fn test_name(full: &str) -> &str {
-    full.rsplit("::").next().unwrap_or(full)
-}
-
-/// The exercise id in the message of a handout's `todo!()` (`not yet implemented: exercise
-/// 2.3: …` gives `2.3`).
-#[must_use]
-pub fn todo_id(text: &str) -> Option<&str> {
-    let rest = &text[text.find("not yet implemented: exercise ")? + 30..];
-    rest.split(':').next().map(str::trim)
+pub fn todo_name(text: &str) -> Option<&str> {
+    whitted_syllabus::todo::find(text).map(|t| t.name)
 }
 
 /// The state of every exercise of `manifest` (in its order) after the test run `run`: those
@@ -183,9 +147,9 @@ pub fn states(manifest: &Manifest, run: &TestRun) -> Vec<State> {
             }
             let stopped_at: Vec<&str> = failed
                 .iter()
-                .filter_map(|n| run.failures.get(n).and_then(|t| todo_id(t)))
+                .filter_map(|n| run.failures.get(n).and_then(|t| todo_name(t)))
                 .collect();
-            if stopped_at.contains(&e.exercise.id.as_str()) {
+            if stopped_at.contains(&e.exercise.name.as_str()) {
                 State::ToDo
             } else if stopped_at.len() == failed.len() {
                 // every failing test stopped at another exercise's todo!(): that one comes first
@@ -209,22 +173,22 @@ pub fn targets_of(manifest: &Manifest, map: &[Group]) -> Vec<Option<String>> {
             map.iter()
                 .flat_map(|g| &g.tests)
                 .filter_map(|t| t.split_once("::"))
-                .find(|(_, name)| name.starts_with(&prefix))
+                .find(|(_, name)| test_name(name).starts_with(&prefix))
                 .map(|(target, _)| target.to_string())
                 .or_else(|| {
-                    let chapter = format!("ch{:02}_", e.chapter);
+                    let binary = whitted_syllabus::chapter(e.chapter)?.binary;
                     manifest
                         .handout
                         .tests
                         .iter()
-                        .find(|t| t.starts_with(&chapter))
+                        .find(|t| *t == binary)
                         .cloned()
                 })
         })
         .collect()
 }
 
-/// The exercises' states at the last check, by exercise id (`.whitted/progress.json`).
+/// The exercises' states at the last check, kept by exercise name (`.whitted/progress.json`).
 #[must_use]
 pub fn saved_states(root: &Path, manifest: &Manifest) -> Vec<State> {
     let saved: BTreeMap<String, String> =
@@ -237,25 +201,25 @@ pub fn saved_states(root: &Path, manifest: &Manifest) -> Vec<State> {
         .iter()
         .map(|e| {
             saved
-                .get(&e.exercise.id)
+                .get(&e.exercise.name)
                 .map_or(State::Unknown, |w| State::from_word(w))
         })
         .collect()
 }
 
 /// Keeps the states of a complete check for the next one.
-pub fn save_states(root: &Path, manifest: &Manifest, states: &[State]) -> Result<(), Error> {
+pub fn save_states(root: &Path, manifest: &Manifest, states: &[State]) -> Result<(), ToolError> {
     let saved: BTreeMap<&str, String> = manifest
         .entries
         .iter()
         .zip(states)
         .filter(|(_, s)| **s != State::Unknown)
-        .map(|(e, s)| (e.exercise.id.as_str(), s.word()))
+        .map(|(e, s)| (e.exercise.name.as_str(), s.word()))
         .collect();
     let dir = root.join(STATE_DIR);
-    std::fs::create_dir_all(&dir).map_err(|e| Error::io(&dir, e))?;
+    std::fs::create_dir_all(&dir).map_err(|e| ToolError::io(&dir, e))?;
     let text = serde_json::to_string_pretty(&saved)
-        .map_err(|e| Error::Cargo(format!("cannot write the progress: {e}")))?;
+        .map_err(|e| ToolError::Cargo(format!("cannot write the progress: {e}")))?;
     crate::files::write_file(&dir.join("progress.json"), text.as_bytes())
 }
 
@@ -332,7 +296,8 @@ pub fn progress(manifest: &Manifest, states: &[State], style: Style) -> String {
         "{} — {done} of {total} exercises done\n",
         style.strong("progress")
     );
-    for (number, title) in (1u8..).zip(CHAPTERS) {
+    for chapter in &whitted_syllabus::CHAPTERS {
+        let (number, title) = (chapter.number, chapter.title);
         let of: Vec<usize> = (0..total)
             .filter(|&i| manifest.entries[i].chapter == number)
             .collect();
@@ -383,7 +348,10 @@ pub fn verdict(
                 .count();
             format!("{} of its {own} tests fail", f.len())
         }
-        State::Waiting(id) => format!("its tests wait for exercise {id}"),
+        State::Waiting(name) => format!(
+            "its tests wait for exercise {} ({name})",
+            manifest.display(name)
+        ),
         State::NoTests => "it has no test in the handout: tell your instructor".into(),
         State::Done => "done".into(),
         State::Unknown => "not checked".into(),
@@ -421,7 +389,7 @@ pub fn verdict(
     }
     out += &format!(
         "  write it in {}; `{COMMAND} hint` gives a hint\n",
-        match root.and_then(|r| place(r, &x.id)) {
+        match root.and_then(|r| place(r, &x.name)) {
             Some((file, line)) => format!("{}:{line} ({})", file.display(), e.function),
             None => e.function.clone(),
         }
@@ -429,11 +397,11 @@ pub fn verdict(
     out
 }
 
-/// Where the student writes exercise `id`: the file (relative to `root`) and line of its
-/// `// BEGIN SOLUTION id` marker, searched in the renderer's sources.
+/// Where the student writes the exercise named `name`: the file (relative to `root`) and line
+/// of its `// BEGIN SOLUTION name` marker, searched in the renderer's sources.
 #[must_use]
-pub fn place(root: &Path, id: &str) -> Option<(PathBuf, usize)> {
-    let marker = format!("{} {id}", layout::BEGIN);
+pub fn place(root: &Path, name: &str) -> Option<(PathBuf, usize)> {
+    let marker = format!("{} {name}", layout::BEGIN);
     let mut stack = vec![root.join(layout::core_src())];
     while let Some(dir) = stack.pop() {
         let mut entries: Vec<PathBuf> = std::fs::read_dir(&dir)
@@ -464,7 +432,7 @@ fn message_lines(text: &str) -> Vec<&str> {
         .collect()
 }
 
-/// The hint levels shown so far, by exercise id (`.whitted/hints.json`).
+/// The hint levels shown so far, by exercise name (`.whitted/hints.json`).
 pub fn hints_shown(root: &Path) -> BTreeMap<String, usize> {
     std::fs::read_to_string(root.join(STATE_DIR).join("hints.json"))
         .ok()
@@ -474,13 +442,13 @@ pub fn hints_shown(root: &Path) -> BTreeMap<String, usize> {
 
 /// Shows the next hint of exercise `index` and remembers it; once all are shown, shows them
 /// all again.
-pub fn next_hint(root: &Path, manifest: &Manifest, index: usize) -> Result<String, Error> {
+pub fn next_hint(root: &Path, manifest: &Manifest, index: usize) -> Result<String, ToolError> {
     let e: &Entry = &manifest.entries[index];
     let hints = &e.exercise.hints;
     let mut shown = hints_shown(root);
-    let level = shown.get(&e.exercise.id).copied().unwrap_or(0);
+    let level = shown.get(&e.exercise.name).copied().unwrap_or(0);
     let now = (level + 1).min(hints.len());
-    shown.insert(e.exercise.id.clone(), now);
+    shown.insert(e.exercise.name.clone(), now);
     let mut out = format!(
         "exercise {} — {} ({}):\n",
         e.exercise.id, e.exercise.title, e.function
@@ -492,9 +460,9 @@ pub fn next_hint(root: &Path, manifest: &Manifest, index: usize) -> Result<Strin
         out += "  (ask again for the next one)\n";
     }
     let dir = root.join(STATE_DIR);
-    std::fs::create_dir_all(&dir).map_err(|e| Error::io(&dir, e))?;
+    std::fs::create_dir_all(&dir).map_err(|e| ToolError::io(&dir, e))?;
     let text = serde_json::to_string_pretty(&shown)
-        .map_err(|e| Error::Cargo(format!("cannot write the hints' state: {e}")))?;
+        .map_err(|e| ToolError::Cargo(format!("cannot write the hints' state: {e}")))?;
     crate::files::write_file(&dir.join("hints.json"), text.as_bytes())?;
     Ok(out)
 }
@@ -506,22 +474,25 @@ pub fn list(manifest: &Manifest, states: &[State], style: Style) -> String {
     let id_w = width(&|e| e.exercise.id.chars().count());
     let title_w = width(&|e| e.exercise.title.chars().count());
     let fn_w = width(&|e| e.function.chars().count());
-    let state_w = states
+    let words: Vec<String> = states
         .iter()
-        .map(|s| s.word().chars().count())
-        .max()
-        .unwrap_or(0);
+        .map(|s| match s {
+            State::Waiting(name) => format!("waits for {}", manifest.display(name)),
+            s => s.word(),
+        })
+        .collect();
+    let state_w = words.iter().map(|w| w.chars().count()).max().unwrap_or(0);
     let mut out = String::new();
     let mut chapter = 0;
-    for (e, s) in manifest.entries.iter().zip(states) {
+    for ((e, s), word) in manifest.entries.iter().zip(states).zip(&words) {
         if e.chapter != chapter {
             chapter = e.chapter;
             out += &format!(
                 "chapter {chapter} — {}\n",
-                CHAPTERS[usize::from(chapter) - 1]
+                whitted_syllabus::chapter(chapter).map_or("", |c| c.title)
             );
         }
-        let word = format!("{:<state_w$}", s.word());
+        let word = format!("{word:<state_w$}");
         let word = match s {
             State::Done => style.good(&word),
             State::Failing(_) | State::NoTests => style.bad(&word),
@@ -564,7 +535,7 @@ pub fn newly_done(before: &[State], now: &[State]) -> BTreeSet<usize> {
 #[must_use]
 pub fn drawable_chapter(manifest: &Manifest, states: &[State]) -> Option<u8> {
     let mut out = None;
-    for chapter in 1..=CHAPTERS.len() as u8 {
+    for chapter in whitted_syllabus::CHAPTERS.iter().map(|c| c.number) {
         let mut own = manifest
             .entries
             .iter()
@@ -580,8 +551,9 @@ pub fn drawable_chapter(manifest: &Manifest, states: &[State]) -> Option<u8> {
 }
 
 /// The chapter whose picture a check draws: of the chapters the code can draw now (see
-/// [`drawable_chapter`]), the newest one that was not all done at the last check (the chapter
-/// that turned green), else the newest of them.
+/// [`drawable_chapter`]), the first one that was not all done at the last check (the chapter
+/// that turned green; when one exercise turns several green, as the first of chapter 3 may
+/// turn chapters 3 to 5, the one the student was working in), else the newest of them.
 #[must_use]
 pub fn picture_chapter(manifest: &Manifest, before: &[State], now: &[State]) -> Option<u8> {
     let drawable = drawable_chapter(manifest, now)?;
@@ -594,13 +566,12 @@ pub fn picture_chapter(manifest: &Manifest, before: &[State], now: &[State]) -> 
             .all(|(_, s)| *s == State::Done)
     };
     (1..=drawable)
-        .rev()
         .find(|&c| !green(before, c))
         .or(Some(drawable))
 }
 
 /// A build of the loop: the packages of [`PACKAGES`], cargo's lines shown once it is slow.
-fn build(root: &Path, tests: &[String], bins: &[String], say: &Say) -> Result<Built, Error> {
+fn build(root: &Path, tests: &[String], bins: &[String], say: &Say) -> Result<Built, ToolError> {
     let started = Instant::now();
     let held: std::sync::Mutex<Vec<String>> = std::sync::Mutex::new(Vec::new());
     let showing = AtomicBool::new(false);
@@ -691,7 +662,7 @@ fn check_targets(
     targets: &[String],
     run: &mut TestRun,
     say: &Say,
-) -> Result<bool, Error> {
+) -> Result<bool, ToolError> {
     let built = build(root, targets, &[], say)?;
     if !built.success {
         let rendered = built
@@ -703,12 +674,13 @@ fn check_targets(
     }
     for target in targets {
         let exe = built.executables.get(target).ok_or_else(|| {
-            Error::Cargo(format!(
+            ToolError::Cargo(format!(
                 "cargo built no test executable for {}",
-                layout::core_test_file(target).display()
+                layout::core_test_target(root, target).display()
             ))
         })?;
         let result = cargo::Run {
+            target,
             exe,
             dir: &root.join(layout::CORE),
             args: &[],
@@ -719,12 +691,12 @@ fn check_targets(
         }
         .run()?;
         if let Some(why) = &result.unfinished {
-            return Err(Error::Cargo(format!(
+            return Err(ToolError::Cargo(format!(
                 "the tests of {} did not finish: {why}",
-                layout::core_test_file(target).display()
+                layout::core_test_target(root, target).display()
             )));
         }
-        run.add(target, &result);
+        run.merge(result);
     }
     Ok(true)
 }
@@ -740,7 +712,7 @@ pub fn check(
     style: Style,
     report: bool,
     draw: bool,
-) -> Result<Checked, Error> {
+) -> Result<Checked, ToolError> {
     let say = Say { report };
     let map = map::load_map(root, manifest).unwrap_or_default();
     let target_of = targets_of(manifest, &map);
@@ -763,7 +735,7 @@ pub fn check(
                 say.status(&format!(
                     "checking exercise {} ({}) …",
                     manifest.entries[next].exercise.id,
-                    layout::core_test_file(&t).display()
+                    layout::core_test_target(root, &t).display()
                 ));
                 if !check_targets(root, &[t], &mut run, &say)? {
                     say.report(&build_failure(&run, style));
@@ -835,7 +807,7 @@ pub fn check(
         // no picture yet: build chapter 1's binary now, while the student reads, so that the
         // first picture comes seconds after chapter 1 is written, not a build later
         say.status("building the chapter binaries for the first picture (once) …");
-        let first = layout::chapter_dir(root, 1);
+        let first = whitted_syllabus::CHAPTERS[0].binary.to_string();
         build(root, &[], std::slice::from_ref(&first), &say)?;
     }
     Ok(Checked { run, states: all })
@@ -855,12 +827,14 @@ fn build_failure(run: &TestRun, style: Style) -> String {
 
 /// Renders chapter `chapter`'s scene with the project's own chapter binary (dev profile) into
 /// `.whitted/chNN_name.png`, [`PICTURE_WIDTH`] pixels wide; returns the image's path.
-pub fn render_chapter(root: &Path, chapter: u8) -> Result<PathBuf, Error> {
-    let name = layout::chapter_dir(root, chapter);
+pub fn render_chapter(root: &Path, chapter: u8) -> Result<PathBuf, ToolError> {
+    let about = whitted_syllabus::chapter(chapter)
+        .ok_or_else(|| ToolError::Usage(format!("there is no chapter {chapter}")))?;
+    let name = about.binary.to_string();
     let say = Say { report: false };
     let built = build(root, &[], std::slice::from_ref(&name), &say)?;
     if !built.success {
-        return Err(Error::Cargo(format!(
+        return Err(ToolError::Cargo(format!(
             "chapter {chapter}'s binary does not build: {}",
             built.first_error()
         )));
@@ -868,11 +842,11 @@ pub fn render_chapter(root: &Path, chapter: u8) -> Result<PathBuf, Error> {
     let exe = built
         .executables
         .get(&name)
-        .ok_or_else(|| Error::Cargo(format!("cargo built no binary {name}")))?;
+        .ok_or_else(|| ToolError::Cargo(format!("cargo built no binary {name}")))?;
     let dir = root.join(STATE_DIR);
-    std::fs::create_dir_all(&dir).map_err(|e| Error::io(&dir, e))?;
+    std::fs::create_dir_all(&dir).map_err(|e| ToolError::io(&dir, e))?;
     let png = dir.join(format!("{name}.png"));
-    let scene = root.join("scenes").join(format!("{name}.toml"));
+    let scene = root.join(about.scene());
     let mut command = std::process::Command::new(exe);
     if scene.is_file() {
         command.arg(&scene);
@@ -883,7 +857,7 @@ pub fn render_chapter(root: &Path, chapter: u8) -> Result<PathBuf, Error> {
         .current_dir(root)
         .stdin(std::process::Stdio::null())
         .output()
-        .map_err(|e| Error::Cargo(format!("cannot run {}: {e}", exe.display())))?;
+        .map_err(|e| ToolError::Cargo(format!("cannot run {}: {e}", exe.display())))?;
     if !out.status.success() {
         let err = String::from_utf8_lossy(&out.stderr);
         let line = err
@@ -891,7 +865,9 @@ pub fn render_chapter(root: &Path, chapter: u8) -> Result<PathBuf, Error> {
             .rev()
             .find(|l| l.starts_with("error"))
             .unwrap_or("the render failed");
-        return Err(Error::Cargo(format!("chapter {chapter}'s image: {line}")));
+        return Err(ToolError::Cargo(format!(
+            "chapter {chapter}'s image: {line}"
+        )));
     }
     Ok(png)
 }
@@ -977,7 +953,7 @@ pub fn snapshot(root: &Path) -> BTreeMap<PathBuf, (std::time::SystemTime, u64)> 
 }
 
 /// `learn` itself: one check with its picture; `false` when the code does not compile.
-pub fn once(root: &Path, manifest: &Manifest, style: Style) -> Result<bool, Error> {
+pub fn once(root: &Path, manifest: &Manifest, style: Style) -> Result<bool, ToolError> {
     let known = saved_states(root, manifest);
     let checked = check(root, manifest, &known, style, true, true)?;
     Ok(checked.run.build_error.is_none())
@@ -991,11 +967,11 @@ pub fn watch(
     manifest: &Manifest,
     style: Style,
     cycles: Option<usize>,
-) -> Result<(), Error> {
+) -> Result<(), ToolError> {
     use notify_debouncer_mini::notify::RecursiveMode;
     let (tx, rx) = std::sync::mpsc::channel();
     let fail = |e: notify_debouncer_mini::notify::Error| {
-        Error::Cargo(format!("cannot watch the project's files: {e}"))
+        ToolError::Cargo(format!("cannot watch the project's files: {e}"))
     };
     let mut debouncer =
         notify_debouncer_mini::new_debouncer(std::time::Duration::from_millis(300), tx)

@@ -23,38 +23,16 @@ pub mod learn;
 pub mod manifest;
 pub mod map;
 
+/// The course's outline: the chapters (and the notes' sections, the todo!() message), read from
+/// the one table every crate of whitted reads.
+pub use whitted_syllabus as syllabus;
+
 use std::path::PathBuf;
 
-/// The chapters, as the binaries name them (index 0 is chapter 1).
-pub const CHAPTERS: [&str; 5] = [
-    "camera rays",
-    "generic objects",
-    "shading",
-    "shadows",
-    "reflection and refraction",
-];
-
-/// The section titles of the course notes, the only values a manifest's `section` may take.
-pub const SECTIONS: [&str; 14] = [
-    "Principles of Ray Tracing",
-    "Ray Tracing Process",
-    "Generic Objects",
-    "Generic Sphere",
-    "Generic Plane",
-    "Generic Cylinder",
-    "Generic Cone",
-    "Convex Polyhedra",
-    "Computational Aspects",
-    "Shading",
-    "Surface Normals at Intersections",
-    "Shadowing",
-    "Reflection and Refraction",
-    "Lighting Equations",
-];
-
-/// What can go wrong in the course tools, each worded for the person running them.
+/// What can go wrong in the course tools (the loop, the proof, handouts, grading, the book),
+/// each worded for the person running them. (The renderer's own errors are `whitted::Error`.)
 #[derive(Debug, thiserror::Error)]
-pub enum Error {
+pub enum ToolError {
     /// A mistake in the manifest; `line` and `col` count from 1.
     #[error("{file}:{line}:{col}: {message}")]
     Manifest {
@@ -99,9 +77,23 @@ pub enum Error {
         /// The reason.
         source: std::io::Error,
     },
-    /// The proof could not be carried out (the build failed, the baseline is red …).
+    /// An exercise's solution markers are missing, misplaced or name another exercise.
     #[error("{0}")]
-    Proof(String),
+    Markers(String),
+    /// The tests fail before anything is taken out or poisoned: nothing can be measured on
+    /// them.
+    #[error("{0}")]
+    Baseline(String),
+    /// A copy of the project (poisoned, or graded) does not build.
+    #[error("{0}")]
+    Build(String),
+    /// A file of the project is not as the tools need it (the workspace's members, cargo's
+    /// aliases, a book page's include).
+    #[error("{0}")]
+    Project(String),
+    /// A figure of the course book could not be rendered.
+    #[error("{0}")]
+    Figure(String),
     /// Cargo or a test executable could not be run, or did not do its work.
     #[error("{0}")]
     Cargo(String),
@@ -110,10 +102,10 @@ pub enum Error {
     Usage(String),
 }
 
-impl Error {
+impl ToolError {
     /// An I/O error on `path`.
     pub fn io(path: impl Into<PathBuf>, source: std::io::Error) -> Self {
-        Error::Io {
+        ToolError::Io {
             path: path.into(),
             source,
         }

@@ -4,7 +4,7 @@
 //! ```text
 //! cargo learn              the verdict on the next exercise, the progress, the picture
 //! cargo learn watch        the same after every save
-//! cargo learn hint [ID]    the next hint (of the next exercise, or of ID)
+//! cargo learn hint [EXERCISE]  the next hint (of the next exercise, or of EXERCISE: 2.3 or its name)
 //! cargo learn list         every exercise with its state and points
 //! ```
 //!

@@ -1,10 +1,16 @@
 //! Reading and checking the manifest `chapters/formulas.toml`, the one list of the functions
 //! that compute the notes' formulas.
 //!
-//! Every key is checked: unknown keys, a chapter outside 1–5, a section the notes do not
-//! have, a malformed function path or a function listed twice are errors that name the file,
-//! line and column of the offending value, e.g.
+//! Every key is checked: unknown keys, a chapter the syllabus does not have, a section the
+//! notes do not have, a malformed function path, a function listed twice or a name that is not
+//! unique are errors that name the file, line and column of the offending value, e.g.
 //! `chapters/formulas.toml:12:12: chapter: expected 1 to 5, found 7`.
+//!
+//! An exercise is known by its **name** (`sphere_coefficients`): its solution region's marker
+//! (`// BEGIN SOLUTION sphere_coefficients`), its tests' prefix (`ex_sphere_coefficients_`),
+//! its entries in the measured map and the state `cargo learn` keeps all say the name, so
+//! inserting an exercise changes nothing of the others. What a student reads is its displayed
+//! id, `chapter.k` by the manifest's order (`2.6`), which is derived, never written.
 //!
 //! Course book: [The instructor's guide](../../../../docs/book/instructor-guide.html) (`docs/src/instructor-guide.md`).
 
@@ -15,8 +21,9 @@ use std::path::Path;
 use serde::Deserialize;
 use toml::Spanned;
 
-use super::{Error, SECTIONS};
+use super::ToolError;
 use crate::files::line_col;
+use whitted_syllabus::SECTIONS;
 
 /// Where the manifest lives, relative to the project's root.
 pub const DEFAULT_PATH: &str = "chapters/formulas.toml";
@@ -76,14 +83,16 @@ pub struct Entry {
     pub formula: String,
     /// The line of the entry's `function` key in the manifest (from 1).
     pub line: usize,
-    /// The exercise the function is: its id, title, task, hints and points.
+    /// The exercise the function is: its name, displayed id, title, task, hints and points.
     pub exercise: Exercise,
 }
 
 /// The exercise a formula function is, for the handout, `whitted learn` and grading.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Exercise {
-    /// `chapter.k`: the k-th function of its chapter in the manifest (`2.3`).
+    /// Its name, which never changes (`sphere_coefficients`): see the module's documentation.
+    pub name: String,
+    /// Its displayed id, `chapter.k`: the k-th exercise of its chapter in the manifest (`2.6`).
     pub id: String,
     /// A few words naming it ("The sphere's discriminant").
     pub title: String,
@@ -95,11 +104,51 @@ pub struct Exercise {
     pub points: u32,
 }
 
+/// What the names of an exercise's own tests begin with, before its name.
+pub const TEST_PREFIX: &str = "ex_";
+
 impl Exercise {
-    /// The prefix of the names of the exercise's own tests: `ex2_3_` for exercise 2.3.
+    /// The prefix of the names of the exercise's own tests: `ex_sphere_coefficients_` for the
+    /// exercise `sphere_coefficients`. No name followed by `_` begins another name (the
+    /// manifest is refused otherwise), so a test belongs to one exercise at most.
     #[must_use]
     pub fn test_prefix(&self) -> String {
-        format!("ex{}_", self.id.replace('.', "_"))
+        format!("{TEST_PREFIX}{}_", self.name)
+    }
+}
+
+impl Manifest {
+    /// The entry (its index) of the exercise named `key`, or whose displayed id is `key`: a
+    /// student may type either.
+    #[must_use]
+    pub fn find(&self, key: &str) -> Option<usize> {
+        let key = key.trim();
+        self.entries
+            .iter()
+            .position(|e| e.exercise.name == key || e.exercise.id == key)
+    }
+
+    /// The entry of the exercise named `name`.
+    #[must_use]
+    pub fn by_name(&self, name: &str) -> Option<usize> {
+        self.entries.iter().position(|e| e.exercise.name == name)
+    }
+
+    /// The displayed id of the exercise named `name`, or the name itself when no exercise has
+    /// it (a message from an older handout).
+    #[must_use]
+    pub fn display<'a>(&'a self, name: &'a str) -> &'a str {
+        self.by_name(name)
+            .map_or(name, |i| self.entries[i].exercise.id.as_str())
+    }
+
+    /// The entry whose tests' prefix the test `name` (a test's own name, without its target
+    /// or module) begins with.
+    #[must_use]
+    pub fn exercise_of_test(&self, name: &str) -> Option<usize> {
+        self.entries
+            .iter()
+            .position(|e| name.starts_with(&e.exercise.test_prefix()))
     }
 }
 
@@ -129,10 +178,10 @@ struct RawHandout {
 #[serde(deny_unknown_fields)]
 struct RawEntry {
     function: Spanned<String>,
+    name: Option<Spanned<String>>,
     chapter: Spanned<i64>,
     section: Spanned<String>,
     formula: Spanned<String>,
-    id: Option<Spanned<String>>,
     title: Option<Spanned<String>>,
     task: Option<Spanned<String>>,
     hints: Option<Spanned<Vec<String>>>,
@@ -140,16 +189,16 @@ struct RawEntry {
 }
 
 /// Reads and checks the manifest at `path`; messages name the path as given.
-pub fn load(path: &Path) -> Result<Manifest, Error> {
-    let text = std::fs::read_to_string(path).map_err(|e| Error::io(path, e))?;
+pub fn load(path: &Path) -> Result<Manifest, ToolError> {
+    let text = std::fs::read_to_string(path).map_err(|e| ToolError::io(path, e))?;
     parse(&text, &path.display().to_string())
 }
 
 /// A mistake at byte range `span` of the TOML text `text` of `file`, reported as
 /// `file:line:col: message`.
-pub fn error_at(text: &str, file: &str, span: Range<usize>, message: String) -> Error {
+pub fn error_at(text: &str, file: &str, span: Range<usize>, message: String) -> ToolError {
     let (line, col) = line_col(text, span.start);
-    Error::Manifest {
+    ToolError::Manifest {
         file: file.to_string(),
         line,
         col,
@@ -159,7 +208,7 @@ pub fn error_at(text: &str, file: &str, span: Range<usize>, message: String) -> 
 
 /// Reads TOML text into `T`; a syntax error, a missing or unknown key or a wrong type is
 /// reported where it is, in one line ([`error_at`]).
-pub fn from_toml<T: serde::de::DeserializeOwned>(text: &str, file: &str) -> Result<T, Error> {
+pub fn from_toml<T: serde::de::DeserializeOwned>(text: &str, file: &str) -> Result<T, ToolError> {
     toml::from_str(text).map_err(|e| {
         let message = e.message().trim().replace('\n', " ");
         error_at(text, file, e.span().unwrap_or(0..0), message)
@@ -167,7 +216,7 @@ pub fn from_toml<T: serde::de::DeserializeOwned>(text: &str, file: &str) -> Resu
 }
 
 /// Checks the manifest text `text`; `file` names it in messages.
-pub fn parse(text: &str, file: &str) -> Result<Manifest, Error> {
+pub fn parse(text: &str, file: &str) -> Result<Manifest, ToolError> {
     let err = |span: Range<usize>, message: String| error_at(text, file, span, message);
     let raw: RawManifest = from_toml(text, file)?;
 
@@ -230,7 +279,8 @@ pub fn parse(text: &str, file: &str) -> Result<Manifest, Error> {
 
     let mut entries = Vec::with_capacity(raw.formula.len());
     let mut seen: HashMap<String, usize> = HashMap::new();
-    let mut per_chapter = [0usize; 5];
+    let mut names: Vec<(String, usize)> = Vec::new();
+    let mut per_chapter = [0usize; whitted_syllabus::CHAPTERS.len()];
     for spanned in &raw.formula {
         let raw = spanned.get_ref();
         let function = raw.function.get_ref().trim();
@@ -253,11 +303,15 @@ pub fn parse(text: &str, file: &str) -> Result<Manifest, Error> {
         let chapter = *raw.chapter.get_ref();
         let chapter = u8::try_from(chapter)
             .ok()
-            .filter(|c| (1..=5).contains(c))
+            .filter(|&c| whitted_syllabus::chapter(c).is_some())
             .ok_or_else(|| {
                 err(
                     raw.chapter.span(),
-                    format!("chapter: expected 1 to 5, found {chapter}"),
+                    format!(
+                        "chapter: expected {} to {}, found {chapter}",
+                        whitted_syllabus::FIRST,
+                        whitted_syllabus::LAST
+                    ),
                 )
             })?;
         let section = raw.section.get_ref();
@@ -280,6 +334,32 @@ pub fn parse(text: &str, file: &str) -> Result<Manifest, Error> {
         per_chapter[usize::from(chapter) - 1] += 1;
         let id = format!("{chapter}.{}", per_chapter[usize::from(chapter) - 1]);
         let exercise = exercise(raw, id, spanned.span(), &err)?;
+        let name_span = raw.name.as_ref().map_or(0..0, Spanned::span);
+        for (other, other_line) in &names {
+            let clash = if *other == exercise.name {
+                Some(format!(
+                    "name {other:?} is taken (by the exercise on line {other_line})"
+                ))
+            } else if exercise.name.starts_with(&format!("{other}_"))
+                || other.starts_with(&format!("{}_", exercise.name))
+            {
+                let (short, long) = if exercise.name.len() < other.len() {
+                    (exercise.name.as_str(), other.as_str())
+                } else {
+                    (other.as_str(), exercise.name.as_str())
+                };
+                Some(format!(
+                    "name {:?}: `{short}_` begins `{long}` (line {other_line} has the other), so a test named `{TEST_PREFIX}{long}_…` would be both exercises'",
+                    exercise.name
+                ))
+            } else {
+                None
+            };
+            if let Some(message) = clash {
+                return Err(err(name_span, message));
+            }
+        }
+        names.push((exercise.name.clone(), line));
         entries.push(Entry {
             function: function.to_string(),
             chapter,
@@ -298,28 +378,8 @@ pub fn parse(text: &str, file: &str) -> Result<Manifest, Error> {
     })
 }
 
-/// The entries an id, a range `2.1-2.12` (within one chapter) or a chapter `3.*` names.
-#[must_use]
-pub fn expand_ids(entries: &[Entry], text: &str) -> Vec<usize> {
-    let text = text.trim();
-    let index = |id: &str| entries.iter().position(|e| e.exercise.id == id.trim());
-    if let Some(chapter) = text.strip_suffix(".*") {
-        return (0..entries.len())
-            .filter(|&i| entries[i].chapter.to_string() == chapter)
-            .collect();
-    }
-    if let Some((a, b)) = text.split_once('-') {
-        return match (index(a), index(b)) {
-            (Some(a), Some(b)) if a <= b && entries[a].chapter == entries[b].chapter => {
-                (a..=b).collect()
-            }
-            _ => Vec::new(),
-        };
-    }
-    index(text).into_iter().collect()
-}
-
-/// The shortest way to write the entries `set` as ids, ranges and whole chapters.
+/// The shortest way to show the entries `set` to a reader: displayed ids, ranges (`2.1-2.12`)
+/// and whole chapters (`3.*`).
 #[must_use]
 pub fn compress_ids(entries: &[Entry], set: &[usize]) -> Vec<String> {
     let mut sorted = set.to_vec();
@@ -356,14 +416,13 @@ pub fn compress_ids(entries: &[Entry], set: &[usize]) -> Vec<String> {
 /// The most points one exercise may be worth.
 pub const MAX_POINTS: u32 = 100;
 
-/// Checks an entry's exercise keys. `id` is the one its place gives (`chapter.k`); the
-/// entry's `id` key must say the same, so that a reader of the file sees it.
+/// Checks an entry's exercise keys. `id` is the displayed id its place gives (`chapter.k`).
 fn exercise(
     raw: &RawEntry,
     id: String,
     table: Range<usize>,
-    err: &impl Fn(Range<usize>, String) -> Error,
-) -> Result<Exercise, Error> {
+    err: &impl Fn(Range<usize>, String) -> ToolError,
+) -> Result<Exercise, ToolError> {
     let missing = |key: &str| {
         err(
             table.clone(),
@@ -373,17 +432,17 @@ fn exercise(
             ),
         )
     };
-    let given = raw.id.as_ref().ok_or_else(|| missing("id"))?;
-    if given.get_ref().trim() != id {
+    let given = raw.name.as_ref().ok_or_else(|| missing("name"))?;
+    let name = given.get_ref().trim();
+    if !is_exercise_name(name) {
         return Err(err(
             given.span(),
             format!(
-                "id: expected \"{id}\" (chapter.k, k counting this chapter's [[formula]] tables in order), found {:?}",
-                given.get_ref()
+                "name: expected a snake_case name such as \"sphere_coefficients\" (a-z, 0-9 and single `_`, from a letter), found {name:?}"
             ),
         ));
     }
-    let text = |key: &str, value: &Option<Spanned<String>>| -> Result<String, Error> {
+    let text = |key: &str, value: &Option<Spanned<String>>| -> Result<String, ToolError> {
         let value = value.as_ref().ok_or_else(|| missing(key))?;
         let t = value.get_ref().trim();
         if t.is_empty() {
@@ -426,12 +485,25 @@ fn exercise(
             )
         })?;
     Ok(Exercise {
+        name: name.to_string(),
         id,
         title,
         task,
         hints: list,
         points: value,
     })
+}
+
+/// Whether `name` is a snake_case exercise name: lower-case ASCII letters, digits and single
+/// underscores, from a letter, not ending in `_` (it goes into test function names).
+#[must_use]
+pub fn is_exercise_name(name: &str) -> bool {
+    name.starts_with(|c: char| c.is_ascii_lowercase())
+        && !name.ends_with('_')
+        && !name.contains("__")
+        && name
+            .chars()
+            .all(|c| c.is_ascii_lowercase() || c.is_ascii_digit() || c == '_')
 }
 
 /// Whether `path` is two or more Rust identifiers joined by `::`.

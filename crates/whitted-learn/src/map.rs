@@ -1,20 +1,20 @@
 //! The map of which tests of a handout need which exercises, `chapters/exercise-tests.toml`:
-//! measured by the instructor's tools (`whitted formulas --deps --write`, see the course crate's
+//! measured by the instructor's tools (`whitted formulas deps --write`, see the course crate's
 //! `deps`), read here. `learn` finds in it the test target that decides each exercise.
 //!
 //! Each `[[tests]]` table names tests (as `target::name`, or a prefix of it) and the exercises
-//! they run: without any one of those, each of the tests fails.
+//! they run, by name: without any one of those, each of the tests fails. Names, not displayed
+//! ids, so that inserting an exercise leaves every table as it is.
 //!
 //! Course book: [The instructor's guide](../../../../docs/book/instructor-guide.html) (`docs/src/instructor-guide.md`).
 
 use std::collections::BTreeSet;
 use std::path::Path;
 
-use crate::Error;
+use crate::ToolError;
 use crate::manifest::Manifest;
 
-/// A test, as `target::name` (`ch02_generic_objects::ex2_3_…`).
-pub type TestId = String;
+pub use crate::cargo::TestId;
 
 /// Where the map of tests to exercises lives, relative to the project's root.
 pub const MAP_PATH: &str = "chapters/exercise-tests.toml";
@@ -51,7 +51,7 @@ struct RawGroup {
 }
 
 /// Reads the map text `text` (`file` names it in messages) against the manifest's exercises.
-pub fn parse_map(text: &str, file: &str, manifest: &Manifest) -> Result<Vec<Group>, Error> {
+pub fn parse_map(text: &str, file: &str, manifest: &Manifest) -> Result<Vec<Group>, ToolError> {
     let err = |span: std::ops::Range<usize>, message: String| {
         crate::manifest::error_at(text, file, span, message)
     };
@@ -67,18 +67,17 @@ pub fn parse_map(text: &str, file: &str, manifest: &Manifest) -> Result<Vec<Grou
             ));
         }
         let mut needs = Vec::new();
-        for id in g.needs.get_ref() {
-            let found = crate::manifest::expand_ids(&manifest.entries, id);
-            if found.is_empty() {
-                return Err(err(
+        for name in g.needs.get_ref() {
+            let found = manifest.by_name(name.trim()).ok_or_else(|| {
+                err(
                     g.needs.span(),
                     format!(
-                        "needs: {id:?} names no exercise of {} (ids look like 2.3, ranges 2.1-2.12, a chapter 3.*)",
+                        "needs: {name:?} names no exercise of {} (the exercises' `name`s, such as \"viewing_basis\")",
                         manifest.file
                     ),
-                ));
-            }
-            needs.extend(found);
+                )
+            })?;
+            needs.push(found);
         }
         needs.sort_unstable();
         needs.dedup();
@@ -91,9 +90,9 @@ pub fn parse_map(text: &str, file: &str, manifest: &Manifest) -> Result<Vec<Grou
 }
 
 /// Reads [`MAP_PATH`] under `root`.
-pub fn load_map(root: &Path, manifest: &Manifest) -> Result<Vec<Group>, Error> {
+pub fn load_map(root: &Path, manifest: &Manifest) -> Result<Vec<Group>, ToolError> {
     let path = root.join(MAP_PATH);
-    let text = std::fs::read_to_string(&path).map_err(|e| Error::io(&path, e))?;
+    let text = std::fs::read_to_string(&path).map_err(|e| ToolError::io(&path, e))?;
     parse_map(&text, MAP_PATH, manifest)
 }
 

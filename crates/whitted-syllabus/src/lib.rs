@@ -4,7 +4,10 @@
 //! `Chapter` (how far along the road of one pixel a render goes), the chapter binaries, the
 //! student's tests, the scenes, the chapter READMEs, the course book's pages, the window's
 //! chapter keys and the course tools all read [`CHAPTERS`], and nothing else lists them.
-//! Beside them, the section titles of the notes ([`SECTIONS`]) that the exercises cite.
+//! Beside them, the section titles of the notes ([`SECTIONS`]) that the exercises cite, and
+//! the message of an exercise not written yet ([`todo`](mod@todo)): a handout writes it into each
+//! exercise's `todo!()`, and the renderer's error lines, `cargo learn` and the grader read it
+//! back.
 //!
 //! It depends on nothing, so the renderer and the course tools (which must not depend on the
 //! renderer) can both use it, and a student's edit never rebuilds it.
@@ -17,6 +20,8 @@
 //! ```
 
 #![deny(missing_docs)]
+
+pub mod todo;
 
 /// One chapter of the course.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]

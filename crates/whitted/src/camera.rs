@@ -33,7 +33,7 @@ use crate::real::{Real, Vec3};
 /// H = N·tan(θ/2): half the height of the near plane, for a vertical viewing angle θ in degrees.
 #[must_use]
 pub fn near_plane_half_height(near: Real, fov_degrees: Real) -> Real {
-    // BEGIN SOLUTION 1.2
+    // BEGIN SOLUTION near_plane_half_height
     near * (fov_degrees.to_radians() / 2.0).tan() // H = N tan(π/180 · θ/2)
     // END SOLUTION
 }
@@ -41,7 +41,7 @@ pub fn near_plane_half_height(near: Real, fov_degrees: Real) -> Real {
 /// W = H·A: half the width of the near plane for the aspect ratio A = width / height.
 #[must_use]
 pub fn near_plane_half_width(half_height: Real, aspect: Real) -> Real {
-    // BEGIN SOLUTION 1.3
+    // BEGIN SOLUTION near_plane_half_width
     half_height * aspect // W = H A
     // END SOLUTION
 }
@@ -57,7 +57,7 @@ pub fn pixel_on_near_plane(
     half_width: Real,
     half_height: Real,
 ) -> (Real, Real) {
-    // BEGIN SOLUTION 1.4
+    // BEGIN SOLUTION pixel_on_near_plane
     // −W + W·2c/n written as W·(2c/n − 1): the centre column c = n/2 lands exactly on 0, so
     // the middle ray of an odd-sized image is exactly d = −N·n
     let u_c = half_width * (2.0 * c / columns - 1.0);
@@ -71,7 +71,7 @@ pub fn pixel_on_near_plane(
 /// shows unit normals the same way.
 #[must_use]
 pub fn direction_colour(d: Vec3) -> Vec3 {
-    // BEGIN SOLUTION 1.7
+    // BEGIN SOLUTION direction_colour
     (crate::numeric::normalize(d) + Vec3::ONE) * 0.5
     // END SOLUTION
 }
@@ -80,7 +80,7 @@ pub fn direction_colour(d: Vec3) -> Vec3 {
 /// approximate up direction. Returns `None` when the view direction is zero or parallel to `up`.
 #[must_use]
 pub fn viewing_basis(eye: Vec3, look_at: Vec3, up: Vec3) -> Option<(Vec3, Vec3, Vec3)> {
-    // BEGIN SOLUTION 1.1
+    // BEGIN SOLUTION viewing_basis
     let n = (eye - look_at).try_normalize()?; // n points from the scene back to the eye
     let u = up.cross(n).try_normalize()?; // u = up × n, to the right
     let v = n.cross(u); // v = n × u, already unit
@@ -203,7 +203,7 @@ impl Camera {
     #[must_use]
     pub fn direction(&self, c: Real, r: Real) -> Vec3 {
         // ANCHOR_END: ch1_direction_sig
-        // BEGIN SOLUTION 1.5
+        // BEGIN SOLUTION ray_direction
         let (u_c, v_r) = pixel_on_near_plane(
             c,
             r,
@@ -231,7 +231,7 @@ impl Camera {
     #[must_use]
     pub fn pixel_ray(&self, x: u32, y: u32, dx: Real, dy: Real) -> Ray {
         // ANCHOR_END: ch1_pixel_ray_sig
-        // BEGIN SOLUTION 1.6
+        // BEGIN SOLUTION pixel_ray
         let c = x as Real + dx;
         // row r counts from the bottom: the image row y (from the top) covers r ∈ [m−1−y, m−y]
         let r = (self.rows - 1 - y) as Real + (1.0 - dy);

@@ -57,8 +57,9 @@ pub fn line_col(text: &str, offset: usize) -> (usize, usize) {
     (line, col)
 }
 
-/// The prefix of the panic a handout's `todo!("exercise 2.3: …")` raises.
-pub const MISSING: &str = "not yet implemented: exercise ";
+/// The prefix of the panic a handout's `todo!("exercise NAME (2.3): …")` raises (its format is
+/// the syllabus's, [`whitted_syllabus::todo`](mod@whitted_syllabus::todo)).
+pub const MISSING: &str = whitted_syllabus::todo::PANIC_START;
 
 /// The message of a panic, when it is a string.
 pub fn panic_text(payload: &(dyn std::any::Any + Send)) -> Option<&str> {
@@ -75,12 +76,15 @@ pub fn panic_message(payload: &(dyn std::any::Any + Send)) -> &str {
 }
 
 /// For the panic of an exercise not written yet (a handout's `todo!()`), the one line that
-/// says which: `exercise 2.3 is not written yet: The sphere's discriminant — see …`.
+/// says which: `exercise 2.3 (sphere_coefficients) is not written yet: The sphere's quadratic
+/// — see …`.
 #[must_use]
 pub fn missing_exercise(payload: &(dyn std::any::Any + Send)) -> Option<String> {
-    let rest = panic_text(payload)?.strip_prefix(MISSING)?;
-    let (id, what) = rest.split_once(": ").unwrap_or((rest, ""));
-    Some(format!("exercise {id} is not written yet: {what}"))
+    let text = panic_text(payload)?;
+    if !text.starts_with(MISSING) {
+        return None;
+    }
+    whitted_syllabus::todo::find(text).map(|t| t.not_written())
 }
 
 #[cfg(test)]
@@ -91,11 +95,11 @@ mod tests {
     #[test]
     fn a_missing_exercise_is_one_line() {
         let payload: Box<dyn std::any::Any + Send> = Box::new(String::from(
-            "not yet implemented: exercise 2.3: The sphere's discriminant — see chapters/ch02_generic_objects/README.md",
+            "not yet implemented: exercise sphere_discriminant (2.7): The sphere's discriminant — see chapters/ch02_generic_objects/README.md",
         ));
         assert_eq!(
             missing_exercise(payload.as_ref()).unwrap(),
-            "exercise 2.3 is not written yet: The sphere's discriminant — see chapters/ch02_generic_objects/README.md"
+            "exercise 2.7 (sphere_discriminant) is not written yet: The sphere's discriminant — see chapters/ch02_generic_objects/README.md"
         );
         let other: Box<dyn std::any::Any + Send> = Box::new("index out of bounds");
         assert_eq!(missing_exercise(other.as_ref()), None);

@@ -44,7 +44,7 @@ impl Light {
     /// denominator is kept above machine epsilon, so a light with a0 = 0 stays finite at d = 0.
     #[must_use]
     pub fn attenuation_at(&self, d: Real) -> Real {
-        // BEGIN SOLUTION 3.2
+        // BEGIN SOLUTION attenuation
         let [a0, a1, a2] = self.attenuation;
         1.0 / (a0 + a1 * d + a2 * d * d).max(Real::EPSILON)
         // END SOLUTION

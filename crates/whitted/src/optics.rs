@@ -35,7 +35,7 @@ use crate::real::{Real, Vec3};
 /// l = d − 2(d·n)·n: the mirror direction of the incoming direction d about the unit normal n.
 #[must_use]
 pub fn reflect(d: Vec3, n: Vec3) -> Vec3 {
-    // BEGIN SOLUTION 5.4
+    // BEGIN SOLUTION mirror_ray
     d - 2.0 * d.dot(n) * n
     // END SOLUTION
 }
@@ -46,7 +46,7 @@ pub fn reflect(d: Vec3, n: Vec3) -> Vec3 {
 /// ([`critical_angle_sine`]).
 #[must_use]
 pub fn refract(d: Vec3, n: Vec3, n1: Real, n2: Real) -> Option<Vec3> {
-    // BEGIN SOLUTION 5.3
+    // BEGIN SOLUTION refract
     let cos1 = -d.dot(n);
     let sin1_sq = (1.0 - cos1 * cos1).max(0.0);
     if let Some(sin_c) = critical_angle_sine(n1, n2)
@@ -66,7 +66,7 @@ pub fn refract(d: Vec3, n: Vec3, n1: Real, n2: Real) -> Option<Vec3> {
 /// is possible). In the notes' speeds, (c₂/c₁)·sin θc = 1 (they print c₁/c₂: an erratum).
 #[must_use]
 pub fn critical_angle_sine(n1: Real, n2: Real) -> Option<Real> {
-    // BEGIN SOLUTION 5.2
+    // BEGIN SOLUTION critical_angle
     (n1 > n2).then(|| n2 / n1)
     // END SOLUTION
 }
@@ -81,7 +81,7 @@ pub fn critical_angle(n1: Real, n2: Real) -> Option<Real> {
 /// air into the material, leaving from the material into air.
 #[must_use]
 pub fn indices(entering: bool, ior: Real) -> (Real, Real) {
-    // BEGIN SOLUTION 5.1
+    // BEGIN SOLUTION refractive_indices
     if entering { (1.0, ior) } else { (ior, 1.0) }
     // END SOLUTION
 }

@@ -32,7 +32,7 @@ impl Ray {
     #[inline]
     #[must_use]
     pub fn at(&self, t: Real) -> Vec3 {
-        // BEGIN SOLUTION 2.5
+        // BEGIN SOLUTION point_on_ray
         self.origin + self.dir * t
         // END SOLUTION
     }
@@ -44,7 +44,7 @@ impl Ray {
     #[must_use]
     pub fn transformed(&self, m: &Mat4) -> Self {
         // ANCHOR_END: ch2_transformed_sig
-        // BEGIN SOLUTION 2.4
+        // BEGIN SOLUTION ray_in_object_space
         Self {
             origin: m.transform_point3(self.origin),
             dir: m.transform_vector3(self.dir),

@@ -37,7 +37,7 @@ use crate::real::{Real, Vec3};
 /// The ambient term I_a = ρa·I_m, per channel.
 #[must_use]
 pub fn ambient(material: &Material, ambient_light: Vec3) -> Vec3 {
-    // BEGIN SOLUTION 3.1
+    // BEGIN SOLUTION ambient
     material.ambient * ambient_light
     // END SOLUTION
 }
@@ -45,7 +45,7 @@ pub fn ambient(material: &Material, ambient_light: Vec3) -> Vec3 {
 /// r = 2(n·s)·n − s: the mirror direction of s about the unit normal n.
 #[must_use]
 pub fn mirror(s: Vec3, n: Vec3) -> Vec3 {
-    // BEGIN SOLUTION 3.4
+    // BEGIN SOLUTION mirror_direction
     2.0 * n.dot(s) * n - s
     // END SOLUTION
 }
@@ -53,7 +53,7 @@ pub fn mirror(s: Vec3, n: Vec3) -> Vec3 {
 /// max(n·s, 0): the cosine law of the diffuse term, zero for a light behind the surface.
 #[must_use]
 pub fn lambert(n: Vec3, s: Vec3) -> Real {
-    // BEGIN SOLUTION 3.3
+    // BEGIN SOLUTION lambert
     n.dot(s).max(0.0)
     // END SOLUTION
 }
@@ -61,7 +61,7 @@ pub fn lambert(n: Vec3, s: Vec3) -> Real {
 /// max(r·v, 0)^f: the specular highlight, zero when the light is behind the surface (n·s ≤ 0).
 #[must_use]
 pub fn highlight(n: Vec3, s: Vec3, v: Vec3, shininess: Real) -> Real {
-    // BEGIN SOLUTION 3.5
+    // BEGIN SOLUTION highlight
     if n.dot(s) <= 0.0 {
         return 0.0;
     }
@@ -78,7 +78,7 @@ pub fn highlight(n: Vec3, s: Vec3, v: Vec3, shininess: Real) -> Real {
 /// normal n seen from the unit direction v.
 #[must_use]
 pub fn direct(material: &Material, light: &Light, p: Vec3, n: Vec3, v: Vec3) -> Vec3 {
-    // BEGIN SOLUTION 3.6
+    // BEGIN SOLUTION direct_light
     let to_light = light.position - p;
     let d = to_light.length();
     if d == 0.0 {

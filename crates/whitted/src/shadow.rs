@@ -36,7 +36,7 @@ use crate::shapes::Hits;
 #[inline]
 #[must_use]
 pub fn feeler(p: Vec3, light: Vec3) -> Ray {
-    // BEGIN SOLUTION 4.1
+    // BEGIN SOLUTION feeler_ray
     Ray::new(p, light - p)
     // END SOLUTION
 }
@@ -47,7 +47,7 @@ pub fn feeler(p: Vec3, light: Vec3) -> Ray {
 #[inline]
 #[must_use]
 pub fn blocks(hits: &Hits, u_min: Real) -> bool {
-    // BEGIN SOLUTION 4.2
+    // BEGIN SOLUTION blocks_light
     hits.as_slice().iter().any(|h| h.t > u_min && h.t <= 1.0)
     // END SOLUTION
 }
@@ -57,7 +57,7 @@ pub fn blocks(hits: &Hits, u_min: Real) -> bool {
 /// as soon as one is opaque (k_t = 0).
 #[must_use]
 pub fn transmittance(crossed: impl IntoIterator<Item = Real>) -> Real {
-    // BEGIN SOLUTION 4.3
+    // BEGIN SOLUTION transmittance
     let mut share = 1.0;
     for k_t in crossed {
         share *= k_t;

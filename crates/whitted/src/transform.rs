@@ -45,7 +45,7 @@ impl Step {
     /// (see [`sin_cos_degrees`]), so an upright plane, cylinder or cone is placed exactly.
     #[must_use]
     pub fn matrix(&self) -> Mat4 {
-        // BEGIN SOLUTION 2.1
+        // BEGIN SOLUTION step_matrix
         match *self {
             Step::Scale(s) => Mat4::from_scale(s),
             Step::RotateX(a) => {
@@ -84,7 +84,7 @@ impl Step {
     /// The inverse step: scale 1/s, rotate −θ, translate −t.
     #[must_use]
     pub fn inverse(&self) -> Step {
-        // BEGIN SOLUTION 2.2
+        // BEGIN SOLUTION step_inverse
         match *self {
             Step::Scale(s) => Step::Scale(s.recip()),
             Step::RotateX(a) => Step::RotateX(-a),
@@ -196,7 +196,7 @@ impl Placement {
     /// [`Step::is_invertible`]).
     #[must_use]
     pub fn from_steps(steps: &[Step]) -> Option<Self> {
-        // BEGIN SOLUTION 2.3
+        // BEGIN SOLUTION placement_from_steps
         let mut m = Mat4::IDENTITY;
         let mut inv = Mat4::IDENTITY;
         for step in steps {
@@ -249,7 +249,7 @@ impl Placement {
     #[must_use]
     pub fn normal_to_world(&self, n_object: Vec3) -> Vec3 {
         // ANCHOR_END: ch2_normal_to_world_sig
-        // BEGIN SOLUTION 2.26
+        // BEGIN SOLUTION normal_to_world
         crate::numeric::normalize(self.normal_matrix * n_object)
         // END SOLUTION
     }

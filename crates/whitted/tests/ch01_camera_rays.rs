@@ -30,7 +30,7 @@ fn straight_camera(fov: Real, near: Real, columns: u32, rows: u32) -> Camera {
 
 /// "Principles of Ray Tracing": H = N·tan(π/180·θ/2) for several θ and N.
 #[test]
-fn ex1_2_half_height_is_near_times_tangent_of_half_the_angle() {
+fn ex_near_plane_half_height_half_height_is_near_times_tangent_of_half_the_angle() {
     assert_abs_diff_eq!(near_plane_half_height(1.0, 90.0), 1.0, epsilon = TOL); // tan 45° = 1
     assert_abs_diff_eq!(
         near_plane_half_height(2.0, 60.0),
@@ -57,7 +57,7 @@ fn ex1_2_half_height_is_near_times_tangent_of_half_the_angle() {
 
 /// "Principles of Ray Tracing": the angle is in degrees; reading it as radians is wrong.
 #[test]
-fn ex1_2_viewing_angle_is_converted_from_degrees() {
+fn ex_near_plane_half_height_viewing_angle_is_converted_from_degrees() {
     let h = near_plane_half_height(1.0, 60.0);
     let as_radians = (60.0 as Real / 2.0).tan(); // tan(30 rad) ≈ −6.405
     assert!(
@@ -69,7 +69,7 @@ fn ex1_2_viewing_angle_is_converted_from_degrees() {
 
 /// "Principles of Ray Tracing": W = H·A with A = width/height, for several aspects.
 #[test]
-fn ex1_3_half_width_is_half_height_times_aspect() {
+fn ex_near_plane_half_width_half_width_is_half_height_times_aspect() {
     let h = near_plane_half_height(1.0, 90.0);
     assert_abs_diff_eq!(
         near_plane_half_width(h, 4.0 / 3.0),
@@ -94,7 +94,7 @@ fn ex1_3_half_width_is_half_height_times_aspect() {
 /// "Principles of Ray Tracing": (u_c, v_r) = (−W + W·2c/n, −H + H·2r/m) puts c = r = 0 on the
 /// lower-left corner (−W, −H), c = n, r = m on the upper-right (W, H) and the middle on (0, 0).
 #[test]
-fn ex1_4_pixel_formula_spans_the_near_plane_corner_to_corner() {
+fn ex_pixel_on_near_plane_pixel_formula_spans_the_near_plane_corner_to_corner() {
     let (w, h) = (2.0, 1.5);
     let (n, m) = (8.0, 6.0);
     let at = |c, r| pixel_on_near_plane(c, r, n, m, w, h);
@@ -116,7 +116,7 @@ fn ex1_4_pixel_formula_spans_the_near_plane_corner_to_corner() {
 /// "Principles of Ray Tracing": the viewing coordinates u, v, n are orthonormal, n points from
 /// the scene back to the eye, u to the right.
 #[test]
-fn ex1_1_viewing_basis_is_orthonormal_and_n_points_back_to_the_eye() {
+fn ex_viewing_basis_is_orthonormal_and_n_points_back_to_the_eye() {
     let (u, v, n) = viewing_basis(vec3(0.0, 0.0, 5.0), Vec3::ZERO, Vec3::Y).unwrap();
     assert_vec_eq(n, Vec3::Z, TOL);
     assert_vec_eq(u, Vec3::X, TOL);
@@ -141,7 +141,7 @@ fn ex1_1_viewing_basis_is_orthonormal_and_n_points_back_to_the_eye() {
 
 /// "Principles of Ray Tracing": an up vector parallel to the view direction gives no basis.
 #[test]
-fn ex1_1_up_parallel_to_the_view_direction_has_no_basis() {
+fn ex_viewing_basis_up_parallel_to_the_view_direction_has_no_basis() {
     assert!(viewing_basis(vec3(0.0, 5.0, 0.0), Vec3::ZERO, Vec3::Y).is_none());
     assert!(viewing_basis(Vec3::ZERO, Vec3::ZERO, Vec3::Y).is_none());
 }
@@ -151,7 +151,7 @@ fn ex1_1_up_parallel_to_the_view_direction_has_no_basis() {
 /// (0, 1, 1) gives the same basis as (0, 1, 0): u = (1, 0, 0), v = (0, 1, 0). For a tilted
 /// view, up = y + 3n gives the basis of up = y.
 #[test]
-fn ex1_1_an_up_not_perpendicular_to_the_view_gives_the_same_basis() {
+fn ex_viewing_basis_an_up_not_perpendicular_to_the_view_gives_the_same_basis() {
     let (u, v, n) = viewing_basis(vec3(0.0, 0.0, 5.0), Vec3::ZERO, vec3(0.0, 1.0, 1.0)).unwrap();
     assert_vec_eq(u, Vec3::X, TOL);
     assert_vec_eq(v, Vec3::Y, TOL);
@@ -169,7 +169,7 @@ fn ex1_1_an_up_not_perpendicular_to_the_view_gives_the_same_basis() {
 /// "Principles of Ray Tracing": d = −N·n + W(2c/n − 1)·u + H(2r/m − 1)·v at the four corner
 /// pixels of a 4 × 2 window with θ = 90°, N = 1 (H = 1, W = 2).
 #[test]
-fn ex1_5_direction_at_the_four_corners() {
+fn ex_ray_direction_direction_at_the_four_corners() {
     let cam = straight_camera(90.0, 1.0, 4, 2);
     assert_abs_diff_eq!(cam.half_height(), 1.0, epsilon = TOL);
     assert_abs_diff_eq!(cam.half_width(), 2.0, epsilon = TOL);
@@ -198,7 +198,7 @@ fn tilted_camera() -> Camera {
 /// front of the eye: d·(−n) = N for every pixel, and the middle of the image, (n/2, m/2),
 /// looks straight along −n, d = −N·n (a tilted camera, N = 2.5, 320 × 200).
 #[test]
-fn ex1_5_every_direction_reaches_the_near_plane() {
+fn ex_ray_direction_every_direction_reaches_the_near_plane() {
     let cam = tilted_camera();
     for (c, r) in [
         (0.0, 0.0),
@@ -216,7 +216,7 @@ fn ex1_5_every_direction_reaches_the_near_plane() {
 /// "Principles of Ray Tracing": r(t) = e + d·t with d as above reaches the near plane at t = 1,
 /// at the world point u_c·u + v_r·v − N·n + e.
 #[test]
-fn ex1_5_ray_reaches_the_near_plane_pixel_at_t_equal_one() {
+fn ex_ray_direction_ray_reaches_the_near_plane_pixel_at_t_equal_one() {
     let cam = tilted_camera();
     let (c, r) = (37.0, 150.0);
     let (u_c, v_r) = pixel_on_near_plane(c, r, 320.0, 200.0, cam.half_width(), cam.half_height());
@@ -231,7 +231,7 @@ fn ex1_5_ray_reaches_the_near_plane_pixel_at_t_equal_one() {
 /// are pixel corners, so column 0 starts at −W exactly. The renderer shoots through centres
 /// (c + ½, r + ½), which makes the first and last pixel mirror images of each other.
 #[test]
-fn ex1_6_renderer_samples_pixel_centres_not_corners() {
+fn ex_pixel_ray_renderer_samples_pixel_centres_not_corners() {
     let cam = straight_camera(90.0, 1.0, 4, 2);
     // the notes' corner ray for column 0, row 0
     assert_vec_eq(cam.direction(0.0, 0.0), vec3(-2.0, -1.0, -1.0), TOL);
@@ -249,7 +249,7 @@ fn ex1_6_renderer_samples_pixel_centres_not_corners() {
 /// "Principles of Ray Tracing": r counts rows from the bottom, images store rows from the top:
 /// the top image row looks up (+v), the bottom one down.
 #[test]
-fn ex1_6_top_image_row_looks_up() {
+fn ex_pixel_ray_top_image_row_looks_up() {
     let cam = straight_camera(60.0, 1.0, 10, 10);
     assert!(cam.pixel_ray(5, 0, 0.5, 0.5).dir.y > 0.0);
     assert!(cam.pixel_ray(5, 9, 0.5, 0.5).dir.y < 0.0);
@@ -262,7 +262,7 @@ fn ex1_6_top_image_row_looks_up() {
 /// |d| = 5, d̂ = (0.6, 0.8, 0), so (1.6/2, 1.8/2, 1/2) = (0.8, 0.9, 0.5); (−7, 0, 0) gives
 /// (0, ½, ½); (1, 1, 1) has d̂ = (1, 1, 1)/√3, so each channel is (1/√3 + 1)/2 ≈ 0.788675.
 #[test]
-fn ex1_7_ray_colour_is_unit_direction_plus_one_over_two() {
+fn ex_direction_colour_ray_colour_is_unit_direction_plus_one_over_two() {
     assert_vec_eq(
         direction_colour(vec3(0.0, 0.0, -2.0)),
         vec3(0.5, 0.5, 0.0),

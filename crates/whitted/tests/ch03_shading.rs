@@ -29,7 +29,7 @@ fn sphere_scene(light: &str, extra: &str) -> String {
 /// "Shading": with the light straight behind the eye, s = v = n at the nearest point, r·v = 1,
 /// so I = ρa·I_m + I_p(ρd + ρs) in every channel.
 #[test]
-fn ex3_7_light_behind_the_eye_gives_ambient_plus_full_diffuse_and_specular() {
+fn ex_local_light_light_behind_the_eye_gives_ambient_plus_full_diffuse_and_specular() {
     let s = scene(&sphere_scene("[0.0, 0.0, 10.0]", ""));
     let (c, _) = centre(&s, Chapter::Shading);
     let expected = vec3(0.1 * 0.5, 0.2 * 0.4, 0.3 * 0.3)
@@ -39,7 +39,7 @@ fn ex3_7_light_behind_the_eye_gives_ambient_plus_full_diffuse_and_specular() {
 
 /// "Shading": a light behind the surface (n·s < 0) adds nothing: ambient only.
 #[test]
-fn ex3_7_light_behind_the_surface_gives_ambient_only() {
+fn ex_local_light_light_behind_the_surface_gives_ambient_only() {
     let s = scene(&sphere_scene("[0.0, 0.0, -10.0]", ""));
     let (c, stats) = centre(&s, Chapter::Shading);
     assert_vec_eq(c, vec3(0.05, 0.08, 0.09), 10.0 * TOL);
@@ -50,7 +50,7 @@ fn ex3_7_light_behind_the_surface_gives_ambient_only() {
 /// for a light behind the surface. whitted clamps: max(n·s, 0) is 1 for s = n, cos 60° = ½ at
 /// 60°, 0 at 90° and 0 — not −1 — for a light straight behind.
 #[test]
-fn ex3_3_negative_dot_products_are_clamped() {
+fn ex_lambert_negative_dot_products_are_clamped() {
     let n = Vec3::Z;
     let a = (60.0 as Real).to_radians();
     assert_abs_diff_eq!(lambert(n, n), 1.0, epsilon = TOL);
@@ -69,7 +69,7 @@ fn ex3_3_negative_dot_products_are_clamped() {
 /// highlight from a negative r·v with an even f, and a light behind the surface could still
 /// shine on a viewer along r. whitted's highlight is 0 in both cases.
 #[test]
-fn ex3_5_negative_dot_products_are_clamped() {
+fn ex_highlight_negative_dot_products_are_clamped() {
     let n = Vec3::Z;
     let s = Vec3::NEG_Z; // light exactly behind
     let v = Vec3::NEG_Z; // viewer on the far side too (e.g. seen through glass)
@@ -88,7 +88,7 @@ fn ex3_5_negative_dot_products_are_clamped() {
 
 /// "Shading": r is the mirror of s about n, r = 2(n·s)n − s.
 #[test]
-fn ex3_4_mirror_direction_of_the_light() {
+fn ex_mirror_direction_of_the_light() {
     let k = 1.0 / (2.0 as Real).sqrt();
     assert_vec_eq(
         mirror(vec3(1.0, 0.0, 1.0) * k, Vec3::Z),
@@ -111,7 +111,7 @@ fn ex3_4_mirror_direction_of_the_light() {
 /// "Shading": the highlight (r·v)^f is 1 with v along r, cos(60°)^f = ½^f with v 60° away
 /// from r, and smaller for a larger f at the same v ≠ r.
 #[test]
-fn ex3_5_highlight_is_one_along_r_and_falls_with_the_angle() {
+fn ex_highlight_is_one_along_r_and_falls_with_the_angle() {
     let k = 1.0 / (2.0 as Real).sqrt();
     let s = vec3(1.0, 0.0, 1.0) * k;
     let r = vec3(-1.0, 0.0, 1.0) * k;
@@ -134,7 +134,7 @@ fn ex3_5_highlight_is_one_along_r_and_falls_with_the_angle() {
 
 /// "Shading": the diffuse term follows the cosine law ρd·I_p·(n·s).
 #[test]
-fn ex3_6_diffuse_follows_the_cosine_law() {
+fn ex_direct_light_diffuse_follows_the_cosine_law() {
     let m = Material {
         ambient: Vec3::ZERO,
         diffuse: Vec3::splat(0.8),
@@ -153,7 +153,7 @@ fn ex3_6_diffuse_follows_the_cosine_law() {
 /// "Shading": I_a = ρa·I_m, channel by channel: ρa = (0.1, 0.2, 0.3) under I_m = (0.5, 0.4, 0.3)
 /// gives (0.05, 0.08, 0.09); the default material (ρa = 0.1) under 0.5 gives 0.05.
 #[test]
-fn ex3_1_ambient_is_rho_a_times_i_m_per_channel() {
+fn ex_ambient_is_rho_a_times_i_m_per_channel() {
     let m = Material {
         ambient: vec3(0.1, 0.2, 0.3),
         ..Material::default()
@@ -176,7 +176,7 @@ fn ex3_1_ambient_is_rho_a_times_i_m_per_channel() {
 /// green and blue at 0; the light moved below the surface gives (0, 0, 0), and so does a light
 /// at the point itself.
 #[test]
-fn ex3_6_one_light_three_channels() {
+fn ex_direct_light_one_light_three_channels() {
     let m = Material {
         ambient: vec3(0.3, 0.3, 0.3),
         diffuse: vec3(0.5, 0.4, 0.3),
@@ -208,7 +208,7 @@ fn ex3_6_one_light_three_channels() {
 /// gets exactly 0 (0^f, f > 0), f = 0 still gives 0^0 = 1, and a matte material (ρs = 0)
 /// gets exactly its diffuse term, bit for bit, whatever the highlight would have been.
 #[test]
-fn ex3_6_skipping_the_highlight_changes_no_number() {
+fn ex_direct_light_skipping_the_highlight_changes_no_number() {
     let k = 1.0 / (2.0 as Real).sqrt();
     let s = vec3(1.0, 0.0, 1.0) * k; // r = (−1, 0, 1)/√2
     let beyond = vec3(1.0, 0.0, 0.0); // r·v = −1/√2 < 0
@@ -239,7 +239,7 @@ fn ex3_6_skipping_the_highlight_changes_no_number() {
 /// (1, 0, 0) divides by nothing at any distance, (0, 0, 1) is the inverse square (¼ at d = 2,
 /// 1/16 at d = 4), (1, 1, 0) gives ⅓ at d = 2, and (0, 1, 0) stays finite at d = 0.
 #[test]
-fn ex3_2_attenuation_divides_by_a0_plus_a1_d_plus_a2_d_squared() {
+fn ex_attenuation_divides_by_a0_plus_a1_d_plus_a2_d_squared() {
     let mut light = Light::white(vec3(0.0, 2.0, 0.0));
     light.attenuation = [1.0, 0.5, 0.25];
     assert_abs_diff_eq!(light.attenuation_at(2.0), 1.0 / 3.0, epsilon = TOL);
@@ -261,7 +261,7 @@ fn ex3_2_attenuation_divides_by_a0_plus_a1_d_plus_a2_d_squared() {
 /// "Shading": `direct` divides the light by its attenuation: a white light 2 above a white
 /// diffuse surface facing it, with (1, 0.5, 0.25), gives 1/3 in every channel.
 #[test]
-fn ex3_6_direct_light_is_divided_by_the_attenuation() {
+fn ex_direct_light_is_divided_by_the_attenuation() {
     let mut light = Light::white(vec3(0.0, 2.0, 0.0));
     let m = Material {
         ambient: Vec3::ZERO,
@@ -277,7 +277,7 @@ fn ex3_6_direct_light_is_divided_by_the_attenuation() {
 /// "Shading": through the renderer, the light at (0, 0, 10) with (1, 0.5, 0.25) reaches the
 /// sphere's nearest point (0, 0, 1) from d = 9 away, divided by 1 + 4.5 + 20.25 = 25.75.
 #[test]
-fn ex3_7_attenuated_light_through_the_renderer() {
+fn ex_local_light_attenuated_light_through_the_renderer() {
     let s = scene(&sphere_scene(
         "[0.0, 0.0, 10.0]",
         "attenuation = [1.0, 0.5, 0.25]",
@@ -291,7 +291,7 @@ fn ex3_7_attenuated_light_through_the_renderer() {
 
 /// "Shading": with several lights, each adds its own diffuse and specular terms.
 #[test]
-fn ex3_7_several_lights_add_up() {
+fn ex_local_light_several_lights_add_up() {
     let one = scene(&sphere_scene("[0.0, 0.0, 10.0]", ""));
     let two = scene(&sphere_scene(
         "[0.0, 0.0, 10.0]",
@@ -403,7 +403,7 @@ fn phong_with_both_cosines_between_zero_and_one() {
 /// I_p·(ρd + ρs) = (0.9, 0.8, 0.7)·0.7 arriving whole (no feeler before chapter 4), the second
 /// light's zero, and the local light, their sum, which is the pixel's colour at chapter 3.
 #[test]
-fn ex3_7_the_recorder_hears_the_ambient_term_each_light_and_the_local_light() {
+fn ex_local_light_the_recorder_hears_the_ambient_term_each_light_and_the_local_light() {
     let s = scene(&sphere_scene(
         "[0.0, 0.0, 10.0]",
         "[[lights]]\nposition = [0.0, 0.0, -10.0]",

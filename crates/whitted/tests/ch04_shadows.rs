@@ -59,13 +59,13 @@ fn blocks(object: &Object, light: Vec3) -> bool {
 
 /// "Shadowing": a sphere between P and L (u ≈ 0.5) blocks the feeler.
 #[test]
-fn ex4_2_opaque_sphere_between_point_and_light_shadows_it() {
+fn ex_blocks_light_opaque_sphere_between_point_and_light_shadows_it() {
     assert!(blocks(&ball(vec3(0.0, 5.0, 0.0), 0), L));
 }
 
 /// "Shadowing": a sphere beyond the light (u > 1) casts no shadow on P.
 #[test]
-fn ex4_2_sphere_beyond_the_light_casts_no_shadow() {
+fn ex_blocks_light_sphere_beyond_the_light_casts_no_shadow() {
     let beyond = ball(vec3(0.0, 15.0, 0.0), 0);
     assert!(!blocks(&beyond, L));
     // the same sphere with the light moved behind it does
@@ -74,13 +74,13 @@ fn ex4_2_sphere_beyond_the_light_casts_no_shadow() {
 
 /// "Shadowing": a sphere behind the point (u ≤ 0) casts no shadow on P.
 #[test]
-fn ex4_2_sphere_behind_the_point_casts_no_shadow() {
+fn ex_blocks_light_sphere_behind_the_point_casts_no_shadow() {
     assert!(!blocks(&ball(vec3(0.0, -5.0, 0.0), 0), L));
 }
 
 /// "Shadowing": u ∈ ]0, 1] — an occluder whose surface touches the light (u = 1) counts.
 #[test]
-fn ex4_2_occluder_reaching_the_light_counts() {
+fn ex_blocks_light_occluder_reaching_the_light_counts() {
     assert!(blocks(&ball(vec3(0.0, 11.0, 0.0), 0), L)); // surface at y = 10: u = 1 exactly
 }
 
@@ -88,7 +88,7 @@ fn ex4_2_occluder_reaching_the_light_counts() {
 /// through (share 0), and so does one the light sits on; one beyond the light or behind P
 /// lets everything through (share 1), and so does an empty scene.
 #[test]
-fn ex4_3_an_opaque_occluder_lets_nothing_through() {
+fn ex_transmittance_an_opaque_occluder_lets_nothing_through() {
     assert_eq!(share(&[ball(vec3(0.0, 5.0, 0.0), 0)], L), 0.0);
     assert_eq!(share(&[ball(vec3(0.0, 11.0, 0.0), 0)], L), 0.0);
     assert_eq!(share(&[ball(vec3(0.0, 15.0, 0.0), 0)], L), 1.0);
@@ -100,7 +100,7 @@ fn ex4_3_an_opaque_occluder_lets_nothing_through() {
 /// objects' transmissions k_t: 1 for none, 0.5·0.5 = 0.25, 0.5·0.8·0.25 = 0.1, and 0 as soon as
 /// one is opaque — after which no other is even looked at.
 #[test]
-fn ex4_3_transmittance_multiplies_the_shares() {
+fn ex_transmittance_multiplies_the_shares() {
     assert_eq!(shadow::transmittance([]), 1.0);
     assert_eq!(shadow::transmittance([0.6]), 0.6);
     assert_eq!(shadow::transmittance([0.5, 0.5]), 0.25);
@@ -117,7 +117,7 @@ fn ex4_3_transmittance_multiplies_the_shares() {
 /// "Shadowing" (extended): a translucent occluder lets its transmission share through; two of
 /// them, the product.
 #[test]
-fn ex4_3_translucent_occluders_let_their_transmission_through() {
+fn ex_transmittance_translucent_occluders_let_their_transmission_through() {
     let one = [ball(vec3(0.0, 3.0, 0.0), 1)];
     let t1 = share(&one, L);
     assert!((t1 - 0.6).abs() <= TOL);
@@ -131,7 +131,7 @@ fn ex4_3_translucent_occluders_let_their_transmission_through() {
 /// A floor lit from above with a sphere hovering over it: the point under the sphere is in
 /// shadow at chapter 4 (ambient only) and lit at chapter 3.
 #[test]
-fn ex4_4_point_under_a_sphere_is_lit_at_stage_3_and_shadowed_at_stage_4() {
+fn ex_send_feeler_point_under_a_sphere_is_lit_at_stage_3_and_shadowed_at_stage_4() {
     let s = scene(
         "[camera]\neye = [0.0, 6.0, 0.001]\nlook_at = [0.0, 0.0, 0.0]\n[ambient]\nintensity = 1.0\n\
          [[lights]]\nposition = [0.0, 10.0, 0.0]\n\
@@ -163,7 +163,7 @@ fn ex4_4_point_under_a_sphere_is_lit_at_stage_3_and_shadowed_at_stage_4() {
 /// the point is still shadowed and its one feeler is still cast. (A test of n·(L + P), or of
 /// n·L, passes at the origin and fails here.)
 #[test]
-fn ex4_4_the_light_is_in_front_by_l_minus_p_wherever_the_scene_sits() {
+fn ex_send_feeler_the_light_is_in_front_by_l_minus_p_wherever_the_scene_sits() {
     let shadowed = scene(
         "[camera]\neye = [0.0, -94.0, 0.001]\nlook_at = [0.0, -100.0, 0.0]\n[ambient]\nintensity = 1.0\n\
          [[lights]]\nposition = [0.0, -90.0, 0.0]\n\
@@ -217,7 +217,7 @@ const LIT_PLANE: &str = "[camera]\neye = [0.0, 3.0, 6.0]\nlook_at = [0.0, 0.0, -
 /// no wrongly shadowed pixel, while feelers started exactly at the hit point (no offset at
 /// all) shadow a good share of them — which is why the offset exists.
 #[test]
-fn ex4_4_lit_sphere_and_plane_show_no_shadow_acne() {
+fn ex_send_feeler_lit_sphere_and_plane_show_no_shadow_acne() {
     for text in [LIT_SPHERE, LIT_PLANE] {
         let (bad, lit) = wrongly_shadowed(text, Offset::default());
         assert!(lit > 1000, "the test scene must show lit pixels ({lit})");
@@ -233,7 +233,7 @@ fn ex4_4_lit_sphere_and_plane_show_no_shadow_acne() {
 /// "Shadowing": feelers are cast only where needed — one per light facing the point, none for
 /// a light with `shadows = false`, none in a scene without lights.
 #[test]
-fn ex4_4_feelers_only_where_a_scene_needs_them() {
+fn ex_send_feeler_feelers_only_where_a_scene_needs_them() {
     let base = "[camera]\neye = [0.0, 0.0, 5.0]\n[[objects]]\nsphere = {}\n";
     let (_, none) = render_at(&scene(base), Chapter::Shadows, 16, 16);
     assert_eq!(none.shadow, 0, "no lights, no feelers");
@@ -251,7 +251,7 @@ fn ex4_4_feelers_only_where_a_scene_needs_them() {
 /// Hand values for P = (1, 2, 3), L = (−4, 6, 0.5): L − P = (−5, 4, −2.5), S(0) = P,
 /// S(1) = L, S(½) = (−1.5, 4, 1.75), the midpoint.
 #[test]
-fn ex4_1_feeler_starts_at_the_point_and_reaches_the_light_at_u_one() {
+fn ex_feeler_ray_feeler_starts_at_the_point_and_reaches_the_light_at_u_one() {
     let (p, l) = (vec3(1.0, 2.0, 3.0), vec3(-4.0, 6.0, 0.5));
     let s = shadow::feeler(p, l);
     assert_vec_eq(s.dir, vec3(-5.0, 4.0, -2.5), TOL);
@@ -275,7 +275,7 @@ fn at_u(u: Real) -> Hits {
 /// −0.2, and the floor y = 0 where 10u = 0. A sphere centred at (0, 1, 0) is met at u = 0 and
 /// u = 0.2: the feeler goes through it, so it does shadow.
 #[test]
-fn ex4_2_occluder_at_u_zero_does_not_shadow() {
+fn ex_blocks_light_occluder_at_u_zero_does_not_shadow() {
     let l = vec3(0.0, 10.0, 0.0);
     let feeler = shadow::feeler(P, l);
     let under = ball(vec3(0.0, -1.0, 0.0), 0);
@@ -300,7 +300,7 @@ fn ex4_2_occluder_at_u_zero_does_not_shadow() {
 /// through, whether the objects are tested one by one or through the acceleration structure;
 /// the sphere over P, crossed at u = 0.2, lets none through.
 #[test]
-fn ex4_3_occluders_at_u_zero_let_the_light_through() {
+fn ex_transmittance_occluders_at_u_zero_let_the_light_through() {
     let l = vec3(0.0, 10.0, 0.0);
     let feeler = shadow::feeler(P, l);
     let s = scene(
@@ -321,7 +321,7 @@ fn ex4_3_occluders_at_u_zero_let_the_light_through() {
 /// block; the plane y = 2.51, at u = 0.251, does. u = 1 (the light) still counts, u just above
 /// 1 does not.
 #[test]
-fn ex4_2_hit_at_or_before_u_min_does_not_count_and_just_after_does() {
+fn ex_blocks_light_hit_at_or_before_u_min_does_not_count_and_just_after_does() {
     let u_min: Real = 0.25;
     assert!(!shadow::blocks(&at_u(0.25), u_min));
     assert!(!shadow::blocks(&at_u(0.1), u_min));
@@ -349,7 +349,7 @@ fn ex4_2_hit_at_or_before_u_min_does_not_count_and_just_after_does() {
 /// u_min = 0.25 the plane y = 2.5, met at u = 0.25, lets the whole light through, the plane
 /// y = 2.51 none of it.
 #[test]
-fn ex4_3_a_plane_at_u_min_lets_the_light_through_and_one_just_after_does_not() {
+fn ex_transmittance_a_plane_at_u_min_lets_the_light_through_and_one_just_after_does_not() {
     let u_min: Real = 0.25;
     let feeler = shadow::feeler(P, L);
     let plane_at = |y: f64| {
@@ -389,7 +389,7 @@ const FLOOR_UNDER_A_BALL: &str = "[camera]\neye = [0.0, 6.0, 0.001]\nlook_at = [
 /// and u_min = 0.01/‖L − P‖ = 0.001, the sphere crossed at u = 0.75 and 0.85. Either way no
 /// light arrives: the pixel is ambient only, 0.1. At chapter 3 there is no feeler at all.
 #[test]
-fn ex4_4_the_feeler_leaves_from_the_offset_start_towards_the_light() {
+fn ex_send_feeler_the_feeler_leaves_from_the_offset_start_towards_the_light() {
     let s = scene(FLOOR_UNDER_A_BALL);
     let cases = [
         (

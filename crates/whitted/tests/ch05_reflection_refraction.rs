@@ -28,7 +28,7 @@ fn incoming(angle: Real) -> Vec3 {
 /// (1, −1, 0)/√2 on the floor y = 0 leaves as (1, 1, 0)/√2. The notes' r(t₀) − 2(r(t₀)·n)n,
 /// built from the hit point, depends on where the floor is hit — it is not a direction.
 #[test]
-fn ex5_4_reflection_of_a_45_degree_ray() {
+fn ex_mirror_ray_reflection_of_a_45_degree_ray() {
     let k = 1.0 / (2.0 as Real).sqrt();
     let d = vec3(1.0, -1.0, 0.0) * k;
     assert_vec_eq(reflect(d, Vec3::Y), vec3(1.0, 1.0, 0.0) * k, TOL);
@@ -57,7 +57,7 @@ fn ex5_4_reflection_of_a_45_degree_ray() {
 /// sin θ₂ = sin 30°/1.5 = 1/3, θ₂ ≈ 19.47°; the ray bends towards the normal and stays in the
 /// plane of incidence.
 #[test]
-fn ex5_3_snell_air_to_glass_at_30_degrees() {
+fn ex_refract_snell_air_to_glass_at_30_degrees() {
     let t = refract(incoming(30.0), Vec3::Y, 1.0, 1.5).unwrap();
     assert_abs_diff_eq!(t.length(), 1.0, epsilon = TOL);
     let sin2 = t.x; // the tangential component of a unit vector is sin θ₂
@@ -75,7 +75,7 @@ fn ex5_3_snell_air_to_glass_at_30_degrees() {
 /// glass → air gives sin θc = 1/1.5, θc ≈ 41.81°. The notes' (c₁/c₂)·sin θc = 1 asks for
 /// sin θc = 1.5, which no angle has.
 #[test]
-fn ex5_2_critical_angle_from_glass_to_air() {
+fn ex_critical_angle_from_glass_to_air() {
     let theta_c = critical_angle(1.5, 1.0).unwrap();
     assert_abs_diff_eq!(theta_c.sin(), 1.0 / 1.5, epsilon = TOL);
     assert_abs_diff_eq!(
@@ -100,7 +100,7 @@ fn ex5_2_critical_angle_from_glass_to_air() {
 /// "Reflection and Refraction": glass → air just below the critical angle still refracts,
 /// grazing out (sin θ₂ close to 1); just above it, total internal reflection.
 #[test]
-fn ex5_3_glass_to_air_just_below_and_just_above_the_critical_angle() {
+fn ex_refract_glass_to_air_just_below_and_just_above_the_critical_angle() {
     let theta_c = critical_angle(1.5, 1.0).unwrap().to_degrees();
     let below = refract(incoming(theta_c - 0.1), Vec3::Y, 1.5, 1.0).unwrap();
     assert_abs_diff_eq!(below.length(), 1.0, epsilon = 10.0 * TOL);
@@ -124,7 +124,7 @@ fn glass_sphere_scene(max_depth: u32) -> String {
 /// normal incidence and leaves undeflected: it reaches the wall straight behind, dimmed by
 /// the transmission share twice.
 #[test]
-fn ex5_5_ray_along_the_axis_of_a_glass_sphere_leaves_undeflected() {
+fn ex_reflect_and_refract_ray_along_the_axis_of_a_glass_sphere_leaves_undeflected() {
     assert_vec_eq(
         refract(Vec3::NEG_Z, Vec3::Z, 1.0, 1.5).unwrap(),
         Vec3::NEG_Z,
@@ -139,7 +139,7 @@ fn ex5_5_ray_along_the_axis_of_a_glass_sphere_leaves_undeflected() {
 /// "Lighting Equations": recursion stops at max_depth — a refracted ray needs depth 2 to get
 /// through the sphere; with max_depth = 1 it is stopped inside.
 #[test]
-fn ex5_5_recursion_depth_limits_the_refracted_path() {
+fn ex_reflect_and_refract_recursion_depth_limits_the_refracted_path() {
     let (c, stats) = centre(
         &scene(&glass_sphere_scene(1)),
         Chapter::ReflectionRefraction,
@@ -166,7 +166,7 @@ fn facing_mirrors(max_depth: u32, reflection: f64) -> String {
 /// "Lighting Equations": between two facing mirrors the recursion stops at max_depth: one
 /// reflected ray per level, and the colour is the geometric sum ρa·Σ kᵢ for i = 0…max_depth.
 #[test]
-fn ex5_5_two_facing_mirrors_stop_at_max_depth() {
+fn ex_reflect_and_refract_two_facing_mirrors_stop_at_max_depth() {
     for depth in [0, 1, 3, 5, 8] {
         let (c, stats) = centre(
             &scene(&facing_mirrors(depth, 0.5)),
@@ -183,7 +183,7 @@ fn ex5_5_two_facing_mirrors_stop_at_max_depth() {
 /// "Lighting Equations": a ray whose weight (product of shares) falls below the threshold is
 /// not traced, whatever max_depth says: 0.5^k < 10⁻³ from k = 10 on.
 #[test]
-fn ex5_5_recursion_stops_when_the_weight_falls_below_the_threshold() {
+fn ex_reflect_and_refract_recursion_stops_when_the_weight_falls_below_the_threshold() {
     let s = scene(&facing_mirrors(50, 0.5));
     let (_, stats) = centre(&s, Chapter::ReflectionRefraction);
     assert_eq!(stats.reflected, 9, "0.5^9 ≥ 1e-3 > 0.5^10");
@@ -194,7 +194,7 @@ fn ex5_5_recursion_stops_when_the_weight_falls_below_the_threshold() {
 /// critical angle is totally reflected: no refracted ray, the transmitted share goes to the
 /// mirror ray, and it stays trapped until max_depth.
 #[test]
-fn ex5_5_total_internal_reflection_sends_the_transmitted_share_into_reflection() {
+fn ex_reflect_and_refract_total_internal_reflection_sends_the_transmitted_share_into_reflection() {
     // the eye inside a glass ball of radius 10, near its wall, looking along it
     let text = "[camera]\neye = [0.0, 9.5, 0.0]\nlook_at = [1.0, 9.5, 0.0]\n[render]\nmax_depth = 4\n\
         [ambient]\nintensity = 1.0\n\
@@ -212,7 +212,7 @@ fn ex5_5_total_internal_reflection_sends_the_transmitted_share_into_reflection()
 /// "Lighting Equations" and "model only what a scene requires": matte scenes cast no secondary
 /// rays at chapter 5; a mirror adds reflected rays only; glass adds refracted ones.
 #[test]
-fn ex5_5_secondary_rays_only_for_mirror_and_glass_materials() {
+fn ex_reflect_and_refract_secondary_rays_only_for_mirror_and_glass_materials() {
     let matte = "[camera]\neye = [0.0, 0.0, 5.0]\n[[lights]]\nposition = [3.0, 3.0, 5.0]\n[[objects]]\nsphere = {}\n";
     let (_, stats) = render_at(&scene(matte), Chapter::ReflectionRefraction, 24, 24);
     assert_eq!((stats.reflected, stats.refracted), (0, 0));
@@ -254,7 +254,7 @@ fn supersampling_is_the_same_every_run() {
 /// relative to medium 1 is n₂₁ = c₁/c₂; with speeds c = c₀/n it is (c₀/n₁)/(c₀/n₂) = n₂/n₁:
 /// air → water c₁/c₂ = 1.33, water → air 1/1.33 ≈ 0.7519.
 #[test]
-fn ex5_1_indices_go_from_air_into_the_material_and_back() {
+fn ex_refractive_indices_indices_go_from_air_into_the_material_and_back() {
     assert_eq!(indices(true, 1.5), (1.0, 1.5));
     assert_eq!(indices(false, 1.5), (1.5, 1.0));
     assert_eq!(indices(true, 1.33), (1.0, 1.33));
@@ -275,7 +275,7 @@ fn ex5_1_indices_go_from_air_into_the_material_and_back() {
 /// air, (1.5, 1): ⅔; diamond to water, (2.42, 1.33): 1.33/2.42 ≈ 0.549587; none from air into
 /// glass or between equal indices, where no angle reflects totally.
 #[test]
-fn ex5_2_critical_angle_sine_is_n2_over_n1() {
+fn ex_critical_angle_sine_is_n2_over_n1() {
     assert_abs_diff_eq!(
         critical_angle_sine(1.5, 1.0).unwrap(),
         2.0 / 3.0,
@@ -294,7 +294,7 @@ fn ex5_2_critical_angle_sine_is_n2_over_n1() {
 /// indices; between equal indices it goes on unbent at any angle; otherwise it bends towards
 /// the normal going into the denser medium (sin θ₂ < sin θ₁) and away from it going out.
 #[test]
-fn ex5_3_refraction_bends_only_between_different_indices() {
+fn ex_refract_refraction_bends_only_between_different_indices() {
     for (n1, n2) in [(1.0, 1.5), (1.5, 1.0), (1.33, 2.42)] {
         assert_vec_eq(
             refract(Vec3::NEG_Y, Vec3::Y, n1, n2).unwrap(),
@@ -317,7 +317,7 @@ fn ex5_3_refraction_bends_only_between_different_indices() {
 /// normal (0, 1, 0) facing the ray), out through the bottom face (glass to air, the normal
 /// facing the ray is (0, 1, 0) again).
 #[test]
-fn ex5_3_a_slab_with_parallel_faces_lets_the_ray_out_parallel() {
+fn ex_refract_a_slab_with_parallel_faces_lets_the_ray_out_parallel() {
     for a in [0.0, 20.0, 55.0, 85.0] {
         let d = incoming(a);
         let (n1, n2) = indices(true, 1.5);
@@ -334,7 +334,7 @@ fn ex5_3_a_slab_with_parallel_faces_lets_the_ray_out_parallel() {
 /// water into air: sin θ₂ = 1.33·0.5 = 0.665, bent away. At 45° into water: sin θ₂ =
 /// (√2/2)/1.33 ≈ 0.531659.
 #[test]
-fn ex5_3_refracted_ray_obeys_n1_sin_theta1_equals_n2_sin_theta2() {
+fn ex_refract_refracted_ray_obeys_n1_sin_theta1_equals_n2_sin_theta2() {
     for (entering, angle, sin2) in [
         (true, 30.0, 0.375_939_849_624_060_13),
         (false, 30.0, 0.665),
@@ -356,7 +356,7 @@ fn ex5_3_refracted_ray_obeys_n1_sin_theta1_equals_n2_sin_theta2() {
 /// glass 1.9, asin(0.526316) = 31.7569°. 0.01° short of θc a ray still gets out, with
 /// n·sin θ₁ = sin θ₂ just under 1; 0.01° past it, total internal reflection.
 #[test]
-fn ex5_3_critical_angles_of_the_notes_table() {
+fn ex_refract_critical_angles_of_the_notes_table() {
     for (n, sin_c, theta_c_deg) in [
         (1.33, 0.751_879_699_248_120_3, 48.753_466_631_327_235),
         (2.42, 0.413_223_140_495_867_8, 24.407_468_917_986_588),
@@ -415,7 +415,7 @@ const FIVE_TERMS: &str = "[camera]\neye = [0.0, 2.0, 0.0]\nlook_at = [0.0, 0.0, 
 /// I = (0.545, 0.53, 0.555): one feeler, one mirror ray, one transmitted ray. Exchanging k_r
 /// and k_t would give (0.585, 0.51, 0.455), and dropping any term changes the sum.
 #[test]
-fn ex5_5_five_terms_of_the_lighting_equation_add_up() {
+fn ex_reflect_and_refract_five_terms_of_the_lighting_equation_add_up() {
     let s = scene(FIVE_TERMS);
     let (c, stats) = centre(&s, Chapter::ReflectionRefraction);
     assert_vec_eq(c, vec3(0.545, 0.53, 0.555), 10.0 * TOL);
@@ -438,7 +438,7 @@ fn ex5_5_five_terms_of_the_lighting_equation_add_up() {
 /// 0.5¹⁰) whatever larger depth is allowed, and `max_depth = 0` casts none and gives the image
 /// of chapter 4.
 #[test]
-fn ex5_5_the_recursion_stops_at_max_depth_or_at_the_weight_limit() {
+fn ex_reflect_and_refract_the_recursion_stops_at_max_depth_or_at_the_weight_limit() {
     let mut last = 0;
     for depth in 0..=14 {
         let (_, stats) = render_at(
@@ -466,7 +466,7 @@ fn ex5_5_the_recursion_stops_at_max_depth_or_at_the_weight_limit() {
 /// (0.5¹⁰ ≈ 0.00098), as the mirror rays between two mirrors are. The colour is then the
 /// ambient light of the first ten panes, ρa·Σ 0.5^k for k = 0…9.
 #[test]
-fn ex5_5_a_transmitted_ray_too_faint_to_matter_is_not_traced() {
+fn ex_reflect_and_refract_a_transmitted_ray_too_faint_to_matter_is_not_traced() {
     let mut text = String::from(
         "[camera]\neye = [0.0, 0.0, 0.0]\nlook_at = [0.0, 0.0, -1.0]\n[render]\nmax_depth = 50\n\
          [materials.pane]\nambient = 0.1\ndiffuse = 0.0\nspecular = 0.0\ntransmission = 0.5\nreflection = 0.0\nior = 1.0\n",
@@ -507,7 +507,7 @@ fn ex5_5_a_transmitted_ray_too_faint_to_matter_is_not_traced() {
 /// k_r + k_t = 0 + 0.5; at `max_depth` the branches are reported stopped by the depth, and
 /// between the facing mirrors the tenth mirror ray by its weight.
 #[test]
-fn ex5_5_the_recorder_hears_each_branch_and_why_one_stopped() {
+fn ex_reflect_and_refract_the_recorder_hears_each_branch_and_why_one_stopped() {
     let inspect_with = |text: &str, offset: Offset| {
         let s = scene(text);
         let mut o = Options::for_scene(&s, Chapter::ReflectionRefraction);

@@ -6,7 +6,7 @@
 //! rounding across platforms, none for a changed formula). The paths must also agree with one
 //! another bit for bit.
 //!
-//! These are the tests `whitted formulas --prove` runs: a formula function of chapter N
+//! These are the tests `whitted formulas prove` runs: a formula function of chapter N
 //! replaced by `todo!()` must make every `chN_` test fail, which shows that every path of that
 //! chapter calls it (a path with a copy of its own would still pass).
 //!

@@ -277,7 +277,7 @@ impl<'a> Tracer<'a> {
         rec: &mut impl Recorder,
     ) -> Vec3 {
         // ANCHOR_END: ch3_local_light_sig
-        // BEGIN SOLUTION 3.7
+        // BEGIN SOLUTION local_light
         let i_a = shading::ambient(s.material, self.scene.ambient); // I_a
         rec.ambient(i_a);
         let mut color = i_a;
@@ -314,7 +314,7 @@ impl<'a> Tracer<'a> {
             return None; // no feelers before chapter 4 (given: not part of the exercise)
         }
         // ANCHOR_END: ch4_feeler_sig
-        // BEGIN SOLUTION 4.4
+        // BEGIN SOLUTION send_feeler
         if !light.shadows || s.n.dot(light.position - s.p) <= 0.0 {
             return None;
         }
@@ -357,7 +357,7 @@ impl<'a> Tracer<'a> {
             return color; // no secondary rays before chapter 5 (given: not part of the exercise)
         }
         // ANCHOR_END: ch5_reflect_and_refract_sig
-        // BEGIN SOLUTION 5.5
+        // BEGIN SOLUTION reflect_and_refract
         let (material, d, n) = (s.material, s.d, s.n);
         if depth >= o.max_depth {
             if material.is_translucent() {

@@ -34,7 +34,7 @@ use crate::real::{Real, Vec3};
 /// The cone's quadratic coefficients (a, b, c) for a·t² + 2b·t + c = 0.
 #[must_use]
 pub fn coefficients(ray: &Ray) -> (Real, Real, Real) {
-    // BEGIN SOLUTION 2.18
+    // BEGIN SOLUTION cone_coefficients
     let (e, d) = (ray.origin, ray.dir);
     (
         d.x * d.x + d.y * d.y - d.z * d.z,                 // a
@@ -53,7 +53,7 @@ pub fn coefficients(ray: &Ray) -> (Real, Real, Real) {
 /// cone's counterpart of the sphere's Ray Tracing Gems form).
 #[must_use]
 pub fn discriminant(ray: &Ray) -> Real {
-    // BEGIN SOLUTION 2.19
+    // BEGIN SOLUTION cone_discriminant
     let w = ray.dir.cross(ray.origin - Vec3::Z); // w = d × u
     w.x * w.x + w.y * w.y - w.z * w.z
     // END SOLUTION
@@ -62,7 +62,7 @@ pub fn discriminant(ray: &Ray) -> Real {
 /// The object-space normal of `part` at the point p.
 #[must_use]
 pub fn normal(part: Part, p: Vec3) -> Vec3 {
-    // BEGIN SOLUTION 2.20
+    // BEGIN SOLUTION cone_normal
     match part {
         Part::Base => Vec3::NEG_Z,
         Part::Apex => Vec3::Z,
@@ -77,7 +77,7 @@ pub fn normal(part: Part, p: Vec3) -> Vec3 {
 /// Intersects an object-space ray with the closed generic cone.
 #[must_use]
 pub fn intersect(ray: &Ray, numerics: Numerics) -> Hits {
-    // BEGIN SOLUTION 2.21
+    // BEGIN SOLUTION hit_cone
     // The notes' method: roots kept when z ∈ [−1, 1], and the base plane z = −1 kept when the
     // point lies inside the base circle (radius 2, not the notes' 1).
     fn intersect_textbook(ray: &Ray) -> Hits {

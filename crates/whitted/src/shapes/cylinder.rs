@@ -22,7 +22,7 @@ use crate::real::{Real, Vec3};
 /// The wall's quadratic coefficients (a, b, c) for a·t² + 2b·t + c = 0.
 #[must_use]
 pub fn coefficients(ray: &Ray) -> (Real, Real, Real) {
-    // BEGIN SOLUTION 2.14
+    // BEGIN SOLUTION cylinder_coefficients
     let (e, d) = (ray.origin, ray.dir);
     (
         d.x * d.x + d.y * d.y,       // a = d_x² + d_y²
@@ -37,7 +37,7 @@ pub fn coefficients(ray: &Ray) -> (Real, Real, Real) {
 /// taken between numbers of the size of the radius, not of |e|², as for the sphere.
 #[must_use]
 pub fn discriminant(ray: &Ray, a: Real, b: Real) -> Real {
-    // BEGIN SOLUTION 2.15
+    // BEGIN SOLUTION cylinder_discriminant
     let f = ray.origin.truncate() - ray.dir.truncate() * (b / a);
     a * (1.0 - f.dot(f))
     // END SOLUTION
@@ -46,7 +46,7 @@ pub fn discriminant(ray: &Ray, a: Real, b: Real) -> Real {
 /// The object-space normal of `part` at the point p.
 #[must_use]
 pub fn normal(part: Part, p: Vec3) -> Vec3 {
-    // BEGIN SOLUTION 2.16
+    // BEGIN SOLUTION cylinder_normal
     match part {
         Part::TopCap => Vec3::Z,
         Part::BottomCap => Vec3::NEG_Z,
@@ -58,7 +58,7 @@ pub fn normal(part: Part, p: Vec3) -> Vec3 {
 /// Intersects an object-space ray with the closed unit cylinder.
 #[must_use]
 pub fn intersect(ray: &Ray, numerics: Numerics) -> Hits {
-    // BEGIN SOLUTION 2.17
+    // BEGIN SOLUTION hit_cylinder
     // The notes' method as written: roots of the wall quadratic kept when z ∈ [−1, 1], cap
     // planes kept when the point lies inside the unit circle.
     fn intersect_textbook(ray: &Ray) -> Hits {

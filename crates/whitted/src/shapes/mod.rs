@@ -153,7 +153,7 @@ impl Hits {
     /// hits come in increasing t).
     #[must_use]
     pub fn first_after(&self, t_min: Real) -> Option<Hit> {
-        // BEGIN SOLUTION 2.24
+        // BEGIN SOLUTION visible_hit
         self.as_slice().iter().copied().find(|h| h.t > t_min)
         // END SOLUTION
     }
@@ -177,7 +177,7 @@ pub struct Nearest {
 #[inline]
 #[must_use]
 pub fn nearer(t: Real, object: usize, best_t: Real, best_object: usize) -> bool {
-    // BEGIN SOLUTION 2.25
+    // BEGIN SOLUTION nearer_hit
     t < best_t || (t == best_t && object < best_object)
     // END SOLUTION
 }
@@ -209,7 +209,7 @@ impl Shape {
     #[must_use]
     pub fn intersect_placed(&self, inv: &Mat4, ray: &Ray, numerics: Numerics) -> Hits {
         // ANCHOR_END: ch2_intersect_placed_sig
-        // BEGIN SOLUTION 2.12
+        // BEGIN SOLUTION hit_placed_shape
         self.intersect_local(&ray.transformed(inv), numerics)
         // END SOLUTION
     }

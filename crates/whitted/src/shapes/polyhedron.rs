@@ -64,7 +64,7 @@ impl Facet {
 #[inline]
 #[must_use]
 pub fn facet_t(facet: &Facet, ray: &Ray) -> Real {
-    // BEGIN SOLUTION 2.22
+    // BEGIN SOLUTION facet_crossing
     (facet.d() - facet.normal().dot(ray.origin)) / facet.normal().dot(ray.dir)
     // END SOLUTION
 }
@@ -160,7 +160,7 @@ impl Polyhedron {
     /// Clips the object-space ray against every facet (the notes' "Convex Polyhedra").
     #[must_use]
     pub fn intersect(&self, ray: &Ray) -> Hits {
-        // BEGIN SOLUTION 2.23
+        // BEGIN SOLUTION hit_polyhedron
         let mut t_near = Real::NEG_INFINITY;
         let mut t_far = Real::INFINITY;
         let (mut near_facet, mut far_facet) = (0, 0);

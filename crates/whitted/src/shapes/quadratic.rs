@@ -90,7 +90,7 @@ pub fn discriminant(a: Real, b: Real, c: Real) -> Real {
 /// are dropped.
 #[must_use]
 pub fn solve_with_discriminant(a: Real, b: Real, c: Real, disc: Real, numerics: Numerics) -> Roots {
-    // BEGIN SOLUTION 2.9
+    // BEGIN SOLUTION quadratic_roots
     // The notes' t = −b/a ± √(b² − ac)/a, as printed.
     fn textbook_roots(a: Real, b: Real, disc: Real) -> Roots {
         if disc.is_nan() || disc < 0.0 {
@@ -137,7 +137,7 @@ pub fn solve(a: Real, b: Real, c: Real, numerics: Numerics) -> Roots {
 /// `None` when Δ < 0, or when a root is NaN (a = b = 0).
 #[must_use]
 pub fn stable_roots(a: Real, b: Real, c: Real, disc: Real) -> Option<(Real, Real)> {
-    // BEGIN SOLUTION 2.8
+    // BEGIN SOLUTION stable_roots
     if disc.is_nan() || disc < 0.0 {
         return None;
     }

@@ -18,7 +18,7 @@ use crate::real::{Real, Vec3};
 /// The sphere's quadratic coefficients (a, b, c) for a·t² + 2b·t + c = 0.
 #[must_use]
 pub fn coefficients(ray: &Ray) -> (Real, Real, Real) {
-    // BEGIN SOLUTION 2.6
+    // BEGIN SOLUTION sphere_coefficients
     let (e, d) = (ray.origin, ray.dir);
     (d.dot(d), e.dot(d), e.dot(e) - 1.0) // a = |d|², b = e·d, c = |e|² − 1
     // END SOLUTION
@@ -28,7 +28,7 @@ pub fn coefficients(ray: &Ray) -> (Real, Real, Real) {
 /// closest to the centre (Ray Tracing Gems, ch. 7): both terms are of the size of the radius.
 #[must_use]
 pub fn discriminant(ray: &Ray, a: Real, b: Real) -> Real {
-    // BEGIN SOLUTION 2.7
+    // BEGIN SOLUTION sphere_discriminant
     let f = ray.origin - ray.dir * (b / a);
     a * (1.0 - f.dot(f))
     // END SOLUTION
@@ -37,7 +37,7 @@ pub fn discriminant(ray: &Ray, a: Real, b: Real) -> Real {
 /// The normal at the point P of the generic sphere: P itself.
 #[must_use]
 pub fn normal(p: Vec3) -> Vec3 {
-    // BEGIN SOLUTION 2.10
+    // BEGIN SOLUTION sphere_normal
     // on the unit sphere about the origin, the point is its own outward unit normal: n = P
     p
     // END SOLUTION
@@ -46,7 +46,7 @@ pub fn normal(p: Vec3) -> Vec3 {
 /// Intersects an object-space ray with the unit sphere.
 #[must_use]
 pub fn intersect(ray: &Ray, numerics: Numerics) -> Hits {
-    // BEGIN SOLUTION 2.11
+    // BEGIN SOLUTION hit_sphere
     let (a, b, c) = coefficients(ray);
     if a == 0.0 || !a.is_finite() {
         return Hits::none();

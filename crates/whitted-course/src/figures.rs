@@ -1,0 +1,326 @@
+//! The course book's figures: every render in the book is made by a chapter binary from a
+//! scene of the repository; the manifest `docs/figures.toml` lists them, one `[[figure]]`
+//! table each:
+//!
+//! ```toml
+//! [[figure]]
+//! file = "ch02-normals.png"          # under docs/src/figures/
+//! binary = "ch02_generic_objects"     # one of the chapter binaries
+//! args = ["scenes/ch02_generic_objects.toml", "--view", "normals", "--width", "320"]
+//! ```
+//!
+//! `whitted figures` renders them all (`BINARY ARGS -o docs/src/figures/FILE`, from the
+//! project's root); `whitted figures --check` renders them to a temporary directory and
+//! compares each with the committed PNG, pixel by pixel, within [`TOLERANCE`].
+//!
+//! Course book: [Introduction](../../../../docs/book/introduction.html) (`docs/src/introduction.md`).
+
+use std::collections::HashMap;
+use std::ops::Range;
+use std::path::Path;
+use std::process::ExitCode;
+
+use serde::Deserialize;
+
+use crate::ToolError;
+use crate::files::line_col;
+use crate::manifest::{error_at, from_toml};
+
+/// The largest difference, in 8-bit levels, between a committed figure and a fresh render of
+/// it that `whitted figures --check` accepts: floating point may round the last bit
+/// differently on another machine, and one level is 1/255.
+pub const TOLERANCE: u8 = 1;
+
+/// One render of the book, as the manifest lists it.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Figure {
+    /// The PNG's name under `docs/src/figures/`.
+    pub file: String,
+    /// The chapter binary that renders it.
+    pub binary: String,
+    /// Its arguments, all but `-o`; paths are relative to the project's root.
+    pub args: Vec<String>,
+    /// The line of the manifest where its table starts.
+    pub line: usize,
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct RawFigures {
+    #[serde(default)]
+    figure: Vec<toml::Spanned<RawFigure>>,
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct RawFigure {
+    file: toml::Spanned<String>,
+    binary: toml::Spanned<String>,
+    args: Vec<String>,
+}
+
+/// Reads the figures' manifest; a mistake is reported as `file:line:col: …`.
+pub fn read_figures(path: &Path) -> Result<Vec<Figure>, ToolError> {
+    let text = std::fs::read_to_string(path).map_err(|e| ToolError::io(path, e))?;
+    parse_figures(&text, &path.display().to_string())
+}
+
+/// Checks the manifest text `text`; `file` names it in messages. Each `file` must be a plain
+/// `NAME.png` (no directory) named once, each `binary` a chapter binary of the syllabus, and `args` must
+/// not say where to write (`-o`/`--output`): the manifest's `file` does.
+pub fn parse_figures(text: &str, file: &str) -> Result<Vec<Figure>, ToolError> {
+    let err = |span: Range<usize>, message: String| error_at(text, file, span, message);
+    let raw: RawFigures = from_toml(text, file)?;
+    let mut seen: HashMap<String, usize> = HashMap::new();
+    let mut figures = Vec::new();
+    for spanned in &raw.figure {
+        let raw = spanned.get_ref();
+        let name = raw.file.get_ref();
+        let plain = !name.contains(['/', '\\']) && name.len() > 4 && name.ends_with(".png");
+        if !plain {
+            return Err(err(
+                raw.file.span(),
+                format!("file `{name}` must be a name ending in .png, without a directory"),
+            ));
+        }
+        let (line, _) = line_col(text, spanned.span().start);
+        if let Some(first) = seen.insert(name.clone(), line) {
+            return Err(err(
+                raw.file.span(),
+                format!("file `{name}` is listed twice (first on line {first})"),
+            ));
+        }
+        if crate::syllabus::by_binary(raw.binary.get_ref()).is_none() {
+            return Err(err(
+                raw.binary.span(),
+                format!(
+                    "binary `{}` is not a chapter binary (one of {})",
+                    raw.binary.get_ref(),
+                    crate::syllabus::CHAPTERS
+                        .iter()
+                        .map(|c| c.binary)
+                        .collect::<Vec<_>>()
+                        .join(", ")
+                ),
+            ));
+        }
+        if let Some(o) = raw
+            .args
+            .iter()
+            .find(|a| *a == "-o" || a.starts_with("--output"))
+        {
+            return Err(err(
+                spanned.span(),
+                format!("args must not contain `{o}`: the figure's `file` says where it goes"),
+            ));
+        }
+        figures.push(Figure {
+            file: name.clone(),
+            binary: raw.binary.get_ref().clone(),
+            args: raw.args.clone(),
+            line,
+        });
+    }
+    Ok(figures)
+}
+
+/// Renders `figure` to `out` with the binary of that name in `bin_dir`, from `root` (so that
+/// the scene paths of its arguments resolve). The binary's own message is the error.
+pub fn render(figure: &Figure, bin_dir: &Path, root: &Path, out: &Path) -> Result<(), ToolError> {
+    let binary = bin_dir.join(format!("{}{}", figure.binary, std::env::consts::EXE_SUFFIX));
+    if !binary.is_file() {
+        return Err(ToolError::Usage(format!(
+            "{} is not built: run `cargo build --bins` (or --release) first",
+            binary.display()
+        )));
+    }
+    let result = std::process::Command::new(&binary)
+        .args(&figure.args)
+        .arg("-o")
+        .arg(out)
+        .arg("--quiet")
+        .current_dir(root)
+        .output()
+        .map_err(|e| ToolError::io(&binary, e))?;
+    if result.status.success() {
+        Ok(())
+    } else {
+        let stderr = String::from_utf8_lossy(&result.stderr);
+        Err(ToolError::Figure(format!(
+            "{} {}: {}",
+            figure.binary,
+            figure.args.join(" "),
+            stderr.trim()
+        )))
+    }
+}
+
+/// How a fresh render differs from the committed figure.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Difference {
+    /// Every channel of every pixel is within [`TOLERANCE`].
+    Same,
+    /// The two images do not have the same size: (committed, fresh), as (width, height).
+    Size((u32, u32), (u32, u32)),
+    /// `pixels` pixels have a channel off by more than the tolerance, at most by `largest`
+    /// levels; `first` is the first such pixel, (x, y) from the top left.
+    Pixels {
+        /// How many pixels differ.
+        pixels: usize,
+        /// The largest difference of a channel, in 8-bit levels.
+        largest: u8,
+        /// The first pixel that differs.
+        first: (u32, u32),
+    },
+}
+
+/// Compares two PNGs channel by channel; a difference of at most `tolerance` levels counts as
+/// the same.
+pub fn compare(committed: &Path, fresh: &Path, tolerance: u8) -> Result<Difference, ToolError> {
+    let (a, b) = (read_rgba(committed)?, read_rgba(fresh)?);
+    if a.0 != b.0 {
+        return Ok(Difference::Size(a.0, b.0));
+    }
+    let mut pixels = 0;
+    let mut largest = 0;
+    let mut first = None;
+    let width = a.0.0 as usize;
+    for (i, (p, q)) in a.1.chunks_exact(4).zip(b.1.chunks_exact(4)).enumerate() {
+        let (x, y) = ((i % width) as u32, (i / width) as u32);
+        let off = p
+            .iter()
+            .zip(q)
+            .map(|(u, v)| u.abs_diff(*v))
+            .max()
+            .unwrap_or(0);
+        if off > tolerance {
+            pixels += 1;
+            largest = largest.max(off);
+            first.get_or_insert((x, y));
+        }
+    }
+    Ok(match first {
+        None => Difference::Same,
+        Some(first) => Difference::Pixels {
+            pixels,
+            largest,
+            first,
+        },
+    })
+}
+
+/// A PNG's size and its pixels as 8-bit RGBA, row by row from the top.
+fn read_rgba(path: &Path) -> Result<((u32, u32), Vec<u8>), ToolError> {
+    let fail =
+        |e: String| ToolError::Usage(format!("{}: cannot read the PNG: {e}", path.display()));
+    let file = std::fs::File::open(path).map_err(|e| fail(e.to_string()))?;
+    let mut decoder = png::Decoder::new(std::io::BufReader::new(file));
+    decoder.set_transformations(png::Transformations::EXPAND | png::Transformations::STRIP_16);
+    let mut reader = decoder.read_info().map_err(|e| fail(e.to_string()))?;
+    let mut buf = vec![0; reader.output_buffer_size().unwrap_or(0)];
+    let info = reader
+        .next_frame(&mut buf)
+        .map_err(|e| fail(e.to_string()))?;
+    let samples = info.color_type.samples();
+    let rgba = buf[..info.buffer_size()]
+        .chunks_exact(samples)
+        .flat_map(|p| match *p {
+            [g] => [g, g, g, 255],
+            [g, a] => [g, g, g, a],
+            [r, g, b] => [r, g, b, 255],
+            [r, g, b, a, ..] => [r, g, b, a],
+            [] => [0, 0, 0, 0],
+        })
+        .collect();
+    Ok(((info.width, info.height), rgba))
+}
+
+/// `whitted figures [--check]`: renders the book's figures with the chapter binaries built
+/// next to this program, or (`check`) compares fresh renders with the committed ones (status
+/// 1 when some differ); `only` keeps the figures whose file names contain it.
+pub fn command(root: &Path, check: bool, only: Option<&str>) -> Result<ExitCode, ToolError> {
+    let manifest = root.join("docs/figures.toml");
+    let mut figures = read_figures(&manifest)?;
+    if let Some(only) = only {
+        figures.retain(|f| f.file.contains(only));
+        if figures.is_empty() {
+            return Err(ToolError::Usage(format!(
+                "--only {only}: no figure of {} has it in its name",
+                manifest.display()
+            )));
+        }
+    }
+    let exe = std::env::current_exe().map_err(|e| ToolError::io("whitted", e))?;
+    let bin_dir = exe.parent().unwrap_or(Path::new("."));
+    let dir = root.join("docs/src/figures");
+    std::fs::create_dir_all(&dir).map_err(|e| ToolError::io(&dir, e))?;
+    let scratch = tempfile::Builder::new()
+        .prefix(".figures-")
+        .tempdir_in(&dir)
+        .map_err(|e| ToolError::io(&dir, e))?;
+    let mut differ = 0;
+    for (k, figure) in figures.iter().enumerate() {
+        let fresh = scratch.path().join(&figure.file);
+        let committed = dir.join(&figure.file);
+        let started = std::time::Instant::now();
+        render(figure, bin_dir, root, &fresh)?;
+        let ms = started.elapsed().as_millis();
+        let n = figures.len();
+        if !check {
+            std::fs::rename(&fresh, &committed).map_err(|e| ToolError::io(&committed, e))?;
+            println!(
+                "[{}/{n}] wrote docs/src/figures/{} ({ms} ms)",
+                k + 1,
+                figure.file
+            );
+            continue;
+        }
+        if !committed.is_file() {
+            differ += 1;
+            println!(
+                "[{}/{n}] docs/src/figures/{}: missing (docs/figures.toml:{}): run `whitted figures`",
+                k + 1,
+                figure.file,
+                figure.line
+            );
+            continue;
+        }
+        let verdict = match compare(&committed, &fresh, TOLERANCE)? {
+            Difference::Same => "the same".to_string(),
+            Difference::Size(a, b) => {
+                differ += 1;
+                format!(
+                    "DIFFERS: {}×{} committed, {}×{} rendered",
+                    a.0, a.1, b.0, b.1
+                )
+            }
+            Difference::Pixels {
+                pixels,
+                largest,
+                first,
+            } => {
+                differ += 1;
+                format!(
+                    "DIFFERS: {pixels} pixel{} off by up to {largest}/255, the first at ({}, {})",
+                    if pixels == 1 { "" } else { "s" },
+                    first.0,
+                    first.1
+                )
+            }
+        };
+        println!(
+            "[{}/{n}] docs/src/figures/{} (docs/figures.toml:{}): {verdict} ({ms} ms)",
+            k + 1,
+            figure.file,
+            figure.line
+        );
+    }
+    if differ > 0 {
+        println!(
+            "{differ} of {} figures differ from a fresh render: if the change is meant, run `whitted figures` and commit them",
+            figures.len()
+        );
+        return Ok(ExitCode::from(1));
+    }
+    Ok(ExitCode::SUCCESS)
+}

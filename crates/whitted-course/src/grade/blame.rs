@@ -1,0 +1,93 @@
+//! Building the graded copy, and blaming each compiler error on the exercise whose body holds
+//! it: that body goes back to its `todo!()` and the build is tried again.
+//!
+//! Course book: [The instructor's guide](../../../../../docs/book/instructor-guide.html) (`docs/src/instructor-guide.md`).
+
+use std::collections::BTreeMap;
+use std::path::{Path, PathBuf};
+
+use super::splice::{BodyLines, Spliced};
+use crate::{ToolError, cargo, layout};
+
+/// A compiler error: the file and line of its primary span, and its message with its place.
+pub(super) type CompileError = ((PathBuf, usize), String);
+
+/// Builds the test targets; returns the compiler's errors, each as the primary span's file
+/// and line, and the error's first line with its place (empty when the build succeeded).
+pub(super) fn build(
+    project: &Path,
+    target_dir: &Path,
+    targets: &[String],
+) -> Result<Vec<CompileError>, ToolError> {
+    let built = cargo::Build {
+        project,
+        packages: &[layout::CORE_PACKAGE],
+        tests: targets,
+        bins: &[],
+        profile: None,
+        features: &[],
+        target_dir: Some(target_dir),
+        debug_info: false,
+        locked: true,
+        stderr: cargo::Stderr::Keep,
+    }
+    .run()?;
+    if built.success {
+        return Ok(Vec::new());
+    }
+    let mut errors: Vec<CompileError> = built
+        .errors
+        .iter()
+        .map(|d| {
+            (
+                (d.file.clone(), d.line),
+                format!("{}:{}: {}", d.file.display(), d.line, d.message),
+            )
+        })
+        .collect();
+    if errors.is_empty() {
+        errors.push(((PathBuf::new(), 0), built.first_error()));
+    }
+    Ok(errors)
+}
+
+/// The exercises whose bodies hold the errors, each with its first error; `placed` gives
+/// each file's body lines as [`Spliced::text`] wrote them.
+pub(super) fn blame(
+    placed: &[(PathBuf, Vec<BodyLines>)],
+    errors: &[CompileError],
+) -> BTreeMap<usize, String> {
+    let mut out = BTreeMap::new();
+    for ((file, line), message) in errors {
+        for (_, lines) in placed.iter().filter(|(f, _)| f == file) {
+            for &(entry, first, last) in lines {
+                if (first..=last).contains(line) {
+                    out.entry(entry).or_insert_with(|| message.clone());
+                }
+            }
+        }
+    }
+    out
+}
+
+/// Every region of the files the errors are in whose entry passes `graded` (still the
+/// student's), each with the file's first error.
+pub(super) fn blame_files(
+    files: &[Spliced],
+    errors: &[CompileError],
+    graded: impl Fn(usize) -> bool,
+) -> BTreeMap<usize, String> {
+    let mut out = BTreeMap::new();
+    for ((file, _), message) in errors {
+        for f in files.iter().filter(|f| &f.file == file) {
+            for (r, _) in &f.regions {
+                if graded(r.entry) {
+                    out.entry(r.entry).or_insert_with(|| {
+                        format!("{message} (the error could not be placed in one body of this file, so each is graded as not written)")
+                    });
+                }
+            }
+        }
+    }
+    out
+}

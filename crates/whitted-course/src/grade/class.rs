@@ -1,0 +1,87 @@
+//! Grading a class: every submission of a directory, a few at a time, each worker with a build
+//! directory of its own.
+//!
+//! Course book: [The instructor's guide](../../../../../docs/book/instructor-guide.html) (`docs/src/instructor-guide.md`).
+
+use std::path::{Path, PathBuf};
+
+use super::{Grade, GradeSetup, grade};
+use crate::ToolError;
+use crate::manifest::Manifest;
+
+/// One submission of a class and how its grading went.
+#[derive(Clone, Debug)]
+pub struct ClassEntry {
+    /// The submission's directory name.
+    pub student: String,
+    /// Its grade, or why it could not be graded (not a copy of the project …).
+    pub grade: Result<Grade, String>,
+}
+
+/// Grades every submission of a class: each subdirectory of `dir`, in name order, `jobs` at
+/// a time, each in its own copy. With `options.target_dir` set, each of the `jobs` workers
+/// builds into its own directory under it (`slot-0`, `slot-1` …), kept from one submission
+/// to the next, so the dependencies are built once per worker. (One shared directory would
+/// not do: every copy of the crate builds its tests to the same file names, and one
+/// submission's tests would run another's code.) A submission that cannot be graded is
+/// reported and the others go on.
+pub fn grade_class(
+    root: &Path,
+    manifest: &Manifest,
+    dir: &Path,
+    options: &GradeSetup,
+    jobs: usize,
+    done: &(dyn Fn(&ClassEntry) + Sync),
+) -> Result<Vec<ClassEntry>, ToolError> {
+    let mut submissions: Vec<PathBuf> = std::fs::read_dir(dir)
+        .map_err(|e| ToolError::io(dir, e))?
+        .filter_map(Result::ok)
+        .map(|e| e.path())
+        .filter(|p| {
+            p.is_dir()
+                && !p
+                    .file_name()
+                    .is_some_and(|n| n.to_string_lossy().starts_with('.'))
+        })
+        .collect();
+    submissions.sort();
+    if submissions.is_empty() {
+        return Err(ToolError::Usage(format!(
+            "--class {}: no submission directory in it",
+            dir.display()
+        )));
+    }
+    let items: Vec<usize> = (0..submissions.len()).collect();
+    // one build directory per worker: two copies of the crate build to the same file names,
+    // so two submissions must never share one at the same time
+    let slots: std::sync::Mutex<Vec<Option<PathBuf>>> = std::sync::Mutex::new(
+        (0..jobs.max(1))
+            .map(|i| {
+                options
+                    .target_dir
+                    .as_ref()
+                    .map(|t| t.join(format!("slot-{i}")))
+            })
+            .collect(),
+    );
+    crate::parallel::in_parallel(&items, jobs, |i| {
+        let path = &submissions[i];
+        let slot = slots
+            .lock()
+            .unwrap_or_else(|p| p.into_inner())
+            .pop()
+            .flatten();
+        let mut own = options.clone();
+        own.target_dir.clone_from(&slot);
+        let entry = ClassEntry {
+            student: path.file_name().map_or_else(
+                || path.display().to_string(),
+                |n| n.to_string_lossy().into_owned(),
+            ),
+            grade: grade(root, manifest, path, &own).map_err(|e| e.to_string()),
+        };
+        slots.lock().unwrap_or_else(|p| p.into_inner()).push(slot);
+        done(&entry);
+        Ok(entry)
+    })
+}

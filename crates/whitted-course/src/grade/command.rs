@@ -1,0 +1,157 @@
+//! `whitted grade` as the command line asks: one submission, its table on stdout and the
+//! reports asked for, or a class, a directory of reports per student and the gradebook.
+//!
+//! Course book: [The instructor's guide](../../../../../docs/book/instructor-guide.html) (`docs/src/instructor-guide.md`).
+
+use std::path::Path;
+use std::process::ExitCode;
+
+use super::{Grade, GradeSetup};
+use crate::manifest::Manifest;
+use crate::{ToolError, files};
+
+/// The reports of one submission, each written where it says (atomically).
+#[derive(Clone, Copy, Debug, Default)]
+pub struct Reports<'a> {
+    /// Gradescope's `results.json`.
+    pub json: Option<&'a Path>,
+    /// A JUnit XML report.
+    pub junit: Option<&'a Path>,
+    /// The gradebook's header and this submission's row (CSV).
+    pub csv: Option<&'a Path>,
+}
+
+/// A class to grade: every subdirectory of `dir`, reports into `out`, `jobs` at a time (the
+/// cores when `None`).
+#[derive(Clone, Copy, Debug)]
+pub struct Class<'a> {
+    /// The directory of submissions.
+    pub dir: &'a Path,
+    /// Where the reports go (one directory per student, and class.csv).
+    pub out: &'a Path,
+    /// Submissions graded at a time.
+    pub jobs: Option<usize>,
+}
+
+/// Grades `submission` (the instructor's project `root` when `None`) or, with `class`, a
+/// whole class, and writes the reports.
+pub fn command(
+    root: &Path,
+    manifest: &Manifest,
+    setup: &GradeSetup,
+    submission: Option<&Path>,
+    class: Option<Class<'_>>,
+    reports: Reports<'_>,
+) -> Result<ExitCode, ToolError> {
+    if let Some(hidden) = &setup.hidden
+        && !hidden.is_dir()
+    {
+        return Err(ToolError::Usage(format!(
+            "--hidden {}: not a directory",
+            hidden.display()
+        )));
+    }
+    if let Some(Class {
+        dir: class,
+        out,
+        jobs,
+    }) = class
+    {
+        std::fs::create_dir_all(out).map_err(|e| ToolError::io(out, e))?;
+        let out = out.canonicalize().map_err(|e| ToolError::io(out, e))?;
+        let jobs =
+            jobs.unwrap_or_else(|| std::thread::available_parallelism().map_or(1, usize::from));
+        let start = std::time::Instant::now();
+        let entries =
+            super::grade_class(root, manifest, class, setup, jobs, &|e| match &e.grade {
+                Ok(g) => eprintln!(
+                    "graded {}: {} / {} points in {:.0} s",
+                    e.student,
+                    crate::report::points(g.score()),
+                    crate::report::points(g.max()),
+                    g.elapsed.as_secs_f64()
+                ),
+                Err(why) => eprintln!("could not grade {}: {why}", e.student),
+            })?;
+        let chapters: Vec<u8> = setup.chapter.map_or_else(
+            || crate::syllabus::CHAPTERS.iter().map(|c| c.number).collect(),
+            |c| vec![c],
+        );
+        let mut csv = crate::report::csv_header(manifest, &chapters) + "\n";
+        for e in &entries {
+            match &e.grade {
+                Ok(g) => {
+                    let dir = out.join(&e.student);
+                    std::fs::create_dir_all(&dir).map_err(|err| ToolError::io(&dir, err))?;
+                    write_reports(
+                        g,
+                        manifest,
+                        Some(&dir.join("report.txt")),
+                        Some(&dir.join("results.json")),
+                        Some(&dir.join("junit.xml")),
+                        None,
+                    )?;
+                    csv += &crate::report::csv_row(g, manifest);
+                }
+                Err(why) => {
+                    csv += &format!("{},0,,\"not graded: {}\"", e.student, why.replace('"', "'"))
+                }
+            }
+            csv.push('\n');
+        }
+        files::write_file(&out.join("class.csv"), csv.as_bytes())?;
+        let graded = entries.iter().filter(|e| e.grade.is_ok()).count();
+        let mut times: Vec<f64> = entries
+            .iter()
+            .filter_map(|e| e.grade.as_ref().ok().map(|g| g.elapsed.as_secs_f64()))
+            .collect();
+        times.sort_by(f64::total_cmp);
+        let median = times.get(times.len() / 2).copied().unwrap_or(0.0);
+        println!(
+            "graded {graded} of {} submissions in {:.0} s ({jobs} at a time; median {:.0} s each); reports in {}, the gradebook in {}",
+            entries.len(),
+            start.elapsed().as_secs_f64(),
+            median,
+            out.display(),
+            out.join("class.csv").display()
+        );
+        return Ok(ExitCode::SUCCESS);
+    }
+    let submission = submission.unwrap_or(root);
+    let g = super::grade(root, manifest, submission, setup)?;
+    print!("{}", crate::report::table(&g, manifest));
+    write_reports(&g, manifest, None, reports.json, reports.junit, reports.csv)?;
+    Ok(ExitCode::SUCCESS)
+}
+
+/// Writes the reports asked for, each atomically.
+fn write_reports(
+    g: &Grade,
+    manifest: &Manifest,
+    text: Option<&Path>,
+    json: Option<&Path>,
+    junit: Option<&Path>,
+    csv: Option<&Path>,
+) -> Result<(), ToolError> {
+    if let Some(path) = text {
+        files::write_file(path, crate::report::table(g, manifest).as_bytes())?;
+    }
+    if let Some(path) = json {
+        let value = crate::report::gradescope(g, manifest);
+        let text = serde_json::to_string_pretty(&value)
+            .map_err(|e| ToolError::Usage(format!("cannot write JSON: {e}")))?;
+        files::write_file(path, (text + "\n").as_bytes())?;
+    }
+    if let Some(path) = junit {
+        files::write_file(path, crate::report::junit(g, manifest).as_bytes())?;
+    }
+    if let Some(path) = csv {
+        let text = format!(
+            "{}\n{}\n",
+            crate::report::csv_header(manifest, &g.chapters),
+            crate::report::csv_row(g, manifest)
+        );
+        files::write_file(path, text.as_bytes())?;
+    }
+    Ok(())
+}

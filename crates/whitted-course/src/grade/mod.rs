@@ -1,0 +1,373 @@
+//! `whitted grade`: a student's copy graded by the instructor's tests, points from the
+//! manifest.
+//!
+//! What is graded is the student's code and nothing else: the body of each exercise, the lines
+//! between `// BEGIN SOLUTION sphere_coefficients` and `// END SOLUTION` in the student's files. Those bodies
+//! are put into a copy of the **instructor's** project — its tests, its manifest, its
+//! `Cargo.lock`, its code around the exercises — so a student who edits a test, the manifest
+//! or the renderer gains nothing. An exercise whose markers are missing counts as not written.
+//! With a build directory ([`GradeSetup::target_dir`]) the copy is kept beside it and rewritten
+//! file by file for each submission, so that cargo recompiles only the bodies that differ from
+//! the last submission's; without one, it is a fresh temporary directory.
+//!
+//! Then, in that copy:
+//!
+//! 1. **Build.** An exercise whose body does not compile is put back to its `todo!()` and the
+//!    build is tried again, so a compile error costs only the exercise it is in; its first
+//!    error goes into the report.
+//! 2. **Run** every test of the graded chapters with cargo-nextest, each test in its own
+//!    process with its own time limit: a `todo!()`, a panic, a stack overflow, an abort or an
+//!    endless loop fails the tests it touches and no others.
+//! 3. **Score.** An exercise's points ([`super::manifest::Exercise::points`]) are shared
+//!    equally by its tests, the ones named after it (`ex_sphere_coefficients_…`), public and
+//!    hidden alike.
+//!
+//! Hidden tests are the instructor's own test files (`--hidden DIR`, each `*.rs` a test target
+//! added to the copy as `tests/hidden_NAME.rs`), compiled against the same public API. Their
+//! tests follow the same naming, so they count for the exercise they name; reports for
+//! students show their points, never their names or messages ([`super::report`]).
+//!
+//! Course book: [The instructor's guide](../../../../docs/book/instructor-guide.html) (`docs/src/instructor-guide.md`).
+
+mod blame;
+mod class;
+pub mod command;
+mod junit;
+mod nextest;
+mod splice;
+
+use std::collections::{BTreeMap, BTreeSet};
+use std::path::{Path, PathBuf};
+use std::time::{Duration, Instant};
+
+use super::handout;
+use super::manifest::Manifest;
+use super::{ToolError, files, layout};
+
+pub use class::{ClassEntry, grade_class};
+pub use junit::{panic_message, parse_junit};
+pub use nextest::NEXTEST_PROFILE;
+pub use splice::student_body;
+
+/// The graded copy's directory, inside the build directory when grading has one.
+const COPY: &str = "graded-copy";
+
+/// The default time limit of one test.
+pub const DEFAULT_TIMEOUT: Duration = Duration::from_secs(20);
+
+/// How a grading is set up: which chapter, the hidden tests, the time limit, where it builds.
+#[derive(Clone, Debug)]
+pub struct GradeSetup {
+    /// Grade only this chapter (its exercises and its test file); all five when `None`.
+    pub chapter: Option<u8>,
+    /// The instructor's hidden tests: a directory of `*.rs` test files.
+    pub hidden: Option<PathBuf>,
+    /// The time limit of each test.
+    pub timeout: Duration,
+    /// Where cargo builds, kept from one grading to the next so the dependencies are built
+    /// once, with the graded copy beside the build (a class gives each worker its own
+    /// directory under it); a fresh copy with its own `target/` when `None`. Never to be used
+    /// by two gradings at once.
+    pub target_dir: Option<PathBuf>,
+    /// Keep the graded copy (its path is printed) instead of removing it.
+    pub keep: bool,
+}
+
+impl Default for GradeSetup {
+    fn default() -> Self {
+        Self {
+            chapter: None,
+            hidden: None,
+            timeout: DEFAULT_TIMEOUT,
+            target_dir: None,
+            keep: false,
+        }
+    }
+}
+
+/// How one test ended.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum Status {
+    /// It passed.
+    Passed,
+    /// It failed: an assertion, a panic, a `todo!()`.
+    Failed,
+    /// It ran past its time limit and was stopped.
+    TimedOut,
+    /// Its process died: a stack overflow, an abort, a signal.
+    Crashed,
+}
+
+impl Status {
+    /// The word for reports.
+    #[must_use]
+    pub fn word(&self) -> &'static str {
+        match self {
+            Status::Passed => "passed",
+            Status::Failed => "failed",
+            Status::TimedOut => "timed out",
+            Status::Crashed => "crashed",
+        }
+    }
+}
+
+/// One test's result.
+#[derive(Clone, Debug, PartialEq)]
+pub struct TestResult {
+    /// The test's name within its target, with its module path (`ex_near_plane_half_width_…`,
+    /// `sphere::ex_sphere_discriminant_…`).
+    pub name: String,
+    /// Its test target (`ch02_generic_objects`, `hidden_extra`).
+    pub target: String,
+    /// The manifest entry of the exercise it belongs to, if its name says one.
+    pub exercise: Option<usize>,
+    /// Whether it is one of the instructor's hidden tests.
+    pub hidden: bool,
+    /// How it ended.
+    pub status: Status,
+    /// Why it failed, in a line or two (empty when it passed).
+    pub message: String,
+}
+
+/// One exercise's points.
+#[derive(Clone, Debug, PartialEq)]
+pub struct ExerciseScore {
+    /// The manifest entry.
+    pub entry: usize,
+    /// Points earned.
+    pub score: f64,
+    /// Points possible.
+    pub max: f64,
+    /// Its tests that passed.
+    pub passed: usize,
+    /// Its tests.
+    pub total: usize,
+    /// What the grader noticed: the body did not compile, its markers were missing …
+    pub note: Option<String>,
+}
+
+/// A graded submission.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Grade {
+    /// The submission's name (its directory's name).
+    pub student: String,
+    /// The chapters graded.
+    pub chapters: Vec<u8>,
+    /// The exercises of those chapters, in manifest order.
+    pub exercises: Vec<ExerciseScore>,
+    /// Every test run.
+    pub tests: Vec<TestResult>,
+    /// Remarks about the whole submission (it did not build at all …).
+    pub notes: Vec<String>,
+    /// How long grading took.
+    pub elapsed: Duration,
+}
+
+impl Grade {
+    /// Points earned.
+    #[must_use]
+    pub fn score(&self) -> f64 {
+        self.exercises.iter().map(|e| e.score).sum()
+    }
+
+    /// Points possible.
+    #[must_use]
+    pub fn max(&self) -> f64 {
+        self.exercises.iter().map(|e| e.max).sum()
+    }
+
+    /// Points earned and possible in chapter `chapter`.
+    #[must_use]
+    pub fn chapter(&self, manifest: &Manifest, chapter: u8) -> (f64, f64) {
+        self.exercises
+            .iter()
+            .filter(|e| manifest.entries[e.entry].chapter == chapter)
+            .fold((0.0, 0.0), |(s, m), e| (s + e.score, m + e.max))
+    }
+}
+
+/// Grades the submission at `submission` with the instructor's project at `root`.
+pub fn grade(
+    root: &Path,
+    manifest: &Manifest,
+    submission: &Path,
+    options: &GradeSetup,
+) -> Result<Grade, ToolError> {
+    let start = Instant::now();
+    if !submission.join(layout::core_src()).is_dir() {
+        return Err(ToolError::Usage(format!(
+            "{} is not a copy of the handout: it has no {}/ directory",
+            submission.display(),
+            layout::core_src().display()
+        )));
+    }
+    let chapters: Vec<u8> = match options.chapter {
+        Some(c) if crate::syllabus::chapter(c).is_some() => vec![c],
+        Some(c) => {
+            return Err(ToolError::Usage(format!(
+                "--chapter {c}: the chapters are {} to {}",
+                crate::syllabus::FIRST,
+                crate::syllabus::LAST
+            )));
+        }
+        None => crate::syllabus::CHAPTERS.iter().map(|c| c.number).collect(),
+    };
+    let student = submission
+        .canonicalize()
+        .ok()
+        .and_then(|p| p.file_name().map(|n| n.to_string_lossy().into_owned()))
+        .unwrap_or_else(|| submission.display().to_string());
+    // the graded copy: beside the build directory when there is one, kept from one grading to
+    // the next and updated file by file, so that cargo recompiles only what differs from the
+    // last submission; else a fresh temporary directory
+    let mut temp = None;
+    let project = match &options.target_dir {
+        Some(dir) => {
+            let project = dir.join(COPY);
+            files::sync_project(root, &project, &[".config", nextest::STORE])?;
+            if options.keep {
+                eprintln!("grade: the graded copy is {}", project.display());
+            }
+            project
+        }
+        None => {
+            let mut t = tempfile::Builder::new()
+                .prefix("whitted-grade-")
+                .tempdir()
+                .map_err(|e| ToolError::io(std::env::temp_dir(), e))?;
+            t.disable_cleanup(options.keep);
+            if options.keep {
+                eprintln!("grade: the graded copy is kept in {}", t.path().display());
+            }
+            let project = t.path().join("project");
+            files::copy_project(root, &project)?;
+            temp = Some(t);
+            project
+        }
+    };
+    let mut notes: BTreeMap<usize, String> = BTreeMap::new();
+    let mut files = splice::splice(root, manifest, submission, &chapters, &mut notes)?;
+    let hidden = splice::add_hidden(&project, options.hidden.as_deref())?;
+    nextest::write_profile(&project, options.timeout)?;
+    let targets: Vec<String> = chapter_targets(manifest, &chapters)
+        .into_iter()
+        .chain(hidden.iter().cloned())
+        .collect();
+    let target_dir = options
+        .target_dir
+        .clone()
+        .unwrap_or_else(|| project.join("target"));
+    let mut whole = Vec::new();
+    // build; an exercise that does not compile goes back to its todo!() and the build again
+    loop {
+        // each file's body lines, as written, for placing the compiler's errors
+        let mut placed = Vec::with_capacity(files.len());
+        for f in &files {
+            let (text, lines) = f.text();
+            files::write_if_changed(&project.join(&f.file), text.as_bytes())?;
+            placed.push((f.file.clone(), lines));
+        }
+        let errors = blame::build(&project, &target_dir, &targets)?;
+        if errors.is_empty() {
+            break;
+        }
+        let mut broken = blame::blame(&placed, &errors);
+        if broken.is_empty() {
+            // not on a body's lines (an unclosed brace is reported at the end of the file):
+            // every student body of the files with errors goes back to its todo!()
+            broken = blame::blame_files(&files, &errors, |e| {
+                chapters.contains(&manifest.entries[e].chapter) && !notes.contains_key(&e)
+            });
+        }
+        if broken.is_empty() {
+            whole.push(format!(
+                "the submission does not build, and not because of an exercise's body: {}",
+                errors[0].1
+            ));
+            break;
+        }
+        for (entry, message) in broken {
+            let e = &manifest.entries[entry];
+            notes.insert(
+                entry,
+                format!("does not compile, graded as not written: {message}"),
+            );
+            for f in &mut files {
+                for (r, body) in &mut f.regions {
+                    if r.entry == entry {
+                        *body = format!("{}{}\n", r.indent, handout::todo_statement(e));
+                    }
+                }
+            }
+        }
+    }
+    let tests = if whole.is_empty() {
+        nextest::run(&project, &target_dir, &targets, manifest, &hidden)?
+    } else {
+        Vec::new()
+    };
+    let exercises = score(manifest, &chapters, &tests, &notes);
+    drop(temp);
+    Ok(Grade {
+        student,
+        chapters,
+        exercises,
+        tests,
+        notes: whole,
+        elapsed: start.elapsed(),
+    })
+}
+
+/// Each graded exercise's points: its points shared equally by its tests.
+fn score(
+    manifest: &Manifest,
+    chapters: &[u8],
+    tests: &[TestResult],
+    notes: &BTreeMap<usize, String>,
+) -> Vec<ExerciseScore> {
+    manifest
+        .entries
+        .iter()
+        .enumerate()
+        .filter(|(_, e)| chapters.contains(&e.chapter))
+        .map(|(i, e)| {
+            let own: Vec<&TestResult> = tests.iter().filter(|t| t.exercise == Some(i)).collect();
+            let passed = own.iter().filter(|t| t.status == Status::Passed).count();
+            let max = f64::from(e.exercise.points);
+            let score = if own.is_empty() {
+                0.0
+            } else {
+                max * passed as f64 / own.len() as f64
+            };
+            let note = notes.get(&i).cloned().or_else(|| {
+                own.is_empty()
+                    .then(|| "no test ran for this exercise".to_string())
+            });
+            ExerciseScore {
+                entry: i,
+                score,
+                max,
+                passed,
+                total: own.len(),
+                note,
+            }
+        })
+        .collect()
+}
+
+/// The test targets of the graded chapters that the manifest's handout lists.
+#[must_use]
+pub fn chapter_targets(manifest: &Manifest, chapters: &[u8]) -> BTreeSet<String> {
+    manifest
+        .handout
+        .tests
+        .iter()
+        .filter(|t| {
+            chapters
+                .iter()
+                .filter_map(|&c| crate::syllabus::chapter(c))
+                .any(|c| *t == c.binary)
+        })
+        .cloned()
+        .collect()
+}

@@ -1,0 +1,174 @@
+//! The graded copy's sources: the student's body of each graded exercise, taken from between
+//! its markers and put into the instructor's file, and the instructor's hidden tests beside the
+//! public ones.
+//!
+//! Course book: [The instructor's guide](../../../../../docs/book/instructor-guide.html) (`docs/src/instructor-guide.md`).
+
+use std::collections::BTreeMap;
+use std::path::{Path, PathBuf};
+
+use crate::handout::{self, BEGIN, END, Region};
+use crate::manifest::Manifest;
+use crate::{ToolError, files, layout};
+
+/// The body a student wrote for the region `r` of the exercise named `name`: the lines between
+/// the region's markers in the same file of the submission. `Err` says why there is none.
+pub fn student_body(submission: &Path, r: &Region, name: &str) -> Result<String, String> {
+    let path = submission.join(&r.file);
+    let text = std::fs::read_to_string(&path)
+        .map_err(|e| format!("cannot read {}: {e}", r.file.display()))?;
+    let begin = format!("{BEGIN} {name}");
+    let mut lines = text.split_inclusive('\n');
+    if !lines.by_ref().any(|l| l.trim() == begin) {
+        return Err(format!(
+            "`{begin}` is missing from {}: graded as not written",
+            r.file.display()
+        ));
+    }
+    let mut body = String::new();
+    for line in lines {
+        let t = line.trim();
+        if t == END {
+            return Ok(body);
+        }
+        if t.starts_with(BEGIN) {
+            break;
+        }
+        body.push_str(line);
+    }
+    Err(format!(
+        "`{begin}` is not closed by `{END}` in {}: graded as not written",
+        r.file.display()
+    ))
+}
+
+/// An exercise's body in a spliced file: its manifest entry, and the first and last line
+/// (from 1) an error in it may be reported on.
+pub(super) type BodyLines = (usize, usize, usize);
+
+/// A source file of the graded copy and the lines each exercise's body holds in it.
+pub(super) struct Spliced {
+    /// The file, relative to the project.
+    pub(super) file: PathBuf,
+    /// The reference text.
+    pub(super) reference: String,
+    /// The regions in the file, in order, with the body each one now holds.
+    pub(super) regions: Vec<(Region, String)>,
+}
+
+impl Spliced {
+    /// The text with every region's body in place, and for each region the lines (from 1,
+    /// inclusive) an error in its body may be reported on: from its BEGIN line to the line
+    /// after its END line.
+    pub(super) fn text(&self) -> (String, Vec<BodyLines>) {
+        let mut out = String::new();
+        let mut lines = Vec::new();
+        let mut at = 0;
+        for (r, body) in &self.regions {
+            let head_end = self.reference[r.bytes.start..]
+                .find('\n')
+                .map_or(r.bytes.end, |i| r.bytes.start + i + 1);
+            out.push_str(&self.reference[at..head_end]);
+            // the BEGIN line, the body, the END line and the line after it: a syntax error
+            // in a body is often reported at the token that follows it
+            let first = out.lines().count();
+            let mut body = body.clone();
+            if !body.is_empty() && !body.ends_with('\n') {
+                body.push('\n');
+            }
+            out.push_str(&body);
+            let last = out.lines().count() + 2;
+            lines.push((r.entry, first, last));
+            out.push_str(&r.indent);
+            out.push_str(END);
+            out.push('\n');
+            at = r.bytes.end;
+        }
+        out.push_str(&self.reference[at..]);
+        (out, lines)
+    }
+}
+
+/// The graded copy's source files with the student's bodies in the regions of `chapters`
+/// (the other regions keep the reference code). A body that cannot be found is noted and
+/// replaced by the exercise's `todo!()`.
+pub(super) fn splice(
+    root: &Path,
+    manifest: &Manifest,
+    submission: &Path,
+    chapters: &[u8],
+    notes: &mut BTreeMap<usize, String>,
+) -> Result<Vec<Spliced>, ToolError> {
+    let mut by_file: BTreeMap<PathBuf, Vec<(Region, String)>> = BTreeMap::new();
+    for r in handout::regions(root, manifest)? {
+        let e = &manifest.entries[r.entry];
+        let body = if chapters.contains(&e.chapter) {
+            student_body(submission, &r, &e.exercise.name).unwrap_or_else(|why| {
+                notes.insert(r.entry, why);
+                format!("{}{}\n", r.indent, handout::todo_statement(e))
+            })
+        } else {
+            r.solution.clone()
+        };
+        by_file.entry(r.file.clone()).or_default().push((r, body));
+    }
+    by_file
+        .into_iter()
+        .map(|(file, mut regions)| {
+            regions.sort_by_key(|(r, _)| r.bytes.start);
+            let path = root.join(&file);
+            let reference = std::fs::read_to_string(&path).map_err(|e| ToolError::io(&path, e))?;
+            Ok(Spliced {
+                file,
+                reference,
+                regions,
+            })
+        })
+        .collect()
+}
+
+/// Copies each `*.rs` of the hidden directory into the copy's `tests/` as `hidden_NAME.rs`;
+/// returns the test targets added.
+pub(super) fn add_hidden(project: &Path, hidden: Option<&Path>) -> Result<Vec<String>, ToolError> {
+    // a kept copy may hold the hidden tests of an earlier grading
+    let tests = project.join(layout::core_tests());
+    if let Ok(entries) = std::fs::read_dir(&tests) {
+        for e in entries.flatten() {
+            if e.file_name().to_string_lossy().starts_with("hidden_") {
+                let _ = std::fs::remove_file(e.path());
+            }
+        }
+    }
+    let Some(dir) = hidden else {
+        return Ok(Vec::new());
+    };
+    let mut targets = Vec::new();
+    let entries = std::fs::read_dir(dir).map_err(|e| ToolError::io(dir, e))?;
+    let mut files: Vec<PathBuf> = entries
+        .filter_map(Result::ok)
+        .map(|e| e.path())
+        .filter(|p| p.is_file() && p.extension().is_some_and(|x| x == "rs"))
+        .collect();
+    files.sort();
+    if files.is_empty() {
+        return Err(ToolError::Usage(format!(
+            "--hidden {}: the directory holds no .rs test file",
+            dir.display()
+        )));
+    }
+    for f in files {
+        let stem: String = f
+            .file_stem()
+            .map(|s| s.to_string_lossy().into_owned())
+            .unwrap_or_default()
+            .chars()
+            .map(|c| if c.is_ascii_alphanumeric() { c } else { '_' })
+            .collect();
+        let target = format!("hidden_{stem}");
+        let to = project.join(layout::core_test_file(&target));
+        let bytes = std::fs::read(&f).map_err(|e| ToolError::io(&f, e))?;
+        files::write_if_changed(&to, &bytes)?;
+        targets.push(target);
+    }
+    Ok(targets)
+}

@@ -1,0 +1,60 @@
+//! Chapter 2 — generic objects (notes: "Ray Tracing Process", "Generic Objects", "Surface
+//! Normals at Intersections"): every shape's miss, graze and two-hit cases with hand-computed
+//! t and normals, and the placement M, M⁻¹, (M⁻¹)ᵀ.
+//!
+//! A test named `ex_NAME_…` checks the exercise NAME of `chapters/formulas.toml` and calls only
+//! it and the exercises before it: the shapes' tests call `sphere::intersect`, `cylinder::intersect` …
+//! directly (normals in object space), and leave `Object::intersect`, which also carries the
+//! normals back to the world (exercise 2.26), to the tests of placed objects.
+
+#[path = "../common/mod.rs"]
+mod common;
+
+use approx::assert_abs_diff_eq;
+use common::{TOL, assert_vec_eq, centre, render_at, render_both_ways, scene};
+use whitted::accel::Accel;
+use whitted::ray::Ray;
+use whitted::real::{Mat4, Real, Vec3, vec3};
+use whitted::render::{Chapter, Options, Tracer};
+use whitted::shapes::quadratic::{
+    Numerics, Roots, discriminant, solve, solve_with_discriminant, stable_roots,
+};
+use whitted::shapes::{Hit, Hits, Object, Part, Polyhedron, Shape, nearer};
+use whitted::transform::{Placement, Step, rotation_from_z, sin_cos_degrees};
+
+fn ray(e: [f64; 3], d: [f64; 3]) -> Ray {
+    Ray::new(vec3(e[0], e[1], e[2]), vec3(d[0], d[1], d[2]))
+}
+
+/// The direction of a (non-zero) normal, to compare the cone's (x, y, 1 − z) with a unit vector.
+fn unit(n: Vec3) -> Vec3 {
+    n.normalize()
+}
+
+/// Asserts the hits' t values and parts.
+#[track_caller]
+fn assert_hits(hits: &Hits, expected: &[(Real, Part)]) {
+    let got: Vec<(Real, Part)> = hits.as_slice().iter().map(|h| (h.t, h.part)).collect();
+    assert_eq!(
+        got.len(),
+        expected.len(),
+        "hits {got:?}, expected {expected:?}"
+    );
+    for ((t, part), (te, pe)) in got.iter().zip(expected) {
+        assert!(
+            (t - te).abs() <= 10.0 * TOL,
+            "t = {t}, expected {te} (all: {got:?})"
+        );
+        assert_eq!(part, pe);
+    }
+}
+
+// One module per shape, and the placement and the nearest hit around them.
+mod cone;
+mod cylinder;
+mod nearest;
+mod placement;
+mod plane;
+mod polyhedron;
+mod quadratic;
+mod sphere;

@@ -1,0 +1,414 @@
+//! Placement: the steps' matrices and their inverses (M, M⁻¹), rays into object space, a point of a ray, placed shapes hit at the world ray's t, normals back by (M⁻¹)ᵀ ("Ray Tracing Process", "Surface Normals at Intersections").
+
+use super::*;
+use whitted::shapes::sphere;
+
+/// "Ray Tracing Process" (q = M·q′): each kind of step has the matrix of its transformation.
+/// A scale by (2, 3, 4) takes (1, 1, 1) to (2, 3, 4). Right-handed quarter turns, exactly:
+/// about z, x goes to y; about x, y goes to z and z to −y; about y, z goes to x. By 30° about
+/// z, x goes to (cos 30°, sin 30°, 0) = (√3/2, ½, 0); by −30° about y, to (√3/2, 0, ½). A
+/// quarter turn about the axis (0, 0, 2) is the one about z; a third of a turn about
+/// (1, 1, 1) takes x to y, y to z and z to x. A translation by (1, −2, 3) moves a point, not
+/// a direction.
+#[test]
+fn ex_step_matrix_each_step_has_the_matrix_of_its_transformation() {
+    let scale = Step::Scale(vec3(2.0, 3.0, 4.0)).matrix();
+    assert_vec_eq(scale.transform_point3(Vec3::ONE), vec3(2.0, 3.0, 4.0), TOL);
+    let turn = |step: Step, v: Vec3| step.matrix().transform_vector3(v);
+    assert_eq!(turn(Step::RotateZ(90.0), Vec3::X), Vec3::Y);
+    assert_eq!(turn(Step::RotateX(90.0), Vec3::Y), Vec3::Z);
+    assert_eq!(turn(Step::RotateX(90.0), Vec3::Z), Vec3::NEG_Y);
+    assert_eq!(turn(Step::RotateY(90.0), Vec3::Z), Vec3::X);
+    let r3 = (3.0 as Real).sqrt();
+    assert_vec_eq(
+        turn(Step::RotateZ(30.0), Vec3::X),
+        Vec3::new(r3 / 2.0, 0.5, 0.0),
+        TOL,
+    );
+    assert_vec_eq(
+        turn(Step::RotateY(-30.0), Vec3::X),
+        Vec3::new(r3 / 2.0, 0.0, 0.5),
+        TOL,
+    );
+    assert_vec_eq(
+        turn(Step::RotateAxis(vec3(0.0, 0.0, 2.0), 90.0), Vec3::X),
+        Vec3::Y,
+        TOL,
+    );
+    let third = Step::RotateAxis(Vec3::ONE, 120.0);
+    assert_vec_eq(turn(third, Vec3::X), Vec3::Y, 10.0 * TOL);
+    assert_vec_eq(turn(third, Vec3::Y), Vec3::Z, 10.0 * TOL);
+    assert_vec_eq(turn(third, Vec3::Z), Vec3::X, 10.0 * TOL);
+    let t = vec3(1.0, -2.0, 3.0);
+    let shift = Step::Translate(t).matrix();
+    assert_vec_eq(shift.transform_point3(Vec3::ZERO), t, TOL);
+    assert_vec_eq(shift.transform_point3(Vec3::ONE), vec3(2.0, -1.0, 4.0), TOL);
+    assert_vec_eq(shift.transform_vector3(Vec3::X), Vec3::X, TOL);
+}
+
+/// "Ray Tracing Process": S⁻¹ undoes S — scale by 1/s, rotate by −θ about the same axis,
+/// translate by −t — so S·S⁻¹ = I.
+#[test]
+fn ex_step_inverse_each_step_is_undone_by_its_inverse() {
+    let axis = vec3(1.0, 2.0, -0.5);
+    let t = vec3(1.0, -2.0, 3.0);
+    let cases = [
+        (
+            Step::Scale(vec3(2.0, 4.0, 0.5)),
+            Step::Scale(vec3(0.5, 0.25, 2.0)),
+        ),
+        (Step::RotateX(30.0), Step::RotateX(-30.0)),
+        (Step::RotateY(-75.0), Step::RotateY(75.0)),
+        (Step::RotateZ(90.0), Step::RotateZ(-90.0)),
+        (Step::RotateAxis(axis, 40.0), Step::RotateAxis(axis, -40.0)),
+        (Step::Translate(t), Step::Translate(-t)),
+    ];
+    for (step, inverse) in cases {
+        assert_eq!(step.inverse(), inverse, "{step:?}");
+        let product = step.matrix() * step.inverse().matrix();
+        assert!(
+            product.abs_diff_eq(Mat4::IDENTITY, 10.0 * TOL),
+            "{step:?}: {product:?}"
+        );
+    }
+}
+
+/// "Ray Tracing Process": M⁻¹r(t) = M⁻¹e + M⁻¹d·t. With M⁻¹ a scale by (2, 1, ½) then a
+/// translation by (1, 2, 3), the origin (1, 1, 1) moves as a point, to (3, 3, 3.5), and the
+/// direction (3, 1, 0) as a vector, to (6, 1, 0), not renormalised: the point at t on the
+/// carried ray is M⁻¹ of the point at t on the world ray.
+#[test]
+fn ex_ray_in_object_space_a_ray_moves_its_origin_as_a_point_and_its_direction_as_a_vector() {
+    let m = Mat4::from_translation(vec3(1.0, 2.0, 3.0)) * Mat4::from_scale(vec3(2.0, 1.0, 0.5));
+    let world = ray([1.0, 1.0, 1.0], [3.0, 1.0, 0.0]);
+    let local = world.transformed(&m);
+    assert_vec_eq(local.origin, vec3(3.0, 3.0, 3.5), TOL);
+    assert_vec_eq(local.dir, vec3(6.0, 1.0, 0.0), TOL);
+    for t in [-1.0, 0.5, 2.0] {
+        let on_world = world.origin + world.dir * t;
+        assert_vec_eq(
+            local.origin + local.dir * t,
+            m.transform_point3(on_world),
+            10.0 * TOL,
+        );
+    }
+}
+
+/// "Ray Tracing Process": r(t) = e + d·t. For e = (1, 2, 3), d = (0.5, −1, 2): r(0) = e,
+/// r(1) = (1.5, 1, 5), r(2) = (2, 0, 7), r(−1) = (0.5, 3, 1).
+#[test]
+fn ex_point_on_ray_r_of_t_is_e_plus_d_t() {
+    let r = ray([1.0, 2.0, 3.0], [0.5, -1.0, 2.0]);
+    assert_vec_eq(r.at(0.0), vec3(1.0, 2.0, 3.0), TOL);
+    assert_vec_eq(r.at(1.0), vec3(1.5, 1.0, 5.0), TOL);
+    assert_vec_eq(r.at(2.0), vec3(2.0, 0.0, 7.0), TOL);
+    assert_vec_eq(r.at(-1.0), vec3(0.5, 3.0, 1.0), TOL);
+}
+
+fn ellipsoid() -> Object {
+    let steps = [
+        Step::Scale(vec3(2.0, 0.5, 1.0)),
+        Step::RotateZ(30.0),
+        Step::Translate(vec3(1.0, -2.0, 3.0)),
+    ];
+    Object::new(Shape::Sphere, Placement::from_steps(&steps).unwrap())
+}
+
+/// "Ray Tracing Process": M⁻¹ is built from the inverse steps; M·M⁻¹ = I.
+#[test]
+fn ex_placement_from_steps_inverse_from_inverse_steps_undoes_the_placement() {
+    let o = ellipsoid();
+    let product = o.placement.m() * o.placement.inv();
+    assert!(
+        product.abs_diff_eq(Mat4::IDENTITY, 10.0 * TOL),
+        "{product:?}"
+    );
+    // steps apply in order: scale first, so the scale stretches the object's own x axis
+    let p = o.placement.m().transform_point3(Vec3::X);
+    let a = (30.0 as Real).to_radians();
+    assert_vec_eq(
+        p,
+        Vec3::new(2.0 * a.cos() + 1.0, 2.0 * a.sin() - 2.0, 3.0),
+        10.0 * TOL,
+    );
+}
+
+/// "Ray Tracing Process": M⁻¹d is not renormalised, so the t that `Shape::intersect_placed`
+/// finds in object space gives the same point in world space: M·(M⁻¹e + M⁻¹d·t) = e + d·t,
+/// under a non-uniform scale.
+#[test]
+fn ex_hit_placed_shape_t_is_the_same_in_world_and_object_space() {
+    let o = ellipsoid();
+    let world = ray([-4.0, -1.0, 2.5], [3.0, -0.5, 0.2]);
+    let local = world.transformed(o.placement.inv());
+    assert!(
+        (local.dir.length() - world.dir.length()).abs() > 0.1,
+        "the scale changes |d|"
+    );
+    let hits = o.intersect_object_space(&world, Numerics::Robust); // Shape::intersect_placed
+    assert_eq!(hits.len(), 2);
+    for h in hits.as_slice() {
+        let p_world = world.at(h.t);
+        let p_object = local.at(h.t);
+        assert_abs_diff_eq!(p_object.length(), 1.0, epsilon = 100.0 * TOL); // on the unit sphere
+        assert_vec_eq(
+            o.placement.m().transform_point3(p_object),
+            p_world,
+            100.0 * TOL,
+        );
+    }
+    // renormalising M⁻¹d would change t: the hit would no longer be at world.at(t)
+    let renormalised = Ray::new(local.origin, local.dir.normalize());
+    let t_bad = sphere::intersect(&renormalised, Numerics::Robust).as_slice()[0].t;
+    let miss = o.placement.inv().transform_point3(world.at(t_bad)).length();
+    assert!(
+        (miss - 1.0).abs() > 0.1,
+        "renormalised t lands off the surface ({miss})"
+    );
+}
+
+/// "Ray Tracing Process": a sphere of radius 2 centred at (0, 0, −10) (scale 2, then translate)
+/// seen from the origin along d = (0, 0, −2): the world points (0, 0, −8) and (0, 0, −12) are
+/// at the world ray's t = 4 and 6, and their object-space normals are (0, 0, ±1).
+#[test]
+fn ex_hit_placed_shape_a_placed_shape_is_hit_at_the_world_rays_t() {
+    let placement = Placement::from_steps(&[
+        Step::Scale(Vec3::splat(2.0)),
+        Step::Translate(vec3(0.0, 0.0, -10.0)),
+    ])
+    .unwrap();
+    let world = ray([0.0, 0.0, 0.0], [0.0, 0.0, -2.0]);
+    let hits = Shape::Sphere.intersect_placed(placement.inv(), &world, Numerics::Robust);
+    assert_hits(&hits, &[(4.0, Part::Surface), (6.0, Part::Surface)]);
+    assert_vec_eq(hits.as_slice()[0].normal, Vec3::Z, TOL);
+    assert_vec_eq(hits.as_slice()[1].normal, Vec3::NEG_Z, TOL);
+}
+
+/// "Surface Normals at Intersections": n = (M⁻¹)ᵀ·n′, made unit. Under the scale (2, 1, 1),
+/// (M⁻¹)ᵀ = diag(½, 1, 1): n′ = (1, 1, 0)/√2 gives (½, 1, 0) ∝ (1, 2, 0)/√5, and a translation
+/// after it changes nothing; a quarter turn about z turns (1, 0, 0) into (0, 1, 0); the identity
+/// makes the cone's (0, −1, 1) unit.
+#[test]
+fn ex_normal_to_world_normals_go_back_by_the_inverse_transpose() {
+    let s = (2.0 as Real).sqrt();
+    let stretched = Placement::from_steps(&[Step::Scale(vec3(2.0, 1.0, 1.0))]).unwrap();
+    let expected = vec3(1.0, 2.0, 0.0) / (5.0 as Real).sqrt();
+    assert_vec_eq(
+        stretched.normal_to_world(vec3(1.0, 1.0, 0.0) / s),
+        expected,
+        TOL,
+    );
+    let moved = Placement::from_steps(&[
+        Step::Scale(vec3(2.0, 1.0, 1.0)),
+        Step::Translate(vec3(5.0, -3.0, 2.0)),
+    ])
+    .unwrap();
+    assert_vec_eq(
+        moved.normal_to_world(vec3(1.0, 1.0, 0.0) / s),
+        expected,
+        TOL,
+    );
+    let turned = Placement::from_steps(&[Step::RotateZ(90.0)]).unwrap();
+    assert_vec_eq(turned.normal_to_world(Vec3::X), Vec3::Y, TOL);
+    assert_vec_eq(
+        Placement::identity().normal_to_world(vec3(0.0, -1.0, 1.0)),
+        vec3(0.0, -1.0, 1.0) / s,
+        TOL,
+    );
+}
+
+/// "Surface Normals at Intersections" and "Ray Tracing Process": under the non-uniform scale
+/// (2, 1, 1), the object-space normal n′ = (1, 1, 0)/√2 at P′ = n′ becomes (M⁻¹)ᵀn′ ∝ (1, 2, 0),
+/// perpendicular to the surface; M·n′ ∝ (2, 1, 0) is not.
+#[test]
+fn ex_normal_to_world_normal_under_non_uniform_scale_uses_inverse_transpose() {
+    let o = Object::new(
+        Shape::Sphere,
+        Placement::from_steps(&[Step::Scale(vec3(2.0, 1.0, 1.0))]).unwrap(),
+    );
+    let s = (2.0 as Real).sqrt();
+    let p_world = Vec3::new(s, 1.0 / s, 0.0); // M·(1/√2, 1/√2, 0)
+    let r = Ray::new(p_world + vec3(1.0, 2.0, 0.0), vec3(-1.0, -2.0, 0.0));
+    let hit = o.intersect(&r, Numerics::Robust).as_slice()[0];
+    assert_abs_diff_eq!(hit.t, 1.0, epsilon = 10.0 * TOL);
+    let right = vec3(1.0, 2.0, 0.0) / (5.0 as Real).sqrt();
+    assert_vec_eq(hit.normal, right, 10.0 * TOL);
+    // the tangent at P: M·(−1/√2, 1/√2, 0)
+    let tangent = Vec3::new(-s, 1.0 / s, 0.0);
+    assert_abs_diff_eq!(hit.normal.dot(tangent), 0.0, epsilon = 10.0 * TOL);
+    let wrong = o
+        .placement
+        .m()
+        .transform_vector3(vec3(1.0, 1.0, 0.0) / s)
+        .normalize();
+    assert!(
+        wrong.dot(tangent).abs() > 0.3,
+        "M·n′ is not perpendicular to the surface"
+    );
+    assert!((wrong - right).length() > 0.3);
+}
+
+/// "Ray Tracing Process": a placed cylinder (base, top, radius) is hit where the placement says.
+#[test]
+fn placed_cylinder_from_base_top_radius() {
+    let scene = whitted::scene::parse(
+        "[[objects]]\ncylinder = { base = [0.0, 0.0, 0.0], top = [0.0, 4.0, 0.0], radius = 0.5 }\n",
+        "t.toml",
+    )
+    .unwrap();
+    let o = &scene.objects[0];
+    // along x at height 1: wall at x = ∓0.5
+    let hits = o.intersect(&ray([-3.0, 1.0, 0.0], [1.0, 0.0, 0.0]), Numerics::Robust);
+    assert_hits(&hits, &[(2.5, Part::Wall), (3.5, Part::Wall)]);
+    assert_vec_eq(hits.as_slice()[0].normal, Vec3::NEG_X, TOL);
+    // down the axis: top cap at y = 4, bottom at y = 0
+    let hits = o.intersect(&ray([0.1, 10.0, 0.0], [0.0, -1.0, 0.0]), Numerics::Robust);
+    assert_hits(&hits, &[(6.0, Part::TopCap), (10.0, Part::BottomCap)]);
+    assert_vec_eq(hits.as_slice()[0].normal, Vec3::Y, TOL);
+    assert_vec_eq(hits.as_slice()[1].normal, Vec3::NEG_Y, TOL);
+}
+
+/// "Ray Tracing Process": a zero scale has no inverse; the placement refuses it.
+#[test]
+fn ex_placement_from_steps_zero_scale_is_not_invertible() {
+    assert!(Placement::from_steps(&[Step::Scale(vec3(1.0, 0.0, 1.0))]).is_none());
+    assert!(Placement::from_steps(&[Step::Scale(Vec3::new(1.0, Real::NAN, 1.0))]).is_none());
+    assert!(Placement::from_steps(&[Step::Scale(vec3(1.0, 2.0, 1.0))]).is_some());
+}
+
+/// "Ray Tracing Process": the placement form `cone = { base, apex, radius }` puts a base of the
+/// given radius on `base` and the apex on `apex`.
+#[test]
+fn placed_cone_from_base_apex_radius() {
+    let scene = whitted::scene::parse(
+        "[[objects]]\ncone = { base = [0.0, 0.0, 0.0], apex = [0.0, 3.0, 0.0], radius = 0.5 }\n",
+        "t.toml",
+    )
+    .unwrap();
+    let o = &scene.objects[0];
+    // along x just above the floor: the wall at radius 0.5·(1 − 0.3/3) = 0.45
+    let hits = o.intersect(&ray([-3.0, 0.3, 0.0], [1.0, 0.0, 0.0]), Numerics::Robust);
+    assert_hits(&hits, &[(2.55, Part::Wall), (3.45, Part::Wall)]);
+    // up the axis from below: base at y = 0, apex at y = 3
+    let hits = o.intersect(&ray([0.0, -1.0, 0.0], [0.0, 1.0, 0.0]), Numerics::Robust);
+    assert_eq!(hits.len(), 2);
+    assert_abs_diff_eq!(hits.as_slice()[0].t, 1.0, epsilon = 10.0 * TOL);
+    assert_eq!(hits.as_slice()[0].part, Part::Base);
+    assert_abs_diff_eq!(hits.as_slice()[1].t, 4.0, epsilon = 10.0 * TOL);
+}
+
+/// True when every entry of `m` is exactly 0, 1 or −1.
+fn entries_are_exactly_0_or_1(m: &Mat4) -> bool {
+    m.to_cols_array()
+        .iter()
+        .all(|&x| x == 0.0 || x.abs() == 1.0)
+}
+
+/// "Ray Tracing Process" (q = M·q′): a rotation by a whole multiple of 90° has sine and cosine
+/// exactly 0 and ±1, so M and M⁻¹ hold nothing else: sin 90° = 1, cos 90° = 0 (where
+/// `to_radians().sin_cos()` gives cos 90° = 6.1e-17 in f64, −4.4e-8 in f32); −90° → (−1, 0);
+/// 180° → (0, −1); 270° → (−1, 0); 450° = 360° + 90° → (1, 0). Turning +z onto ±x, ±y and −z
+/// gives such matrices, which carry +z exactly onto the target and multiply to I exactly.
+#[test]
+fn ex_placement_from_steps_rotations_by_multiples_of_90_degrees_are_exact() {
+    assert_eq!(sin_cos_degrees(90.0), (1.0, 0.0));
+    assert_eq!(sin_cos_degrees(-90.0), (-1.0, 0.0));
+    assert_eq!(sin_cos_degrees(180.0), (0.0, -1.0));
+    assert_eq!(sin_cos_degrees(270.0), (-1.0, 0.0));
+    assert_eq!(sin_cos_degrees(450.0), (1.0, 0.0));
+    assert_eq!(sin_cos_degrees(-360.0), (0.0, 1.0));
+    assert_ne!(
+        (90.0 as Real).to_radians().cos(),
+        0.0,
+        "why the special case exists"
+    );
+    for to in [
+        Vec3::X,
+        Vec3::NEG_X,
+        Vec3::Y,
+        Vec3::NEG_Y,
+        Vec3::NEG_Z,
+        Vec3::Z,
+    ] {
+        let step = rotation_from_z(to);
+        let placement = Placement::from_steps(&[step]).unwrap();
+        for m in [step.matrix(), *placement.m(), *placement.inv()] {
+            assert!(entries_are_exactly_0_or_1(&m), "+z → {to}: {m:?}");
+        }
+        assert_eq!(placement.m().transform_vector3(Vec3::Z), to);
+        assert_eq!(placement.inv().transform_vector3(to), Vec3::Z);
+        assert_eq!(*placement.m() * *placement.inv(), Mat4::IDENTITY);
+    }
+}
+
+/// The floor `plane = { point = [0, 0, 0], normal = [0, 1, 0] }` seen from a camera at
+/// y = 1 looking at (0, 1, `look_z`).
+fn floor_scene(look_z: f64) -> String {
+    format!(
+        "[camera]\neye = [0.0, 1.0, 0.0]\nlook_at = [0.0, 1.0, {look_z}]\n\
+         [image]\nbackground = [0.0, 0.2, 0.8]\n[materials.floor]\ndiffuse = [0.9, 0.6, 0.1]\n\
+         [[objects]]\nplane = {{ point = [0.0, 0.0, 0.0], normal = [0.0, 1.0, 0.0] }}\nmaterial = \"floor\"\n"
+    )
+}
+
+/// "Generic Plane" placed by "Ray Tracing Process": with normal (0, 1, 0) the plane is the
+/// generic z = 0 turned by −90° about x, exactly, so a world ray with d_y = 0 has d_z = 0 in
+/// object space and misses ("if d_z = 0 the ray is parallel"), in f64 and f32 alike: along ±x
+/// and ±z, at heights 1 and 10⁻³. A camera at y = 1 looking along −z (and one looking along
+/// +z) sees it on no pixel of the middle row of a 5 × 3 image (v_r = H(2·1.5/3 − 1) = 0, so
+/// d_y = 0), and on every pixel of the bottom row (v_r = −2H/3, the floor at distance
+/// 1/(2H/3) ≈ 2.6); the top row is background too. Before rotations by quarter turns were
+/// made exact, cos 90° ≠ 0 tilted the floor, and the middle row on one side met it about
+/// 1/cos 90° away, 10¹⁶–10¹⁷ in f64 and 10⁷–10⁸ in f32: floor colour where the horizon
+/// should be.
+#[test]
+fn ray_parallel_to_a_placed_floor_misses_it() {
+    let s = scene(&floor_scene(-1.0));
+    let floor = &s.objects[0];
+    for y in [1.0, 1e-3] {
+        for d in [
+            [1.0, 0.0, 0.0],
+            [-1.0, 0.0, 0.0],
+            [0.0, 0.0, 1.0],
+            [0.0, 0.0, -1.0],
+        ] {
+            let hits = floor.intersect(&ray([0.3, y, -0.7], d), Numerics::Robust);
+            assert!(hits.is_empty(), "y = {y}, d = {d:?}: {hits:?}");
+        }
+        // the same floor turned by the inexact angle: some parallel ray meets it very far away
+        let inexact = Mat4::from_rotation_x((90.0 as Real).to_radians()); // M⁻¹ of −90° about x
+        let far = [[0.0, 0.0, 1.0], [0.0, 0.0, -1.0]]
+            .iter()
+            .flat_map(|&d| {
+                Shape::Plane
+                    .intersect_placed(&inexact, &ray([0.3, y, -0.7], d), Numerics::Robust)
+                    .as_slice()
+                    .to_vec()
+            })
+            .filter(|h| h.t > 0.0)
+            .map(|h| h.t)
+            .fold(0.0, Real::max);
+        assert!(far > 1e4, "y = {y}: the inexact floor is met at t = {far}");
+    }
+    let (sky, ground) = (vec3(0.0, 0.2, 0.8), vec3(0.9, 0.6, 0.1));
+    for look_z in [-1.0, 1.0] {
+        let (fb, _) = render_at(&scene(&floor_scene(look_z)), Chapter::GenericObjects, 5, 3);
+        for x in 0..5 {
+            assert_eq!(
+                fb.get(x, 0),
+                sky,
+                "top row, column {x}, looking at z = {look_z}"
+            );
+            assert_eq!(
+                fb.get(x, 1),
+                sky,
+                "middle row, column {x}, looking at z = {look_z}"
+            );
+            assert_eq!(
+                fb.get(x, 2),
+                ground,
+                "bottom row, column {x}, looking at z = {look_z}"
+            );
+        }
+    }
+}
