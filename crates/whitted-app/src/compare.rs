@@ -24,7 +24,7 @@
 //! compare: the same as the reference (no pixel differs by more than 2/255)
 //! ```
 //!
-//! Course book: [The live window, beside the reference](../../../../docs/book/window.html#beside-the-reference) (`docs/src/window.md`).
+//! Course book: [The live window](../../../../docs/book/window.html) (`docs/src/window.md`).
 
 use std::path::Path;
 

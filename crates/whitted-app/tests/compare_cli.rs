@@ -280,7 +280,12 @@ fn a_render_that_meets_a_missing_exercise_ends_in_one_line() {
             use rayon::prelude::*;
             (0..4096u32).into_par_iter().for_each(|pixel| {
                 if pixel == 2048 {
-                    todo!("exercise 2.3: The sphere's discriminant — see chapters/ch02_generic_objects/README.md");
+                    todo!("{}", whitted_syllabus::todo::message(
+                        "sphere_discriminant",
+                        "2.7",
+                        "The sphere's discriminant",
+                        "chapters/ch02_generic_objects/README.md"
+                    ));
                 }
             });
             println!("compare: never reached");
@@ -303,7 +308,7 @@ fn a_render_that_meets_a_missing_exercise_ends_in_one_line() {
     assert_eq!(o.status.code(), Some(2), "{err}");
     assert_eq!(
         err,
-        "error: exercise 2.3 is not written yet: The sphere's discriminant — see chapters/ch02_generic_objects/README.md\n"
+        "error: exercise 2.7 (sphere_discriminant) is not written yet: The sphere's discriminant — see chapters/ch02_generic_objects/README.md\n"
     );
     assert!(!text(&o.stdout).contains("compare:"), "{}", text(&o.stdout));
 }
