@@ -18,9 +18,7 @@ use whitted_app::compare::{GAP, Image, TOLERANCE};
 /// What `cargo learn` runs: the chapter's scene at the figures' width, compared with the
 /// chapter's figure.
 fn figure(chapter: Chapter) -> PathBuf {
-    common::root()
-        .join("docs/src/figures")
-        .join(format!("{}.png", chapter.about().binary))
+    common::root().join(chapter.about().figure())
 }
 
 /// The figures' width (docs/figures.toml renders the chapters' figures with `--width 240`).
@@ -280,12 +278,15 @@ fn a_render_that_meets_a_missing_exercise_ends_in_one_line() {
             use rayon::prelude::*;
             (0..4096u32).into_par_iter().for_each(|pixel| {
                 if pixel == 2048 {
-                    todo!("{}", whitted_syllabus::todo::message(
-                        "sphere_discriminant",
-                        "2.7",
-                        "The sphere's discriminant",
-                        "chapters/ch02_generic_objects/README.md"
-                    ));
+                    todo!(
+                        "{}",
+                        whitted_syllabus::todo::message(
+                            "sphere_discriminant",
+                            "2.7",
+                            "The sphere's discriminant",
+                            "chapters/ch02_generic_objects/README.md"
+                        )
+                    );
                 }
             });
             println!("compare: never reached");

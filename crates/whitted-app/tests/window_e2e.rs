@@ -556,7 +556,7 @@ fn scaled(image: &image::RgbImage, w: u32, h: u32) -> image::RgbImage {
 fn the_compare_key_shows_the_reference_and_the_difference() {
     const CHAPTER: Chapter = Chapter::Shading;
     let dir = tempfile::tempdir().unwrap();
-    let figure = common::root().join(format!("docs/src/figures/{}.png", CHAPTER.about().binary));
+    let figure = common::root().join(CHAPTER.about().figure());
     let mut reference = image::open(&figure).unwrap().to_rgb8();
     assert_eq!(reference.dimensions(), (240, 120), "the chapter's figure");
     // a 20 × 20 square on the dark background, top left

@@ -414,6 +414,36 @@ fn every_figure_of_the_book_is_in_the_manifest_and_every_entry_is_committed() {
 /// names the course book's page that teaches it, with a link that works from the module's
 /// rustdoc page (`target/doc/CRATE/…/index.html`, so one `../` per module level, plus three up
 /// to the project) to the built book, and the page exists.
+/// Each chapter's figure is its binary's render of its own scene at the figure's width and
+/// nothing else, which is how `cargo learn` renders the student's picture to compare with it
+/// (`whitted_syllabus::Chapter::figure`; the width read from the PNG).
+#[test]
+fn each_chapters_figure_is_its_scene_at_a_width_as_learn_renders_it() {
+    let root = root();
+    let figures = figures::read_figures(&root.join("docs/figures.toml")).unwrap();
+    for c in whitted_course::syllabus::CHAPTERS {
+        let path = c.figure();
+        let file = path.strip_prefix("docs/src/figures/").unwrap();
+        let f = figures
+            .iter()
+            .find(|f| f.file == file)
+            .unwrap_or_else(|| panic!("docs/figures.toml has no figure {file}"));
+        assert_eq!(f.binary, c.binary, "docs/figures.toml:{}", f.line);
+        let width_ok = f.args.len() == 3
+            && f.args[0] == c.scene()
+            && f.args[1] == "--width"
+            && f.args[2].parse::<u32>().is_ok();
+        assert!(
+            width_ok,
+            "docs/figures.toml:{}: {file} must be `{} --width W` for cargo learn to render the student's picture the same way, found {:?}",
+            f.line,
+            c.scene(),
+            f.args
+        );
+        assert!(root.join(&path).is_file(), "{path} is not committed");
+    }
+}
+
 #[test]
 fn every_module_links_the_book_page_that_teaches_it() {
     let root = root();

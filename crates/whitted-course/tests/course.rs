@@ -38,6 +38,7 @@ title = "Ambient light"
 task = "Return ρ_a·I_m."
 hints = ["Per channel.", "A product of two vectors."]
 points = 1
+first_check = "is_per_channel"
 
 [handout]
 tests = ["ch03_shading", "render_paths"]
@@ -89,6 +90,7 @@ fn a_good_manifest_reads_every_entry_in_order() {
                     task: "Return H.".into(),
                     hints: vec!["Half the angle.".into(), "Degrees to radians.".into()],
                     points: 2,
+                    first_check: None,
                 },
             },
             Entry {
@@ -104,9 +106,25 @@ fn a_good_manifest_reads_every_entry_in_order() {
                     task: "Return ρ_a·I_m.".into(),
                     hints: vec!["Per channel.".into(), "A product of two vectors.".into()],
                     points: 1,
+                    first_check: Some("is_per_channel".into()),
                 },
             },
         ]
+    );
+}
+
+/// A first check that cannot end a test's name is refused at its value.
+#[test]
+fn a_first_check_that_is_no_test_name_is_an_error_at_its_value() {
+    let bad = GOOD.replace(
+        "first_check = \"is_per_channel\"",
+        "first_check = \"Is per channel\"",
+    );
+    let (line, col, message) = manifest_error(&bad);
+    assert_eq!((line, col), (26, 15), "{message}");
+    assert!(
+        message.starts_with("first_check: expected the rest of a test's name after `ex_ambient_`"),
+        "{message}"
     );
 }
 

@@ -472,12 +472,12 @@ fn learn_gives_the_verdict_and_the_progress() {
         "{progress}"
     );
     assert_eq!(learn::drawable_chapter(&m, &states), Some(5));
-    // the picture: the chapter that turned green, else the newest the code draws
+    // the picture: the chapter that turned green, else the next exercise's, else the last
     let i31 = m.find("3.1").unwrap();
     let mut before = states.clone();
     before[i31] = State::ToDo;
-    assert_eq!(learn::picture_chapter(&m, &before, &states), Some(3));
-    assert_eq!(learn::picture_chapter(&m, &states, &states), Some(5));
+    assert_eq!(learn::picture_chapter(&m, &before, &states), 3);
+    assert_eq!(learn::picture_chapter(&m, &states, &states), 5);
     // the first exercise of chapter 3 turns chapters 3 to 5 green at once (their road's tests
     // waited for it): the picture is chapter 3's, where the student was working
     let mut waiting = states.clone();
@@ -487,9 +487,16 @@ fn learn_gives_the_verdict_and_the_progress() {
         }
     }
     waiting[i31] = State::ToDo;
-    assert_eq!(learn::picture_chapter(&m, &waiting, &states), Some(3));
+    assert_eq!(learn::picture_chapter(&m, &waiting, &states), 3);
+    // with nothing turning green, the chapter of the next exercise: 2.2 after eight
     let eight = learn::states(&m, &run_with_done(&m, 8));
-    assert_eq!(learn::picture_chapter(&m, &eight, &eight), Some(1));
+    assert_eq!(m.entries[8].chapter, 2);
+    assert_eq!(learn::picture_chapter(&m, &eight, &eight), 2);
+    // chapter 1 turning green shows chapter 1, though the next exercise is chapter 2's
+    let seven = learn::states(&m, &run_with_done(&m, 7));
+    let six = learn::states(&m, &run_with_done(&m, 6));
+    assert_eq!(m.entries[7].chapter, 2);
+    assert_eq!(learn::picture_chapter(&m, &six, &seven), 1);
     assert_eq!(
         learn::newly_done(&learn::states(&m, &run_with_done(&m, 3)), &states).len(),
         n - 3
@@ -636,4 +643,58 @@ fn colour_only_on_a_terminal_without_no_color() {
     assert!(!painted(Style::choose(true, Some(OsStr::new("1")))));
     assert!(!painted(Style::choose(false, None)));
     assert!(!painted(Style::plain()));
+}
+
+/// A wrong 1.2 fails both of its tests; the verdict shows both, the manifest's first check
+/// first (its message says what to do), and a test whose message shows values before one that
+/// shows none.
+#[test]
+fn learn_shows_every_failing_test_the_telling_one_first() {
+    let m = manifest();
+    let i = m.find("near_plane_half_height").unwrap();
+    let x = &m.entries[i].exercise;
+    assert_eq!(
+        x.first_check.as_deref(),
+        Some("viewing_angle_is_converted_from_degrees")
+    );
+    let target = binary(1);
+    let id = |rest: &str| format!("{target}::{}{rest}", x.test_prefix());
+    let mut run = run_with_done(&m, i);
+    // its tests, written and failing (not the todo!() of run_with_done)
+    run.outcomes.remove(&id("works"));
+    run.failures.remove(&id("works"));
+    let general = id("half_height_is_near_times_tangent_of_half_the_angle");
+    let telling = id("viewing_angle_is_converted_from_degrees");
+    let silent = id("zz_silent");
+    for (name, message) in [
+        (
+            &general,
+            "thread 'a' panicked at tests/ch01.rs:34:5:\nassert_abs_diff_eq!(near_plane_half_height(1.0, 90.0), 1.0)\n    left  = 1.6197751905438615\n    right = 1.0\n",
+        ),
+        (
+            &telling,
+            "thread 'b' panicked at tests/ch01.rs:63:5:\nθ must be converted to radians first\n",
+        ),
+        (
+            &silent,
+            "thread 'c' panicked at tests/ch01.rs:99:5:\nassertion failed: ok\n",
+        ),
+    ] {
+        run.outcomes.insert(name.clone(), TestOutcome::Failed);
+        run.failures.insert(name.clone(), message.to_string());
+    }
+    let order: Vec<&str> = learn::telling_order(x, &run)
+        .into_iter()
+        .map(String::as_str)
+        .collect();
+    assert_eq!(order, [telling.as_str(), general.as_str(), silent.as_str()]);
+    let states = learn::states(&m, &run);
+    let text = learn::verdict(&m, &run, &states, i, Style::plain(), None);
+    let at = |needle: &str| {
+        text.find(needle)
+            .unwrap_or_else(|| panic!("the verdict should show {needle:?}:\n{text}"))
+    };
+    assert!(at("radians first") < at("right = 1.0"), "{text}");
+    assert!(at("right = 1.0") < at("assertion failed: ok"), "{text}");
+    assert!(!text.contains("more of its tests"), "{text}");
 }

@@ -56,8 +56,9 @@ const QUIET_BUILD: Duration = Duration::from_millis(1500);
 /// The time limit of one test target's run: a loop that never ends stops there.
 pub const TEST_TIME_LIMIT: Duration = Duration::from_secs(60);
 
-/// The width of the picture rendered after a check, in pixels (the height follows the scene).
-pub const PICTURE_WIDTH: u32 = 320;
+/// The width of the picture rendered after a check when the chapter has no figure to compare
+/// with (the height follows the scene); with one, the figure's own width.
+pub const PICTURE_WIDTH: u32 = 240;
 
 /// Where an exercise stands.
 #[derive(Clone, Debug, PartialEq, Eq)]
@@ -366,13 +367,13 @@ pub fn verdict(
     );
     out += &format!("  the notes, \"{}\": {}\n", e.section, e.formula);
     let prefix = x.test_prefix();
-    let failing: Vec<&String> = run
-        .outcomes
-        .iter()
-        .filter(|(n, o)| test_name(n).starts_with(&prefix) && **o == TestOutcome::Failed)
-        .map(|(n, _)| n)
-        .collect();
-    let shown = if *state == State::ToDo { 1 } else { 4 };
+    let failing = telling_order(x, run);
+    // a body not written fails every test the same way: one of them says so
+    let shown = if *state == State::ToDo {
+        1
+    } else {
+        failing.len()
+    };
     for name in failing.iter().take(shown) {
         out += &format!("  {} {}\n", style.bad("failing:"), test_name(name));
         let text = run.failures.get(*name).map_or("", String::as_str);
@@ -395,6 +396,34 @@ pub fn verdict(
         }
     );
     out
+}
+
+/// The failing tests of exercise `x` in `run`, the most telling first: the manifest's
+/// `first_check`, then those whose message shows a value (a digit: what was computed and what
+/// was expected), then the others, each group in name order.
+#[must_use]
+pub fn telling_order<'r>(x: &crate::manifest::Exercise, run: &'r TestRun) -> Vec<&'r String> {
+    let prefix = x.test_prefix();
+    let mut failing: Vec<&String> = run
+        .outcomes
+        .iter()
+        .filter(|(n, o)| test_name(n).starts_with(&prefix) && **o == TestOutcome::Failed)
+        .map(|(n, _)| n)
+        .collect();
+    let rank = |name: &String| {
+        let first = x
+            .first_check
+            .as_ref()
+            .is_some_and(|c| test_name(name).strip_prefix(&prefix) == Some(c.as_str()));
+        let message = run.failures.get(name).map_or("", String::as_str);
+        let valued = message_lines(message)
+            .iter()
+            .skip(1) // the panic's place, whose line number is not a value
+            .any(|l| l.chars().any(|c| c.is_ascii_digit()));
+        (!first, !valued)
+    };
+    failing.sort_by_key(|name| rank(name));
+    failing
 }
 
 /// Where the student writes the exercise named `name`: the file (relative to `root`) and line
@@ -550,13 +579,12 @@ pub fn drawable_chapter(manifest: &Manifest, states: &[State]) -> Option<u8> {
     out
 }
 
-/// The chapter whose picture a check draws: of the chapters the code can draw now (see
-/// [`drawable_chapter`]), the first one that was not all done at the last check (the chapter
-/// that turned green; when one exercise turns several green, as the first of chapter 3 may
-/// turn chapters 3 to 5, the one the student was working in), else the newest of them.
+/// The chapter whose picture a check draws: a chapter that turned green at this check (the
+/// first of them: when one exercise turns several green, as the first of chapter 3 may turn
+/// chapters 3 to 5, the one the student was working in), else the chapter of the next exercise
+/// (the one the student works on, whose picture shows what is still wrong), else the last.
 #[must_use]
-pub fn picture_chapter(manifest: &Manifest, before: &[State], now: &[State]) -> Option<u8> {
-    let drawable = drawable_chapter(manifest, now)?;
+pub fn picture_chapter(manifest: &Manifest, before: &[State], now: &[State]) -> u8 {
     let green = |states: &[State], chapter: u8| {
         manifest
             .entries
@@ -565,9 +593,13 @@ pub fn picture_chapter(manifest: &Manifest, before: &[State], now: &[State]) -> 
             .filter(|(e, _)| e.chapter == chapter)
             .all(|(_, s)| *s == State::Done)
     };
-    (1..=drawable)
-        .find(|&c| !green(before, c))
-        .or(Some(drawable))
+    let turned = drawable_chapter(manifest, now)
+        .and_then(|drawable| (1..=drawable).find(|&c| !green(before, c)));
+    let next = now
+        .iter()
+        .position(|s| *s != State::Done)
+        .map(|i| manifest.entries[i].chapter);
+    turned.or(next).unwrap_or(whitted_syllabus::LAST)
 }
 
 /// A build of the loop: the packages of [`PACKAGES`], cargo's lines shown once it is slow.
@@ -803,13 +835,6 @@ pub fn check(
     out += &progress(manifest, &all, style);
     say.report(&out);
     save_states(root, manifest, &all)?;
-    if draw && drawable_chapter(manifest, &all).is_none() {
-        // no picture yet: build chapter 1's binary now, while the student reads, so that the
-        // first picture comes seconds after chapter 1 is written, not a build later
-        say.status("building the chapter binaries for the first picture (once) …");
-        let first = whitted_syllabus::CHAPTERS[0].binary.to_string();
-        build(root, &[], std::slice::from_ref(&first), &say)?;
-    }
     Ok(Checked { run, states: all })
 }
 
@@ -825,54 +850,104 @@ fn build_failure(run: &TestRun, style: Style) -> String {
     )
 }
 
+/// The width of a PNG file, from its header (`None` when it is not a PNG).
+fn png_width(path: &Path) -> Option<u32> {
+    let mut head = [0u8; 24];
+    let mut file = std::fs::File::open(path).ok()?;
+    std::io::Read::read_exact(&mut file, &mut head).ok()?;
+    let signature = head.starts_with(b"\x89PNG\r\n\x1a\n") && &head[12..16] == b"IHDR";
+    signature.then(|| u32::from_be_bytes([head[16], head[17], head[18], head[19]]))
+}
+
+/// A chapter's picture, drawn by the student's code.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Picture {
+    /// The PNG written: with a figure to compare with, the student's render, the figure and
+    /// their difference side by side; else the render alone.
+    pub path: PathBuf,
+    /// The chapter binary's `compare:` line (how many pixels differ from the figure, and
+    /// where the first one is), when there was a figure.
+    pub compare: Option<String>,
+}
+
+/// Why a chapter's picture could not be drawn.
+#[derive(Debug)]
+pub enum NoPicture {
+    /// The render stopped: the chapter binary's one-line error (an exercise it needs is not
+    /// written yet, or panics).
+    Render(String),
+    /// The chapter binary could not be built or run.
+    Tool(ToolError),
+}
+
 /// Renders chapter `chapter`'s scene with the project's own chapter binary (dev profile) into
-/// `.whitted/chNN_name.png`, [`PICTURE_WIDTH`] pixels wide; returns the image's path.
-pub fn render_chapter(root: &Path, chapter: u8) -> Result<PathBuf, ToolError> {
-    let about = whitted_syllabus::chapter(chapter)
-        .ok_or_else(|| ToolError::Usage(format!("there is no chapter {chapter}")))?;
+/// `.whitted/chNN_name.png`: beside the chapter's figure in the course book and their
+/// difference (`--compare`, at the figure's width) when the handout has the figure, else alone,
+/// [`PICTURE_WIDTH`] pixels wide.
+pub fn render_chapter(root: &Path, chapter: u8) -> Result<Picture, NoPicture> {
+    let about = whitted_syllabus::chapter(chapter).ok_or_else(|| {
+        NoPicture::Tool(ToolError::Usage(format!("there is no chapter {chapter}")))
+    })?;
     let name = about.binary.to_string();
     let say = Say { report: false };
-    let built = build(root, &[], std::slice::from_ref(&name), &say)?;
+    let built = build(root, &[], std::slice::from_ref(&name), &say).map_err(NoPicture::Tool)?;
     if !built.success {
-        return Err(ToolError::Cargo(format!(
+        return Err(NoPicture::Tool(ToolError::Cargo(format!(
             "chapter {chapter}'s binary does not build: {}",
             built.first_error()
-        )));
+        ))));
     }
-    let exe = built
-        .executables
-        .get(&name)
-        .ok_or_else(|| ToolError::Cargo(format!("cargo built no binary {name}")))?;
+    let exe = built.executables.get(&name).ok_or_else(|| {
+        NoPicture::Tool(ToolError::Cargo(format!("cargo built no binary {name}")))
+    })?;
     let dir = root.join(STATE_DIR);
-    std::fs::create_dir_all(&dir).map_err(|e| ToolError::io(&dir, e))?;
+    std::fs::create_dir_all(&dir).map_err(|e| NoPicture::Tool(ToolError::io(&dir, e)))?;
     let png = dir.join(format!("{name}.png"));
     let scene = root.join(about.scene());
+    let figure = root.join(about.figure());
     let mut command = std::process::Command::new(exe);
     if scene.is_file() {
         command.arg(&scene);
     }
+    match png_width(&figure) {
+        Some(width) => {
+            command.args(["--width", &width.to_string(), "--compare"]);
+            command.arg(&figure);
+        }
+        None => {
+            command.args(["--width", &PICTURE_WIDTH.to_string()]);
+        }
+    }
     let out = command
-        .args(["--quiet", "--width", &PICTURE_WIDTH.to_string(), "-o"])
+        .arg("--quiet")
+        .arg("-o")
         .arg(&png)
         .current_dir(root)
         .stdin(std::process::Stdio::null())
         .output()
-        .map_err(|e| ToolError::Cargo(format!("cannot run {}: {e}", exe.display())))?;
+        .map_err(|e| {
+            NoPicture::Tool(ToolError::Cargo(format!(
+                "cannot run {}: {e}",
+                exe.display()
+            )))
+        })?;
     if !out.status.success() {
         let err = String::from_utf8_lossy(&out.stderr);
         let line = err
             .lines()
             .rev()
-            .find(|l| l.starts_with("error"))
+            .find_map(|l| l.strip_prefix("error: "))
             .unwrap_or("the render failed");
-        return Err(ToolError::Cargo(format!(
-            "chapter {chapter}'s image: {line}"
-        )));
+        return Err(NoPicture::Render(line.to_string()));
     }
-    Ok(png)
+    let compare = String::from_utf8_lossy(&out.stdout)
+        .lines()
+        .find(|l| l.starts_with("compare: "))
+        .map(str::to_string);
+    Ok(Picture { path: png, compare })
 }
 
-/// After a check: the picture of the chapter [`picture_chapter`] picks, and a line saying so.
+/// After a check: the picture of the chapter [`picture_chapter`] picks, and what it shows.
 pub fn picture(
     root: &Path,
     manifest: &Manifest,
@@ -880,24 +955,35 @@ pub fn picture(
     states: &[State],
     style: Style,
 ) -> String {
-    let Some(chapter) = picture_chapter(manifest, before, states) else {
-        let first = &manifest.entries[0];
-        return format!(
-            "picture: chapter 1's image appears in {STATE_DIR}/ once chapter 1 is written (it waits for exercise {})\n",
-            states
-                .iter()
-                .zip(&manifest.entries)
-                .find(|(s, e)| e.chapter == 1 && **s != State::Done)
-                .map_or(first.exercise.id.as_str(), |(_, e)| e.exercise.id.as_str())
-        );
-    };
+    let chapter = picture_chapter(manifest, before, states);
     match render_chapter(root, chapter) {
-        Ok(png) => format!(
+        Ok(Picture {
+            path,
+            compare: Some(compare),
+        }) => {
+            let same = compare.contains("the same as the reference");
+            format!(
+                "{} picture: chapter {chapter}'s scene as your code draws it, beside the book's and their difference: {}\n  {compare}\n",
+                if same {
+                    style.good("✓")
+                } else {
+                    style.bad("✗")
+                },
+                path.strip_prefix(root).unwrap_or(&path).display()
+            )
+        }
+        Ok(Picture {
+            path,
+            compare: None,
+        }) => format!(
             "{} picture: chapter {chapter}'s scene as your code draws it: {}\n",
             style.good("✓"),
-            png.strip_prefix(root).unwrap_or(&png).display()
+            path.strip_prefix(root).unwrap_or(&path).display()
         ),
-        Err(e) => format!("picture: none yet ({e})\n"),
+        Err(NoPicture::Render(why)) => {
+            format!("picture: chapter {chapter} cannot render yet: {why}\n")
+        }
+        Err(NoPicture::Tool(e)) => format!("picture: none yet ({e})\n"),
     }
 }
 

@@ -102,6 +102,9 @@ pub struct Exercise {
     pub hints: Vec<String>,
     /// What the exercise is worth.
     pub points: u32,
+    /// The test that tells most about a wrong body, shown first when several fail: the rest of
+    /// its name after [`Exercise::test_prefix`] (`viewing_angle_is_converted_from_degrees`).
+    pub first_check: Option<String>,
 }
 
 /// What the names of an exercise's own tests begin with, before its name.
@@ -186,6 +189,7 @@ struct RawEntry {
     task: Option<Spanned<String>>,
     hints: Option<Spanned<Vec<String>>>,
     points: Option<Spanned<i64>>,
+    first_check: Option<Spanned<String>>,
 }
 
 /// Reads and checks the manifest at `path`; messages name the path as given.
@@ -484,6 +488,21 @@ fn exercise(
                 ),
             )
         })?;
+    let first_check = match &raw.first_check {
+        None => None,
+        Some(check) => {
+            let rest = check.get_ref().trim();
+            if !is_test_rest(rest) {
+                return Err(err(
+                    check.span(),
+                    format!(
+                        "first_check: expected the rest of a test's name after `{TEST_PREFIX}{name}_` (snake_case), found {rest:?}"
+                    ),
+                ));
+            }
+            Some(rest.to_string())
+        }
+    };
     Ok(Exercise {
         name: name.to_string(),
         id,
@@ -491,7 +510,16 @@ fn exercise(
         task,
         hints: list,
         points: value,
+        first_check,
     })
+}
+
+/// Whether `rest` can end a test's name: ASCII letters, digits and `_`, not empty.
+fn is_test_rest(rest: &str) -> bool {
+    !rest.is_empty()
+        && rest
+            .chars()
+            .all(|c| c.is_ascii_lowercase() || c.is_ascii_digit() || c == '_')
 }
 
 /// Whether `name` is a snake_case exercise name: lower-case ASCII letters, digits and single

@@ -17,6 +17,7 @@
 //! assert_eq!(ch2.binary, "ch02_generic_objects");
 //! assert_eq!(ch2.scene(), "scenes/ch02_generic_objects.toml");
 //! assert_eq!(ch2.page(), "docs/src/ch02-generic-objects.md");
+//! assert_eq!(ch2.figure(), "docs/src/figures/ch02_generic_objects.png");
 //! ```
 
 #![deny(missing_docs)]
@@ -56,6 +57,15 @@ impl Chapter {
     #[must_use]
     pub fn page(&self) -> String {
         format!("docs/src/{}.md", self.book)
+    }
+
+    /// The chapter's figure in the course book, its scene as the reference renders it:
+    /// `docs/src/figures/chNN_name.png` (rendered by the chapter's binary from its scene, at
+    /// the figure's width, as `docs/figures.toml` says; `cargo learn` compares the student's
+    /// render with it).
+    #[must_use]
+    pub fn figure(&self) -> String {
+        format!("docs/src/figures/{}.png", self.binary)
     }
 
     /// The chapter's title with a capital: "Camera rays".

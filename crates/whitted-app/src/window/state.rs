@@ -366,10 +366,7 @@ impl State {
 
     fn next_picture(&mut self) -> Vec<Command> {
         if self.reference.is_none() {
-            let figure = format!(
-                "docs/src/figures/{}.png",
-                self.options.chapter.about().binary
-            );
+            let figure = self.options.chapter.about().figure();
             return vec![Command::Print(format!(
                 "no reference to compare with: start the window with --compare REF.png, such as \
                  --compare {figure} (chapter {}'s figure, of the scene {})",
