@@ -33,6 +33,8 @@ pub struct Extents {
     items: Vec<u32>,
     /// Objects that may cover any pixel (kept once, not in every tile's list).
     everywhere: Vec<u32>,
+    /// The camera whose image the tiles cut, to find where a camera ray crosses it.
+    camera: Camera,
 }
 
 /// Where a box lies on the image.
@@ -78,7 +80,6 @@ pub fn footprint(b: &Aabb, camera: &Camera) -> Footprint {
 /// that may see the box, or `None` if the box may cover any pixel (it reaches behind the eye).
 #[must_use]
 pub fn rectangle(b: &Aabb, camera: &Camera) -> Option<[i64; 4]> {
-    let (cols, rows) = (camera.columns() as Real, camera.rows() as Real);
     let (mut x0, mut x1, mut y0, mut y1) = (
         Real::INFINITY,
         Real::NEG_INFINITY,
@@ -96,11 +97,7 @@ pub fn rectangle(b: &Aabb, camera: &Camera) -> Option<[i64; 4]> {
         if depth.is_nan() || depth <= 1e-6 * q.length() {
             return None;
         }
-        let s = camera.near() / depth;
-        let u_c = q.dot(camera.u()) * s;
-        let v_r = q.dot(camera.v()) * s;
-        let c = (u_c + camera.half_width()) * cols / (2.0 * camera.half_width());
-        let y = rows - (v_r + camera.half_height()) * rows / (2.0 * camera.half_height());
+        let (c, y) = image_point(camera, q);
         x0 = x0.min(c);
         x1 = x1.max(c);
         y0 = y0.min(y);
@@ -114,6 +111,19 @@ pub fn rectangle(b: &Aabb, camera: &Camera) -> Option<[i64; 4]> {
         clamp(y1.ceil()) + 1,
     ];
     (x0.is_finite() && x1.is_finite() && y0.is_finite() && y1.is_finite()).then_some(r)
+}
+
+/// Where the line from the eye along `q` (in front of the eye, −q·n > 0) crosses the image:
+/// (column, row from the top), in pixels, not rounded: c = (u_c + W)·n_c/(2W) and
+/// m − (v_r + H)·m/(2H), with (u_c, v_r) = N·(q·u, q·v)/(−q·n) on the near plane.
+fn image_point(camera: &Camera, q: Vec3) -> (Real, Real) {
+    let (cols, rows) = (camera.columns() as Real, camera.rows() as Real);
+    let s = camera.near() / -q.dot(camera.n());
+    let u_c = q.dot(camera.u()) * s;
+    let v_r = q.dot(camera.v()) * s;
+    let c = (u_c + camera.half_width()) * cols / (2.0 * camera.half_width());
+    let y = rows - (v_r + camera.half_height()) * rows / (2.0 * camera.half_height());
+    (c, y)
 }
 
 impl Extents {
@@ -169,7 +179,23 @@ impl Extents {
             starts,
             items,
             everywhere,
+            camera: camera.clone(),
         }
+    }
+
+    /// The pixel of the image that a camera ray with direction `d` passes through, clamped
+    /// into the image. It may be a neighbour of the pixel the ray was made for (at a pixel's
+    /// edge, rounding can tip it over), but every object the ray can hit has its rectangle,
+    /// padded by a pixel, over it: its tile's candidates are enough.
+    #[must_use]
+    pub fn pixel_of(&self, d: Vec3) -> (u32, u32) {
+        let (c, y) = image_point(&self.camera, d);
+        // (a NaN, from a direction that is no camera ray's, goes to pixel 0)
+        let clamp = |v: Real, n: u32| v.floor().clamp(0.0, n.saturating_sub(1) as Real) as u32;
+        (
+            clamp(c, self.camera.columns()),
+            clamp(y, self.camera.rows()),
+        )
     }
 
     /// The candidates of the tile holding pixel (x, y) of the image, and those that may cover

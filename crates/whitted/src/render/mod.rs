@@ -19,6 +19,7 @@
 //!
 //! Course book: [Chapter 1, camera rays](../../../../docs/book/ch01-camera-rays.html) (`docs/src/ch01-camera-rays.md`).
 
+pub mod accelerated;
 pub mod framebuffer;
 pub mod inspect;
 pub mod options;
@@ -30,10 +31,11 @@ pub mod tiles;
 pub mod tracer;
 pub mod views;
 
+pub use accelerated::Accelerated;
 pub use framebuffer::{Framebuffer, MAX_FRAMEBUFFER_BYTES, check_size};
 pub use inspect::RayTree;
 pub use options::{Chapter, Options, View};
 pub use recorder::{RayKind, Recorder, Stop};
 pub use stats::Stats;
 pub use tiles::{BLOCK, Finished, Rect, TILE, build_accel, render, render_rect, render_with};
-pub use tracer::Tracer;
+pub use tracer::{EveryObject, Feeler, Query, ShadingPoint, Tracer};
