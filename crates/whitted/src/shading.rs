@@ -103,6 +103,7 @@ pub struct Phong {
 /// I_p/(a0 + a1·d + a2·d²)·(ρd·max(n·s, 0) + ρs·max(r·v, 0)^f), for d = ‖L − P‖ and
 /// s = (L − P)/d. A light at P itself (d = 0) has no direction s: it adds nothing (every
 /// factor but the attenuation is zero).
+#[inline]
 #[must_use]
 pub fn phong(material: &Material, light: &Light, p: Vec3, n: Vec3, v: Vec3) -> Phong {
     // ANCHOR_END: ch3_phong

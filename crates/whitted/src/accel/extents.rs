@@ -15,7 +15,8 @@
 //!
 //! The renderer works in 16 × 16 tiles, so each tile keeps the list of objects whose rectangle
 //! overlaps it, and a camera ray of that tile tests only those (and the objects that may be
-//! anywhere, kept in one list of their own).
+//! anywhere, kept in one list of their own). Which tile a camera ray belongs to is read off its
+//! direction ([`Extents::pixel_of`]): the road hands the structure a camera ray, not a pixel.
 //!
 //! Course book: [Performance](../../../../../docs/book/performance.html) (`docs/src/performance.md`).
 

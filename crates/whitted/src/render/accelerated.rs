@@ -85,8 +85,8 @@ impl Query for Accelerated<'_> {
     }
 
     #[inline]
-    fn shading_point(&self, ray: &Ray, nearest: &Nearest) -> ShadingPoint<'_> {
-        ShadingPoint::new(self.scene, ray, nearest)
+    fn shading_point(&self, ray: &Ray, nearest: &Nearest) -> Cow<'_, ShadingPoint<'_>> {
+        Cow::Owned(ShadingPoint::new(self.scene, ray, nearest))
     }
 
     #[inline]

@@ -4,20 +4,21 @@
 //! [`super::BLOCK`] block of pixels go through the structure as one packet
 //! ([`crate::accel::Accelerator::nearest_packet`]), and so do their feelers towards each light
 //! ([`crate::accel::Accelerator::transmittance_packet`]): the camera rays are the road's own
-//! (`Tracer::sample_ray`), the feelers too ([`ShadingPoint::new`], `Tracer::feeler`). The
-//! answers go in a table, and then each pixel is rendered by the road of one pixel itself,
-//! [`Tracer::pixel`], asking a `Packed` query: it answers from the table the rays it holds —
-//! only a ray equal to the one traced, bit for bit, and the shading point made of its hit —
-//! and any other ray (mirror and transmitted rays, their feelers) from the acceleration
-//! structure. So the packets own no step of the road: they change the time, never a bit of the
-//! image. [`Options::packets`] turns them off, and the tests render both ways and compare.
+//! (`Tracer::sample_ray`), the feelers too ([`ShadingPoint::new`], `Tracer::feeler`). Then each
+//! pixel's camera ray goes down the road of one pixel itself (`Tracer::camera_ray`, a sample
+//! of [`Tracer::pixel`]), asking a `Packed` query: it answers from what the packets found
+//! the rays they traced — only a ray equal to the one traced, bit for bit — and lends the
+//! shading point it made of a camera ray's hit; any other ray (mirror and transmitted rays,
+//! their feelers) it asks of the acceleration structure. So the packets own no step of the
+//! road: no view, no background, no count of rays. They change the time, never a bit of the
+//! image: [`Options::packets`] turns them off, and the tests render both ways and compare.
 //!
-//! The road does again, for each pixel, a little of what the table was built with: it makes
-//! its camera ray and its feelers itself, and finds them in the table. That is the price of one
-//! road (measured in `docs/src/performance.md`).
+//! The road makes each first feeler again, and finds it among those traced (the price of one
+//! road; `docs/src/performance.md` has the measurements).
 //!
 //! Course book: [Performance](../../../../../docs/book/performance.html) (`docs/src/performance.md`).
 
+use std::borrow::Cow;
 use std::cell::Cell;
 
 use arrayvec::ArrayVec;
@@ -34,39 +35,23 @@ use crate::shapes::Nearest;
 /// Up to one value per pixel of a block.
 pub(crate) type Block<T> = ArrayVec<T, PACKET>;
 
-/// What the packets of one block found, pixel by pixel (kept from one block to the next, so
-/// its memory is allocated once per band of tiles).
-pub(crate) struct Table<'a> {
-    /// How many pixels the block has.
-    len: usize,
-    /// Each pixel's camera ray …
-    rays: [Ray; PACKET],
-    /// … its nearest hit …
-    nearest: [Option<Nearest>; PACKET],
-    /// … and what shading needs to know of it, made to build its feelers.
-    points: Block<Option<ShadingPoint<'a>>>,
-    /// `feelers[light][pixel]`: the feeler the pixel's camera hit sends towards the light, if
-    /// any, with the share of the light it lets through.
-    feelers: Vec<[Option<(Feeler, Real)>; PACKET]>,
-}
-
-impl Table<'_> {
-    /// An empty table.
-    pub(crate) fn new() -> Self {
-        Self {
-            len: 0,
-            rays: [Ray::new(Vec3::ZERO, Vec3::ZERO); PACKET],
-            nearest: [None; PACKET],
-            points: Block::new(),
-            feelers: Vec::new(),
-        }
-    }
-}
+/// The feelers the camera hits of a block send, with the share of its light each lets through:
+/// `feelers[light][pixel]` (kept from one block to the next, so that its memory is allocated
+/// once per band of tiles).
+pub(crate) type Feelers = Vec<[Option<(Feeler, Real)>; PACKET]>;
 
 /// The [`Query`] the pixels of a block are rendered with, one after the other: the rays its
-/// packets traced answered from the table, every other ray by the structure.
-pub(crate) struct Packed<'t, 'a> {
-    table: &'t Table<'a>,
+/// packets traced answered from what they found, every other ray by the structure.
+struct Packed<'t, 'a> {
+    /// Each pixel's camera ray …
+    rays: &'t [Ray],
+    /// … its nearest hit …
+    nearest: &'t [Option<Nearest>],
+    /// … what shading needs to know of it (made to build its feelers; empty when no feeler
+    /// was traced) …
+    points: &'t [Option<ShadingPoint<'a>>],
+    /// … and its feelers, `feelers[light][pixel]`.
+    feelers: &'t [[Option<(Feeler, Real)>; PACKET]],
     structure: &'t Accelerated<'a>,
     /// The pixel being rendered: its place in the block.
     pixel: Cell<usize>,
@@ -96,18 +81,18 @@ impl Query for Packed<'_, '_> {
     #[inline]
     fn nearest_camera(&self, ray: &Ray) -> Option<Nearest> {
         let i = self.pixel.get();
-        if same(&self.table.rays[i], ray) {
-            self.table.nearest[i]
+        if same(&self.rays[i], ray) {
+            self.nearest[i]
         } else {
             self.structure.nearest_camera(ray)
         }
     }
 
     #[inline]
-    fn shading_point(&self, ray: &Ray, nearest: &Nearest) -> ShadingPoint<'_> {
+    fn shading_point(&self, ray: &Ray, nearest: &Nearest) -> Cow<'_, ShadingPoint<'_>> {
         let i = self.pixel.get();
-        match self.table.points.get(i) {
-            Some(Some(s)) if same(&self.table.rays[i], ray) => *s,
+        match self.points.get(i) {
+            Some(Some(s)) if same(&self.rays[i], ray) => Cow::Borrowed(s),
             _ => self.structure.shading_point(ray, nearest),
         }
     }
@@ -115,8 +100,8 @@ impl Query for Packed<'_, '_> {
     #[inline]
     fn share(&self, feeler: &Feeler, rec: &mut impl Recorder) -> Real {
         let i = self.pixel.get();
-        for l in self.light.get()..self.table.feelers.len() {
-            if let Some((traced, share)) = &self.table.feelers[l][i]
+        for l in self.light.get()..self.feelers.len() {
+            if let Some((traced, share)) = &self.feelers[l][i]
                 && traced.u_min.to_bits() == feeler.u_min.to_bits()
                 && same(&traced.ray, &feeler.ray)
             {
@@ -128,83 +113,87 @@ impl Query for Packed<'_, '_> {
     }
 }
 
-/// Whether a block's first rays go as packets: packets asked for, one ray a pixel, from
-/// chapter 2 on, through a BVH or an octree.
+/// Whether a block's first rays go as packets: packets asked for, one ray a pixel (not the
+/// rays-per-pixel view, which counts each pixel's rays), from chapter 2 on, through a BVH or
+/// an octree.
 fn packets(tracer: &Tracer) -> bool {
     let o: &Options = tracer.options;
     o.packets
         && o.samples_per_pixel() == 1
+        && o.view != View::Rays
         && o.chapter >= Chapter::GenericObjects
         && matches!(tracer.query().accel().kind(), Accel::Bvh | Accel::Octree)
 }
 
 /// The colours of the pixels x0..x1 of rows y0..y1 (at most [`PACKET`] of them), row after
-/// row: [`Tracer::pixel`] of each, its first rays traced as packets when that pays. `table`
+/// row: [`Tracer::pixel`] of each, its first rays traced as packets when that pays. `scratch`
 /// keeps its allocation from one block to the next.
-pub(crate) fn block<'a>(
-    tracer: &Tracer<'a>,
+pub(crate) fn block(
+    tracer: &Tracer,
     (x0, x1): (u32, u32),
     (y0, y1): (u32, u32),
-    table: &mut Table<'a>,
+    scratch: &mut Feelers,
     stats: &mut Stats,
 ) -> Block<Vec3> {
     let pixels = (y0..y1).flat_map(|y| (x0..x1).map(move |x| (x, y)));
     if !packets(tracer) {
         return pixels.map(|(x, y)| tracer.pixel(x, y, stats)).collect();
     }
-    trace_camera_rays(tracer, pixels.clone(), table);
+    // the camera rays, the road's own, as one packet
+    let rays: Block<Ray> = pixels
+        .clone()
+        .map(|(x, y)| tracer.sample_ray(x, y, (0, 1)).1)
+        .collect();
+    let mut nearest = [None; PACKET];
+    let nearest = &mut nearest[..rays.len()];
+    tracer.query().nearest_camera_packet(&rays, nearest);
+    // their first feelers, light by light
     let o = tracer.options;
-    table.points.clear();
-    table.feelers.clear();
-    if o.chapter >= Chapter::Shadows && matches!(o.view, View::Color | View::Shadows) {
-        trace_feelers(tracer, table);
-    }
+    let points: Block<Option<ShadingPoint>> =
+        if o.chapter >= Chapter::Shadows && matches!(o.view, View::Color | View::Shadows) {
+            let point = |(ray, n): (&Ray, &Option<Nearest>)| {
+                n.as_ref().map(|n| ShadingPoint::new(tracer.scene, ray, n))
+            };
+            rays.iter().zip(nearest.iter()).map(point).collect()
+        } else {
+            Block::new()
+        };
+    trace_feelers(tracer, &points, scratch);
     let packed = tracer.asking(Packed {
-        table,
+        rays: &rays,
+        nearest,
+        points: &points,
+        feelers: scratch,
         structure: tracer.query(),
         pixel: Cell::new(0),
         light: Cell::new(0),
     });
-    pixels
+    // each pixel's one sample down the road, from its camera ray
+    rays.iter()
         .enumerate()
-        .map(|(i, (x, y))| {
+        .map(|(i, ray)| {
             packed.query().pixel.set(i);
             packed.query().light.set(0);
-            packed.pixel(x, y, stats)
+            packed.camera_ray(ray, stats)
         })
         .collect()
 }
 
-/// Traces the camera rays of the pixels (the road's, `Tracer::sample_ray`) as one packet.
-fn trace_camera_rays(tracer: &Tracer, pixels: impl Iterator<Item = (u32, u32)>, table: &mut Table) {
-    let mut n = 0;
-    for (x, y) in pixels {
-        table.rays[n] = tracer.sample_ray(x, y, (0, 1)).1;
-        n += 1;
-    }
-    table.len = n;
-    tracer
-        .query()
-        .nearest_camera_packet(&table.rays[..n], &mut table.nearest[..n]);
-}
-
-/// Traces the feelers the road sends from the camera rays' hits (`Tracer::shading_point`,
-/// `Tracer::feeler`), light by light as one packet.
-fn trace_feelers<'a>(tracer: &Tracer<'a>, table: &mut Table<'a>) {
-    let n = table.len;
-    for i in 0..n {
-        let point = table.nearest[i].map(|h| ShadingPoint::new(tracer.scene, &table.rays[i], &h));
-        table.points.push(point);
+/// Traces, light by light as one packet, the feelers the road sends from the shading points
+/// `points` (`Tracer::feeler`), into `feelers[light][pixel]`.
+fn trace_feelers(tracer: &Tracer, points: &[Option<ShadingPoint>], feelers: &mut Feelers) {
+    feelers.clear();
+    if points.is_empty() {
+        return;
     }
     let lights = &tracer.scene.lights;
-    table.feelers.resize(lights.len(), [None; PACKET]);
-    for (light, row) in lights.iter().zip(table.feelers.iter_mut()) {
+    feelers.resize(lights.len(), [None; PACKET]);
+    for (light, row) in lights.iter().zip(feelers.iter_mut()) {
         // the pixels that send a feeler towards this light, and their feelers
         let mut who = Block::<usize>::new();
         let mut rays = Block::<Ray>::new();
         let mut u_min = Block::<Real>::new();
-        for (i, s) in table.points.iter().enumerate() {
-            row[i] = None;
+        for (i, s) in points.iter().enumerate() {
             if let Some(feeler) = s.as_ref().and_then(|s| tracer.feeler(s, light)) {
                 who.push(i);
                 rays.push(feeler.ray);

@@ -9,12 +9,11 @@
 //! Read it top to bottom: [`Tracer::pixel`] → `Tracer::camera_ray` → [`Query::nearest`] (the
 //! notes' step 4, [`EveryObject`]) → `Tracer::shade` → `Tracer::local_light` (with
 //! `Tracer::feeler` and [`Query::share`]) → `Tracer::reflect_and_refract` → [`Tracer::trace`]
-//! for each new ray. Each stop calls the small function of the notes' formula
-//! ([`crate::camera`], [`crate::shapes`], [`crate::shading`], [`crate::shadow`],
-//! [`crate::optics`]). The road itself adds up what they bring back (the sums of the lighting
-//! equation) and decides which rays to send: a feeler for a light in front that casts
-//! shadows, a mirror or transmitted ray while the depth and its weight allow, the transmitted
-//! share moved to the mirror ray under total internal reflection. How far a chapter goes:
+//! for each new ray. Each stop calls the small function of the notes' formula (camera,
+//! shapes, shading, shadow, optics). The road itself adds up what they bring back (the sums of
+//! the lighting equation) and decides which rays to send: a feeler for a light in front that
+//! casts shadows, a branch while the depth and its weight allow, the transmitted share moved
+//! to the mirror ray under total internal reflection. How far a chapter goes:
 //!
 //! | [`Chapter`] | what a camera ray returns |
 //! |---|---|
@@ -24,11 +23,10 @@
 //! | 4 [`Chapter::Shadows`] | the same, each light tested by a feeler ray |
 //! | 5 [`Chapter::ReflectionRefraction`] | plus mirror and transmitted rays, recursively: I = I_a + I_d + I_s + I_l + I_r |
 //!
-//! Every stop tells a [`Recorder`] what it computed: a plain render's [`Stats`] counts rays,
-//! the inspector's [`inspect::TreeRecorder`] keeps the ray tree. The nearest hit of a ray, what
-//! shading needs to know of it, and the share of a feeler are asked of a [`Query`]: the
-//! notes' own answer, [`EveryObject`], tests every object in turn; the acceleration structures
-//! ([`super::Accelerated`]) and the packets ([`super::packets`]) give the same answers sooner.
+//! Every stop tells a [`Recorder`] what it computed ([`Stats`] counts rays, the inspector keeps
+//! the ray tree). The nearest hit of a ray, what shading needs to know of it, and the share of
+//! a feeler are asked of a [`Query`]: the notes' own answer, [`EveryObject`], tests every object
+//! in turn; the structures ([`super::Accelerated`]) and the packets give the same answers sooner.
 //!
 //! Course book: [Chapter 1, camera rays](../../../../../docs/book/ch01-camera-rays.html) (`docs/src/ch01-camera-rays.md`).
 
@@ -69,8 +67,8 @@ pub trait Query {
     }
 
     /// What shading needs to know of `nearest`, the nearest hit of `ray`:
-    /// [`ShadingPoint::new`] of it.
-    fn shading_point(&self, ray: &Ray, nearest: &Nearest) -> ShadingPoint<'_>;
+    /// [`ShadingPoint::new`] of it, made here, or lent by a query that made it already.
+    fn shading_point(&self, ray: &Ray, nearest: &Nearest) -> Cow<'_, ShadingPoint<'_>>;
 
     /// The share of its light that `feeler` lets through: [`shadow::transmittance`] of the
     /// transmissions of the objects it crosses with u ∈ ]u_min, 1], in scene order (0 behind
@@ -112,8 +110,8 @@ impl Query for EveryObject<'_> {
         })
     }
 
-    fn shading_point(&self, ray: &Ray, nearest: &Nearest) -> ShadingPoint<'_> {
-        ShadingPoint::new(self.scene, ray, nearest)
+    fn shading_point(&self, ray: &Ray, nearest: &Nearest) -> Cow<'_, ShadingPoint<'_>> {
+        Cow::Owned(ShadingPoint::new(self.scene, ray, nearest))
     }
 
     fn share(&self, feeler: &Feeler, rec: &mut impl Recorder) -> Real {
@@ -164,6 +162,7 @@ pub struct ShadingPoint<'s> {
 // ANCHOR: ch3_shading_point
 impl<'s> ShadingPoint<'s> {
     /// What shading needs to know of `nearest`, the nearest hit of `ray` in `scene`.
+    #[inline]
     #[must_use]
     pub fn new(scene: &'s Scene, ray: &Ray, nearest: &Nearest) -> Self {
         let hit = nearest.hit;
@@ -289,13 +288,11 @@ impl<'a, Q: Query> Tracer<'a, Q> {
         for s in 0..samples {
             let ((dx, dy), ray) = self.sample_ray(x, y, (s, samples));
             rec.sample(s, dx, dy);
-            rec.ray(RayKind::Camera, &ray, 0.0, 0, 1.0, 1.0);
             let colour = self.camera_ray(&ray, rec);
-            rec.done(colour);
+            if samples == 1 {
+                return colour; // the mean of one colour
+            }
             sum += colour;
-        }
-        if samples == 1 {
-            return sum; // the mean of one colour: dividing by 1 changes no bit
         }
         sum / samples as Real
     }
@@ -309,14 +306,19 @@ impl<'a, Q: Query> Tracer<'a, Q> {
     // ANCHOR_END: ch1_pixel
 
     // ANCHOR: ch1_camera_ray
-    /// What a camera ray brings back.
-    fn camera_ray(&self, ray: &Ray, rec: &mut impl Recorder) -> Vec3 {
-        if self.options.chapter == Chapter::CameraRays {
-            return direction_colour(ray.dir); // chapter 1: (d̂ + 1)/2
-        }
-        let nearest = self.query.nearest_camera(ray); // chapter 2: step 4, t > 0
-        rec.hit(nearest.as_ref());
-        self.view_colour(ray, nearest, rec)
+    /// What a camera ray brings back, `rec` told that it leaves, all that follows and the
+    /// colour: in chapter 1 its direction, from chapter 2 its nearest hit as the view shows it.
+    pub(crate) fn camera_ray(&self, ray: &Ray, rec: &mut impl Recorder) -> Vec3 {
+        rec.ray(RayKind::Camera, ray, 0.0, 0, 1.0, 1.0);
+        let colour = if self.options.chapter == Chapter::CameraRays {
+            direction_colour(ray.dir) // chapter 1: (d̂ + 1)/2
+        } else {
+            let nearest = self.query.nearest_camera(ray); // chapter 2: step 4, t > 0
+            rec.hit(nearest.as_ref());
+            self.view_colour(ray, nearest, rec)
+        };
+        rec.done(colour);
+        colour
     }
     // ANCHOR_END: ch1_camera_ray
 
@@ -434,6 +436,7 @@ impl<'a, Q: Query> Tracer<'a, Q> {
     /// From chapter 4, the feeler S(u) = P′ + (L − P′)·u towards a `light` that casts shadows
     /// and lies in front, n·(L − P) > 0 ([`shadow::in_front`]), from P moved off the surface
     /// to P′ ([`crate::offset`]).
+    #[inline]
     pub(crate) fn feeler(&self, s: &ShadingPoint, light: &Light) -> Option<Feeler> {
         let o = self.options;
         if o.chapter < Chapter::Shadows {
