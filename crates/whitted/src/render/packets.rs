@@ -140,24 +140,20 @@ pub(crate) fn block(
         return pixels.map(|(x, y)| tracer.pixel(x, y, stats)).collect();
     }
     // the camera rays, the road's own, as one packet
-    let rays: Block<Ray> = pixels
-        .clone()
-        .map(|(x, y)| tracer.sample_ray(x, y, (0, 1)).1)
-        .collect();
+    let mut rays: Block<Ray> = Block::new();
+    rays.extend(pixels.map(|(x, y)| tracer.sample_ray(x, y, (0, 1)).1));
     let mut nearest = [None; PACKET];
     let nearest = &mut nearest[..rays.len()];
     tracer.query().nearest_camera_packet(&rays, nearest);
     // their first feelers, light by light
     let o = tracer.options;
-    let points: Block<Option<ShadingPoint>> =
-        if o.chapter >= Chapter::Shadows && matches!(o.view, View::Color | View::Shadows) {
-            let point = |(ray, n): (&Ray, &Option<Nearest>)| {
-                n.as_ref().map(|n| ShadingPoint::new(tracer.scene, ray, n))
-            };
-            rays.iter().zip(nearest.iter()).map(point).collect()
-        } else {
-            Block::new()
+    let mut points: Block<Option<ShadingPoint>> = Block::new();
+    if o.chapter >= Chapter::Shadows && matches!(o.view, View::Color | View::Shadows) {
+        let point = |(ray, n): (&Ray, &Option<Nearest>)| {
+            n.as_ref().map(|n| ShadingPoint::new(tracer.scene, ray, n))
         };
+        points.extend(rays.iter().zip(nearest.iter()).map(point));
+    }
     trace_feelers(tracer, &points, scratch);
     let packed = tracer.asking(Packed {
         rays: &rays,
