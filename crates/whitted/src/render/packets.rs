@@ -60,6 +60,16 @@ struct Packed<'t, 'a> {
     light: Cell<usize>,
 }
 
+impl Packed<'_, '_> {
+    /// Whether `ray` is the camera ray traced for the pixel being rendered: the very one the
+    /// road was handed (a ray equal to it, not the same, is asked of the structure: the same
+    /// answer).
+    #[inline]
+    fn traced(&self, ray: &Ray) -> bool {
+        std::ptr::eq(ray, &self.rays[self.pixel.get()])
+    }
+}
+
 /// Whether `a` and `b` are the same ray, bit for bit.
 #[inline]
 fn same(a: &Ray, b: &Ray) -> bool {
@@ -81,7 +91,7 @@ impl Query for Packed<'_, '_> {
     #[inline]
     fn nearest_camera(&self, ray: &Ray) -> Option<Nearest> {
         let i = self.pixel.get();
-        if same(&self.rays[i], ray) {
+        if self.traced(ray) {
             self.nearest[i]
         } else {
             self.structure.nearest_camera(ray)
@@ -92,7 +102,7 @@ impl Query for Packed<'_, '_> {
     fn shading_point(&self, ray: &Ray, nearest: &Nearest) -> Cow<'_, ShadingPoint<'_>> {
         let i = self.pixel.get();
         match self.points.get(i) {
-            Some(Some(s)) if same(&self.rays[i], ray) => Cow::Borrowed(s),
+            Some(Some(s)) if self.traced(ray) => Cow::Borrowed(s),
             _ => self.structure.shading_point(ray, nearest),
         }
     }
