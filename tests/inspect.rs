@@ -7,11 +7,17 @@
 mod common;
 
 use common::scene;
+use whitted::ray::Ray;
 use whitted::real::{Real, Vec3};
 use whitted::render::inspect::{HitNode, RayNode, RayTree};
-use whitted::render::{Chapter, Framebuffer, Options, RayKind, Stats, Stop, Tracer, View, render};
-use whitted::scene::Scene;
+use whitted::render::{
+    Chapter, EveryObject, Feeler, Framebuffer, Options, RayKind, Recorder, ShadingPoint, Stats,
+    Stop, Tracer, View, render,
+};
+use whitted::scene::{Scene, load_parts};
+use whitted::shading::Phong;
 use whitted::shadow;
+use whitted::shapes::{Hits, Nearest};
 
 use whitted::scene::SHOWCASE;
 const GLASS: &str = include_str!("../scenes/ch05_reflection_refraction.toml");
@@ -112,7 +118,8 @@ fn each_node(tree: &RayTree, f: &mut impl FnMut(&RayNode)) {
 }
 
 /// Notes, "Reflection and refraction": I = I_a + I_d + I_s + I_l + I_r. At every hit of the
-/// tree, I_a plus each light's (I_d + I_s)·share is the local light, and the local light plus
+/// tree, each light's I_d + I_s is I_p·att·(ρd·max(n·s, 0) + ρs·max(r·v, 0)^f) of its own
+/// factors, I_a plus each light's (I_d + I_s)·share is the local light, and the local light plus
 /// k·(the colour of each branch) is the ray's colour, computed in the road's order, bit for
 /// bit; the pixel is the mean of its samples.
 #[test]
@@ -138,6 +145,8 @@ fn the_tree_adds_up_to_the_pixel() {
                 hits += 1;
                 let mut local = h.ambient.expect("chapter 5 shades every hit");
                 for l in &h.lights {
+                    let unshadowed = l.intensity * (l.diffuse + l.specular); // I_p·att·(…)
+                    assert_eq!(bits(l.unshadowed), bits(unshadowed), "light {l:?}");
                     assert_eq!(bits(l.arriving), bits(l.unshadowed * l.share));
                     local += l.arriving;
                 }
@@ -350,7 +359,8 @@ fn the_json_parses_and_carries_the_colour() {
     let tree = Tracer::new(&s, &o).inspect(32, 24);
     let text = serde_json::to_string(&tree.to_json()).unwrap();
     let v: serde_json::Value = serde_json::from_str(&text).unwrap();
-    assert_eq!(v["version"], 1);
+    assert_eq!(v["version"], whitted::render::inspect::JSON_VERSION);
+    assert_eq!(v["version"], 2);
     assert_eq!(v["pixel"], serde_json::json!([32, 24]));
     assert_eq!(v["chapter"], 5);
     assert_eq!(v["rays"], tree.rays);
@@ -371,8 +381,232 @@ fn the_json_parses_and_carries_the_colour() {
         assert!(!hit[key].is_null(), "hit.{key} missing: {hit}");
     }
     let light = &hit["lights"][0];
-    for key in ["i_d", "i_s", "attenuation", "share", "arriving", "feeler"] {
+    for key in [
+        "attenuation",
+        "intensity",
+        "diffuse",
+        "specular",
+        "unshadowed",
+        "share",
+        "arriving",
+        "feeler",
+    ] {
         assert!(!light[key].is_null(), "light.{key} missing: {light}");
     }
     assert!(hit["branches"][0]["k"].as_f64().unwrap() > 0.0);
+}
+
+/// Every value the road hands its recorder, in the order it hands them, as bits: what the
+/// road computed for a pixel, written down without a tree.
+#[derive(Default)]
+struct Log {
+    values: Vec<u64>,
+    /// The objects the feeler under way crosses, until its light's event.
+    crossed: Vec<(usize, Hits, Real)>,
+}
+
+impl Log {
+    #[allow(clippy::useless_conversion)] // Real is f64, or f32 with the `f32` feature
+    fn number(&mut self, x: Real) {
+        self.values.push(u64::from(x.to_bits()));
+    }
+
+    fn vector(&mut self, v: Vec3) {
+        v.to_array().into_iter().for_each(|x| self.number(x));
+    }
+
+    fn count(&mut self, i: usize) {
+        self.values.push(i as u64);
+    }
+}
+
+impl Recorder for Log {
+    fn sample(&mut self, index: u32, dx: Real, dy: Real) {
+        self.count(index as usize);
+        self.number(dx);
+        self.number(dy);
+    }
+
+    fn ray(&mut self, _: RayKind, ray: &Ray, t_min: Real, depth: u32, weight: Real, k: Real) {
+        self.vector(ray.origin);
+        self.vector(ray.dir);
+        self.number(t_min);
+        self.count(depth as usize);
+        self.number(weight);
+        self.number(k);
+    }
+
+    fn hit(&mut self, nearest: Option<&Nearest>) {
+        if let Some(n) = nearest {
+            self.count(n.object);
+            self.number(n.hit.t);
+            self.vector(n.hit.normal);
+        }
+    }
+
+    fn ambient(&mut self, i_a: Vec3) {
+        self.vector(i_a);
+    }
+
+    fn crossing(&mut self, object: usize, hits: &Hits, k_t: Real) {
+        self.crossed.push((object, *hits, k_t));
+    }
+
+    fn light(
+        &mut self,
+        light: usize,
+        s: &ShadingPoint,
+        phong: &Phong,
+        feeler: Option<&Feeler>,
+        share: Real,
+        arriving: Vec3,
+    ) {
+        self.count(light);
+        self.vector(s.p);
+        self.number(phong.attenuation);
+        for v in [phong.intensity, phong.diffuse, phong.specular, phong.sum] {
+            self.vector(v);
+        }
+        if let Some(f) = feeler {
+            self.vector(f.ray.origin);
+            self.number(f.u_min);
+            for (object, hits, k_t) in std::mem::take(&mut self.crossed) {
+                self.count(object);
+                for h in hits.as_slice() {
+                    if shadow::between(h.t, f.u_min) {
+                        self.number(h.t);
+                    }
+                }
+                self.number(k_t);
+            }
+        }
+        assert!(self.crossed.is_empty(), "crossings without a feeler");
+        self.number(share);
+        self.vector(arriving);
+    }
+
+    fn local(&mut self, colour: Vec3) {
+        self.vector(colour);
+    }
+
+    fn done(&mut self, colour: Vec3) {
+        self.vector(colour);
+    }
+}
+
+/// The numbers of a tree, in the order the road computed them.
+fn numbers(tree: &RayTree) -> Vec<u64> {
+    fn ray(log: &mut Log, r: &RayNode) {
+        log.vector(r.origin);
+        log.vector(r.direction);
+        log.number(r.t_min);
+        log.count(r.depth as usize);
+        log.number(r.weight);
+        log.number(r.k);
+        if let Some(h) = &r.hit {
+            log.count(h.object);
+            log.number(h.t);
+            log.vector(h.normal);
+            if let Some(i_a) = h.ambient {
+                log.vector(i_a);
+            }
+            for l in &h.lights {
+                log.count(l.index);
+                log.vector(h.point);
+                log.number(l.attenuation);
+                for v in [l.intensity, l.diffuse, l.specular, l.unshadowed] {
+                    log.vector(v);
+                }
+                if let Some(f) = &l.feeler {
+                    log.vector(f.origin);
+                    log.number(f.u_min);
+                    for c in &f.crossings {
+                        log.count(c.object);
+                        c.u.iter().for_each(|&u| log.number(u));
+                        log.number(c.transmission);
+                    }
+                }
+                log.number(l.share);
+                log.vector(l.arriving);
+            }
+            if let Some(local) = h.local {
+                log.vector(local);
+            }
+            for b in &h.branches {
+                ray(log, b);
+            }
+        }
+        log.vector(r.colour);
+    }
+    let mut log = Log::default();
+    for s in &tree.samples {
+        log.count(s.index as usize);
+        log.number(s.position.0);
+        log.number(s.position.1);
+        ray(&mut log, &s.ray);
+    }
+    log.values
+}
+
+/// Record, never recompute: every number of a pixel's ray tree — each ray's origin, direction,
+/// t_min, depth, weight and k, each hit's t, normal and point, I_a, each light's attenuation,
+/// I_p·att, diffuse and specular factors, I_d + I_s, feeler, crossings, share and (I_d +
+/// I_s)·share, the local light, each colour brought back — is, bit for bit and in the same
+/// order, a value the road of that pixel handed its recorder (logged here by a recorder of
+/// this test's own, through the plain road, [`EveryObject`]); and the road's colour is the
+/// pixel of the rendered image (BVH and packets). For every pixel of each chapter's scene at
+/// its chapter, and of the showcase.
+#[test]
+fn every_number_in_the_tree_is_the_roads() {
+    let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("..");
+    let scenes = [
+        ("ch02_generic_objects.toml", Chapter::GenericObjects),
+        ("ch03_shading.toml", Chapter::Shading),
+        ("ch04_shadows.toml", Chapter::Shadows),
+        (
+            "ch05_reflection_refraction.toml",
+            Chapter::ReflectionRefraction,
+        ),
+        ("showcase.toml", Chapter::ReflectionRefraction),
+    ];
+    let mut checked = 0;
+    for (file, chapter) in scenes {
+        let s = load_parts(&root.join("scenes").join(file), chapter.reads()).unwrap();
+        let o = options(&s, chapter, 40, 30);
+        let (fb, _) = render(&s, &o);
+        let tracer = Tracer::new(&s, &o);
+        let plain = tracer.asking(EveryObject {
+            scene: &s,
+            numerics: o.numerics,
+        });
+        for y in 0..o.height {
+            for x in 0..o.width {
+                let mut log = Log::default();
+                let colour = plain.pixel(x, y, &mut log);
+                assert_eq!(
+                    bits(colour),
+                    bits(fb.get(x, y)),
+                    "{file} pixel ({x}, {y}): the plain road and the render"
+                );
+                let tree = tracer.inspect(x, y);
+                let from_tree = numbers(&tree);
+                assert_eq!(
+                    from_tree.len(),
+                    log.values.len(),
+                    "{file} pixel ({x}, {y}): the tree holds {} numbers, the road handed {}",
+                    from_tree.len(),
+                    log.values.len()
+                );
+                if let Some(i) = (0..from_tree.len()).find(|&i| from_tree[i] != log.values[i]) {
+                    panic!(
+                        "{file} pixel ({x}, {y}): number {i} of the tree is {:#x}, the road's {:#x}\n{tree}",
+                        from_tree[i], log.values[i]
+                    );
+                }
+                assert_eq!(bits(tree.colour), bits(colour));
+                checked += from_tree.len();
+            }
+        }
+    }
+    assert!(checked > 100_000, "{checked} numbers checked");
 }

@@ -190,14 +190,22 @@ fn the_renderer_knows_no_command_line() {
 }
 
 /// The road of one pixel (`src/render/tracer.rs`) is plain: no tile, packet, mailbox or
-/// counter code in it, and short enough to read in one sitting.
+/// counter code in it (no word of its code names one: `shadow::blocks`, an object blocking a
+/// feeler, is not a block of pixels), and short enough to read in one sitting, the notes' step
+/// 4 (the `Query` trait and its loop over every object) included.
 #[test]
 fn the_road_of_one_pixel_holds_no_speed_machinery() {
     let path = src().join("render/tracer.rs");
     let text = std::fs::read_to_string(&path).unwrap();
     let code = code(&text).to_lowercase();
-    for word in ["packet", "tile", "mailbox", "counters", "rayon", "block"] {
-        assert!(!code.contains(word), "the road's code mentions `{word}`");
+    let words: BTreeSet<&str> = code
+        .split(|c: char| !c.is_ascii_alphanumeric())
+        .filter(|w| !w.is_empty())
+        .collect();
+    for word in [
+        "packet", "packets", "packed", "tile", "tiles", "mailbox", "counters", "rayon", "block",
+    ] {
+        assert!(!words.contains(word), "the road's code names `{word}`");
     }
     // marker lines do not count: the exercises' (`// BEGIN SOLUTION local_light`, `// END SOLUTION`)
     // and the course book's (`// ANCHOR: ch3_shade`, `// ANCHOR_END: ch3_shade`)
@@ -211,5 +219,5 @@ fn the_road_of_one_pixel_holds_no_speed_machinery() {
                 || l.starts_with("// ANCHOR_END: "))
         })
         .count();
-    assert!(lines <= 400, "the road is {lines} lines long");
+    assert!(lines <= 520, "the road is {lines} lines long");
 }

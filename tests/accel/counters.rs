@@ -86,7 +86,7 @@ fn a_packet_opens_the_nearer_child_of_the_bvh_first() {
     assert_eq!(work.queries, 16);
     assert_eq!(work.objects, 16, "the near sphere only: {work:?}");
     for (ray, got) in rays.iter().zip(&got) {
-        let want = brute.nearest(&scene.objects, ray, 0.0, Default::default(), None);
+        let want = brute.nearest(&scene.objects, ray, 0.0, Default::default());
         assert_eq!(want.map(|n| n.object), Some(1), "the near sphere is hit");
         assert_eq!(*got, want);
     }

@@ -63,7 +63,7 @@ fn packets_answer_as_single_rays_do() {
             let mut got = vec![None; n];
             tree.nearest_packet(&scene.objects, &rays, t_min, Default::default(), &mut got);
             for (ray, got) in rays.iter().zip(&got) {
-                let want = brute.nearest(&scene.objects, ray, t_min, Default::default(), None);
+                let want = brute.nearest(&scene.objects, ray, t_min, Default::default());
                 assert_eq!(*got, want, "{kind:?}: {ray:?}, t_min {t_min}");
                 checked.0 += usize::from(want.is_some());
             }

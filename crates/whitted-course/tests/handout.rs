@@ -263,7 +263,7 @@ fn a_full_handout_holds_no_solution_and_no_instructor_material() {
 
 /// The hints and tasks, which go into every handout with the manifest, never quote a line of
 /// a solution that computes something: an operator or a call, 16 characters or more without
-/// spaces. The calls a task must name — the recorder's `rec.…`, `self.ray`, `self.follow` —
+/// spaces. The calls a task must name — the recorder's `rec.…`, `self.ray`, `self.trace_branch` —
 /// and returns and struct fields do not count.
 #[test]
 fn the_hints_quote_no_line_of_a_solution() {
@@ -278,7 +278,7 @@ fn the_hints_quote_no_line_of_a_solution() {
             "//",
             "rec.",
             "self.ray(",
-            "self.follow(",
+            "self.trace_branch(",
             "return",
             "Some(",
             "RayKind::",

@@ -50,6 +50,7 @@ impl Offset {
     /// The origin and the smallest accepted t of a ray leaving the point `p` (computed as
     /// `e + d·t` from a ray of origin `e`, direction `d`, at parameter `t`) of a surface with
     /// unit normal `n`, along `dir`.
+    #[inline]
     #[must_use]
     pub fn spawn(&self, hit: &SpawnPoint, dir: Vec3) -> (Vec3, Real) {
         let side = if dir.dot(hit.normal) >= 0.0 {

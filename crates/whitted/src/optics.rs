@@ -33,6 +33,12 @@
 use crate::real::{Real, Vec3};
 
 /// l = d − 2(d·n)·n: the mirror direction of the incoming direction d about the unit normal n.
+///
+/// The notes' lighting equation reflects the direction d a ray *arrives* along, so l leaves on
+/// the side the ray came from, whichever way n points. Chapter 3's highlight
+/// ([`crate::shading::mirror`]) reflects s, the unit vector *towards* the light, r = 2(n·s)·n
+/// − s: the same reflection of the opposite vector, r = −reflect(s, n). Each chapter keeps the
+/// notes' own form of it.
 #[must_use]
 pub fn reflect(d: Vec3, n: Vec3) -> Vec3 {
     // BEGIN SOLUTION mirror_ray

@@ -43,6 +43,12 @@ pub fn ambient(material: &Material, ambient_light: Vec3) -> Vec3 {
 }
 
 /// r = 2(n·s)·n − s: the mirror direction of s about the unit normal n.
+///
+/// The notes' Phong model reflects s, the unit vector from P *towards* the light, so r leaves
+/// the surface on the viewer's side and the highlight compares it with v. Chapter 5's mirror
+/// ray ([`crate::optics::reflect`]) reflects a ray's direction d *arriving* at the surface,
+/// l = d − 2(d·n)·n: the same reflection of the opposite vector, r = −reflect(s, n). Each
+/// chapter keeps the notes' own form of it.
 #[must_use]
 pub fn mirror(s: Vec3, n: Vec3) -> Vec3 {
     // BEGIN SOLUTION mirror_direction
@@ -73,16 +79,43 @@ pub fn highlight(n: Vec3, s: Vec3, v: Vec3, shininess: Real) -> Real {
     // END SOLUTION
 }
 
-/// One light's diffuse and specular contribution, per channel, before shadowing:
-/// I_p/(a0 + a1·d + a2·d²)·(ρd·max(n·s, 0) + ρs·max(r·v, 0)^f), for a point P with unit
-/// normal n seen from the unit direction v.
+/// One light's Phong terms at a point, before shadowing, as [`phong`] computes them: each
+/// factor of I_d + I_s = I_p·att·(ρd·max(n·s, 0) + ρs·max(r·v, 0)^f), per channel, and the sum.
+/// The ray tree shows these very numbers ([`crate::render::inspect`]).
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct Phong {
+    /// att = 1/(a0 + a1·d + a2·d²) at the light's distance d.
+    pub attenuation: Real,
+    /// I_p·att: the light's intensity arriving at P, per channel.
+    pub intensity: Vec3,
+    /// ρd·max(n·s, 0): the diffuse factor.
+    pub diffuse: Vec3,
+    /// ρs·max(r·v, 0)^f: the specular factor (zero for a matte material, ρs = 0).
+    pub specular: Vec3,
+    /// I_d + I_s = I_p·att·(ρd·max(n·s, 0) + ρs·max(r·v, 0)^f): `intensity` × (`diffuse` +
+    /// `specular`).
+    pub sum: Vec3,
+}
+
+// ANCHOR: ch3_phong
+/// One light's diffuse and specular contribution at a point P with unit normal n seen from the
+/// unit direction v, before shadowing, with its factors: per channel,
+/// I_p/(a0 + a1·d + a2·d²)·(ρd·max(n·s, 0) + ρs·max(r·v, 0)^f), for d = ‖L − P‖ and
+/// s = (L − P)/d. A light at P itself (d = 0) has no direction s: it adds nothing (every
+/// factor but the attenuation is zero).
+#[inline]
 #[must_use]
-pub fn direct(material: &Material, light: &Light, p: Vec3, n: Vec3, v: Vec3) -> Vec3 {
+pub fn phong(material: &Material, light: &Light, p: Vec3, n: Vec3, v: Vec3) -> Phong {
+    // ANCHOR_END: ch3_phong
     // BEGIN SOLUTION direct_light
     let to_light = light.position - p;
     let d = to_light.length();
+    let attenuation = light.attenuation_at(d);
     if d == 0.0 {
-        return Vec3::ZERO;
+        return Phong {
+            attenuation,
+            ..Phong::default()
+        };
     }
     let s = to_light / d;
     let diffuse = material.diffuse * lambert(n, s);
@@ -92,6 +125,29 @@ pub fn direct(material: &Material, light: &Light, p: Vec3, n: Vec3, v: Vec3) -> 
     } else {
         material.specular * highlight(n, s, v, material.shininess)
     };
-    light.intensity * light.attenuation_at(d) * (diffuse + specular)
+    let intensity = light.intensity * attenuation; // I_p·att
+    Phong {
+        attenuation,
+        intensity,
+        diffuse,
+        specular,
+        sum: intensity * (diffuse + specular),
+    }
     // END SOLUTION
 }
+
+/// I_d + I_s of one light before shadowing: the sum of [`phong`]'s terms.
+#[must_use]
+pub fn direct(material: &Material, light: &Light, p: Vec3, n: Vec3, v: Vec3) -> Vec3 {
+    phong(material, light, p, n, v).sum
+}
+
+// ANCHOR: ch3_facing
+/// The shading normal: n turned to face against the direction `d` of the ray that hit, towards
+/// where it came from. For the plane, an open surface, the side the camera sees is then lit
+/// like a front face.
+#[must_use]
+pub fn facing(n: Vec3, d: Vec3) -> Vec3 {
+    if n.dot(d) > 0.0 { -n } else { n }
+}
+// ANCHOR_END: ch3_facing

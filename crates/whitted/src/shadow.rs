@@ -13,11 +13,13 @@
 //! caustics: the feeler is not bent). The feeler starts from an offset origin so that it does
 //! not meet the surface it leaves (see [`crate::offset`]).
 //!
-//! Three small functions make the chapter: [`feeler`] builds S(u), [`blocks`] says whether an
-//! object's hits lie in ]u_min, 1], and [`transmittance`] multiplies the transmissions of the
-//! objects that do. Which objects to test is the acceleration structure's business
-//! ([`crate::accel::Accelerator::transmittance`]): with `--accel none` every object in turn,
-//! otherwise only those whose boxes the feeler meets, with the same answer.
+//! Small functions make the chapter: [`in_front`] says whether a light can reach P at all,
+//! [`feeler`] builds S(u), [`between`] says whether a hit's u lies in ]u_min, 1] (and
+//! [`blocks`] whether one of an object's hits does), and [`transmittance`] multiplies the
+//! transmissions of the objects that block. Which objects to test is the road's
+//! [`Query`](crate::render::tracer::Query): every object in turn
+//! ([`EveryObject`](crate::render::tracer::EveryObject)), or only those whose boxes the feeler
+//! meets ([`crate::accel`]), with the same answer.
 //!
 //! ```toml
 //! [[lights]]
@@ -31,6 +33,14 @@ use crate::ray::Ray;
 use crate::real::{Real, Vec3};
 use crate::shapes::Hits;
 
+/// True when the light at L lies in front of the surface at P with the shading normal n:
+/// n·(L − P) > 0. A light behind the surface cannot reach P, so no feeler goes towards it.
+#[inline]
+#[must_use]
+pub fn in_front(n: Vec3, p: Vec3, light: Vec3) -> bool {
+    n.dot(light - p) > 0.0
+}
+
 /// The feeler S(u) = P + (L − P)·u from the point P towards the light at L: u = 0 at P, u = 1
 /// at the light, so an object between them is met with u ∈ ]0, 1].
 #[inline]
@@ -41,15 +51,23 @@ pub fn feeler(p: Vec3, light: Vec3) -> Ray {
     // END SOLUTION
 }
 
-/// True when one of a feeler's hits lies between its start and the light: u ∈ ]u_min, 1]
-/// (u_min = 0 unless the start is left on the surface, see [`crate::offset`]). A hit behind
-/// the start (u ≤ u_min) or beyond the light (u > 1) casts no shadow.
+/// True when a hit at u along a feeler lies between its start and the light: u ∈ ]u_min, 1]
+/// (u_min = 0 unless the start is left on the surface, see [`crate::offset`]). A hit behind the
+/// start (u ≤ u_min) or beyond the light (u > 1) casts no shadow.
+#[inline]
+#[must_use]
+pub fn between(u: Real, u_min: Real) -> bool {
+    // BEGIN SOLUTION blocks_light
+    u > u_min && u <= 1.0
+    // END SOLUTION
+}
+
+/// True when an object blocks a feeler: one of its hits lies [`between`] the feeler's start and
+/// the light.
 #[inline]
 #[must_use]
 pub fn blocks(hits: &Hits, u_min: Real) -> bool {
-    // BEGIN SOLUTION blocks_light
-    hits.as_slice().iter().any(|h| h.t > u_min && h.t <= 1.0)
-    // END SOLUTION
+    hits.as_slice().iter().any(|h| between(h.t, u_min))
 }
 
 /// The share of a light that reaches the start of a feeler, from the transmissions k_t of the

@@ -11,11 +11,13 @@
 //! With q = P − e in the viewing basis, (q·u, q·v, q·n) with q·n < 0 in front, the ray
 //! through P has d = s·q with s = N/(−q·n), so it crosses the near plane at
 //! (u_c, v_r) = N·(q·u, q·v)/(−q·n), image column c = (u_c + W)·n_c/(2W) and row from the top
-//! m − (v_r + H)·m/(2H). The rectangles are padded by a pixel on each side.
+//! m − (v_r + H)·m/(2H). The rectangles are padded by a pixel on each side. A camera ray's
+//! pixel is found by the same projection of its direction ([`Extents::pixel_of`]).
 //!
 //! The renderer works in 16 × 16 tiles, so each tile keeps the list of objects whose rectangle
 //! overlaps it, and a camera ray of that tile tests only those (and the objects that may be
-//! anywhere, kept in one list of their own).
+//! anywhere, kept in one list of their own). Which tile a camera ray belongs to is read off its
+//! direction ([`Extents::pixel_of`]): the road hands the structure a camera ray, not a pixel.
 //!
 //! Course book: [Performance](../../../../../docs/book/performance.html) (`docs/src/performance.md`).
 
@@ -33,6 +35,51 @@ pub struct Extents {
     items: Vec<u32>,
     /// Objects that may cover any pixel (kept once, not in every tile's list).
     everywhere: Vec<u32>,
+    /// Where a camera ray crosses the image: [`Extents::pixel_of`].
+    crossing: Crossing,
+}
+
+/// Where a line from the eye crosses the image, the box corners of [`rectangle`] and the
+/// camera rays of [`Extents::pixel_of`] alike: along q (in front of the eye, −q·n > 0) it
+/// crosses the near plane at (u_c, v_r) = N·(q·u, q·v)/(−q·n), which is image column
+/// c = (u_c + W)·n_c/(2W) = c₀ + k_c·(q·u)/(−q·n) and row from the top
+/// m − (v_r + H)·m/(2H) = m₀ − k_m·(q·v)/(−q·n), with (c₀, m₀) the image's centre,
+/// k_c = N·n_c/(2W) and k_m = N·m/(2H).
+#[derive(Clone, Debug)]
+struct Crossing {
+    u: Vec3,
+    v: Vec3,
+    n: Vec3,
+    centre: (Real, Real),
+    scale: (Real, Real),
+    size: (u32, u32),
+}
+
+impl Crossing {
+    fn of(camera: &Camera) -> Self {
+        let (columns, rows) = (camera.columns() as Real, camera.rows() as Real);
+        Self {
+            u: camera.u(),
+            v: camera.v(),
+            n: camera.n(),
+            centre: (columns / 2.0, rows / 2.0),
+            scale: (
+                camera.near() * columns / (2.0 * camera.half_width()),
+                camera.near() * rows / (2.0 * camera.half_height()),
+            ),
+            size: (camera.columns(), camera.rows()),
+        }
+    }
+
+    /// (column, row from the top) where the line along `q` crosses the image, not rounded.
+    #[inline]
+    fn point(&self, q: Vec3) -> (Real, Real) {
+        let depth = 1.0 / -q.dot(self.n);
+        (
+            self.centre.0 + self.scale.0 * q.dot(self.u) * depth,
+            self.centre.1 - self.scale.1 * q.dot(self.v) * depth,
+        )
+    }
 }
 
 /// Where a box lies on the image.
@@ -78,7 +125,7 @@ pub fn footprint(b: &Aabb, camera: &Camera) -> Footprint {
 /// that may see the box, or `None` if the box may cover any pixel (it reaches behind the eye).
 #[must_use]
 pub fn rectangle(b: &Aabb, camera: &Camera) -> Option<[i64; 4]> {
-    let (cols, rows) = (camera.columns() as Real, camera.rows() as Real);
+    let crossing = Crossing::of(camera);
     let (mut x0, mut x1, mut y0, mut y1) = (
         Real::INFINITY,
         Real::NEG_INFINITY,
@@ -96,11 +143,7 @@ pub fn rectangle(b: &Aabb, camera: &Camera) -> Option<[i64; 4]> {
         if depth.is_nan() || depth <= 1e-6 * q.length() {
             return None;
         }
-        let s = camera.near() / depth;
-        let u_c = q.dot(camera.u()) * s;
-        let v_r = q.dot(camera.v()) * s;
-        let c = (u_c + camera.half_width()) * cols / (2.0 * camera.half_width());
-        let y = rows - (v_r + camera.half_height()) * rows / (2.0 * camera.half_height());
+        let (c, y) = crossing.point(q);
         x0 = x0.min(c);
         x1 = x1.max(c);
         y0 = y0.min(y);
@@ -169,7 +212,22 @@ impl Extents {
             starts,
             items,
             everywhere,
+            crossing: Crossing::of(camera),
         }
+    }
+
+    /// The pixel of the image that a camera ray with direction `d` passes through, clamped
+    /// into the image. It may be a neighbour of the pixel the ray was made for (at a pixel's
+    /// edge, rounding can tip it over), but every object the ray can hit has its rectangle,
+    /// padded by a pixel, over it: its tile's candidates are enough.
+    #[must_use]
+    pub fn pixel_of(&self, d: Vec3) -> (u32, u32) {
+        let (c, m) = self.crossing.point(d);
+        let (columns, rows) = self.crossing.size;
+        // clamped into the image first, the truncation is the floor (and a NaN, from a
+        // direction that is no camera ray's, goes to pixel 0)
+        let clamp = |x: Real, n: u32| x.clamp(0.0, n.saturating_sub(1) as Real) as u32;
+        (clamp(c, columns), clamp(m, rows))
     }
 
     /// The candidates of the tile holding pixel (x, y) of the image, and those that may cover

@@ -7,9 +7,9 @@
 //!
 //! | `--accel` | what a ray tests |
 //! |---|---|
-//! | `none` | every object, as the notes' step 4 says (brute force) |
+//! | `none` | every object, as the notes' step 4 says (brute force, as the road's own [`EveryObject`](crate::render::EveryObject)) |
 //! | `boxes` | every object's world box ([`aabb`]); the object only if its box is hit |
-//! | `extents` | camera rays: only the objects whose screen rectangle holds the pixel ([`extents`]); other rays as `boxes` |
+//! | `extents` | camera rays: only the objects whose screen rectangle holds the image point the ray passes through ([`extents`]); other rays as `boxes` |
 //! | `octree` | the objects of the cubes of an octree the ray crosses, front to back ([`octree`]) |
 //! | `bvh` (default) | the leaves of a bounding volume hierarchy built by the binned SAH ([`bvh`]) |
 //!
@@ -41,7 +41,9 @@
 //! [`crate::shapes::Shape::intersect_placed`] (M⁻¹ onto the generic shape); the nearest hit is
 //! chosen by [`crate::shapes::Hits::first_after`] and [`crate::shapes::nearer`], and a feeler's
 //! share by [`crate::shadow::blocks`] and [`crate::shadow::transmittance`]: the structures
-//! decide only which objects to test. [`query`] answers one ray at a time, [`packet`] a packet.
+//! decide only which objects to test. [`query`] answers one ray at a time, [`packet`] a packet;
+//! the road of one pixel asks them through its `Query` trait
+//! ([`crate::render::Accelerated`]).
 //!
 //! How much each one saves can be counted: a build with the `counters` feature ([`counters`])
 //! adds the queries, node visits, box tests and object tests to `--stats`.

@@ -123,7 +123,7 @@ impl Accelerator {
         assert!(rays.len() <= PACKET && out.len() == rays.len());
         if matches!(self.index, Index::List) {
             for (ray, out) in rays.iter().zip(out.iter_mut()) {
-                *out = self.nearest(objects, ray, t_min, numerics, None);
+                *out = self.nearest(objects, ray, t_min, numerics);
             }
             return;
         }

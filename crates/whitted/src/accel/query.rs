@@ -1,6 +1,8 @@
 //! One ray at a time: the nearest hit of a ray, and the share of a light a feeler lets through.
 //!
-//! Both answer exactly what testing every object in turn answers. The structures only choose
+//! Both answer exactly what testing every object in turn answers
+//! ([`EveryObject`](crate::render::tracer::EveryObject), the notes' step 4); the road asks
+//! them through [`Accelerated`](crate::render::accelerated::Accelerated). The structures only choose
 //! which objects to test; each test, and what is made of its hits, is the road's own function:
 //! [`Shape::intersect_placed`](crate::shapes::Shape::intersect_placed),
 //! [`Hits::first_after`], [`nearer`], [`shadow::blocks`] and [`shadow::transmittance`].
@@ -33,7 +35,6 @@ impl Best {
         }
     }
 
-    // ANCHOR: ch2_best
     /// The nearest hit found, its normal carried to the world.
     #[inline]
     pub(super) fn nearest(self, objects: &[Object]) -> Option<Nearest> {
@@ -65,7 +66,6 @@ impl Best {
             self.hit = Some(h);
         }
     }
-    // ANCHOR_END: ch2_best
 }
 
 /// What a feeler has met so far: whether an opaque object blocks it, and the translucent
@@ -142,10 +142,34 @@ impl Blockers {
 
 impl Accelerator {
     /// The nearest hit with t > `t_min` (world normal), exactly as a scan over every object
-    /// finds it. `pixel` names the image pixel of a camera ray, which lets projection extents
-    /// narrow the candidates; pass `None` for any other ray.
+    /// finds it.
     #[must_use]
     pub fn nearest(
+        &self,
+        objects: &[Object],
+        ray: &Ray,
+        t_min: Real,
+        numerics: Numerics,
+    ) -> Option<Nearest> {
+        self.nearest_among(objects, ray, t_min, numerics, None)
+    }
+
+    /// [`Accelerator::nearest`] of a camera ray (t > 0): projection extents test only the
+    /// objects whose rectangle holds the image point the ray passes through.
+    #[must_use]
+    pub fn nearest_camera(
+        &self,
+        objects: &[Object],
+        ray: &Ray,
+        numerics: Numerics,
+    ) -> Option<Nearest> {
+        let pixel = self.extents.as_ref().map(|e| e.pixel_of(ray.dir));
+        self.nearest_among(objects, ray, 0.0, numerics, pixel)
+    }
+
+    /// The nearest hit; `pixel` names an image pixel whose tile's projection extents hold
+    /// every object the ray can hit.
+    fn nearest_among(
         &self,
         objects: &[Object],
         ray: &Ray,

@@ -1,129 +1,225 @@
-//! Packets: a block of pixels traced together where that pays, the same image bit for bit.
+//! Packets: a block of pixels whose first rays are traced together, the same image bit for bit.
 //!
 //! With one ray a pixel and a BVH or an octree, the camera rays of a [`super::BLOCK`] ×
-//! [`super::BLOCK`]
-//! block of pixels go through the structure as one packet
+//! [`super::BLOCK`] block of pixels go through the structure as one packet
 //! ([`crate::accel::Accelerator::nearest_packet`]), and so do their feelers towards each light
-//! ([`crate::accel::Accelerator::transmittance_packet`]). Every pixel is then shaded by the
-//! road of one pixel itself (`Tracer::local_light`, `Tracer::reflect_and_refract`), which
-//! looks its feelers' shares up instead of tracing them one by one; its mirror and transmitted
-//! rays are traced one by one. The packets change the time, never a bit of the image:
-//! [`Options::packets`] turns them off, and the tests render both ways and compare.
+//! ([`crate::accel::Accelerator::transmittance_packet`]): the camera rays are the road's own
+//! (`Tracer::sample_ray`), the feelers too ([`ShadingPoint::new`], `Tracer::feeler`). Then each
+//! pixel's camera ray goes down the road of one pixel itself (`Tracer::camera_ray`, a sample
+//! of [`Tracer::pixel`]), asking a `Packed` query: it answers from what the packets found
+//! the rays they traced — only a ray equal to the one traced, bit for bit — and lends the
+//! shading point it made of a camera ray's hit; any other ray (mirror and transmitted rays,
+//! their feelers) it asks of the acceleration structure. So the packets own no step of the
+//! road: no view, no background, no count of rays. They change the time, never a bit of the
+//! image: [`Options::packets`] turns them off, and the tests render both ways and compare.
+//!
+//! The road makes each first feeler again, and finds it among those traced (the price of one
+//! road; `docs/src/performance.md` has the measurements).
 //!
 //! Course book: [Performance](../../../../../docs/book/performance.html) (`docs/src/performance.md`).
 
+use std::borrow::Cow;
+use std::cell::Cell;
+
 use arrayvec::ArrayVec;
 
-use super::tracer::Surface;
+use super::accelerated::Accelerated;
+use super::recorder::Recorder;
+use super::tracer::{Feeler, Query, ShadingPoint};
 use super::{Chapter, Options, Stats, Tracer, View};
 use crate::accel::{Accel, PACKET};
 use crate::ray::Ray;
 use crate::real::{Real, Vec3};
+use crate::shapes::Nearest;
 
 /// Up to one value per pixel of a block.
 pub(crate) type Block<T> = ArrayVec<T, PACKET>;
 
-/// The shares of each light's feelers for the pixels of a block: `shares[light][pixel]`.
-pub(crate) type Shares = Vec<[Real; PACKET]>;
+/// The feelers the camera hits of a block send, with the share of its light each lets through:
+/// `feelers[light][pixel]` (kept from one block to the next, so that its memory is allocated
+/// once per band of tiles).
+pub(crate) type Feelers = Vec<[Option<(Feeler, Real)>; PACKET]>;
 
-impl Tracer<'_> {
-    /// Whether `Tracer::block` traces a block's camera rays together: packets asked for, one
-    /// ray a pixel, from chapter 2 on, through a BVH or an octree.
-    fn packets(&self) -> bool {
-        let o: &Options = self.options;
-        o.packets
-            && o.view != View::Rays // counts each pixel's rays on the plain road
-            && o.samples_per_pixel() == 1
-            && o.chapter >= Chapter::GenericObjects
-            && matches!(self.accel.kind(), Accel::Bvh | Accel::Octree)
+/// The [`Query`] the pixels of a block are rendered with, one after the other: the rays its
+/// packets traced answered from what they found, every other ray by the structure.
+struct Packed<'t, 'a> {
+    /// Each pixel's camera ray …
+    rays: &'t [Ray],
+    /// … its nearest hit …
+    nearest: &'t [Option<Nearest>],
+    /// … what shading needs to know of it (made to build its feelers; empty when no feeler
+    /// was traced) …
+    points: &'t [Option<ShadingPoint<'a>>],
+    /// … and its feelers, `feelers[light][pixel]`.
+    feelers: &'t [[Option<(Feeler, Real)>; PACKET]],
+    structure: &'t Accelerated<'a>,
+    /// The pixel being rendered: its place in the block.
+    pixel: Cell<usize>,
+    /// The first light whose feeler from this pixel the road has not asked for yet (it asks
+    /// in the order of the lights).
+    light: Cell<usize>,
+}
+
+impl Packed<'_, '_> {
+    /// Whether `ray` is the camera ray traced for the pixel being rendered: the very one the
+    /// road was handed (a ray equal to it, not the same, is asked of the structure: the same
+    /// answer).
+    #[inline]
+    fn traced(&self, ray: &Ray) -> bool {
+        std::ptr::eq(ray, &self.rays[self.pixel.get()])
+    }
+}
+
+/// Whether `a` and `b` are the same ray, bit for bit.
+#[inline]
+fn same(a: &Ray, b: &Ray) -> bool {
+    let same = |x: Real, y: Real| x.to_bits() == y.to_bits();
+    same(a.dir.x, b.dir.x)
+        && same(a.dir.y, b.dir.y)
+        && same(a.dir.z, b.dir.z)
+        && same(a.origin.x, b.origin.x)
+        && same(a.origin.y, b.origin.y)
+        && same(a.origin.z, b.origin.z)
+}
+
+impl Query for Packed<'_, '_> {
+    #[inline]
+    fn nearest(&self, ray: &Ray, t_min: Real) -> Option<Nearest> {
+        self.structure.nearest(ray, t_min)
     }
 
-    /// The colours of the pixels x0..x1 of rows y0..y1 (at most [`PACKET`] of them), row after
-    /// row: the colours [`Tracer::pixel`] gives, traced as packets when `Tracer::packets`.
-    /// `scratch` keeps its allocation from one block to the next.
-    pub(crate) fn block(
-        &self,
-        (x0, x1): (u32, u32),
-        (y0, y1): (u32, u32),
-        scratch: &mut Shares,
-        stats: &mut Stats,
-    ) -> Block<Vec3> {
-        let pixels = (y0..y1).flat_map(|y| (x0..x1).map(move |x| (x, y)));
-        if !self.packets() {
-            return pixels.map(|(x, y)| self.pixel(x, y, stats)).collect();
+    #[inline]
+    fn nearest_camera(&self, ray: &Ray) -> Option<Nearest> {
+        let i = self.pixel.get();
+        if self.traced(ray) {
+            self.nearest[i]
+        } else {
+            self.structure.nearest_camera(ray)
         }
-        let rays: Block<Ray> = pixels
-            .map(|(x, y)| self.camera.pixel_ray(x, y, 0.5, 0.5))
-            .collect();
-        let mut nearest = [None; PACKET];
-        let nearest = &mut nearest[..rays.len()];
-        self.accel.nearest_packet(
-            &self.scene.objects,
-            &rays,
-            0.0,
-            self.options.numerics,
-            nearest,
-        );
-        stats.primary += rays.len() as u64;
-        let o = self.options;
-        if o.view != View::Color || o.chapter < Chapter::Shading {
-            let seen = rays.iter().zip(nearest.iter());
-            return seen.map(|(ray, n)| self.seen(ray, *n, stats)).collect();
-        }
-        let surfaces: Block<Option<Surface>> = rays
-            .iter()
-            .zip(nearest.iter())
-            .map(|(ray, n)| n.as_ref().map(|n| self.surface(ray, n)))
-            .collect();
-        self.trace_feelers(&surfaces, scratch);
-        surfaces
-            .iter()
-            .enumerate()
-            .map(|(i, s)| match s {
-                Some(s) => {
-                    let local = self.local_light(s, |l, _| scratch[l][i], stats);
-                    self.reflect_and_refract(s, local, 0, 1.0, stats)
-                }
-                None => self.scene.background,
-            })
-            .collect()
     }
 
-    /// Traces, light by light, the feelers `Tracer::feeler` sends from the surfaces as one
-    /// packet, and keeps their shares in `shares[light][pixel]`, ready for
-    /// `Tracer::local_light` to look up.
-    fn trace_feelers(&self, surfaces: &[Option<Surface>], shares: &mut Shares) {
-        let lights = &self.scene.lights;
-        shares.clear();
-        shares.resize(lights.len(), [1.0; PACKET]);
-        for (light, row) in lights.iter().zip(shares.iter_mut()) {
-            // the pixels that send a feeler towards this light, and their feelers
-            let mut who = Block::<usize>::new();
-            let mut feelers = Block::<Ray>::new();
-            let mut u_min = Block::<Real>::new();
-            for (i, s) in surfaces.iter().enumerate() {
-                if let Some((feeler, u)) = s.as_ref().and_then(|s| self.feeler(s, light)) {
-                    who.push(i);
-                    feelers.push(feeler);
-                    u_min.push(u);
-                }
+    #[inline]
+    fn shading_point(&self, ray: &Ray, nearest: &Nearest) -> Cow<'_, ShadingPoint<'_>> {
+        let i = self.pixel.get();
+        match self.points.get(i) {
+            Some(Some(s)) if self.traced(ray) => Cow::Borrowed(s),
+            _ => self.structure.shading_point(ray, nearest),
+        }
+    }
+
+    #[inline]
+    fn share(&self, feeler: &Feeler, rec: &mut impl Recorder) -> Real {
+        let i = self.pixel.get();
+        for l in self.light.get()..self.feelers.len() {
+            if let Some((traced, share)) = &self.feelers[l][i]
+                && traced.u_min.to_bits() == feeler.u_min.to_bits()
+                && same(&traced.ray, &feeler.ray)
+            {
+                self.light.set(l + 1);
+                return *share;
             }
-            if who.is_empty() {
-                continue;
+        }
+        self.structure.share(feeler, rec)
+    }
+}
+
+/// Whether a block's first rays go as packets: packets asked for, one ray a pixel (not the
+/// rays-per-pixel view, which counts each pixel's rays), from chapter 2 on, through a BVH or
+/// an octree.
+fn packets(tracer: &Tracer) -> bool {
+    let o: &Options = tracer.options;
+    o.packets
+        && o.samples_per_pixel() == 1
+        && o.view != View::Rays
+        && o.chapter >= Chapter::GenericObjects
+        && matches!(tracer.query().accel().kind(), Accel::Bvh | Accel::Octree)
+}
+
+/// The colours of the pixels x0..x1 of rows y0..y1 (at most [`PACKET`] of them), row after
+/// row: [`Tracer::pixel`] of each, its first rays traced as packets when that pays. `scratch`
+/// keeps its allocation from one block to the next.
+pub(crate) fn block(
+    tracer: &Tracer,
+    (x0, x1): (u32, u32),
+    (y0, y1): (u32, u32),
+    scratch: &mut Feelers,
+    stats: &mut Stats,
+) -> Block<Vec3> {
+    let pixels = (y0..y1).flat_map(|y| (x0..x1).map(move |x| (x, y)));
+    if !packets(tracer) {
+        return pixels.map(|(x, y)| tracer.pixel(x, y, stats)).collect();
+    }
+    // the camera rays, the road's own, as one packet
+    let mut rays: Block<Ray> = Block::new();
+    rays.extend(pixels.map(|(x, y)| tracer.sample_ray(x, y, (0, 1)).1));
+    let mut nearest = [None; PACKET];
+    let nearest = &mut nearest[..rays.len()];
+    tracer.query().nearest_camera_packet(&rays, nearest);
+    // their first feelers, light by light
+    let o = tracer.options;
+    let mut points: Block<Option<ShadingPoint>> = Block::new();
+    if o.chapter >= Chapter::Shadows && matches!(o.view, View::Color | View::Shadows) {
+        let point = |(ray, n): (&Ray, &Option<Nearest>)| {
+            n.as_ref().map(|n| ShadingPoint::new(tracer.scene, ray, n))
+        };
+        points.extend(rays.iter().zip(nearest.iter()).map(point));
+    }
+    trace_feelers(tracer, &points, scratch);
+    let packed = tracer.asking(Packed {
+        rays: &rays,
+        nearest,
+        points: &points,
+        feelers: scratch,
+        structure: tracer.query(),
+        pixel: Cell::new(0),
+        light: Cell::new(0),
+    });
+    // each pixel's one sample down the road, from its camera ray
+    rays.iter()
+        .enumerate()
+        .map(|(i, ray)| {
+            packed.query().pixel.set(i);
+            packed.query().light.set(0);
+            packed.camera_ray(ray, stats)
+        })
+        .collect()
+}
+
+/// Traces, light by light as one packet, the feelers the road sends from the shading points
+/// `points` (`Tracer::feeler`), into `feelers[light][pixel]`.
+fn trace_feelers(tracer: &Tracer, points: &[Option<ShadingPoint>], feelers: &mut Feelers) {
+    feelers.clear();
+    if points.is_empty() {
+        return;
+    }
+    let lights = &tracer.scene.lights;
+    feelers.resize(lights.len(), [None; PACKET]);
+    for (light, row) in lights.iter().zip(feelers.iter_mut()) {
+        // the pixels that send a feeler towards this light, and their feelers
+        let mut who = Block::<usize>::new();
+        let mut rays = Block::<Ray>::new();
+        let mut u_min = Block::<Real>::new();
+        for (i, s) in points.iter().enumerate() {
+            if let Some(feeler) = s.as_ref().and_then(|s| tracer.feeler(s, light)) {
+                who.push(i);
+                rays.push(feeler.ray);
+                u_min.push(feeler.u_min);
             }
-            let mut out = [1.0; PACKET];
-            self.accel.transmittance_packet(
-                &self.scene.objects,
-                &self.scene.materials,
-                light.position,
-                &feelers,
-                &u_min,
-                self.options.numerics,
-                &mut out[..who.len()],
-            );
-            for (k, &i) in who.iter().enumerate() {
-                row[i] = out[k];
-            }
+        }
+        if who.is_empty() {
+            continue;
+        }
+        let mut shares = [1.0; PACKET];
+        let shares = &mut shares[..who.len()];
+        tracer
+            .query()
+            .share_packet(light.position, &rays, &u_min, shares);
+        for (k, &i) in who.iter().enumerate() {
+            let feeler = Feeler {
+                ray: rays[k],
+                u_min: u_min[k],
+            };
+            row[i] = Some((feeler, shares[k]));
         }
     }
 }

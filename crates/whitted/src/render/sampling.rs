@@ -12,6 +12,7 @@ use crate::real::Real;
 // ANCHOR: ch5_sample_position
 /// The position inside pixel (x, y) of sample `s` of `n`, as (dx, dy) ∈ [0, 1)², (½, ½) being
 /// the centre.
+#[inline]
 #[must_use]
 pub fn sample_position(seed: u64, n: u32, x: u32, y: u32, s: u32) -> (Real, Real) {
     if n <= 1 {

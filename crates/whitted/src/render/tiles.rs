@@ -36,7 +36,7 @@ use std::sync::atomic::{AtomicBool, Ordering};
 
 use rayon::prelude::*;
 
-use super::packets::Shares;
+use super::packets::{self, Feelers};
 use super::{Chapter, Framebuffer, Options, Stats, Tracer};
 use crate::accel::Accel;
 use crate::accel::Accelerator;
@@ -277,7 +277,7 @@ fn tile_loop(
             let mut stats = Stats::default();
             // start this thread's counts afresh: they are this band's when it ends
             let _ = crate::accel::counters::take();
-            let mut scratch = Vec::new();
+            let mut scratch = Feelers::new();
             let top = (first + i as u32) * TILE; // the band's first row in the image
             let y0 = top.max(rect.y0);
             let y1 = top.saturating_add(TILE).min(rect.y1);
@@ -313,7 +313,7 @@ fn render_tile(
     top: u32,
     w: u32,
     rows: &mut [Vec3],
-    scratch: &mut Shares,
+    scratch: &mut Feelers,
     stats: &mut Stats,
 ) {
     let mut by = tile.y0 - tile.y0 % BLOCK;
@@ -322,7 +322,7 @@ fn render_tile(
         let mut bx = tile.x0 - tile.x0 % BLOCK;
         while bx < tile.x1 {
             let (x0, x1) = (bx.max(tile.x0), bx.saturating_add(BLOCK).min(tile.x1));
-            let colours = tracer.block((x0, x1), (y0, y1), scratch, stats);
+            let colours = packets::block(tracer, (x0, x1), (y0, y1), scratch, stats);
             let mut c = colours.iter();
             for y in y0..y1 {
                 let row = (y - top) as usize * w as usize;

@@ -6,11 +6,14 @@
 //!   ─► + k_t·I_r + k_r·I_l from the transmitted and mirror rays, recursively (ch5) ─► colour
 //! ```
 //!
-//! Read it top to bottom: [`Tracer::pixel`] → `Tracer::camera_ray` → [`Tracer::nearest`]
-//! → `Tracer::shade` → `Tracer::local_light` (with `Tracer::feeler`) →
-//! `Tracer::reflect_and_refract` → [`Tracer::trace`] for each new ray. Each stop calls the
-//! small function of the notes' formula ([`crate::camera`], [`crate::shapes`], [`crate::shading`],
-//! [`crate::shadow`], [`crate::optics`]); no formula is computed here. How far a chapter goes:
+//! Read it top to bottom: [`Tracer::pixel`] → `Tracer::camera_ray` → [`Query::nearest`] (the
+//! notes' step 4, [`EveryObject`]) → `Tracer::shade` → `Tracer::local_light` (with
+//! `Tracer::feeler` and [`Query::share`]) → `Tracer::reflect_and_refract` → [`Tracer::trace`]
+//! for each new ray. Each stop calls the small function of the notes' formula (camera,
+//! shapes, shading, shadow, optics). The road itself adds up what they bring back (the sums of
+//! the lighting equation) and decides which rays to send: a feeler for a light in front that
+//! casts shadows, a branch while the depth and its weight allow, the transmitted share moved
+//! to the mirror ray under total internal reflection. How far a chapter goes:
 //!
 //! | [`Chapter`] | what a camera ray returns |
 //! |---|---|
@@ -20,19 +23,19 @@
 //! | 4 [`Chapter::Shadows`] | the same, each light tested by a feeler ray |
 //! | 5 [`Chapter::ReflectionRefraction`] | plus mirror and transmitted rays, recursively: I = I_a + I_d + I_s + I_l + I_r |
 //!
-//! The scene decides which stops are needed: no feeler for a light with `shadows = false`, no
-//! mirror ray from a material with `reflection = 0`, no transmitted ray where
-//! `transmission = 0`. Every stop tells a [`Recorder`] what it did: a plain render's
-//! [`Stats`](super::Stats) counts rays, `--inspect`'s [`super::inspect::TreeRecorder`] keeps
-//! the ray tree. The nearest hit, and what a feeler crosses, are asked of the acceleration
-//! structure ([`crate::accel`]), which gives exactly what testing every object in turn gives.
-//! Tiles ([`super::tiles`]) and packets ([`super::packets`]) sit around this road and call
-//! the same functions. Course book: [Chapter 1, camera rays](../../../../../docs/book/ch01-camera-rays.html) (`docs/src/ch01-camera-rays.md`).
+//! Every stop tells a [`Recorder`] what it computed ([`Stats`] counts rays, the inspector keeps
+//! the ray tree). The nearest hit of a ray, what shading needs to know of it, and the share of
+//! a feeler are asked of a [`Query`]: the notes' own answer, [`EveryObject`], tests every object
+//! in turn; the structures ([`super::Accelerated`]) and the packets give the same answers sooner.
+//!
+//! Course book: [Chapter 1, camera rays](../../../../../docs/book/ch01-camera-rays.html) (`docs/src/ch01-camera-rays.md`).
 
 use std::borrow::Cow;
 
+use super::accelerated::Accelerated;
+use super::inspect::{self, RayTree};
 use super::recorder::{RayKind, Recorder, Stop};
-use super::{Chapter, Options, View, build_accel, sampling, views};
+use super::{Chapter, Options, Stats, View, build_accel, sampling, views};
 use crate::accel::Accelerator;
 use crate::camera::{Camera, direction_colour};
 use crate::light::Light;
@@ -44,21 +47,104 @@ use crate::real::{Real, Vec3};
 use crate::scene::Scene;
 use crate::shading;
 use crate::shadow;
-use crate::shapes::{Hit, Nearest};
+use crate::shapes::{Hit, Nearest, Numerics, nearer};
 
-/// Traces rays through one scene with one set of options.
-pub struct Tracer<'a> {
+// ANCHOR: ch2_query
+/// What the road asks of the scene's objects: the nearest hit of a ray (the notes' step 4,
+/// "find the intersections of this ray with objects; keep the smallest t"), what shading needs
+/// to know of that hit, and the share of its light a feeler lets through (chapter 4).
+/// [`EveryObject`] answers by testing every object in turn; the acceleration structures and
+/// the packets answer the same, sooner.
+pub trait Query {
+    /// The nearest hit of `ray` with t > `t_min` (its normal in the world), of equal t the
+    /// object listed first; `None` when the ray hits nothing.
+    fn nearest(&self, ray: &Ray, t_min: Real) -> Option<Nearest>;
+
+    /// [`Query::nearest`] of a camera ray, t > 0: the same answer. A camera ray leaves the eye
+    /// through the image, which lets projection extents narrow the objects to test.
+    fn nearest_camera(&self, ray: &Ray) -> Option<Nearest> {
+        self.nearest(ray, 0.0)
+    }
+
+    /// What shading needs to know of `nearest`, the nearest hit of `ray`:
+    /// [`ShadingPoint::new`] of it, made here, or lent by a query that made it already.
+    fn shading_point(&self, ray: &Ray, nearest: &Nearest) -> Cow<'_, ShadingPoint<'_>>;
+
+    /// The share of its light that `feeler` lets through: [`shadow::transmittance`] of the
+    /// transmissions of the objects it crosses with u ∈ ]u_min, 1], in scene order (0 behind
+    /// an opaque one). An answer that tests every object tells `rec` each object crossed
+    /// ([`Recorder::crossing`]).
+    fn share(&self, feeler: &Feeler, rec: &mut impl Recorder) -> Real;
+}
+// ANCHOR_END: ch2_query
+
+/// The notes' own [`Query`]: every object of the scene, in turn.
+#[derive(Clone, Copy, Debug)]
+pub struct EveryObject<'s> {
+    /// The scene whose objects are tested.
+    pub scene: &'s Scene,
+    /// How each object is intersected.
+    pub numerics: Numerics,
+}
+
+// ANCHOR: ch2_every_object
+impl Query for EveryObject<'_> {
+    fn nearest(&self, ray: &Ray, t_min: Real) -> Option<Nearest> {
+        let mut nearest: Option<Nearest> = None;
+        for (i, object) in self.scene.objects.iter().enumerate() {
+            // step 4: this object's intersections; its visible one is the first after t_min
+            let hits = object.intersect_object_space(ray, self.numerics);
+            let Some(hit) = hits.first_after(t_min) else {
+                continue;
+            };
+            // step 5: keep the smallest t (of equal t, the object listed first)
+            if nearest.is_none_or(|best| nearer(hit.t, i, best.hit.t, best.object)) {
+                nearest = Some(Nearest { hit, object: i });
+            }
+        }
+        // the winner's normal, and only the winner's, carried to the world: (M⁻¹)ᵀ·n′
+        nearest.map(|mut n| {
+            let placement = &self.scene.objects[n.object].placement;
+            n.hit.normal = placement.normal_to_world(n.hit.normal);
+            n
+        })
+    }
+
+    fn shading_point(&self, ray: &Ray, nearest: &Nearest) -> Cow<'_, ShadingPoint<'_>> {
+        Cow::Owned(ShadingPoint::new(self.scene, ray, nearest))
+    }
+
+    fn share(&self, feeler: &Feeler, rec: &mut impl Recorder) -> Real {
+        let mut crossed = Vec::new(); // the k_t of each object the feeler crosses, in order
+        for (i, object) in self.scene.objects.iter().enumerate() {
+            let hits = object.intersect_object_space(&feeler.ray, self.numerics);
+            if shadow::blocks(&hits, feeler.u_min) {
+                let k_t = self.scene.materials[object.material].transmission;
+                rec.crossing(i, &hits, k_t);
+                crossed.push(k_t);
+            }
+        }
+        shadow::transmittance(crossed)
+    }
+}
+// ANCHOR_END: ch2_every_object
+
+/// Traces rays through one scene with one set of options, asking its [`Query`] `Q` for the
+/// nearest hits and the feelers' shares (by default the acceleration structure of the options,
+/// [`Accelerated`]).
+pub struct Tracer<'a, Q = Accelerated<'a>> {
     pub(crate) scene: &'a Scene,
     /// The options it renders with: size, chapter, view, depth …
     pub options: &'a Options,
-    pub(crate) camera: Camera,
-    pub(crate) accel: Cow<'a, Accelerator>,
+    camera: Camera,
+    query: Q,
     /// The scales of the depth and rays-per-pixel views, fixed before the first pixel.
-    pub(crate) scales: views::Scales,
+    scales: views::Scales,
 }
 
-/// A hit as shading sees it.
-pub struct Surface<'s> {
+/// What shading needs to know of a hit: the shading point of the notes' formulas.
+#[derive(Clone, Copy, Debug)]
+pub struct ShadingPoint<'s> {
     /// The hit (world normal, pointing out of the object).
     pub hit: Hit,
     /// The material hit.
@@ -67,40 +153,93 @@ pub struct Surface<'s> {
     pub p: Vec3,
     /// The ray's unit direction.
     pub d: Vec3,
-    /// The shading normal n, turned towards the viewer.
+    /// The shading normal n, turned towards the viewer ([`shading::facing`]).
     pub n: Vec3,
     /// Where rays leaving the hit start.
     pub spawn: SpawnPoint,
 }
 
+// ANCHOR: ch3_shading_point
+impl<'s> ShadingPoint<'s> {
+    /// What shading needs to know of `nearest`, the nearest hit of `ray` in `scene`.
+    #[inline]
+    #[must_use]
+    pub fn new(scene: &'s Scene, ray: &Ray, nearest: &Nearest) -> Self {
+        let hit = nearest.hit;
+        let object = &scene.objects[nearest.object];
+        let d = crate::numeric::normalize(ray.dir);
+        Self {
+            hit,
+            material: &scene.materials[object.material],
+            p: ray.at(hit.t),
+            d,
+            n: shading::facing(hit.normal, d), // shading normal, towards the viewer
+            spawn: SpawnPoint::new(object, ray, &hit),
+        }
+    }
+}
+// ANCHOR_END: ch3_shading_point
+
 // ANCHOR: ch4_feeler_type
-/// A feeler S(u) = P′ + (L − P′)·u from the offset start P′, and the smallest u that counts.
-pub type Feeler = (Ray, Real);
+/// A feeler towards a light, and the smallest u that counts.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Feeler {
+    /// S(u) = P′ + (L − P′)·u from the offset start P′: u = 0 at P′, u = 1 at the light.
+    pub ray: Ray,
+    /// Hits count for u ∈ ]u_min, 1].
+    pub u_min: Real,
+}
 // ANCHOR_END: ch4_feeler_type
 
 impl<'a> Tracer<'a> {
     /// A tracer for the scene with the options' image size (builds `options.accel`).
     #[must_use]
     pub fn new(scene: &'a Scene, options: &'a Options) -> Self {
-        Self::with(scene, options, Cow::Owned(build_accel(scene, options)))
+        let accel = Cow::Owned(build_accel(scene, options));
+        Self::with_query(
+            scene,
+            options,
+            Accelerated::new(accel, scene, options.numerics),
+        )
     }
 
     /// A tracer using an acceleration structure built beforehand (see [`build_accel`]).
     #[must_use]
     pub fn with_accel(scene: &'a Scene, options: &'a Options, accel: &'a Accelerator) -> Self {
-        Self::with(scene, options, Cow::Borrowed(accel))
+        let accel = Cow::Borrowed(accel);
+        Self::with_query(
+            scene,
+            options,
+            Accelerated::new(accel, scene, options.numerics),
+        )
     }
+}
 
-    fn with(scene: &'a Scene, options: &'a Options, accel: Cow<'a, Accelerator>) -> Self {
+impl<'a, Q: Query> Tracer<'a, Q> {
+    /// A tracer that asks `query` for the nearest hits and the feelers' shares.
+    #[must_use]
+    pub fn with_query(scene: &'a Scene, options: &'a Options, query: Q) -> Self {
         let mut tracer = Self {
             scene,
             options,
             camera: options.camera(scene),
-            accel,
+            query,
             scales: views::Scales::default(),
         };
         tracer.scales = views::Scales::measure(&tracer);
         tracer
+    }
+
+    /// The same tracer (scene, options, camera, scales) asking `query` instead.
+    #[must_use]
+    pub fn asking<R: Query>(&self, query: R) -> Tracer<'a, R> {
+        Tracer {
+            scene: self.scene,
+            options: self.options,
+            camera: self.camera.clone(),
+            query,
+            scales: self.scales,
+        }
     }
 
     /// The camera at the options' image size.
@@ -109,13 +248,33 @@ impl<'a> Tracer<'a> {
         &self.camera
     }
 
+    /// What the tracer asks for nearest hits and feelers' shares.
+    #[must_use]
+    pub fn query(&self) -> &Q {
+        &self.query
+    }
+
+    /// The scales of the views whose colours need one (depth, rays per pixel), fixed before
+    /// the first pixel is traced.
+    #[must_use]
+    pub fn scales(&self) -> &views::Scales {
+        &self.scales
+    }
+
+    /// The ray tree of pixel (x, y): the road of [`Tracer::pixel`], every stop written down
+    /// ([`inspect::ray_tree`]). Its colour is the pixel's colour bit for bit.
+    #[must_use]
+    pub fn inspect(&self, x: u32, y: u32) -> RayTree {
+        inspect::ray_tree(self, x, y)
+    }
+
     // ANCHOR: ch1_pixel
     /// The colour of pixel (x, y), row y from the top: the mean over its samples. `rec`
-    /// hears every stop of the road ([`Stats`](super::Stats) counts the rays).
+    /// hears every stop of the road ([`Stats`] counts the rays).
     pub fn pixel(&self, x: u32, y: u32, rec: &mut impl Recorder) -> Vec3 {
         if self.options.view == View::Rays {
             // the colour is the number of rays this pixel cast
-            let mut count = super::Stats::default();
+            let mut count = Stats::default();
             self.samples(x, y, &mut (rec, &mut count));
             return self.scales.heat(count.total());
         }
@@ -124,57 +283,63 @@ impl<'a> Tracer<'a> {
 
     /// The mean of the colours the samples of pixel (x, y) bring back.
     fn samples(&self, x: u32, y: u32, rec: &mut impl Recorder) -> Vec3 {
-        let o = self.options;
-        let samples = o.samples_per_pixel();
+        let samples = self.options.samples_per_pixel();
         let mut sum = Vec3::ZERO;
         for s in 0..samples {
-            let (dx, dy) = sampling::sample_position(o.seed, samples, x, y, s);
+            let ((dx, dy), ray) = self.sample_ray(x, y, (s, samples));
             rec.sample(s, dx, dy);
-            let ray = self.camera.pixel_ray(x, y, dx, dy); // chapter 1: r(t) = e + d·t
-            rec.ray(RayKind::Camera, &ray, 0.0, 0, 1.0);
-            let colour = self.camera_ray(&ray, (x, y), rec);
-            rec.done(colour);
+            let colour = self.camera_ray(&ray, rec);
+            if samples == 1 {
+                return colour; // the mean of one colour
+            }
             sum += colour;
         }
         sum / samples as Real
     }
+
+    /// Where sample `s` of the `n` of pixel (x, y) lies in the pixel, and its camera ray
+    /// (chapter 1: r(t) = e + d·t through that point of the image).
+    pub(crate) fn sample_ray(&self, x: u32, y: u32, (s, n): (u32, u32)) -> ((Real, Real), Ray) {
+        let (dx, dy) = sampling::sample_position(self.options.seed, n, x, y, s);
+        ((dx, dy), self.camera.pixel_ray(x, y, dx, dy))
+    }
     // ANCHOR_END: ch1_pixel
 
     // ANCHOR: ch1_camera_ray
-    /// What the camera ray of image pixel `pixel` brings back.
-    fn camera_ray(&self, ray: &Ray, pixel: (u32, u32), rec: &mut impl Recorder) -> Vec3 {
-        if self.options.chapter == Chapter::CameraRays {
-            return direction_colour(ray.dir); // chapter 1: (d̂ + 1)/2
-        }
-        let nearest = self.nearest_from(ray, 0.0, Some(pixel));
-        rec.hit(nearest.as_ref());
-        self.seen(ray, nearest, rec)
+    /// What a camera ray brings back, `rec` told that it leaves, all that follows and the
+    /// colour: in chapter 1 its direction, from chapter 2 its nearest hit as the view shows it.
+    pub(crate) fn camera_ray(&self, ray: &Ray, rec: &mut impl Recorder) -> Vec3 {
+        rec.ray(RayKind::Camera, ray, 0.0, 0, 1.0, 1.0);
+        let colour = if self.options.chapter == Chapter::CameraRays {
+            direction_colour(ray.dir) // chapter 1: (d̂ + 1)/2
+        } else {
+            let nearest = self.query.nearest_camera(ray); // chapter 2: step 4, t > 0
+            rec.hit(nearest.as_ref());
+            self.view_colour(ray, nearest, rec)
+        };
+        rec.done(colour);
+        colour
     }
     // ANCHOR_END: ch1_camera_ray
 
-    // ANCHOR: ch2_seen
-    /// The colour of a camera ray (from chapter 2 on) whose nearest hit is `nearest`, as the
-    /// view shows it.
-    pub(crate) fn seen(
-        &self,
-        ray: &Ray,
-        nearest: Option<Nearest>,
-        rec: &mut impl Recorder,
-    ) -> Vec3 {
+    // ANCHOR: ch2_view_colour
+    /// The colour the view shows for a camera ray (from chapter 2 on) whose nearest hit is
+    /// `nearest`.
+    fn view_colour(&self, ray: &Ray, nearest: Option<Nearest>, rec: &mut impl Recorder) -> Vec3 {
         let o = self.options;
         match o.view {
             View::Color | View::Rays if o.chapter == Chapter::GenericObjects => self.flat(nearest),
             View::Color | View::Rays => self.shade(ray, nearest, 0, 1.0, rec),
             View::Flat => self.flat(nearest),
             View::Normals => match nearest {
-                Some(n) => direction_colour(facing(n.hit.normal, ray.dir)),
+                Some(n) => direction_colour(shading::facing(n.hit.normal, ray.dir)),
                 None => self.scene.background,
             },
             View::Depth => self
                 .scales
                 .depth(nearest.map(|n| n.hit.t * ray.dir.length())),
             View::Shadows => match nearest {
-                Some(n) => self.shadow_mask(&self.surface(ray, &n), rec),
+                Some(n) => views::shadow_mask_at(self, &self.query.shading_point(ray, &n), rec),
                 None => Vec3::ZERO,
             },
         }
@@ -187,25 +352,14 @@ impl<'a> Tracer<'a> {
             None => self.scene.background,
         }
     }
-    // ANCHOR_END: ch2_seen
+    // ANCHOR_END: ch2_view_colour
 
     // ANCHOR: ch2_nearest
-    /// The nearest hit with t > `t_min` over all objects (the notes' step 5: the smallest t;
-    /// of equal t, the object listed first).
+    /// The nearest hit with t > `t_min` over all objects (the notes' steps 4 and 5: the
+    /// smallest t; of equal t, the object listed first), as the tracer's [`Query`] finds it.
     #[must_use]
     pub fn nearest(&self, ray: &Ray, t_min: Real) -> Option<Nearest> {
-        self.nearest_from(ray, t_min, None)
-    }
-
-    /// [`Tracer::nearest`] for a ray that may be the camera ray of image pixel `pixel`.
-    fn nearest_from(&self, ray: &Ray, t_min: Real, pixel: Option<(u32, u32)>) -> Option<Nearest> {
-        self.accel.nearest(
-            &self.scene.objects,
-            ray,
-            t_min,
-            self.options.numerics,
-            pixel,
-        )
+        self.query.nearest(ray, t_min)
     }
     // ANCHOR_END: ch2_nearest
 
@@ -221,7 +375,7 @@ impl<'a> Tracer<'a> {
         weight: Real,
         rec: &mut impl Recorder,
     ) -> Vec3 {
-        let nearest = self.nearest(ray, t_min);
+        let nearest = self.query.nearest(ray, t_min);
         rec.hit(nearest.as_ref());
         self.shade(ray, nearest, depth, weight, rec)
     }
@@ -241,64 +395,37 @@ impl<'a> Tracer<'a> {
         let Some(nearest) = nearest else {
             return self.scene.background;
         };
-        let s = self.surface(ray, &nearest);
-        let local = self.local_light(&s, |_, feeler| self.transmittance(feeler), rec);
+        let s = self.query.shading_point(ray, &nearest);
+        let local = self.local_light(&s, rec);
         self.reflect_and_refract(&s, local, depth, weight, rec)
     }
     // ANCHOR_END: ch3_shade
 
-    // ANCHOR: ch3_surface
-    /// What shading needs to know of a hit.
-    pub(crate) fn surface<'s>(&'s self, ray: &Ray, nearest: &Nearest) -> Surface<'s> {
-        let hit = nearest.hit;
-        let object = &self.scene.objects[nearest.object];
-        let d = crate::numeric::normalize(ray.dir);
-        Surface {
-            hit,
-            material: &self.scene.materials[object.material],
-            p: ray.at(hit.t),
-            d,
-            n: facing(hit.normal, d), // shading normal, towards the viewer
-            spawn: SpawnPoint::new(object, ray, &hit),
-        }
-    }
-    // ANCHOR_END: ch3_surface
-
     // ANCHOR: ch3_local_light_sig
     /// The local light I_a + Σ_lights (I_d + I_s)·share (chapters 3 and 4): Phong's terms of
-    /// every light, each times the share of that light its feeler lets through (from chapter 4;
-    /// 1 before). `share(light, feeler)` answers for the feeler towards light number `light`:
-    /// `Tracer::shade` traces it (`Tracer::transmittance`); a packet of pixels looks up
-    /// what it traced for all of them at once.
-    pub(crate) fn local_light(
-        &self,
-        s: &Surface,
-        mut share: impl FnMut(usize, &Feeler) -> Real,
-        rec: &mut impl Recorder,
-    ) -> Vec3 {
+    /// every light ([`shading::phong`]), each times the share of that light its feeler lets
+    /// through (from chapter 4, [`Query::share`]; 1 without a feeler).
+    pub(crate) fn local_light(&self, s: &ShadingPoint, rec: &mut impl Recorder) -> Vec3 {
         // ANCHOR_END: ch3_local_light_sig
         // BEGIN SOLUTION local_light
         let i_a = shading::ambient(s.material, self.scene.ambient); // I_a
         rec.ambient(i_a);
         let mut color = i_a;
         for (l, light) in self.scene.lights.iter().enumerate() {
-            let unshadowed = shading::direct(s.material, light, s.p, s.n, -s.d); // I_d + I_s
-            if unshadowed == Vec3::ZERO {
-                rec.light(l, s, unshadowed, None, 1.0);
-                continue; // the light is behind the surface: nothing to shadow
-            }
-            let arriving = match self.feeler(s, light) {
-                Some(feeler) => {
-                    let arriving = share(l, &feeler);
-                    rec.light(l, s, unshadowed, Some(&feeler), arriving);
-                    arriving
-                }
-                None => {
-                    rec.light(l, s, unshadowed, None, 1.0);
-                    1.0
-                }
+            let phong = shading::phong(s.material, light, s.p, s.n, -s.d); // I_d + I_s
+            // a light that adds nothing (behind the surface) has nothing to shadow
+            let feeler = if phong.sum == Vec3::ZERO {
+                None
+            } else {
+                self.feeler(s, light)
             };
-            color += unshadowed * arriving;
+            let share = match &feeler {
+                Some(feeler) => self.query.share(feeler, rec),
+                None => 1.0,
+            };
+            let arriving = phong.sum * share; // (I_d + I_s)·share
+            rec.light(l, s, &phong, feeler.as_ref(), share, arriving);
+            color += arriving;
         }
         rec.local(color);
         color
@@ -307,36 +434,26 @@ impl<'a> Tracer<'a> {
 
     // ANCHOR: ch4_feeler_sig
     /// From chapter 4, the feeler S(u) = P′ + (L − P′)·u towards a `light` that casts shadows
-    /// and lies in front, n·(L − P) > 0, from P moved off the surface to P′ ([`crate::offset`]).
-    pub(crate) fn feeler(&self, s: &Surface, light: &Light) -> Option<Feeler> {
+    /// and lies in front, n·(L − P) > 0 ([`shadow::in_front`]), from P moved off the surface
+    /// to P′ ([`crate::offset`]).
+    #[inline]
+    pub(crate) fn feeler(&self, s: &ShadingPoint, light: &Light) -> Option<Feeler> {
         let o = self.options;
         if o.chapter < Chapter::Shadows {
             return None; // no feelers before chapter 4 (given: not part of the exercise)
         }
         // ANCHOR_END: ch4_feeler_sig
         // BEGIN SOLUTION send_feeler
-        if !light.shadows || s.n.dot(light.position - s.p) <= 0.0 {
+        if !light.shadows || !shadow::in_front(s.n, s.p, light.position) {
             return None;
         }
         let (start, u_min) = o.offset.spawn(&s.spawn, light.position - s.p);
-        Some((shadow::feeler(start, light.position), u_min))
+        Some(Feeler {
+            ray: shadow::feeler(start, light.position),
+            u_min,
+        })
         // END SOLUTION
     }
-
-    // ANCHOR: ch4_transmittance
-    /// The share of its light that a feeler lets through: the product of the transmissions of
-    /// the objects it crosses with u ∈ ]u_min, 1] ([`crate::shadow`]).
-    #[inline] // two callers (this road and the shadow-mask view): keep it in the road
-    pub(crate) fn transmittance(&self, (feeler, u_min): &Feeler) -> Real {
-        self.accel.transmittance(
-            &self.scene.objects,
-            &self.scene.materials,
-            feeler,
-            *u_min,
-            self.options.numerics,
-        )
-    }
-    // ANCHOR_END: ch4_transmittance
 
     // ANCHOR: ch5_reflect_and_refract_sig
     /// `color` + k_t·I_r + k_r·I_l (chapter 5, while `depth < max_depth`): the light of the
@@ -346,7 +463,7 @@ impl<'a> Tracer<'a> {
     /// `min_weight` is not traced.
     pub(crate) fn reflect_and_refract(
         &self,
-        s: &Surface,
+        s: &ShadingPoint,
         mut color: Vec3,
         depth: u32,
         weight: Real,
@@ -378,8 +495,9 @@ impl<'a> Tracer<'a> {
                     if weight * k_t >= o.min_weight {
                         let (origin, t0) = o.offset.spawn(&s.spawn, t_dir);
                         let ray = Ray::new(origin, t_dir);
-                        let i_r = self.follow(
+                        let i_r = self.trace_branch(
                             RayKind::Transmitted,
+                            k_t,
                             &ray,
                             t0,
                             depth + 1,
@@ -402,7 +520,8 @@ impl<'a> Tracer<'a> {
                 let l = optics::reflect(d, n);
                 let (origin, t0) = o.offset.spawn(&s.spawn, l);
                 let ray = Ray::new(origin, l);
-                let i_l = self.follow(RayKind::Mirror, &ray, t0, depth + 1, weight * k_r, rec);
+                let i_l =
+                    self.trace_branch(RayKind::Mirror, k_r, &ray, t0, depth + 1, weight * k_r, rec);
                 color += k_r * i_l;
             } else {
                 rec.stopped(RayKind::Mirror, Stop::Weight);
@@ -412,28 +531,24 @@ impl<'a> Tracer<'a> {
         // END SOLUTION
     }
 
-    // ANCHOR: ch5_follow
-    /// Traces a mirror or transmitted ray, telling `rec` it leaves and what it brings back.
-    fn follow(
+    // ANCHOR: ch5_trace_branch
+    /// Traces a mirror or transmitted branch of a hit: tells `rec` that it leaves, whose light
+    /// counts `k` times (k_r or k_t) at the hit it leaves, then what it brings back.
+    #[allow(clippy::too_many_arguments)] // the branch's values the recorder hears, each named
+    fn trace_branch(
         &self,
         kind: RayKind,
+        k: Real,
         ray: &Ray,
         t_min: Real,
         depth: u32,
         weight: Real,
         rec: &mut impl Recorder,
     ) -> Vec3 {
-        rec.ray(kind, ray, t_min, depth, weight);
+        rec.ray(kind, ray, t_min, depth, weight, k);
         let colour = self.trace(ray, t_min, depth, weight, rec);
         rec.done(colour);
         colour
     }
-    // ANCHOR_END: ch5_follow
+    // ANCHOR_END: ch5_trace_branch
 }
-
-// ANCHOR: ch3_facing
-/// The normal n turned to face against the direction `d` (towards where the ray came from).
-fn facing(n: Vec3, d: Vec3) -> Vec3 {
-    if n.dot(d) > 0.0 { -n } else { n }
-}
-// ANCHOR_END: ch3_facing

@@ -20,10 +20,11 @@
 //! Course book: [Chapter 2, generic objects](../../../../../docs/book/ch02-generic-objects.html) (`docs/src/ch02-generic-objects.md`).
 
 use super::recorder::Recorder;
-use super::tracer::Surface;
-use super::{Chapter, Tracer, View};
+use super::tracer::{Query, ShadingPoint, Tracer};
+use super::{Chapter, View};
 use crate::real::{Real, Vec3};
 use crate::shading;
+use crate::shadow;
 
 /// The probe of the depth view traces at most this many camera rays across and down.
 pub const DEPTH_PROBES: u32 = 64;
@@ -51,7 +52,7 @@ impl Scales {
     /// The scales for the tracer's options, before the first tile: the depth probe runs only
     /// for the depth view.
     #[must_use]
-    pub fn measure(tracer: &Tracer) -> Self {
+    pub fn measure(tracer: &Tracer<impl Query>) -> Self {
         let o = tracer.options;
         let depth = (o.view == View::Depth && o.chapter >= Chapter::GenericObjects)
             .then(|| probe_depth(tracer));
@@ -65,6 +66,10 @@ impl Scales {
     /// (`None` for a miss, black): 0.15 + 0.85·(1/d − 1/far)/(1/near − 1/far), clamped to
     /// [0.15, 1].
     #[must_use]
+    // Not inlined: inlined into the road, its divisions by 1/near and 1/far were hoisted out
+    // of the view's `match` and ran for every pixel of every view, on the unset scale of the
+    // colour view too (measured: a quarter of the field's render time).
+    #[inline(never)]
     pub fn depth(&self, distance: Option<Real>) -> Vec3 {
         let Some(d) = distance else {
             return Vec3::ZERO;
@@ -91,35 +96,34 @@ impl Scales {
     }
 }
 
-impl Tracer<'_> {
-    /// The scales of the views whose colours need one (depth, rays per pixel), fixed before
-    /// the first pixel is traced.
-    #[must_use]
-    pub fn scales(&self) -> &Scales {
-        &self.scales
-    }
-
-    /// The shadow-mask view: which lights reach the surface, light i painted in
-    /// [`light_colour`]`(i)` times the share of it that arrives (0 for a light behind
-    /// the surface; before chapter 4, 1 for every light in front).
-    pub(crate) fn shadow_mask(&self, s: &Surface, rec: &mut impl Recorder) -> Vec3 {
-        let mut mask = Vec3::ZERO;
-        for (l, light) in self.scene.lights.iter().enumerate() {
-            if s.n.dot(light.position - s.p) <= 0.0 {
-                continue; // behind the surface: the light cannot reach it
-            }
-            let feeler = self.feeler(s, light);
-            let share = feeler.as_ref().map_or(1.0, |f| self.transmittance(f));
-            let unshadowed = shading::direct(s.material, light, s.p, s.n, -s.d);
-            rec.light(l, s, unshadowed, feeler.as_ref(), share);
-            mask += light_colour(l) * share;
+/// The shadow-mask view of the road ([`Tracer`]) at the shading point `s`: which lights reach
+/// it, light i painted in [`light_colour`]`(i)` times the share of it that arrives (0 for a
+/// light behind the surface; before chapter 4, 1 for every light in front). `rec` hears each
+/// light, as from the road's local light.
+pub(crate) fn shadow_mask_at(
+    tracer: &Tracer<impl Query>,
+    s: &ShadingPoint,
+    rec: &mut impl Recorder,
+) -> Vec3 {
+    let mut mask = Vec3::ZERO;
+    for (l, light) in tracer.scene.lights.iter().enumerate() {
+        if !shadow::in_front(s.n, s.p, light.position) {
+            continue; // behind the surface: the light cannot reach it
         }
-        shadow_mask(mask)
+        let feeler = tracer.feeler(s, light);
+        let share = match &feeler {
+            Some(feeler) => tracer.query().share(feeler, rec),
+            None => 1.0,
+        };
+        let phong = shading::phong(s.material, light, s.p, s.n, -s.d);
+        rec.light(l, s, &phong, feeler.as_ref(), share, phong.sum * share);
+        mask += light_colour(l) * share;
     }
+    shadow_mask(mask)
 }
 
 /// The nearest and farthest hit distance over a grid of camera rays through pixel centres.
-fn probe_depth(tracer: &Tracer) -> (Real, Real) {
+fn probe_depth(tracer: &Tracer<impl Query>) -> (Real, Real) {
     let o = tracer.options;
     let (nx, ny) = (o.width.min(DEPTH_PROBES), o.height.min(DEPTH_PROBES));
     let (mut lo, mut hi) = (Real::INFINITY, Real::NEG_INFINITY);
@@ -128,7 +132,7 @@ fn probe_depth(tracer: &Tracer) -> (Real, Real) {
             // the centre pixel of cell (i, j) of an nx × ny grid over the image
             let x = ((2 * i + 1) as u64 * u64::from(o.width) / (2 * u64::from(nx))) as u32;
             let y = ((2 * j + 1) as u64 * u64::from(o.height) / (2 * u64::from(ny))) as u32;
-            let ray = tracer.camera.pixel_ray(x, y, 0.5, 0.5);
+            let ray = tracer.camera().pixel_ray(x, y, 0.5, 0.5);
             if let Some(n) = tracer.nearest(&ray, 0.0) {
                 let d = n.hit.t * ray.dir.length();
                 lo = lo.min(d);
@@ -140,7 +144,7 @@ fn probe_depth(tracer: &Tracer) -> (Real, Real) {
 }
 
 /// samples × (1 + feelers a hit can send) × (2^(depth + 1) − 1).
-fn rays_max(tracer: &Tracer) -> u64 {
+fn rays_max(tracer: &Tracer<impl Query>) -> u64 {
     let o = tracer.options;
     let feelers = if o.chapter >= Chapter::Shadows {
         tracer.scene.lights.iter().filter(|l| l.shadows).count() as u64
