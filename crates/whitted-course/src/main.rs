@@ -78,6 +78,13 @@ enum Command {
     /// endless loop costs only its own tests. An exercise's points (chapters/formulas.toml) are
     /// shared by its tests. Exit status 0 once graded, whatever the score; 2 on an error.
     Grade(GradeArgs),
+    /// Runs a test binary in the grader's sandbox: nextest's target runner while grading.
+    #[command(name = "sandbox-run", hide = true)]
+    SandboxRun {
+        /// The test binary and its arguments.
+        #[arg(trailing_var_arg = true, allow_hyphen_values = true, required = true)]
+        command: Vec<std::ffi::OsString>,
+    },
     /// Renders the course book's figures (docs/figures.toml), or checks them with --check.
     ///
     /// Each figure is `BINARY ARGS -o docs/src/figures/FILE`, run from the project's root
@@ -165,6 +172,10 @@ struct GradeArgs {
     /// Keep each graded copy (its path is printed).
     #[arg(long)]
     keep: bool,
+    /// Build and run the student's code without the sandbox (bubblewrap), with your rights:
+    /// only for work you trust, on a machine without user namespaces.
+    #[arg(long)]
+    unsandboxed: bool,
     /// The instructor's project, whose tests and manifest grade [default: the nearest
     /// Cargo.toml at or above the current directory].
     #[arg(long, value_name = "DIR")]
@@ -267,6 +278,7 @@ fn main() -> ExitCode {
         Command::Handout(h) => run_handout(&h),
         Command::Learn(l) => whitted_course::cli::learn(&l),
         Command::Grade(g) => run_grade(&g),
+        Command::SandboxRun { command } => return grade::sandbox::run_test(&command),
         Command::Figures(f) => project(f.root.as_ref())
             .and_then(|root| figures::command(&root, f.check, f.only.as_deref())),
         Command::Book(b) => {
@@ -280,6 +292,16 @@ fn main() -> ExitCode {
             ExitCode::from(2)
         }
     }
+}
+
+/// The sandbox of a grading: this program runs each test binary; none with `--unsandboxed`.
+fn sandbox_setup(unsandboxed: bool) -> Result<Option<grade::SandboxSetup>, ToolError> {
+    if unsandboxed {
+        return Ok(None);
+    }
+    let runner = std::env::current_exe()
+        .map_err(|e| ToolError::Usage(format!("cannot find this program's path: {e}")))?;
+    Ok(Some(grade::SandboxSetup { runner, worker: 0 }))
 }
 
 /// The project: `--root DIR`, or the nearest one at or above the current directory.
@@ -322,6 +344,7 @@ fn run_grade(args: &GradeArgs) -> Result<ExitCode, ToolError> {
                 .unwrap_or_else(|| root.join("target").join("grade")),
         ),
         keep: args.keep,
+        sandbox: sandbox_setup(args.unsandboxed)?,
     };
     let class = match (&args.class, &args.out) {
         (Some(dir), Some(out)) => Some(Class {

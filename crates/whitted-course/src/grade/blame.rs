@@ -12,12 +12,13 @@ use crate::{ToolError, cargo, layout};
 /// A compiler error: the file and line of its primary span, and its message with its place.
 pub(super) type CompileError = ((PathBuf, usize), String);
 
-/// Builds the test targets; returns the compiler's errors, each as the primary span's file
+/// Builds the test targets (inside `wrapper`, the build sandbox, when there is one); returns the compiler's errors, each as the primary span's file
 /// and line, and the error's first line with its place (empty when the build succeeded).
 pub(super) fn build(
     project: &Path,
     target_dir: &Path,
     targets: &[String],
+    wrapper: Option<&cargo::Wrapper>,
 ) -> Result<Vec<CompileError>, ToolError> {
     let built = cargo::Build {
         project,
@@ -30,6 +31,7 @@ pub(super) fn build(
         debug_info: false,
         locked: true,
         stderr: cargo::Stderr::Keep,
+        wrapper,
     }
     .run()?;
     if built.success {

@@ -54,13 +54,14 @@ pub fn grade_class(
     let items: Vec<usize> = (0..submissions.len()).collect();
     // one build directory per worker: two copies of the crate build to the same file names,
     // so two submissions must never share one at the same time
-    let slots: std::sync::Mutex<Vec<Option<PathBuf>>> = std::sync::Mutex::new(
+    let slots: std::sync::Mutex<Vec<(usize, Option<PathBuf>)>> = std::sync::Mutex::new(
         (0..jobs.max(1))
             .map(|i| {
-                options
+                let dir = options
                     .target_dir
                     .as_ref()
-                    .map(|t| t.join(format!("slot-{i}")))
+                    .map(|t| t.join(format!("slot-{i}")));
+                (i, dir)
             })
             .collect(),
     );
@@ -70,9 +71,14 @@ pub fn grade_class(
             .lock()
             .unwrap_or_else(|p| p.into_inner())
             .pop()
-            .flatten();
+            .unwrap_or((0, None));
         let mut own = options.clone();
-        own.target_dir.clone_from(&slot);
+        own.target_dir.clone_from(&slot.1);
+        // each worker's tests run as a user of their own: one submission's processes never
+        // count against another's limit
+        if let Some(s) = &mut own.sandbox {
+            s.worker = slot.0;
+        }
         let entry = ClassEntry {
             student: path.file_name().map_or_else(
                 || path.display().to_string(),

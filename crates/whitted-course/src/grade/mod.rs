@@ -34,6 +34,7 @@ mod class;
 pub mod command;
 mod junit;
 mod nextest;
+pub mod sandbox;
 mod splice;
 
 use std::collections::{BTreeMap, BTreeSet};
@@ -71,6 +72,19 @@ pub struct GradeSetup {
     pub target_dir: Option<PathBuf>,
     /// Keep the graded copy (its path is printed) instead of removing it.
     pub keep: bool,
+    /// Build and run the student's code in a sandbox ([`sandbox`]); with `None` it runs with
+    /// the grader's rights.
+    pub sandbox: Option<SandboxSetup>,
+}
+
+/// What a sandboxed grading needs to know.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct SandboxSetup {
+    /// The `whitted` program, whose hidden `sandbox-run` command nextest starts each test
+    /// binary with.
+    pub runner: PathBuf,
+    /// The worker's number: as root, its tests run as user [`sandbox::FIRST_UID`] + this.
+    pub worker: usize,
 }
 
 impl Default for GradeSetup {
@@ -81,6 +95,7 @@ impl Default for GradeSetup {
             timeout: DEFAULT_TIMEOUT,
             target_dir: None,
             keep: false,
+            sandbox: None,
         }
     }
 }
@@ -221,10 +236,11 @@ pub fn grade(
     // the next and updated file by file, so that cargo recompiles only what differs from the
     // last submission; else a fresh temporary directory
     let mut temp = None;
+    let whole = |f: &Path| whole_in_copy(root, manifest, f);
     let project = match &options.target_dir {
         Some(dir) => {
             let project = dir.join(COPY);
-            files::sync_project(root, &project, &[".config", nextest::STORE])?;
+            files::sync_project(root, &project, &[".config", nextest::STORE], &whole)?;
             if options.keep {
                 eprintln!("grade: the graded copy is {}", project.display());
             }
@@ -240,23 +256,36 @@ pub fn grade(
                 eprintln!("grade: the graded copy is kept in {}", t.path().display());
             }
             let project = t.path().join("project");
-            files::copy_project(root, &project)?;
+            files::sync_project(root, &project, &[], &whole)?;
             temp = Some(t);
             project
         }
     };
-    let mut notes: BTreeMap<usize, String> = BTreeMap::new();
-    let mut files = splice::splice(root, manifest, submission, &chapters, &mut notes)?;
-    let hidden = splice::add_hidden(&project, options.hidden.as_deref())?;
-    nextest::write_profile(&project, options.timeout)?;
-    let targets: Vec<String> = chapter_targets(manifest, &chapters)
-        .into_iter()
-        .chain(hidden.iter().cloned())
-        .collect();
     let target_dir = options
         .target_dir
         .clone()
         .unwrap_or_else(|| project.join("target"));
+    std::fs::create_dir_all(&target_dir).map_err(|e| ToolError::io(&target_dir, e))?;
+    let sandbox = match &options.sandbox {
+        Some(s) => Some(
+            sandbox::Sandbox::probe(&s.runner, s.worker, run_reads(&project)).map_err(|why| {
+                ToolError::Usage(format!(
+                    "the sandbox cannot be set up: {why}; --unsandboxed grades without one, the student's code then running with your rights"
+                ))
+            })?,
+        ),
+        None => None,
+    };
+    let wrapper = sandbox
+        .as_ref()
+        .map(|s| s.build_wrapper(&project, &target_dir));
+    let mut notes: BTreeMap<usize, String> = BTreeMap::new();
+    let mut files = splice::splice(root, manifest, submission, &chapters, &mut notes)?;
+    // the student's crate compiles while no hidden test is in the copy, so that a body cannot
+    // include one; the hidden targets are added and built after it
+    splice::remove_hidden(&project, &target_dir)?;
+    nextest::write_profile(&project, options.timeout)?;
+    let public: Vec<String> = chapter_targets(manifest, &chapters).into_iter().collect();
     let mut whole = Vec::new();
     // build; an exercise that does not compile goes back to its todo!() and the build again
     loop {
@@ -267,7 +296,7 @@ pub fn grade(
             files::write_if_changed(&project.join(&f.file), text.as_bytes())?;
             placed.push((f.file.clone(), lines));
         }
-        let errors = blame::build(&project, &target_dir, &targets)?;
+        let errors = blame::build(&project, &target_dir, &public, wrapper.as_ref())?;
         if errors.is_empty() {
             break;
         }
@@ -301,11 +330,36 @@ pub fn grade(
             }
         }
     }
-    let tests = if whole.is_empty() {
-        nextest::run(&project, &target_dir, &targets, manifest, &hidden)?
+    let mut hidden = Vec::new();
+    if whole.is_empty() && options.hidden.is_some() {
+        hidden = splice::add_hidden(&project, options.hidden.as_deref())?;
+        let errors = blame::build(&project, &target_dir, &hidden, wrapper.as_ref())?;
+        if let Some((_, first)) = errors.first() {
+            // the student's crate built for the public tests: the hidden ones are the
+            // instructor's to fix, and the public ones still count
+            whole.push(format!("the hidden tests do not build: {first}"));
+            splice::remove_hidden(&project, &target_dir)?;
+            hidden.clear();
+        }
+    }
+    let targets: Vec<String> = public.iter().chain(&hidden).cloned().collect();
+    let tests = if whole.iter().all(|w| w.starts_with("the hidden tests")) {
+        nextest::run(
+            &project,
+            &target_dir,
+            &targets,
+            manifest,
+            &hidden,
+            wrapper.as_ref(),
+            sandbox.as_ref(),
+        )
     } else {
-        Vec::new()
+        Ok(Vec::new())
     };
+    // the hidden tests' sources and binaries leave the copy before anything else is built
+    // in it, whether the run went well or not
+    splice::remove_hidden(&project, &target_dir)?;
+    let tests = tests?;
     let exercises = score(manifest, &chapters, &tests, &notes);
     drop(temp);
     Ok(Grade {
@@ -316,6 +370,39 @@ pub fn grade(
         notes: whole,
         elapsed: start.elapsed(),
     })
+}
+
+/// Whether the project file `file` goes whole into the graded copy: what the student's crate
+/// and its tests are built from (every manifest, the lock, cargo's settings, the syllabus, the
+/// renderer with the handout's tests, the scenes). Every other file is there empty, so that a
+/// body compiled in the copy cannot include the instructor's other files (a mutant list, a
+/// guide, tools that quote the solutions).
+fn whole_in_copy(root: &Path, manifest: &Manifest, file: &Path) -> bool {
+    let name = file.file_name().map(|n| n.to_string_lossy().into_owned());
+    if matches!(name.as_deref(), Some("Cargo.toml"))
+        || file == Path::new("Cargo.lock")
+        || file.starts_with(".cargo")
+        || name
+            .as_deref()
+            .is_some_and(|n| n.starts_with("rust-toolchain"))
+        || file.starts_with(layout::SYLLABUS)
+        || file.starts_with("scenes")
+    {
+        return true;
+    }
+    if file.starts_with(layout::core_tests()) {
+        return handout::part_of(file, &manifest.handout.tests, root) == handout::Part::Copied;
+    }
+    file.starts_with(layout::CORE)
+}
+
+/// What the tests read at run time, shown to them read-only: the scenes and the golden
+/// images.
+fn run_reads(project: &Path) -> Vec<PathBuf> {
+    vec![
+        project.join("scenes"),
+        project.join(layout::core_tests()).join("golden"),
+    ]
 }
 
 /// Each graded exercise's points: its points shared equally by its tests.

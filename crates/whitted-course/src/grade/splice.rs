@@ -127,18 +127,30 @@ pub(super) fn splice(
         .collect()
 }
 
-/// Copies each `*.rs` of the hidden directory into the copy's `tests/` as `hidden_NAME.rs`;
-/// returns the test targets added.
-pub(super) fn add_hidden(project: &Path, hidden: Option<&Path>) -> Result<Vec<String>, ToolError> {
-    // a kept copy may hold the hidden tests of an earlier grading
-    let tests = project.join(layout::core_tests());
-    if let Ok(entries) = std::fs::read_dir(&tests) {
+/// Removes the hidden tests from the copy (`tests/hidden_*`) and their binaries from the
+/// build directory (`debug/deps/hidden_*`): what the student's crate is compiled next to, and
+/// what a later build in the same directory could read, holds none of them.
+pub(super) fn remove_hidden(project: &Path, target_dir: &Path) -> Result<(), ToolError> {
+    for dir in [
+        project.join(layout::core_tests()),
+        target_dir.join("debug").join("deps"),
+    ] {
+        let Ok(entries) = std::fs::read_dir(&dir) else {
+            continue;
+        };
         for e in entries.flatten() {
             if e.file_name().to_string_lossy().starts_with("hidden_") {
-                let _ = std::fs::remove_file(e.path());
+                let path = e.path();
+                std::fs::remove_file(&path).map_err(|err| ToolError::io(&path, err))?;
             }
         }
     }
+    Ok(())
+}
+
+/// Copies each `*.rs` of the hidden directory into the copy's `tests/` as `hidden_NAME.rs`;
+/// returns the test targets added.
+pub(super) fn add_hidden(project: &Path, hidden: Option<&Path>) -> Result<Vec<String>, ToolError> {
     let Some(dir) = hidden else {
         return Ok(Vec::new());
     };
