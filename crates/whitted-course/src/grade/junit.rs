@@ -47,7 +47,12 @@ pub fn parse_junit(
             }
         };
         let exercise = manifest.exercise_of_test(test_name(&name));
+        let time = case
+            .attribute("time")
+            .and_then(|t| t.parse::<f64>().ok())
+            .unwrap_or(0.0);
         out.push(TestResult {
+            time,
             hidden: hidden.contains(&target),
             name,
             target,

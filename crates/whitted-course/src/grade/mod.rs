@@ -142,6 +142,8 @@ pub struct TestResult {
     pub status: Status,
     /// Why it failed, in a line or two (empty when it passed).
     pub message: String,
+    /// How long it ran, in seconds.
+    pub time: f64,
 }
 
 /// One exercise's points.
