@@ -178,6 +178,20 @@ pub struct Grade {
     pub notes: Vec<String>,
     /// How long grading took.
     pub elapsed: Duration,
+    /// Where that time went.
+    pub timings: Timings,
+}
+
+/// Where a grading's time went.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct Timings {
+    /// Copying the project and splicing the student's bodies into it.
+    pub splice: Duration,
+    /// Building (the student's crate and the tests, the hidden ones too, each build again
+    /// after a body that did not compile).
+    pub build: Duration,
+    /// Running the tests (listing them, nextest, the sandbox).
+    pub run: Duration,
 }
 
 impl Grade {
@@ -288,6 +302,11 @@ pub fn grade(
     splice::remove_hidden(&project, &target_dir)?;
     nextest::write_profile(&project, options.timeout)?;
     let public: Vec<String> = chapter_targets(manifest, &chapters).into_iter().collect();
+    let mut timings = Timings {
+        splice: start.elapsed(),
+        ..Timings::default()
+    };
+    let built = Instant::now();
     let mut whole = Vec::new();
     // build; an exercise that does not compile goes back to its todo!() and the build again
     loop {
@@ -345,6 +364,8 @@ pub fn grade(
         }
     }
     let targets: Vec<String> = public.iter().chain(&hidden).cloned().collect();
+    timings.build = built.elapsed();
+    let ran = Instant::now();
     let tests = if whole.iter().all(|w| w.starts_with("the hidden tests")) {
         nextest::run(
             &project,
@@ -362,6 +383,7 @@ pub fn grade(
     // in it, whether the run went well or not
     splice::remove_hidden(&project, &target_dir)?;
     let tests = tests?;
+    timings.run = ran.elapsed();
     let exercises = score(manifest, &chapters, &tests, &notes);
     drop(temp);
     Ok(Grade {
@@ -371,6 +393,7 @@ pub fn grade(
         tests,
         notes: whole,
         elapsed: start.elapsed(),
+        timings,
     })
 }
 

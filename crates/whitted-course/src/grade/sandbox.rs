@@ -391,28 +391,40 @@ fn host_triple() -> Option<String> {
         .map(|t| t.trim().to_string())
 }
 
-/// Copies what `from` gives to `to`, at most `cap` bytes, then a line saying the rest was
-/// cut; reads to the end either way, so the writer is never blocked.
+/// Copies what `from` gives to `to`, at most `cap` bytes: its first half as it comes, then,
+/// when there was more, a line saying how much was cut and the last half (where a panic's
+/// message is). Reads to the end either way, so the writer is never blocked, and holds at
+/// most `cap / 2` bytes.
 fn capped(mut from: impl Read, mut to: impl Write, cap: u64) {
-    let mut kept = 0u64;
-    let mut cut = false;
+    let half = usize::try_from(cap / 2).unwrap_or(usize::MAX);
+    let mut head = 0usize;
+    let mut tail: std::collections::VecDeque<u8> = std::collections::VecDeque::new();
+    let mut dropped = 0u64;
     let mut buf = [0u8; 16 * 1024];
     loop {
         let n = match from.read(&mut buf) {
             Ok(0) | Err(_) => break,
             Ok(n) => n,
         };
-        let room = usize::try_from(cap.saturating_sub(kept)).unwrap_or(usize::MAX);
-        let take = n.min(room);
+        let take = n.min(half - head);
         if take > 0 {
             let _ = to.write_all(&buf[..take]);
-            kept += take as u64;
+            let _ = to.flush();
+            head += take;
         }
-        if take < n && !cut {
-            cut = true;
-            let _ = writeln!(to, "\n[whitted: the output was cut at {cap} bytes]");
+        tail.extend(&buf[take..n]);
+        if tail.len() > half {
+            let extra = tail.len() - half;
+            tail.drain(..extra);
+            dropped += extra as u64;
         }
     }
+    if dropped > 0 {
+        let _ = writeln!(to, "\n[whitted: {dropped} bytes of output cut here]");
+    }
+    let (a, b) = tail.as_slices();
+    let _ = to.write_all(a);
+    let _ = to.write_all(b);
     let _ = to.flush();
 }
 
