@@ -424,6 +424,7 @@ fn run_autograder(args: AutograderArgs) -> Result<ExitCode, ToolError> {
             grading.timeout,
             target,
             sandbox_setup(build.unsandboxed)?,
+            grading.leaderboard,
         );
         Ok((root, manifest, setup))
     };
@@ -541,6 +542,7 @@ fn run_grade(args: &GradeArgs) -> Result<ExitCode, ToolError> {
         ),
         keep: args.keep,
         sandbox: sandbox_setup(args.unsandboxed)?,
+        render: false,
     };
     let class = match (&args.class, &args.out) {
         (Some(dir), Some(out)) => Some(Class {

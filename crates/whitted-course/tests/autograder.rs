@@ -77,6 +77,7 @@ fn grade_of(m: &Manifest) -> Grade {
         notes: vec!["exercise 4.3: does not compile".into()],
         elapsed: Duration::from_millis(7_400),
         timings: Default::default(),
+        render: None,
     }
 }
 

@@ -198,6 +198,7 @@ fn graded(m: &Manifest) -> Grade {
         notes: vec![],
         elapsed: Duration::from_secs(42),
         timings: Default::default(),
+        render: None,
     }
 }
 

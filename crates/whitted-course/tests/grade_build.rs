@@ -161,6 +161,7 @@ fn setup(hidden: &Path) -> grade::GradeSetup {
             runner: PathBuf::from(env!("CARGO_BIN_EXE_whitted")),
             worker: 0,
         }),
+        render: false,
     }
 }
 
@@ -243,8 +244,10 @@ fn hostile(t: &Targets) -> Vec<(&'static str, &'static str, String)> {
         (
             "memory-hog",
             "cylinder_normal",
+            // 256 MiB at a time, a byte written in each: without a limit it would grow until
+            // the time limit stopped it; with one, the allocation fails within the second
             r##"    let mut hoard: Vec<Vec<u8>> = Vec::new();
-    loop { hoard.push(vec![1u8; 64 << 20]); std::hint::black_box(&hoard); }"##
+    loop { let mut v = Vec::with_capacity(256 << 20); v.push(1u8); hoard.push(v); std::hint::black_box(&hoard); }"##
                 .to_string(),
         ),
         (

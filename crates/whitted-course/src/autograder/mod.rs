@@ -234,6 +234,25 @@ impl Report {
                 );
             }
         }
+        let mut leaderboard = Vec::new();
+        if settings.leaderboard {
+            match &grade.render {
+                Some(Ok(r)) => {
+                    leaderboard.push(Board {
+                        name: "M rays/s".into(),
+                        value: r.rays_per_second,
+                        order: "desc".into(),
+                    });
+                    leaderboard.push(Board {
+                        name: "pixels off (%)".into(),
+                        value: r.differing,
+                        order: "asc".into(),
+                    });
+                }
+                Some(Err(why)) => output += &format!("leaderboard: no render ({why})\n"),
+                None => {}
+            }
+        }
         Self {
             student: grade.student.clone(),
             score: grade.score(),
@@ -241,7 +260,7 @@ impl Report {
             execution_time: grade.elapsed.as_secs_f64(),
             output,
             tests,
-            leaderboard: Vec::new(),
+            leaderboard,
             images: Vec::new(),
             ungradable: None,
             settings: settings.clone(),

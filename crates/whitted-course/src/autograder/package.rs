@@ -148,8 +148,13 @@ else
 fi
 WHITTED="${{WHITTED_BIN:-$SRC/whitted/target/release/whitted}}"
 echo "setup: building the dependencies and the instructor's code once"
-"$WHITTED" autograder prebuild --root "$SRC/whitted" --target-dir "${{WHITTED_BUILD_DIR:-$ROOT/build}}"{hidden}{chapter} --timeout {timeout}
+"$WHITTED" autograder prebuild --root "$SRC/whitted" --target-dir "${{WHITTED_BUILD_DIR:-$ROOT/build}}"{hidden}{chapter} --timeout {timeout}{leaderboard}
 "#,
+        leaderboard = if options.settings.leaderboard {
+            " --leaderboard"
+        } else {
+            ""
+        },
         platform = platform.name(),
         rust = rust_version(),
         nextest = NEXTEST_VERSION,

@@ -175,7 +175,8 @@ pub fn check(results: &Path, exercise: &str) -> Result<ExitCode, ToolError> {
     })
 }
 
-/// The grading setup of a package's command line.
+/// The grading setup of a package's command line (`render`: measure the leaderboard's
+/// render).
 #[must_use]
 pub fn setup(
     chapter: Option<u8>,
@@ -183,6 +184,7 @@ pub fn setup(
     timeout: u64,
     target_dir: PathBuf,
     sandbox: Option<grade::SandboxSetup>,
+    render: bool,
 ) -> GradeSetup {
     GradeSetup {
         chapter,
@@ -191,5 +193,6 @@ pub fn setup(
         target_dir: Some(target_dir),
         keep: false,
         sandbox,
+        render,
     }
 }

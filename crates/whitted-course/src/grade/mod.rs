@@ -34,6 +34,7 @@ mod class;
 pub mod command;
 mod junit;
 mod nextest;
+mod render;
 pub mod sandbox;
 mod splice;
 
@@ -48,6 +49,7 @@ use super::{ToolError, files, layout};
 pub use class::{ClassEntry, grade_class};
 pub use junit::{panic_message, parse_junit};
 pub use nextest::NEXTEST_PROFILE;
+pub use render::RenderScore;
 pub use splice::student_body;
 
 /// The graded copy's directory, inside the build directory when grading has one.
@@ -75,6 +77,9 @@ pub struct GradeSetup {
     /// Build and run the student's code in a sandbox ([`sandbox`]); with `None` it runs with
     /// the grader's rights.
     pub sandbox: Option<SandboxSetup>,
+    /// Render the last graded chapter's figure with the student's code, for the leaderboard
+    /// ([`Grade::render`]).
+    pub render: bool,
 }
 
 /// What a sandboxed grading needs to know.
@@ -96,6 +101,7 @@ impl Default for GradeSetup {
             target_dir: None,
             keep: false,
             sandbox: None,
+            render: false,
         }
     }
 }
@@ -180,6 +186,9 @@ pub struct Grade {
     pub elapsed: Duration,
     /// Where that time went.
     pub timings: Timings,
+    /// The render of the leaderboard when it was asked for ([`GradeSetup::render`]): its
+    /// speed and error, or why there is none.
+    pub render: Option<Result<RenderScore, String>>,
 }
 
 /// Where a grading's time went.
@@ -383,6 +392,21 @@ pub fn grade(
     // in it, whether the run went well or not
     splice::remove_hidden(&project, &target_dir)?;
     let tests = tests?;
+    let render = (options.render && whole.is_empty()).then(|| {
+        let last = chapters
+            .iter()
+            .copied()
+            .max()
+            .unwrap_or(crate::syllabus::LAST);
+        render::measure(
+            &project,
+            &target_dir,
+            last,
+            wrapper.as_ref(),
+            sandbox.as_ref(),
+            options.timeout * 3,
+        )
+    });
     timings.run = ran.elapsed();
     let exercises = score(manifest, &chapters, &tests, &notes);
     drop(temp);
@@ -394,12 +418,14 @@ pub fn grade(
         notes: whole,
         elapsed: start.elapsed(),
         timings,
+        render,
     })
 }
 
 /// Whether the project file `file` goes whole into the graded copy: what the student's crate
 /// and its tests are built from (every manifest, the lock, cargo's settings, the syllabus, the
-/// renderer with the handout's tests, the scenes). Every other file is there empty, so that a
+/// renderer with the handout's tests, the scenes), and the chapter binaries and the book's
+/// figures for the leaderboard's render: all of it in the handout too. Every other file is there empty, so that a
 /// body compiled in the copy cannot include the instructor's other files (a mutant list, a
 /// guide, tools that quote the solutions).
 fn whole_in_copy(root: &Path, manifest: &Manifest, file: &Path) -> bool {
@@ -411,7 +437,9 @@ fn whole_in_copy(root: &Path, manifest: &Manifest, file: &Path) -> bool {
             .as_deref()
             .is_some_and(|n| n.starts_with("rust-toolchain"))
         || file.starts_with(layout::SYLLABUS)
+        || file.starts_with(layout::APP)
         || file.starts_with("scenes")
+        || render::needs(file)
     {
         return true;
     }
