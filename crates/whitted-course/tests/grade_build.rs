@@ -33,72 +33,13 @@ use std::path::{Path, PathBuf};
 use std::sync::Mutex;
 use std::time::Duration;
 
+mod class;
+
+use class::{copy, index, manifest, mutant_body, mutants, root, set_body};
 use whitted_course::autograder::{self, Platform, Report, Settings};
 use whitted_course::grade::{self, ClassEntry, Grade, Status};
 use whitted_course::manifest::{self, Manifest};
 use whitted_course::{deps, files, handout};
-
-/// The workspace's root: this crate sits in `crates/whitted-course`.
-fn root() -> PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR"))
-        .ancestors()
-        .nth(2)
-        .expect("the crate sits two levels below the workspace's root")
-        .to_path_buf()
-}
-
-fn manifest() -> Manifest {
-    manifest::load(&root().join(manifest::DEFAULT_PATH)).unwrap()
-}
-
-/// The entry of the exercise named `name`.
-fn index(m: &Manifest, name: &str) -> usize {
-    m.by_name(name)
-        .unwrap_or_else(|| panic!("no exercise named {name}"))
-}
-
-/// A copy of the reference project at `to`.
-fn copy(to: &Path) {
-    for f in files::project_files(&root()).unwrap() {
-        let dest = to.join(&f);
-        std::fs::create_dir_all(dest.parent().unwrap()).unwrap();
-        std::fs::copy(root().join(&f), dest).unwrap();
-    }
-}
-
-/// Replaces the body of the exercise named `id` in the copy at `dir` with `body`.
-fn set_body(dir: &Path, m: &Manifest, id: &str, body: &str) {
-    let r = &handout::regions(&root(), m).unwrap()[index(m, id)];
-    let path = dir.join(&r.file);
-    let text = std::fs::read_to_string(&path).unwrap();
-    assert!(
-        text.contains(&r.solution),
-        "exercise {id}: the body is not in the copy"
-    );
-    std::fs::write(&path, text.replacen(&r.solution, &format!("{body}\n"), 1)).unwrap();
-}
-
-#[derive(serde::Deserialize)]
-struct Mutants {
-    mutant: Vec<Mutant>,
-}
-
-#[derive(serde::Deserialize)]
-struct Mutant {
-    name: String,
-    exercise: String,
-    why: String,
-    find: String,
-    replace: String,
-}
-
-fn mutants() -> Vec<Mutant> {
-    let text = std::fs::read_to_string(
-        root().join("crates/whitted-course/tests/mutants/hand-written.toml"),
-    )
-    .unwrap();
-    toml::from_str::<Mutants>(&text).unwrap().mutant
-}
 
 /// The hidden test the instructor adds: exercise 1.2 at 90°, where H = N. Its marker must
 /// appear in no report.
@@ -400,22 +341,9 @@ fn a_class_is_graded_as_each_submission_deserves() {
     let mutants = mutants();
     assert!(mutants.len() >= 10);
     for mu in &mutants {
-        let r = &handout::regions(&root(), &m).unwrap()[index(&m, &mu.exercise)];
-        assert!(
-            r.solution.contains(&mu.find),
-            "mutant {}: `{}` is not in exercise {}'s body",
-            mu.name,
-            mu.find,
-            mu.exercise
-        );
         let dir = class.join(format!("mutant-{}", mu.name));
         copy(&dir);
-        set_body(
-            &dir,
-            &m,
-            &mu.exercise,
-            r.solution.replacen(&mu.find, &mu.replace, 1).trim_end(),
-        );
+        set_body(&dir, &m, &mu.exercise, &mutant_body(&m, mu));
     }
     let hidden = work.path().join("hidden");
     std::fs::create_dir_all(&hidden).unwrap();
