@@ -11,7 +11,7 @@
 //! Not part of `.ci/run` (about ten minutes on the 2-core machine):
 //!
 //! ```sh
-//! cargo test --release -p whitted-course --test grade_scale -- --ignored --nocapture
+//! cargo test -p whitted-course --test grade_scale -- --ignored --nocapture
 //! ```
 
 mod class;
