@@ -203,6 +203,11 @@ struct AutograderArgs {
     out: Option<PathBuf>,
     #[command(flatten)]
     grading: PackageGrading,
+    /// Make the package grade without the sandbox: for a platform whose container cannot
+    /// make namespaces (the grader then says so in each results file), the container being
+    /// the only sandbox.
+    #[arg(long)]
+    unsandboxed: bool,
     /// The instructor's project [default: the nearest Cargo.toml at or above the current
     /// directory].
     #[arg(long, value_name = "DIR")]
@@ -466,6 +471,7 @@ fn run_autograder(args: AutograderArgs) -> Result<ExitCode, ToolError> {
                 hidden: args.grading.hidden.clone(),
                 timeout: args.grading.timeout,
                 settings: args.grading.settings(),
+                unsandboxed: args.unsandboxed,
             };
             if let Some(h) = &options.hidden
                 && !h.is_dir()

@@ -4,31 +4,22 @@
 //! holds what its promise rests on. The packages run in their platforms' layouts in
 //! tests/grade_build.rs.
 
+mod class;
+
 use std::collections::BTreeSet;
 use std::io::Read;
-use std::path::{Path, PathBuf};
+use std::path::Path;
 use std::process::Command;
 use std::time::Duration;
 
+use class::{manifest, root};
 use whitted_course::autograder::codegrade::{self, Audience};
 use whitted_course::autograder::{
     self, Board, Image, Platform, Report, Settings, classroom, gradescope, package, prairielearn,
 };
 use whitted_course::grade::sandbox::{Limits, Policy};
-use whitted_course::grade::{self, ExerciseScore, Grade, Status};
-use whitted_course::manifest::{self, Manifest};
-
-fn root() -> PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR"))
-        .ancestors()
-        .nth(2)
-        .expect("the crate sits two levels below the workspace's root")
-        .to_path_buf()
-}
-
-fn manifest() -> Manifest {
-    manifest::load(&root().join(manifest::DEFAULT_PATH)).unwrap()
-}
+use whitted_course::grade::{self, Grade};
+use whitted_course::manifest::Manifest;
 
 /// Chapter 4 graded: exercise 4.1 (its one test passed), 4.2 (one public test failed, one
 /// hidden test passed), and the rest with no test in this report.
@@ -49,26 +40,7 @@ the occluder was missed</failure>
 
 fn grade_of(m: &Manifest) -> Grade {
     let tests = grade::parse_junit(JUNIT, m, &["hidden_more".to_string()]).unwrap();
-    let exercises = (0..m.entries.len())
-        .filter(|&i| m.entries[i].chapter == 4)
-        .map(|i| {
-            let own: Vec<_> = tests.iter().filter(|t| t.exercise == Some(i)).collect();
-            let passed = own.iter().filter(|t| t.status == Status::Passed).count();
-            let max = f64::from(m.entries[i].exercise.points);
-            ExerciseScore {
-                entry: i,
-                score: if own.is_empty() {
-                    0.0
-                } else {
-                    max * passed as f64 / own.len() as f64
-                },
-                max,
-                passed,
-                total: own.len(),
-                note: None,
-            }
-        })
-        .collect();
+    let exercises = grade::scores(m, &[4], &tests, &Default::default());
     Grade {
         student: "grace".into(),
         chapters: vec![4],
@@ -301,6 +273,7 @@ fn the_classroom_workflow_scores_every_exercise_once() {
         hidden: None,
         timeout: 20,
         settings: Settings::default(),
+        unsandboxed: false,
     };
     let yml = classroom::workflow(&m, &options);
     let ids: Vec<String> = m
@@ -400,6 +373,7 @@ fn the_gradescope_zip_holds_its_scripts_at_the_root() {
         hidden: Some(hidden),
         timeout: 9,
         settings: Settings::default(),
+        unsandboxed: false,
     };
     package::write(&root(), &m, Platform::Gradescope, &options, &out).unwrap();
     let file = std::fs::File::open(out.join("autograder.zip")).unwrap();
@@ -433,6 +407,24 @@ fn the_gradescope_zip_holds_its_scripts_at_the_root() {
     assert!(run.contains("--timeout 9"), "{run}");
     assert!(run.contains("--hidden \"$SRC/hidden\""), "{run}");
     assert!(run.contains("results/results.json"));
+    assert!(!run.contains("--unsandboxed"), "{run}");
+    // packaged for a container without namespaces, every grading says --unsandboxed
+    let bare = dir.path().join("bare");
+    let options = package::Options {
+        unsandboxed: true,
+        ..options
+    };
+    package::write(&root(), &m, Platform::Gradescope, &options, &bare).unwrap();
+    let mut zip =
+        zip::ZipArchive::new(std::fs::File::open(bare.join("autograder.zip")).unwrap()).unwrap();
+    for script in ["setup.sh", "run_autograder"] {
+        let mut text = String::new();
+        zip.by_name(script)
+            .unwrap()
+            .read_to_string(&mut text)
+            .unwrap();
+        assert!(text.contains("--unsandboxed"), "{script}: {text}");
+    }
 }
 
 /// PrairieLearn's package: the entry point, the image, the question's hidden tests.
@@ -448,6 +440,7 @@ fn the_prairielearn_package_has_its_entry_point_and_image() {
         hidden: Some(hidden),
         timeout: 20,
         settings: Settings::default(),
+        unsandboxed: false,
     };
     package::write(&root(), &manifest(), Platform::Prairielearn, &options, &out).unwrap();
     let run = std::fs::read_to_string(out.join("run.sh")).unwrap();

@@ -683,6 +683,7 @@ fn the_platforms_packages_grade_in_their_layouts() {
         hidden: Some(hidden.clone()),
         timeout: 5,
         settings: Settings::default(),
+        unsandboxed: false,
     };
     let _one = BUILD.lock().unwrap_or_else(|p| p.into_inner());
 

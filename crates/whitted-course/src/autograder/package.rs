@@ -42,6 +42,9 @@ pub struct Options {
     pub timeout: u64,
     /// How results are shown.
     pub settings: Settings,
+    /// Grade without the sandbox: for a platform whose container cannot make namespaces,
+    /// the container then being the only sandbox.
+    pub unsandboxed: bool,
 }
 
 /// A file of a package: its path in the package, its text, whether it is executable.
@@ -61,16 +64,25 @@ fn item(path: &str, text: String, executable: bool) -> Item {
 
 /// The arguments every grading of the package gets.
 fn grade_args(options: &Options) -> String {
-    let mut a = format!("--timeout {}", options.timeout);
+    format!(
+        "{} --hidden-visibility {}",
+        prebuild_args(options).trim_start(),
+        options.settings.hidden_visibility
+    )
+}
+
+/// The arguments of the package's prebuild: the grading's own but the hidden tests'
+/// visibility, which no build needs.
+fn prebuild_args(options: &Options) -> String {
+    let mut a = format!(" --timeout {}", options.timeout);
     if let Some(c) = options.chapter {
         a += &format!(" --chapter {c}");
     }
-    a += &format!(
-        " --hidden-visibility {}",
-        options.settings.hidden_visibility
-    );
     if options.settings.leaderboard {
         a += " --leaderboard";
+    }
+    if options.unsandboxed {
+        a += " --unsandboxed";
     }
     a
 }
@@ -100,15 +112,7 @@ fn setup_script(
     src: &str,
     options: &Options,
 ) -> String {
-    let hidden = if options.hidden.is_some() {
-        format!(" --hidden \"{src}/hidden\"")
-    } else {
-        String::new()
-    };
-    let chapter = options
-        .chapter
-        .map(|c| format!(" --chapter {c}"))
-        .unwrap_or_default();
+    let hidden = hidden_arg(options);
     format!(
         r#"#!/usr/bin/env bash
 # Written by `whitted autograder --platform {platform}`: run once, when the grading image is
@@ -148,27 +152,27 @@ else
 fi
 WHITTED="${{WHITTED_BIN:-$SRC/whitted/target/release/whitted}}"
 echo "setup: building the dependencies and the instructor's code once"
-"$WHITTED" autograder prebuild --root "$SRC/whitted" --target-dir "${{WHITTED_BUILD_DIR:-$ROOT/build}}"{hidden}{chapter} --timeout {timeout}{leaderboard}
+"$WHITTED" autograder prebuild --root "$SRC/whitted" --target-dir "${{WHITTED_BUILD_DIR:-$ROOT/build}}"{hidden}{args}
 "#,
-        leaderboard = if options.settings.leaderboard {
-            " --leaderboard"
-        } else {
-            ""
-        },
         platform = platform.name(),
         rust = rust_version(),
         nextest = NEXTEST_VERSION,
-        timeout = options.timeout,
+        args = prebuild_args(options),
     )
+}
+
+/// ` --hidden "$SRC/hidden"` when the package has hidden tests.
+fn hidden_arg(options: &Options) -> &'static str {
+    if options.hidden.is_some() {
+        " --hidden \"$SRC/hidden\""
+    } else {
+        ""
+    }
 }
 
 /// Gradescope's `run_autograder`.
 fn gradescope_run(options: &Options) -> String {
-    let hidden = if options.hidden.is_some() {
-        " --hidden \"$SRC/hidden\""
-    } else {
-        ""
-    };
+    let hidden = hidden_arg(options);
     format!(
         r#"#!/usr/bin/env bash
 # Written by `whitted autograder --platform gradescope`: grades $ROOT/submission into
@@ -248,11 +252,7 @@ RUN chmod +x /whitted/setup.sh /whitted/run.sh && AUTOGRADER_ROOT=/whitted /whit
 
 /// CodeGrade's run script.
 fn codegrade_run(options: &Options) -> String {
-    let hidden = if options.hidden.is_some() {
-        " --hidden \"$SRC/hidden\""
-    } else {
-        ""
-    };
+    let hidden = hidden_arg(options);
     format!(
         r#"#!/usr/bin/env bash
 # Written by `whitted autograder --platform codegrade`: grades the student's files (the

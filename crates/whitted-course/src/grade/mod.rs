@@ -261,36 +261,20 @@ pub fn grade(
     // the next and updated file by file, so that cargo recompiles only what differs from the
     // last submission; else a fresh temporary directory
     let mut temp = None;
-    let whole = |f: &Path| whole_in_copy(root, manifest, f);
     let project = match &options.target_dir {
-        Some(dir) => {
-            let project = dir.join(COPY);
-            files::sync_project(root, &project, &[".config", nextest::STORE], &whole)?;
-            if options.keep {
-                eprintln!("grade: the graded copy is {}", project.display());
-            }
-            project
-        }
+        Some(dir) => dir.join(COPY),
         None => {
             let mut t = tempfile::Builder::new()
                 .prefix("whitted-grade-")
                 .tempdir()
                 .map_err(|e| ToolError::io(std::env::temp_dir(), e))?;
             t.disable_cleanup(options.keep);
-            if options.keep {
-                eprintln!("grade: the graded copy is kept in {}", t.path().display());
-            }
             let project = t.path().join("project");
-            files::sync_project(root, &project, &[], &whole)?;
             temp = Some(t);
             project
         }
     };
-    let target_dir = options
-        .target_dir
-        .clone()
-        .unwrap_or_else(|| project.join("target"));
-    std::fs::create_dir_all(&target_dir).map_err(|e| ToolError::io(&target_dir, e))?;
+    // before anything is copied or built: without its sandbox, grading does not start
     let sandbox = match &options.sandbox {
         Some(s) => Some(
             sandbox::Sandbox::probe(&s.runner, s.worker, run_reads(&project)).map_err(|why| {
@@ -301,6 +285,16 @@ pub fn grade(
         ),
         None => None,
     };
+    let whole = |f: &Path| whole_in_copy(root, manifest, f);
+    files::sync_project(root, &project, &[".config", nextest::STORE], &whole)?;
+    if options.keep {
+        eprintln!("grade: the graded copy is {}", project.display());
+    }
+    let target_dir = options
+        .target_dir
+        .clone()
+        .unwrap_or_else(|| project.join("target"));
+    std::fs::create_dir_all(&target_dir).map_err(|e| ToolError::io(&target_dir, e))?;
     let wrapper = sandbox
         .as_ref()
         .map(|s| s.build_wrapper(&project, &target_dir));
@@ -408,7 +402,7 @@ pub fn grade(
         )
     });
     timings.run = ran.elapsed();
-    let exercises = score(manifest, &chapters, &tests, &notes);
+    let exercises = scores(manifest, &chapters, &tests, &notes);
     drop(temp);
     Ok(Grade {
         student,
@@ -458,8 +452,10 @@ fn run_reads(project: &Path) -> Vec<PathBuf> {
     ]
 }
 
-/// Each graded exercise's points: its points shared equally by its tests.
-fn score(
+/// Each exercise of `chapters`' points: its points shared equally by its tests; `notes` are
+/// what the grader noticed about an exercise (it did not compile …).
+#[must_use]
+pub fn scores(
     manifest: &Manifest,
     chapters: &[u8],
     tests: &[TestResult],

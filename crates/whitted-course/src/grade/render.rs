@@ -11,7 +11,7 @@ use std::process::{Command, Stdio};
 use std::time::{Duration, Instant};
 
 use super::sandbox::Sandbox;
-use crate::cargo::{self, Wrapper};
+use crate::cargo::Wrapper;
 use crate::figures;
 use crate::layout;
 
@@ -52,20 +52,14 @@ pub(super) fn measure(
         .into_iter()
         .find(|f| f.binary == binary)
         .ok_or_else(|| format!("{FIGURES} lists no figure of {binary}"))?;
-    let built = cargo::Build {
+    let built = super::blame::cargo_build(
         project,
-        packages: &[layout::APP_PACKAGE],
-        tests: &[],
-        bins: &[binary.to_string()],
-        profile: None,
-        features: &[],
-        target_dir: Some(target_dir),
-        debug_info: false,
-        locked: true,
-        stderr: cargo::Stderr::Keep,
+        target_dir,
+        layout::APP_PACKAGE,
+        &[],
+        &[binary.to_string()],
         wrapper,
-    }
-    .run()
+    )
     .map_err(|e| e.to_string())?;
     let exe = built
         .executables
