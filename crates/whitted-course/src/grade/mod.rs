@@ -47,7 +47,7 @@ use super::manifest::Manifest;
 use super::{ToolError, files, layout};
 
 pub use class::{ClassEntry, grade_class};
-pub use junit::{panic_message, parse_junit};
+pub use junit::{MESSAGE_CHARS, panic_message, parse_junit};
 pub use nextest::NEXTEST_PROFILE;
 pub use render::RenderScore;
 pub use splice::student_body;

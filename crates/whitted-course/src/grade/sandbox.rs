@@ -1,12 +1,13 @@
 //! The sandbox a submission is built and run in (Linux, bubblewrap): the student's code never
 //! runs, nor is compiled, with the grader's view of the machine.
 //!
-//! - **Build.** cargo runs in a bubblewrap sandbox that sees the system (`/usr`, `/etc`) and
-//!   the toolchain and the registry read-only, the graded copy read-only, the build directory
-//!   writable, and nothing else: not the instructor's project, not the hidden tests, not the
-//!   results. A body's `include_str!`, `include_bytes!` or `#[path]` can read only what the
-//!   sandbox shows, which holds nothing secret (the graded copy carries no reference body of a
-//!   graded exercise and no hidden test while the student's crate compiles).
+//! - **Build.** cargo runs in a bubblewrap sandbox that sees the system (`/usr`, and of `/etc`
+//!   what the linker needs), the toolchain and the registry read-only, the graded copy
+//!   read-only, the build directory writable, and nothing else: not the instructor's project,
+//!   not the hidden tests, not the results, not the machine's own files. A body's
+//!   `include_str!`, `include_bytes!` or `#[path]` can read only what the sandbox shows, which
+//!   holds nothing secret (the graded copy carries no reference body of a graded exercise and
+//!   no hidden test while the student's crate compiles).
 //! - **Run.** nextest stays outside and writes its report; each test binary it starts goes
 //!   through [`run_test`] (nextest's target runner, `CARGO_TARGET_<TRIPLE>_RUNNER`): a new
 //!   root that holds only the system's libraries, the test binary read-only, the files the
@@ -281,15 +282,27 @@ impl Sandbox {
         })
     }
 
-    /// The wrapper cargo builds in: the system, the toolchain and the registry read-only, the
-    /// graded copy `project` read-only, the build directory `target_dir` writable, a private
+    /// The wrapper cargo builds in: the system (`/usr`, of `/etc` what the linker needs), the
+    /// toolchain and the registry (never cargo's credentials) read-only, the graded copy `project` read-only, the build directory `target_dir` writable, a private
     /// `/tmp`, no network; its environment only what cargo needs.
     #[must_use]
     pub fn build_wrapper(&self, project: &Path, target_dir: &Path) -> Wrapper {
         let mut args = Vec::new();
         unshare(&mut args, self.policy.uid.is_some());
         system(&mut args);
-        push(&mut args, ["--ro-bind", "/etc", "/etc"]);
+        // of /etc only what the linker needs (`cc` is a link through the alternatives; the
+        // dynamic linker's cache): the build runs as the grader's user, and a body's
+        // include_bytes! must find nothing of the machine's own there
+        for etc in [
+            "/etc/alternatives",
+            "/etc/ld.so.cache",
+            "/etc/ld.so.conf",
+            "/etc/ld.so.conf.d",
+        ] {
+            if Path::new(etc).exists() {
+                push(&mut args, ["--ro-bind", etc, etc]);
+            }
+        }
         push(
             &mut args,
             ["--proc", "/proc", "--dev", "/dev", "--tmpfs", "/tmp"],
