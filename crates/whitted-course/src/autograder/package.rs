@@ -122,9 +122,7 @@ fn setup_script(
 set -euo pipefail
 ROOT="${{{root_var}:-{root_default}}}"
 SRC="{src}"
-export CARGO_HOME="${{CARGO_HOME:-$HOME/.cargo}}"
-export PATH="$CARGO_HOME/bin:$PATH"
-sudo=""
+{TOOLCHAIN_PATH}sudo=""
 [ "$(id -u)" -ne 0 ] && sudo="sudo"
 missing=()
 command -v bwrap >/dev/null || missing+=(bubblewrap)
@@ -183,19 +181,27 @@ SRC="$ROOT/source"
 RESULTS="$ROOT/results/results.json"
 mkdir -p "$ROOT/results"
 rm -f "$RESULTS"
-export CARGO_HOME="${{CARGO_HOME:-$HOME/.cargo}}"
-export PATH="$CARGO_HOME/bin:$PATH"
-WHITTED="${{WHITTED_BIN:-$SRC/whitted/target/release/whitted}}"
+{TOOLCHAIN_PATH}WHITTED="${{WHITTED_BIN:-$SRC/whitted/target/release/whitted}}"
 "$WHITTED" autograder grade --platform gradescope --root "$SRC/whitted" \
     --submission "$ROOT/submission" --results "$RESULTS" \
     --target-dir "${{WHITTED_BUILD_DIR:-$ROOT/build}}"{hidden} {args}
-status=$?
-if [ ! -s "$RESULTS" ]; then
-  printf '{{"score": 0, "output": "The autograder failed before it could grade this submission (exit status %s). Your instructor has its log.", "tests": []}}\n' "$status" > "$RESULTS"
-fi
-exit 0
-"#,
-        args = grade_args(options)
+{fallback}"#,
+        args = grade_args(options),
+        fallback = fallback(
+            r#"{"score": 0, "output": "The autograder failed before it could grade this submission (exit status %s). Your instructor has its log.", "tests": []}"#
+        )
+    )
+}
+
+/// The lines that put cargo's programs on the `PATH`.
+const TOOLCHAIN_PATH: &str =
+    "export CARGO_HOME=\"${CARGO_HOME:-$HOME/.cargo}\"\nexport PATH=\"$CARGO_HOME/bin:$PATH\"\n";
+
+/// A grading script's last lines: when `whitted` wrote no results file, `json` (a `printf`
+/// format with `%s` for the exit status) is written instead; the script succeeds either way.
+fn fallback(json: &str) -> String {
+    format!(
+        "status=$?\nif [ ! -s \"$RESULTS\" ]; then\n  printf '{json}\\n' \"$status\" > \"$RESULTS\"\nfi\nexit 0\n"
     )
 }
 
@@ -211,9 +217,7 @@ GRADE="${{GRADE_ROOT:-/grade}}"
 RESULTS="$GRADE/results/results.json"
 mkdir -p "$GRADE/results"
 rm -f "$RESULTS"
-export CARGO_HOME="${{CARGO_HOME:-$HOME/.cargo}}"
-export PATH="$CARGO_HOME/bin:$PATH"
-PROJECT="${{WHITTED_ROOT:-/whitted/whitted}}"
+{TOOLCHAIN_PATH}PROJECT="${{WHITTED_ROOT:-/whitted/whitted}}"
 WHITTED="${{WHITTED_BIN:-$PROJECT/target/release/whitted}}"
 hidden=()
 if compgen -G "$GRADE/tests/hidden/*.rs" >/dev/null; then
@@ -222,13 +226,11 @@ fi
 "$WHITTED" autograder grade --platform prairielearn --root "$PROJECT" \
     --submission "$GRADE/student" --results "$RESULTS" \
     --target-dir "${{WHITTED_BUILD_DIR:-/whitted/build}}" "${{hidden[@]}}" {args}
-status=$?
-if [ ! -s "$RESULTS" ]; then
-  printf '{{"gradable": false, "format_errors": ["the autograder failed (exit status %s)"]}}\n' "$status" > "$RESULTS"
-fi
-exit 0
-"#,
-        args = grade_args(options)
+{fallback}"#,
+        args = grade_args(options),
+        fallback = fallback(
+            r#"{"gradable": false, "format_errors": ["the autograder failed (exit status %s)"]}"#
+        )
     )
 }
 
@@ -261,9 +263,7 @@ fn codegrade_run(options: &Options) -> String {
 ROOT="${{WHITTED_HOME:-$HOME/whitted}}"
 SRC="$ROOT"
 OUT="${{2:-${{CG_JUNIT_XML_LOCATION:-junit.xml}}}}"
-export CARGO_HOME="${{CARGO_HOME:-$HOME/.cargo}}"
-export PATH="$CARGO_HOME/bin:$PATH"
-WHITTED="${{WHITTED_BIN:-$SRC/whitted/target/release/whitted}}"
+{TOOLCHAIN_PATH}WHITTED="${{WHITTED_BIN:-$SRC/whitted/target/release/whitted}}"
 "$WHITTED" autograder grade --platform codegrade --root "$SRC/whitted" \
     --submission "${{1:-.}}" --results "$OUT" \
     --target-dir "${{WHITTED_BUILD_DIR:-$ROOT/build}}"{hidden} {args}
@@ -294,14 +294,7 @@ fn project_items(root: &Path, options: &Options) -> Result<Vec<Item>, ToolError>
         });
     }
     if let Some(dir) = &options.hidden {
-        let entries = std::fs::read_dir(dir).map_err(|e| ToolError::io(dir, e))?;
-        let mut names: Vec<PathBuf> = entries
-            .filter_map(Result::ok)
-            .map(|e| e.path())
-            .filter(|p| p.is_file() && p.extension().is_some_and(|x| x == "rs"))
-            .collect();
-        names.sort();
-        for p in names {
+        for p in crate::grade::hidden_files(dir)? {
             let bytes = std::fs::read(&p).map_err(|e| ToolError::io(&p, e))?;
             let name = p.file_name().map(PathBuf::from).unwrap_or_default();
             items.push(Item {

@@ -50,6 +50,7 @@ pub use class::{ClassEntry, grade_class};
 pub use junit::{MESSAGE_CHARS, panic_message, parse_junit};
 pub use nextest::NEXTEST_PROFILE;
 pub use render::RenderScore;
+pub(crate) use splice::hidden_files;
 pub use splice::student_body;
 
 /// The graded copy's directory, inside the build directory when grading has one.

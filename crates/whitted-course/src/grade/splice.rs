@@ -148,13 +148,8 @@ pub(super) fn remove_hidden(project: &Path, target_dir: &Path) -> Result<(), Too
     Ok(())
 }
 
-/// Copies each `*.rs` of the hidden directory into the copy's `tests/` as `hidden_NAME.rs`;
-/// returns the test targets added.
-pub(super) fn add_hidden(project: &Path, hidden: Option<&Path>) -> Result<Vec<String>, ToolError> {
-    let Some(dir) = hidden else {
-        return Ok(Vec::new());
-    };
-    let mut targets = Vec::new();
+/// The hidden tests of the directory `dir`: its `*.rs` files, in name order.
+pub(crate) fn hidden_files(dir: &Path) -> Result<Vec<PathBuf>, ToolError> {
     let entries = std::fs::read_dir(dir).map_err(|e| ToolError::io(dir, e))?;
     let mut files: Vec<PathBuf> = entries
         .filter_map(Result::ok)
@@ -162,6 +157,17 @@ pub(super) fn add_hidden(project: &Path, hidden: Option<&Path>) -> Result<Vec<St
         .filter(|p| p.is_file() && p.extension().is_some_and(|x| x == "rs"))
         .collect();
     files.sort();
+    Ok(files)
+}
+
+/// Copies each `*.rs` of the hidden directory into the copy's `tests/` as `hidden_NAME.rs`;
+/// returns the test targets added.
+pub(super) fn add_hidden(project: &Path, hidden: Option<&Path>) -> Result<Vec<String>, ToolError> {
+    let Some(dir) = hidden else {
+        return Ok(Vec::new());
+    };
+    let mut targets = Vec::new();
+    let files = hidden_files(dir)?;
     if files.is_empty() {
         return Err(ToolError::Usage(format!(
             "--hidden {}: the directory holds no .rs test file",
