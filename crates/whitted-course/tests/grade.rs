@@ -381,3 +381,37 @@ fn without_its_sandbox_grading_refuses_in_one_line() {
         "it copied the project"
     );
 }
+
+/// Without the sandbox a body that would read a file or the environment when it compiles is
+/// not compiled: the macros by any path or spacing, `#[path]`, a body that closes its
+/// function; a name, a string or a comment that merely says them is fine.
+#[test]
+fn a_body_that_reads_at_compile_time_is_found() {
+    for (body, found) in [
+        ("    near * (fov.to_radians() / 2.0).tan()\n", None),
+        ("include_str!(\"/etc/passwd\")", Some("`include_str!`")),
+        (
+            "std::include_bytes /* spaced */ ! (\"x\")",
+            Some("`include_bytes!`"),
+        ),
+        ("{ let a = [core::include!(\"x\")]; a }", Some("`include!`")),
+        ("env!(\"HOME\").len() as f64", Some("`env!`")),
+        ("option_env!(\"TOKEN\").is_some()", Some("`option_env!`")),
+        (
+            "macro_rules! m { ($e:expr) => { $e } }\nm!(include_str!(\"x\"))",
+            Some("`include_str!`"),
+        ),
+        ("#[path = \"/x.rs\"] mod m;", Some("`#[path = …]`")),
+        (
+            "0.0 }\nfn evil() -> &'static str { \"\" ",
+            Some("delimiters that do not balance"),
+        ),
+        ("let include_str = 1.0; include_str * 2.0", None),
+        (
+            "// include_str!(\"x\")\n\"include_str!(x)\".len() as f64",
+            None,
+        ),
+    ] {
+        assert_eq!(grade::compile_time_read(body).as_deref(), found, "{body}");
+    }
+}

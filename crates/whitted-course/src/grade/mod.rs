@@ -51,7 +51,7 @@ pub use junit::{MESSAGE_CHARS, panic_message, parse_junit};
 pub use nextest::NEXTEST_PROFILE;
 pub use render::RenderScore;
 pub(crate) use splice::hidden_files;
-pub use splice::student_body;
+pub use splice::{compile_time_read, student_body};
 
 /// The graded copy's directory, inside the build directory when grading has one.
 const COPY: &str = "graded-copy";
@@ -300,7 +300,9 @@ pub fn grade(
         .as_ref()
         .map(|s| s.build_wrapper(&project, &target_dir));
     let mut notes: BTreeMap<usize, String> = BTreeMap::new();
-    let mut files = splice::splice(root, manifest, submission, &chapters, &mut notes)?;
+    // without the sandbox, a body that reads files at compile time is not compiled at all
+    let screen = sandbox.is_none();
+    let mut files = splice::splice(root, manifest, submission, &chapters, screen, &mut notes)?;
     // the student's crate compiles while no hidden test is in the copy, so that a body cannot
     // include one; the hidden targets are added and built after it
     splice::remove_hidden(&project, &target_dir)?;
