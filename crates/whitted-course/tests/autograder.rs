@@ -316,6 +316,10 @@ fn the_classroom_workflow_scores_every_exercise_once() {
         "{grader}"
     );
     assert!(grader.contains("path = \"whitted-course\""), "{grader}");
+    assert!(
+        !grader.contains("The workspace of whitted"),
+        "the project's header: {grader}"
+    );
 }
 
 /// `check` passes an exercise with all its points and fails one without.

@@ -143,7 +143,11 @@ pub fn grader_manifest(reference: &str) -> String {
         "# Written by `whitted autograder --platform classroom`: the course tool (`whitted`),\n\
          # built by the Classroom workflow against the handout's crates.\n",
     );
-    for line in reference.lines() {
+    // the project's own header describes the project, not this workspace
+    let body = reference.trim_start_matches(|c: char| c.is_whitespace());
+    let mut lines = body.lines().peekable();
+    while lines.next_if(|l| l.starts_with('#')).is_some() {}
+    for line in lines {
         let line = if line.trim_start().starts_with("members = [") {
             "members = [\"whitted-course\"]".to_string()
         } else if line.contains(&format!("path = \"{}\"", layout::COURSE)) {

@@ -158,16 +158,33 @@ pub fn check(results: &Path, exercise: &str) -> Result<ExitCode, ToolError> {
     let (score, max) = (sum("score"), sum("max_score"));
     let full = !tests.is_empty() && score + 1e-6 >= max;
     println!(
-        "exercise {exercise}: {} / {} points over {} tests{}",
+        "exercise {exercise}: {} / {} points over {} tests",
         crate::report::points(score),
         crate::report::points(max),
-        tests.len(),
-        json["output"]
-            .as_str()
-            .filter(|o| !full && !o.is_empty())
-            .map(|o| format!("\n{o}"))
-            .unwrap_or_default()
+        tests.len()
     );
+    // what the grader noted about the whole submission, or about this exercise
+    let number = tests
+        .first()
+        .and_then(|t| t["number"].as_str())
+        .unwrap_or("");
+    for line in json["output"].as_str().unwrap_or("").lines().filter(|l| {
+        !l.starts_with("exercise ")
+            || (!number.is_empty() && l.starts_with(&format!("exercise {number}:")))
+    }) {
+        println!("{line}");
+    }
+    for t in tests.iter().filter(|t| t["status"] != "passed") {
+        println!(
+            "  failed: {}{}",
+            t["name"].as_str().unwrap_or(""),
+            t["output"]
+                .as_str()
+                .filter(|o| !o.is_empty())
+                .map(|o| format!(": {o}"))
+                .unwrap_or_default()
+        );
+    }
     Ok(if full {
         ExitCode::SUCCESS
     } else {

@@ -262,7 +262,12 @@ pub fn grade(
     // the next and updated file by file, so that cargo recompiles only what differs from the
     // last submission; else a fresh temporary directory
     let mut temp = None;
-    let project = match &options.target_dir {
+    // absolute: the sandbox binds the directories at their paths
+    let build_dir = match &options.target_dir {
+        Some(dir) => Some(std::path::absolute(dir).map_err(|e| ToolError::io(dir, e))?),
+        None => None,
+    };
+    let project = match &build_dir {
         Some(dir) => dir.join(COPY),
         None => {
             let mut t = tempfile::Builder::new()
@@ -291,10 +296,7 @@ pub fn grade(
     if options.keep {
         eprintln!("grade: the graded copy is {}", project.display());
     }
-    let target_dir = options
-        .target_dir
-        .clone()
-        .unwrap_or_else(|| project.join("target"));
+    let target_dir = build_dir.unwrap_or_else(|| project.join("target"));
     std::fs::create_dir_all(&target_dir).map_err(|e| ToolError::io(&target_dir, e))?;
     let wrapper = sandbox
         .as_ref()
