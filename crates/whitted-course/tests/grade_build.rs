@@ -22,8 +22,9 @@
 //!
 //! Everything is built and run in the grader's sandbox (bubblewrap). The platforms' packages
 //! then run in their layouts, sharing the class's build directory: Gradescope's zip
-//! (`setup.sh`'s build step and `run_autograder`, in an `/autograder`-shaped temporary root)
-//! and PrairieLearn's entry point (in a `/grade`-shaped one).
+//! (`setup.sh`'s build step and `run_autograder`, in an `/autograder`-shaped temporary root),
+//! PrairieLearn's entry point (in a `/grade`-shaped one) and GitHub Classroom's workflow (its
+//! commands, in a student's repository).
 //!
 //! Ignored by default (it builds every submission: minutes); `.ci/run` runs it with
 //! `cargo test --test grade_build -- --ignored`. Needs cargo-nextest and bubblewrap.
@@ -806,4 +807,102 @@ fn the_platforms_packages_grade_in_their_layouts() {
             .unwrap()
             .contains("not a copy of the handout")
     );
+}
+
+/// GitHub Classroom's workflow, its commands run as its steps would in a student's
+/// repository: a chapter-4 handout committed as the template with the package, the grading
+/// step against the first commit (the build directory swapped for the class's, so only the
+/// student's crate compiles), then the check step of an exercise the handout keeps, which
+/// passes, and of one it leaves out, which fails.
+#[test]
+#[ignore = "builds and grades through the workflow's commands (a minute): .ci/run runs it"]
+fn the_classroom_workflow_grades_the_students_repository() {
+    let m = manifest();
+    let work = tempfile::tempdir().unwrap();
+    let repo = work.path().join("repo");
+    let chapter4: Vec<usize> = (0..m.entries.len())
+        .filter(|&i| m.entries[i].chapter == 4)
+        .collect();
+    handout::write(&root(), &m, &chapter4, &repo).unwrap();
+    let options = autograder::package::Options {
+        chapter: None,
+        hidden: None,
+        timeout: 5,
+        settings: Settings::default(),
+        unsandboxed: false,
+    };
+    autograder::package::write(&root(), &m, Platform::Classroom, &options, &repo).unwrap();
+    let git = |args: &[&str]| {
+        let ok = std::process::Command::new("git")
+            .args(["-c", "user.name=t", "-c", "user.email=t@t"])
+            .args(args)
+            .current_dir(&repo)
+            .status()
+            .unwrap()
+            .success();
+        assert!(ok, "git {args:?}");
+    };
+    git(&["init", "-q"]);
+    git(&["add", "-A"]);
+    git(&["commit", "-qm", "the handout"]);
+    let yml = std::fs::read_to_string(repo.join(autograder::classroom::WORKFLOW)).unwrap();
+    let whitted = env!("CARGO_BIN_EXE_whitted");
+    let tool = format!("{}/target/release/whitted", autograder::classroom::GRADER);
+    // a line of the grading step's script, or a check step's command (a quoted string)
+    let step = |needle: &str| -> String {
+        let line = yml
+            .lines()
+            .find(|l| l.contains(needle))
+            .unwrap_or_else(|| panic!("no step with `{needle}` in {yml}"))
+            .trim();
+        match line.strip_prefix("command: \"") {
+            Some(quoted) => quoted
+                .strip_suffix('"')
+                .unwrap_or(quoted)
+                .replace("\\\"", "\""),
+            None => line.to_string(),
+        }
+    };
+    let run = |line: &str| {
+        std::process::Command::new("bash")
+            .args(["-c", line])
+            .current_dir(&repo)
+            .output()
+            .unwrap()
+    };
+    let worktree = step("git worktree add");
+    assert!(run(&worktree).status.success(), "{worktree}");
+    let grade = step("autograder grade --platform classroom")
+        .replace("sudo -E env \"PATH=$PATH\" ", "")
+        .replace(&tool, whitted)
+        .replace(
+            "--target-dir ../build",
+            &format!("--target-dir {}", build_dir().display()),
+        );
+    let _one = BUILD.lock().unwrap_or_else(|p| p.into_inner());
+    let graded = run(&grade);
+    assert!(
+        graded.status.success(),
+        "{grade}: {}",
+        String::from_utf8_lossy(&graded.stderr)
+    );
+    for (exercise, passes) in [("viewing_basis", true), ("feeler_ray", false)] {
+        let check = step(&format!("--exercise {exercise}\"")).replace(&tool, whitted);
+        let out = run(&check);
+        assert_eq!(
+            out.status.success(),
+            passes,
+            "{check}: {}",
+            String::from_utf8_lossy(&out.stdout)
+        );
+    }
+    let results = json(&work.path().join("results.json"));
+    let score = results["score"].as_f64().unwrap();
+    let chapter4_points: u32 = chapter4.iter().map(|&i| m.entries[i].exercise.points).sum();
+    let total: u32 = m.entries.iter().map(|e| e.exercise.points).sum();
+    assert!(
+        score > 0.0 && score <= f64::from(total - chapter4_points) + 0.01,
+        "{score}"
+    );
+    eprintln!("classroom: the chapter-4 handout scored {score} through the workflow's commands");
 }
