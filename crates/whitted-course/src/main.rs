@@ -35,6 +35,7 @@ use clap::{Parser, Subcommand};
 use whitted_course::autograder::{self, Platform};
 use whitted_course::cli::{find_root, read_manifest};
 use whitted_course::grade::command::{Class, Reports};
+use whitted_course::grade::sandbox::Level as SandboxLevel;
 use whitted_course::prove::PoisonedRuns;
 use whitted_course::{ToolError, book, figures, formulas, grade, handout, syllabus};
 
@@ -180,9 +181,13 @@ struct GradeArgs {
     /// Keep each graded copy (its path is printed).
     #[arg(long)]
     keep: bool,
-    /// Build and run the student's code without the sandbox (bubblewrap), with your rights:
-    /// only for work you trust, on a machine without user namespaces.
-    #[arg(long)]
+    /// The sandbox: bubblewrap's namespaces, or (as root, where no namespace can be made)
+    /// the tests as a user of their own with limits, your project closed to other users.
+    #[arg(long, value_enum, value_name = "LEVEL", default_value = "namespaces")]
+    sandbox: SandboxLevel,
+    /// Build and run the student's code without the sandbox, with your rights: only for work
+    /// you trust.
+    #[arg(long, conflicts_with = "sandbox")]
     unsandboxed: bool,
     /// The instructor's project, whose tests and manifest grade [default: the nearest
     /// Cargo.toml at or above the current directory].
@@ -203,10 +208,13 @@ struct AutograderArgs {
     out: Option<PathBuf>,
     #[command(flatten)]
     grading: PackageGrading,
-    /// Make the package grade without the sandbox: for a platform whose container cannot
-    /// make namespaces (the grader then says so in each results file), the container being
-    /// the only sandbox.
-    #[arg(long)]
+    /// The sandbox the package grades in: bubblewrap's namespaces, or, for a platform whose
+    /// container makes none (the grader then says so in each results file), the tests as a
+    /// user of their own with limits (setup.sh closes the project to other users).
+    #[arg(long, value_enum, value_name = "LEVEL", default_value = "namespaces")]
+    sandbox: SandboxLevel,
+    /// Make the package grade without any sandbox, the container being the only one.
+    #[arg(long, conflicts_with = "sandbox")]
     unsandboxed: bool,
     /// The instructor's project [default: the nearest Cargo.toml at or above the current
     /// directory].
@@ -297,8 +305,12 @@ struct PackageBuild {
     /// project].
     #[arg(long, value_name = "DIR")]
     target_dir: Option<PathBuf>,
+    /// The sandbox: bubblewrap's namespaces, or (as root, where no namespace can be made)
+    /// the tests as a user of their own with limits, the project closed to other users.
+    #[arg(long, value_enum, value_name = "LEVEL", default_value = "namespaces")]
+    sandbox: SandboxLevel,
     /// Build and run the student's code without the sandbox, with this program's rights.
-    #[arg(long)]
+    #[arg(long, conflicts_with = "sandbox")]
     unsandboxed: bool,
 }
 
@@ -428,7 +440,7 @@ fn run_autograder(args: AutograderArgs) -> Result<ExitCode, ToolError> {
             grading.hidden.clone(),
             grading.timeout,
             target,
-            sandbox_setup(build.unsandboxed)?,
+            sandbox_setup(build.unsandboxed, build.sandbox)?,
             grading.leaderboard,
         );
         Ok((root, manifest, setup))
@@ -471,7 +483,7 @@ fn run_autograder(args: AutograderArgs) -> Result<ExitCode, ToolError> {
                 hidden: args.grading.hidden.clone(),
                 timeout: args.grading.timeout,
                 settings: args.grading.settings(),
-                unsandboxed: args.unsandboxed,
+                sandbox: (!args.unsandboxed).then_some(args.sandbox),
             };
             if let Some(h) = &options.hidden
                 && !h.is_dir()
@@ -498,13 +510,20 @@ fn run_autograder(args: AutograderArgs) -> Result<ExitCode, ToolError> {
 }
 
 /// The sandbox of a grading: this program runs each test binary; none with `--unsandboxed`.
-fn sandbox_setup(unsandboxed: bool) -> Result<Option<grade::SandboxSetup>, ToolError> {
+fn sandbox_setup(
+    unsandboxed: bool,
+    level: SandboxLevel,
+) -> Result<Option<grade::SandboxSetup>, ToolError> {
     if unsandboxed {
         return Ok(None);
     }
     let runner = std::env::current_exe()
         .map_err(|e| ToolError::Usage(format!("cannot find this program's path: {e}")))?;
-    Ok(Some(grade::SandboxSetup { runner, worker: 0 }))
+    Ok(Some(grade::SandboxSetup {
+        runner,
+        worker: 0,
+        level,
+    }))
 }
 
 /// The project: `--root DIR`, or the nearest one at or above the current directory.
@@ -547,7 +566,7 @@ fn run_grade(args: &GradeArgs) -> Result<ExitCode, ToolError> {
                 .unwrap_or_else(|| root.join("target").join("grade")),
         ),
         keep: args.keep,
-        sandbox: sandbox_setup(args.unsandboxed)?,
+        sandbox: sandbox_setup(args.unsandboxed, args.sandbox)?,
         render: false,
     };
     let class = match (&args.class, &args.out) {

@@ -17,7 +17,7 @@ use whitted_course::autograder::codegrade::{self, Audience};
 use whitted_course::autograder::{
     self, Board, Image, Platform, Report, Settings, classroom, gradescope, package, prairielearn,
 };
-use whitted_course::grade::sandbox::{Limits, Policy};
+use whitted_course::grade::sandbox::{Level, Limits, Policy};
 use whitted_course::grade::{self, Grade};
 use whitted_course::manifest::Manifest;
 
@@ -273,7 +273,7 @@ fn the_classroom_workflow_scores_every_exercise_once() {
         hidden: None,
         timeout: 20,
         settings: Settings::default(),
-        unsandboxed: false,
+        sandbox: Some(Level::Namespaces),
     };
     let yml = classroom::workflow(&m, &options);
     let ids: Vec<String> = m
@@ -377,7 +377,7 @@ fn the_gradescope_zip_holds_its_scripts_at_the_root() {
         hidden: Some(hidden),
         timeout: 9,
         settings: Settings::default(),
-        unsandboxed: false,
+        sandbox: Some(Level::Namespaces),
     };
     package::write(&root(), &m, Platform::Gradescope, &options, &out).unwrap();
     let file = std::fs::File::open(out.join("autograder.zip")).unwrap();
@@ -415,7 +415,7 @@ fn the_gradescope_zip_holds_its_scripts_at_the_root() {
     // packaged for a container without namespaces, every grading says --unsandboxed
     let bare = dir.path().join("bare");
     let options = package::Options {
-        unsandboxed: true,
+        sandbox: None,
         ..options
     };
     package::write(&root(), &m, Platform::Gradescope, &options, &bare).unwrap();
@@ -444,7 +444,7 @@ fn the_prairielearn_package_has_its_entry_point_and_image() {
         hidden: Some(hidden),
         timeout: 20,
         settings: Settings::default(),
-        unsandboxed: false,
+        sandbox: Some(Level::Namespaces),
     };
     package::write(&root(), &manifest(), Platform::Prairielearn, &options, &out).unwrap();
     let run = std::fs::read_to_string(out.join("run.sh")).unwrap();
@@ -504,24 +504,32 @@ fn a_submission_is_found_in_what_the_platform_hands_over() {
     assert!(why.contains("not a copy of the handout"), "{why}");
 }
 
+/// A command's program and arguments, as text.
+fn words(c: &Command) -> Vec<String> {
+    std::iter::once(c.get_program())
+        .chain(c.get_args())
+        .map(|a| a.to_string_lossy().into_owned())
+        .collect()
+}
+
 /// The run sandbox's command: no namespace shared, the test binary read-only and nothing of
-/// the project but what is listed, a private /tmp, the limits, and (as root) a user of its
-/// own without capabilities.
+/// the project but what is listed, a private /tmp, the limits, an empty environment, and (as
+/// root) a user of its own without capabilities; at the user level, the same user and limits
+/// without bubblewrap.
 #[test]
 fn the_run_sandbox_shares_nothing_but_what_the_tests_read() {
     let policy = Policy {
+        level: Level::Namespaces,
         bwrap: "/usr/bin/bwrap".into(),
         uid: Some(61_003),
         limits: Limits::default(),
         read: vec!["/nowhere/scenes".into()],
     };
     let bin = Path::new("/w/target/debug/deps/ch01-abc");
-    let args: Vec<String> = policy
-        .command(bin, Path::new("/w/copy/crates/whitted"))
-        .iter()
-        .map(|a| a.to_string_lossy().into_owned())
-        .collect();
+    let command = policy.command(bin, Path::new("/w/copy/crates/whitted"));
+    let args = words(&command);
     let text = args.join(" ");
+    assert_eq!(args[0], "/usr/bin/bwrap");
     for needed in [
         "--unshare-net",
         "--unshare-pid",
@@ -540,15 +548,83 @@ fn the_run_sandbox_shares_nothing_but_what_the_tests_read() {
     assert!(!text.contains("/nowhere"), "{text}");
     assert!(!args.iter().any(|a| a == "--bind"), "{text}");
     assert!(text.ends_with("-- /w/target/debug/deps/ch01-abc"), "{text}");
+    let env: Vec<String> = command
+        .get_envs()
+        .filter(|(_, v)| v.is_some())
+        .map(|(k, _)| k.to_string_lossy().into_owned())
+        .collect();
+    assert_eq!(
+        env,
+        ["HOME", "NO_COLOR", "PATH", "RUST_BACKTRACE", "TMPDIR"],
+        "the test's environment"
+    );
     let user = Policy {
         uid: None,
+        ..policy.clone()
+    };
+    let args = words(&user.command(bin, Path::new("/tmp")));
+    assert!(args.contains(&"--unshare-all".to_string()));
+    assert!(!args.contains(&"setpriv".to_string()));
+    let level = Policy {
+        level: Level::User,
         ..policy
     };
-    let text: Vec<String> = user
-        .command(bin, Path::new("/tmp"))
-        .iter()
-        .map(|a| a.to_string_lossy().into_owned())
-        .collect();
-    assert!(text.contains(&"--unshare-all".to_string()));
-    assert!(!text.contains(&"setpriv".to_string()));
+    let args = words(&level.command(bin, Path::new("/tmp")));
+    assert_eq!(args[0], "setpriv", "{args:?}");
+    assert!(args.contains(&"--reuid=61003".to_string()));
+    assert!(args.contains(&"prlimit".to_string()));
+    assert!(
+        !args
+            .iter()
+            .any(|a| a.contains("bwrap") || a.starts_with("--unshare"))
+    );
+}
+
+/// At the user level the grader refuses while the project is open to other users, or the
+/// build directory closed to them, and closes the graded copy while the tests run.
+#[test]
+fn the_user_sandbox_keeps_the_project_closed() {
+    use std::os::unix::fs::PermissionsExt;
+    let dir = tempfile::tempdir().unwrap();
+    let open = |p: &Path, mode: u32| {
+        std::fs::create_dir_all(p).unwrap();
+        std::fs::set_permissions(p, std::fs::Permissions::from_mode(mode)).unwrap();
+    };
+    // the temporary directory is the owner's only: make a path open to others below it
+    open(dir.path(), 0o755);
+    let project = dir.path().join("project");
+    let build = dir.path().join("build");
+    let copy = build.join("graded-copy");
+    open(&project, 0o755);
+    open(&build, 0o755);
+    open(&copy, 0o755);
+    let sandbox = grade::sandbox::Sandbox {
+        policy: Policy {
+            level: Level::User,
+            bwrap: "".into(),
+            uid: Some(61_000),
+            limits: Limits::default(),
+            read: vec![],
+        },
+        runner: "/w/whitted".into(),
+        triple: "x86_64-unknown-linux-gnu".into(),
+    };
+    let why = sandbox
+        .protect(&[&project], &build, &copy)
+        .unwrap_err()
+        .to_string();
+    assert!(why.contains("is open to other users"), "{why}");
+    open(&project, 0o700);
+    sandbox.protect(&[&project], &build, &copy).unwrap();
+    let mode = std::fs::metadata(&copy).unwrap().permissions().mode() & 0o777;
+    assert_eq!(mode, 0o700, "the graded copy while the tests run");
+    sandbox.reopen(&copy).unwrap();
+    let mode = std::fs::metadata(&copy).unwrap().permissions().mode() & 0o777;
+    assert_eq!(mode, 0o755);
+    open(&build, 0o700);
+    let why = sandbox
+        .protect(&[&project], &build, &copy)
+        .unwrap_err()
+        .to_string();
+    assert!(why.contains("closed to other users"), "{why}");
 }

@@ -38,6 +38,7 @@ mod class;
 
 use class::{copy, index, manifest, mutant_body, mutants, root, set_body};
 use whitted_course::autograder::{self, Platform, Report, Settings};
+use whitted_course::grade::sandbox::Level;
 use whitted_course::grade::{self, ClassEntry, Grade, Status};
 use whitted_course::manifest::{self, Manifest};
 use whitted_course::{deps, files, handout};
@@ -102,6 +103,7 @@ fn setup(hidden: &Path) -> grade::GradeSetup {
         sandbox: Some(grade::SandboxSetup {
             runner: PathBuf::from(env!("CARGO_BIN_EXE_whitted")),
             worker: 0,
+            level: Level::Namespaces,
         }),
         render: false,
     }
@@ -684,7 +686,7 @@ fn the_platforms_packages_grade_in_their_layouts() {
         hidden: Some(hidden.clone()),
         timeout: 5,
         settings: Settings::default(),
-        unsandboxed: false,
+        sandbox: Some(Level::Namespaces),
     };
     let _one = BUILD.lock().unwrap_or_else(|p| p.into_inner());
 
@@ -807,6 +809,107 @@ fn the_platforms_packages_grade_in_their_layouts() {
             .unwrap()
             .contains("not a copy of the handout")
     );
+
+    // Gradescope again, packaged for a container that makes no namespace: the tests run as a
+    // user of their own, and a submission that reads the reference, the hidden test and its
+    // binary and writes the results reaches none of them
+    let user_build = if open_to_others(&build) {
+        build.clone()
+    } else {
+        eprintln!(
+            "the class's build directory {} is closed to other users: the user sandbox builds in a directory of its own (slower)",
+            build.display()
+        );
+        let dir = Path::new("/var/tmp").join(format!("whitted-user-build-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).unwrap();
+        dir
+    };
+    let ag = work.path().join("autograder-user");
+    let package = work.path().join("gradescope-user");
+    let user = autograder::package::Options {
+        sandbox: Some(Level::User),
+        ..options
+    };
+    autograder::package::write(&root(), &m, Platform::Gradescope, &user, &package).unwrap();
+    let source = ag.join("source");
+    std::fs::create_dir_all(&source).unwrap();
+    let unzip = std::process::Command::new("unzip")
+        .args(["-q", "-o"])
+        .arg(package.join("autograder.zip"))
+        .arg("-d")
+        .arg(&source)
+        .status()
+        .unwrap();
+    assert!(unzip.success());
+    let env = [
+        ("AUTOGRADER_ROOT", ag.as_path()),
+        ("WHITTED_BIN", whitted.as_path()),
+        ("WHITTED_BUILD_DIR", user_build.as_path()),
+    ];
+    run_script(&source.join("setup.sh"), &env);
+    let submission = ag.join("submission");
+    files::copy_tree(&handout4, &submission).unwrap();
+    let attack = format!(
+        r##"    let read = |p: &str| std::fs::read_to_string(p).map(|s| s.lines().take(3).collect::<Vec<_>>().join(" | ")).unwrap_or_else(|e| e.to_string());
+    let bins = std::fs::read_dir("{build}/debug/deps").map(|d| d.filter_map(Result::ok).filter(|e| e.file_name().to_string_lossy().starts_with("hidden_")).map(|e| std::fs::read(e.path()).map(|b| b.len().to_string()).unwrap_or_else(|e| e.to_string())).collect::<Vec<_>>().join(",")).unwrap_or_else(|e| e.to_string());
+    let wrote = std::fs::write("{results}/results.json", "{{}}").is_ok();
+    panic!("src: {{}} / copy: {{}} / bins: {{}} / wrote: {{wrote}}", read("{source}/whitted/crates/whitted/src/shading.rs"), read("{build}/graded-copy/crates/whitted/tests/hidden_extra.rs"), bins)"##,
+        build = user_build.display(),
+        results = ag.join("results").display(),
+        source = source.display(),
+    );
+    let r = &handout::regions(&root(), &m).unwrap()[index(&m, "direction_colour")];
+    let path = submission.join(&r.file);
+    let text = std::fs::read_to_string(&path).unwrap();
+    std::fs::write(&path, text.replacen(&r.solution, &format!("{attack}\n"), 1)).unwrap();
+    run_script(&source.join("run_autograder"), &env);
+    let text = std::fs::read_to_string(ag.join("results/results.json")).unwrap();
+    let results: serde_json::Value = serde_json::from_str(&text).unwrap();
+    let attacked = results["tests"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .find(|t| t["number"] == "1.7")
+        .unwrap_or_else(|| panic!("no test of 1.7: {text}"));
+    let said = attacked["output"].as_str().unwrap();
+    let part = |name: &str| {
+        said.split(" / ")
+            .find_map(|p| {
+                p.split_once(&format!("{name}: "))
+                    .map(|(_, v)| v.to_string())
+            })
+            .unwrap_or_else(|| panic!("no `{name}` in {said}"))
+    };
+    assert!(part("src").starts_with("Permission denied"), "{said}");
+    assert!(part("copy").starts_with("Permission denied"), "{said}");
+    let bins = part("bins");
+    assert!(
+        !bins.is_empty() && bins.split(',').all(|b| b.starts_with("Permission denied")),
+        "the hidden test's binary: {said}"
+    );
+    assert!(part("wrote").starts_with("false"), "{said}");
+    assert!(!text.contains(HIDDEN_MARKER));
+    assert!(
+        results["tests"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .any(|t| t["name"].as_str().unwrap().contains("hidden test") && t["status"] == "passed"),
+        "{text}"
+    );
+    eprintln!("gradescope with --sandbox user: the attack met {said}");
+    if user_build != build {
+        let _ = std::fs::remove_dir_all(&user_build);
+    }
+}
+
+/// Whether every directory down to `path` is searchable by other users.
+fn open_to_others(path: &Path) -> bool {
+    use std::os::unix::fs::PermissionsExt;
+    path.canonicalize().is_ok_and(|p| {
+        p.ancestors()
+            .all(|a| std::fs::metadata(a).is_ok_and(|m| m.permissions().mode() & 0o001 != 0))
+    })
 }
 
 /// GitHub Classroom's workflow, its commands run as its steps would in a student's
@@ -829,7 +932,7 @@ fn the_classroom_workflow_grades_the_students_repository() {
         hidden: None,
         timeout: 5,
         settings: Settings::default(),
-        unsandboxed: false,
+        sandbox: Some(Level::Namespaces),
     };
     autograder::package::write(&root(), &m, Platform::Classroom, &options, &repo).unwrap();
     let git = |args: &[&str]| {

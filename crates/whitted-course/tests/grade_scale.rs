@@ -20,6 +20,7 @@ use std::path::PathBuf;
 use std::time::Duration;
 
 use class::{copy, index, manifest, mutant_body, mutants, root, set_body};
+use whitted_course::grade::sandbox::Level;
 use whitted_course::grade::{self, Grade};
 use whitted_course::handout;
 
@@ -89,6 +90,7 @@ fn a_class_of_a_hundred_is_graded_and_timed() {
         sandbox: Some(grade::SandboxSetup {
             runner: PathBuf::from(env!("CARGO_BIN_EXE_whitted")),
             worker: 0,
+            level: Level::Namespaces,
         }),
         render: false,
     };

@@ -25,6 +25,7 @@ use std::io::Write;
 use std::path::{Path, PathBuf};
 
 use super::{Platform, Settings};
+use crate::grade::sandbox::Level;
 use crate::manifest::Manifest;
 use crate::{ToolError, files};
 
@@ -42,9 +43,10 @@ pub struct Options {
     pub timeout: u64,
     /// How results are shown.
     pub settings: Settings,
-    /// Grade without the sandbox: for a platform whose container cannot make namespaces,
-    /// the container then being the only sandbox.
-    pub unsandboxed: bool,
+    /// The sandbox every grading of the package uses ([`Level::User`] for a platform whose
+    /// container makes no namespace; `setup.sh` then closes the project to other users);
+    /// `None` grades without one, the container then being the only sandbox.
+    pub sandbox: Option<Level>,
 }
 
 /// A file of a package: its path in the package, its text, whether it is executable.
@@ -81,8 +83,10 @@ fn prebuild_args(options: &Options) -> String {
     if options.settings.leaderboard {
         a += " --leaderboard";
     }
-    if options.unsandboxed {
-        a += " --unsandboxed";
+    match options.sandbox {
+        Some(Level::Namespaces) => {}
+        Some(Level::User) => a += " --sandbox user",
+        None => a += " --unsandboxed",
     }
     a
 }
@@ -149,13 +153,18 @@ else
   (cd "$SRC/whitted" && cargo build --release --locked --bin whitted)
 fi
 WHITTED="${{WHITTED_BIN:-$SRC/whitted/target/release/whitted}}"
-echo "setup: building the dependencies and the instructor's code once"
+{close}echo "setup: building the dependencies and the instructor's code once"
 "$WHITTED" autograder prebuild --root "$SRC/whitted" --target-dir "${{WHITTED_BUILD_DIR:-$ROOT/build}}"{hidden}{args}
 "#,
         platform = platform.name(),
         rust = rust_version(),
         nextest = NEXTEST_VERSION,
         args = prebuild_args(options),
+        close = if options.sandbox == Some(Level::User) {
+            "# the tests run as a user of their own: the project and the hidden tests are closed to it\nchmod 0700 \"$SRC/whitted\"\n[ -d \"$SRC/hidden\" ] && chmod 0700 \"$SRC/hidden\"\n"
+        } else {
+            ""
+        },
     )
 }
 

@@ -91,6 +91,8 @@ pub struct SandboxSetup {
     pub runner: PathBuf,
     /// The worker's number: as root, its tests run as user [`sandbox::FIRST_UID`] + this.
     pub worker: usize,
+    /// Namespaces (bubblewrap), or a user of its own only.
+    pub level: sandbox::Level,
 }
 
 impl Default for GradeSetup {
@@ -283,11 +285,13 @@ pub fn grade(
     // before anything is copied or built: without its sandbox, grading does not start
     let sandbox = match &options.sandbox {
         Some(s) => Some(
-            sandbox::Sandbox::probe(&s.runner, s.worker, run_reads(&project)).map_err(|why| {
-                ToolError::Usage(format!(
-                    "the sandbox cannot be set up: {why}; --unsandboxed grades without one, the student's code then running with your rights"
-                ))
-            })?,
+            sandbox::Sandbox::probe(&s.runner, s.worker, run_reads(&project), s.level).map_err(
+                |why| {
+                    ToolError::Usage(format!(
+                        "the sandbox cannot be set up: {why}; as root, --sandbox user runs the tests as a user of their own without namespaces, and --unsandboxed with your rights"
+                    ))
+                },
+            )?,
         ),
         None => None,
     };
@@ -300,10 +304,10 @@ pub fn grade(
     std::fs::create_dir_all(&target_dir).map_err(|e| ToolError::io(&target_dir, e))?;
     let wrapper = sandbox
         .as_ref()
-        .map(|s| s.build_wrapper(&project, &target_dir));
+        .and_then(|s| s.build_wrapper(&project, &target_dir));
     let mut notes: BTreeMap<usize, String> = BTreeMap::new();
     // without the sandbox, a body that reads files at compile time is not compiled at all
-    let screen = sandbox.is_none();
+    let screen = wrapper.is_none();
     let mut files = splice::splice(root, manifest, submission, &chapters, screen, &mut notes)?;
     // the student's crate compiles while no hidden test is in the copy, so that a body cannot
     // include one; the hidden targets are added and built after it
@@ -372,6 +376,12 @@ pub fn grade(
         }
     }
     let targets: Vec<String> = public.iter().chain(&hidden).cloned().collect();
+    splice::seal_hidden(&target_dir)?;
+    if let Some(s) = &sandbox {
+        let mut secrets = vec![root];
+        secrets.extend(options.hidden.as_deref());
+        s.protect(&secrets, &target_dir, &project)?;
+    }
     timings.build = built.elapsed();
     let ran = Instant::now();
     let tests = if whole.iter().all(|w| w.starts_with("the hidden tests")) {
@@ -390,6 +400,9 @@ pub fn grade(
     // the hidden tests' sources and binaries leave the copy before anything else is built
     // in it, whether the run went well or not
     splice::remove_hidden(&project, &target_dir)?;
+    if let Some(s) = &sandbox {
+        s.reopen(&project)?;
+    }
     let tests = tests?;
     let render = (options.render && whole.is_empty()).then(|| {
         let last = chapters

@@ -89,9 +89,7 @@ pub(super) fn measure(
         Some(s) => {
             let mut policy = s.policy.clone();
             policy.read.push(reference.clone());
-            let mut c = Command::new(&policy.bwrap);
-            c.args(policy.command(exe, project)).env_clear();
-            c
+            policy.command(exe, project)
         }
         None => Command::new(exe),
     };

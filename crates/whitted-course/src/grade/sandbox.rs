@@ -74,9 +74,25 @@ impl Default for Limits {
     }
 }
 
+/// How much of the machine the student's code is kept from.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize, clap::ValueEnum)]
+pub enum Level {
+    /// bubblewrap's namespaces: the build and the tests see only what they are shown, and the
+    /// tests have no network.
+    Namespaces,
+    /// Where no namespace can be made (a platform's container), as root: the tests run as a
+    /// user of their own with the limits, and what they must not read is closed to other
+    /// users ([`Sandbox::protect`]); the build is not sandboxed, so a body that would read
+    /// files at compile time is not compiled. The tests keep the network and the machine's
+    /// shared `/tmp`.
+    User,
+}
+
 /// How the tests of one grading are sandboxed: what [`run_test`] reads from [`POLICY_VAR`].
 #[derive(Clone, Debug, PartialEq, Eq, Serialize, Deserialize)]
 pub struct Policy {
+    /// Namespaces, or a user of its own only.
+    pub level: Level,
     /// The bubblewrap program.
     pub bwrap: PathBuf,
     /// The user id to drop to inside the sandbox (when the grader is root); `None` runs as
@@ -180,10 +196,38 @@ fn unshare(args: &mut Vec<OsString>, root: bool) {
 }
 
 impl Policy {
-    /// The bubblewrap arguments and the command that run `bin ARGS` in `cwd` under this
-    /// policy.
+    /// The command that runs `bin` in `cwd` under this policy, the test's own arguments to
+    /// follow: with an empty environment but for what a test needs, reading no input.
     #[must_use]
-    pub fn command(&self, bin: &Path, cwd: &Path) -> Vec<OsString> {
+    pub fn command(&self, bin: &Path, cwd: &Path) -> Command {
+        let inner = self.inner(bin);
+        let mut command = match self.level {
+            Level::Namespaces => {
+                let mut c = Command::new(&self.bwrap);
+                c.args(self.namespaces(bin, cwd)).args(&inner);
+                c
+            }
+            Level::User => {
+                let mut c = Command::new(&inner[0]);
+                c.args(&inner[1..]);
+                c
+            }
+        };
+        command
+            .env_clear()
+            .envs([
+                ("PATH", "/usr/bin:/bin"),
+                ("HOME", "/tmp"),
+                ("TMPDIR", "/tmp"),
+                ("RUST_BACKTRACE", "0"),
+                ("NO_COLOR", "1"),
+            ])
+            .stdin(Stdio::null());
+        command
+    }
+
+    /// bubblewrap's arguments, up to its `--`: the new root and namespaces.
+    fn namespaces(&self, bin: &Path, cwd: &Path) -> Vec<OsString> {
         let mut args = Vec::new();
         unshare(&mut args, self.uid.is_some());
         system(&mut args);
@@ -209,6 +253,13 @@ impl Policy {
         }
         push_path(&mut args, "--chdir", cwd);
         args.push("--".into());
+        args
+    }
+
+    /// The user and the limits, then `bin`: `setpriv` to the policy's user (when there is
+    /// one) without capabilities, `prlimit` with the limits.
+    fn inner(&self, bin: &Path) -> Vec<OsString> {
+        let mut args: Vec<OsString> = Vec::new();
         if let Some(uid) = self.uid {
             let id = uid.to_string();
             args.push("setpriv".into());
@@ -240,13 +291,47 @@ impl Policy {
     }
 }
 
+/// Whether a user other than the owner can reach `path`: every directory from the root to it
+/// searchable by others (and the path itself readable, when it is a file).
+fn open_to_others(path: &Path) -> bool {
+    use std::os::unix::fs::PermissionsExt;
+    let Ok(path) = path.canonicalize() else {
+        return false;
+    };
+    path.ancestors().all(|a| {
+        std::fs::metadata(a).is_ok_and(|m| {
+            let mode = m.permissions().mode();
+            if m.is_dir() {
+                mode & 0o001 != 0
+            } else {
+                mode & 0o004 != 0
+            }
+        })
+    })
+}
+
 impl Sandbox {
     /// Finds bubblewrap and tries a sandbox like the tests' with `true` in it; `Err` says in
     /// one line why there can be none. `runner` is the `whitted` program, `worker` the
     /// worker's number (its user id when the grader is root), `read` what the tests read.
-    pub fn probe(runner: &Path, worker: usize, read: Vec<PathBuf>) -> Result<Self, String> {
-        let bwrap = on_path("bwrap")
-            .ok_or("bubblewrap (bwrap) is not installed: apt-get install bubblewrap".to_string())?;
+    pub fn probe(
+        runner: &Path,
+        worker: usize,
+        read: Vec<PathBuf>,
+        level: Level,
+    ) -> Result<Self, String> {
+        let bwrap = match level {
+            Level::Namespaces => on_path("bwrap").ok_or(
+                "bubblewrap (bwrap) is not installed: apt-get install bubblewrap".to_string(),
+            )?,
+            Level::User if !is_root() => {
+                return Err(
+                    "--sandbox user runs the tests as a user of their own, which only root can"
+                        .into(),
+                );
+            }
+            Level::User => PathBuf::new(),
+        };
         for tool in ["setpriv", "prlimit"] {
             if on_path(tool).is_none() {
                 return Err(format!("{tool} (util-linux) is not installed"));
@@ -254,23 +339,31 @@ impl Sandbox {
         }
         let uid = is_root().then(|| FIRST_UID + u32::try_from(worker).unwrap_or(0));
         let policy = Policy {
-            bwrap: bwrap.clone(),
+            level,
+            bwrap,
             uid,
             limits: Limits::default(),
             read,
         };
         let truth = on_path("true").ok_or("no `true` program on the PATH".to_string())?;
-        let out = Command::new(&bwrap)
-            .args(policy.command(&truth, Path::new("/tmp")))
-            .env_clear()
-            .env("PATH", "/usr/bin:/bin")
-            .stdin(Stdio::null())
+        let out = policy
+            .command(&truth, Path::new("/tmp"))
             .output()
-            .map_err(|e| format!("cannot run {}: {e}", bwrap.display()))?;
+            .map_err(|e| format!("cannot start the sandbox: {e}"))?;
         if !out.status.success() {
             let why = String::from_utf8_lossy(&out.stderr);
             return Err(format!(
-                "bubblewrap cannot make a sandbox here (user namespaces off?): {}",
+                "{} cannot make a sandbox here{}: {}",
+                if level == Level::User {
+                    "setpriv"
+                } else {
+                    "bubblewrap"
+                },
+                if level == Level::User {
+                    ""
+                } else {
+                    " (user namespaces off?)"
+                },
                 why.lines().next().unwrap_or("it failed").trim()
             ));
         }
@@ -285,8 +378,12 @@ impl Sandbox {
     /// The wrapper cargo builds in: the system (`/usr`, of `/etc` what the linker needs), the
     /// toolchain and the registry (never cargo's credentials) read-only, the graded copy `project` read-only, the build directory `target_dir` writable, a private
     /// `/tmp`, no network; its environment only what cargo needs.
+    /// `None` at [`Level::User`], whose build is not sandboxed.
     #[must_use]
-    pub fn build_wrapper(&self, project: &Path, target_dir: &Path) -> Wrapper {
+    pub fn build_wrapper(&self, project: &Path, target_dir: &Path) -> Option<Wrapper> {
+        if self.policy.level == Level::User {
+            return None;
+        }
         let mut args = Vec::new();
         unshare(&mut args, self.policy.uid.is_some());
         system(&mut args);
@@ -365,11 +462,56 @@ impl Sandbox {
                 env.push((k, v));
             }
         }
-        Wrapper {
+        Some(Wrapper {
             program: self.policy.bwrap.clone().into_os_string(),
             args,
             env,
+        })
+    }
+
+    /// At [`Level::User`], before the tests run: refuses when one of `secrets` (the
+    /// instructor's project, the hidden tests) is open to other users, or when the build
+    /// directory is not (the tests' user must reach its binaries), and closes the graded copy
+    /// (which holds the hidden tests while they run) to other users until [`Sandbox::reopen`].
+    /// Nothing at
+    /// [`Level::Namespaces`], whose tests see none of these.
+    pub fn protect(
+        &self,
+        secrets: &[&Path],
+        target_dir: &Path,
+        project: &Path,
+    ) -> Result<(), ToolError> {
+        use std::os::unix::fs::PermissionsExt;
+        if self.policy.level != Level::User {
+            return Ok(());
         }
+        for s in secrets {
+            if open_to_others(s) {
+                return Err(ToolError::Usage(format!(
+                    "--sandbox user: {} is open to other users, and the tests would read it: close it (chmod o-rwx)",
+                    s.display()
+                )));
+            }
+        }
+        if !open_to_others(target_dir) {
+            return Err(ToolError::Usage(format!(
+                "--sandbox user: the build directory {} is closed to other users, and the tests run as one: every directory above it must be searchable (o+x)",
+                target_dir.display()
+            )));
+        }
+        std::fs::set_permissions(project, std::fs::Permissions::from_mode(0o700))
+            .map_err(|e| ToolError::io(project, e))
+    }
+
+    /// Opens the graded copy again once the hidden tests have left it (the leaderboard's
+    /// render reads its scenes and figures as the tests' user).
+    pub fn reopen(&self, project: &Path) -> Result<(), ToolError> {
+        use std::os::unix::fs::PermissionsExt;
+        if self.policy.level != Level::User {
+            return Ok(());
+        }
+        std::fs::set_permissions(project, std::fs::Permissions::from_mode(0o755))
+            .map_err(|e| ToolError::io(project, e))
     }
 
     /// The environment nextest runs with: its target runner is [`RUNNER_COMMAND`], which
@@ -462,24 +604,15 @@ pub fn run_test(command: &[OsString]) -> ExitCode {
     };
     let bin = Path::new(bin);
     let cwd = std::env::current_dir().unwrap_or_else(|_| PathBuf::from("/tmp"));
-    let mut child = match Command::new(&policy.bwrap)
-        .args(policy.command(bin, &cwd))
+    let mut child = match policy
+        .command(bin, &cwd)
         .args(args)
-        .env_clear()
-        .envs([
-            ("PATH", "/usr/bin:/bin"),
-            ("HOME", "/tmp"),
-            ("TMPDIR", "/tmp"),
-            ("RUST_BACKTRACE", "0"),
-            ("NO_COLOR", "1"),
-        ])
-        .stdin(Stdio::null())
         .stdout(Stdio::piped())
         .stderr(Stdio::piped())
         .spawn()
     {
         Ok(c) => c,
-        Err(e) => return fail(format!("cannot run {}: {e}", policy.bwrap.display())),
+        Err(e) => return fail(format!("cannot start the sandbox: {e}")),
     };
     let cap = policy.limits.output;
     let (out, err) = (child.stdout.take(), child.stderr.take());
@@ -495,10 +628,19 @@ pub fn run_test(command: &[OsString]) -> ExitCode {
         Ok(s) => s,
         Err(e) => return fail(format!("waiting for the sandbox: {e}")),
     };
+    // killed by signal N (bubblewrap ends with 128 + N then): end the same way
+    let signal = {
+        use std::os::unix::process::ExitStatusExt;
+        status.signal().or_else(|| {
+            status
+                .code()
+                .filter(|c| (129..=128 + 31).contains(c))
+                .map(|c| c - 128)
+        })
+    };
     let code = status.code().unwrap_or(1);
-    // bubblewrap ends with 128 + N when its command was killed by signal N: end the same way
-    if (129..=128 + 31).contains(&code) {
-        let signal = (code - 128).to_string();
+    if let Some(signal) = signal {
+        let signal = signal.to_string();
         let _ = Command::new("kill")
             .args([OsStr::new("-s"), OsStr::new(&signal)])
             .arg(std::process::id().to_string())

@@ -223,6 +223,30 @@ pub(crate) fn hidden_files(dir: &Path) -> Result<Vec<PathBuf>, ToolError> {
     Ok(files)
 }
 
+/// Makes the hidden tests' binaries in the build directory executable and nothing else for
+/// other users: a test running as one (the user sandbox) cannot read their names or
+/// messages out of them.
+pub(super) fn seal_hidden(target_dir: &Path) -> Result<(), ToolError> {
+    use std::os::unix::fs::PermissionsExt;
+    let deps = target_dir.join("debug").join("deps");
+    let Ok(entries) = std::fs::read_dir(&deps) else {
+        return Ok(());
+    };
+    for e in entries.flatten() {
+        if e.file_name().to_string_lossy().starts_with("hidden_") {
+            let path = e.path();
+            let mode = if path.extension().is_none() {
+                0o711
+            } else {
+                0o600
+            };
+            std::fs::set_permissions(&path, std::fs::Permissions::from_mode(mode))
+                .map_err(|err| ToolError::io(&path, err))?;
+        }
+    }
+    Ok(())
+}
+
 /// Copies each `*.rs` of the hidden directory into the copy's `tests/` as `hidden_NAME.rs`;
 /// returns the test targets added.
 pub(super) fn add_hidden(project: &Path, hidden: Option<&Path>) -> Result<Vec<String>, ToolError> {
