@@ -280,15 +280,12 @@ fn a_render_that_meets_a_missing_exercise_ends_in_one_line() {
             use rayon::prelude::*;
             (0..4096u32).into_par_iter().for_each(|pixel| {
                 if pixel == 2048 {
-                    todo!(
-                        "{}",
-                        whitted_syllabus::todo::message(
-                            "sphere_discriminant",
-                            "2.7",
-                            "The sphere's discriminant",
-                            "chapters/ch02_generic_objects/README.md"
-                        )
-                    );
+                    todo!("{}", whitted_syllabus::todo::message(
+                        "sphere_discriminant",
+                        "2.7",
+                        "The sphere's discriminant",
+                        "chapters/ch02_generic_objects/README.md"
+                    ));
                 }
             });
             println!("compare: never reached");
