@@ -11,16 +11,19 @@
 //! - **Run.** nextest stays outside and writes its report; each test binary it starts goes
 //!   through [`run_test`] (nextest's target runner, `CARGO_TARGET_<TRIPLE>_RUNNER`): a new
 //!   root that holds only the system's libraries, the test binary read-only, the files the
-//!   tests read and a small private `/tmp`; no network and no other namespace shared
-//!   (`--unshare-all`); an empty environment; an unprivileged user (as root, a user id of its
-//!   own per worker, so that its limit on processes counts only its own); limits on memory,
+//!   tests read and a small private `/tmp`; namespaces of its own (network, processes, IPC,
+//!   host name, and users when the grader is not root); an empty environment; an
+//!   unprivileged user (as root, a user id of its own per worker, so that its limit on
+//!   processes counts only its own); limits on memory,
 //!   processes, file size and open files (`prlimit`); and its output cut at a size, so a test
 //!   that prints megabytes costs the grader nothing. nextest's time limit stops a test and,
 //!   with it, the sandbox (`--die-with-parent`, and the PID namespace ends with its first
 //!   process).
 //!
 //! When bubblewrap is missing or cannot make namespaces, [`Sandbox::probe`] says why in one
-//! line; the grader then refuses unless told to run unsandboxed.
+//! line; the grader then refuses unless told to grade at [`Level::User`] (as root, in a
+//! container that makes no namespace: the same user, limits and environment without the new
+//! root, the secrets closed by their permissions) or unsandboxed.
 //!
 //! Course book: [The instructor's guide](../../../../../docs/book/instructor-guide.html) (`docs/src/instructor-guide.md`).
 
