@@ -98,8 +98,9 @@ const COMPILE_TIME_READS: [&str; 5] = [
     "option_env",
 ];
 
-/// What in `body` would read a file or the environment when it compiles: a macro of
-/// [`COMPILE_TIME_READS`] (by any path, `std::include_str!` too) or a `#[path = …]`
+/// What in `body` would read a file or the environment when it compiles: `include!`,
+/// `include_str!`, `include_bytes!`, `env!` or `option_env!` (by any path,
+/// `std::include_str!` too) or a `#[path = …]`
 /// attribute, named as the body writes it; or that its delimiters do not balance (a body that
 /// closes its function could add items of its own). `None` when it reads nothing. A
 /// submission cannot make such a macro up otherwise: it has no procedural macro of its own,
