@@ -181,14 +181,8 @@ struct GradeArgs {
     /// Keep each graded copy (its path is printed).
     #[arg(long)]
     keep: bool,
-    /// The sandbox: bubblewrap's namespaces, or (as root, where no namespace can be made)
-    /// the tests as a user of their own with limits, your project closed to other users.
-    #[arg(long, value_enum, value_name = "LEVEL", default_value = "namespaces")]
-    sandbox: SandboxLevel,
-    /// Build and run the student's code without the sandbox, with your rights: only for work
-    /// you trust.
-    #[arg(long, conflicts_with = "sandbox")]
-    unsandboxed: bool,
+    #[command(flatten)]
+    sandbox: SandboxArgs,
     /// The instructor's project, whose tests and manifest grade [default: the nearest
     /// Cargo.toml at or above the current directory].
     #[arg(long, value_name = "DIR")]
@@ -208,14 +202,10 @@ struct AutograderArgs {
     out: Option<PathBuf>,
     #[command(flatten)]
     grading: PackageGrading,
-    /// The sandbox the package grades in: bubblewrap's namespaces, or, for a platform whose
-    /// container makes none (the grader then says so in each results file), the tests as a
-    /// user of their own with limits (setup.sh closes the project to other users).
-    #[arg(long, value_enum, value_name = "LEVEL", default_value = "namespaces")]
-    sandbox: SandboxLevel,
-    /// Make the package grade without any sandbox, the container being the only one.
-    #[arg(long, conflicts_with = "sandbox")]
-    unsandboxed: bool,
+    /// The sandbox of the package's gradings (`--sandbox user` for a platform whose
+    /// container makes no namespace: its setup.sh closes the project to other users).
+    #[command(flatten)]
+    sandbox: SandboxArgs,
     /// The instructor's project [default: the nearest Cargo.toml at or above the current
     /// directory].
     #[arg(long, value_name = "DIR")]
@@ -305,13 +295,28 @@ struct PackageBuild {
     /// project].
     #[arg(long, value_name = "DIR")]
     target_dir: Option<PathBuf>,
+    #[command(flatten)]
+    sandbox: SandboxArgs,
+}
+
+/// The sandbox of a grading.
+#[derive(clap::Args, Clone, Copy)]
+struct SandboxArgs {
     /// The sandbox: bubblewrap's namespaces, or (as root, where no namespace can be made)
     /// the tests as a user of their own with limits, the project closed to other users.
     #[arg(long, value_enum, value_name = "LEVEL", default_value = "namespaces")]
     sandbox: SandboxLevel,
-    /// Build and run the student's code without the sandbox, with this program's rights.
+    /// Build and run the student's code without any sandbox, with this program's rights:
+    /// only for work you trust.
     #[arg(long, conflicts_with = "sandbox")]
     unsandboxed: bool,
+}
+
+impl SandboxArgs {
+    /// The level asked for; `None` unsandboxed.
+    fn level(self) -> Option<SandboxLevel> {
+        (!self.unsandboxed).then_some(self.sandbox)
+    }
 }
 
 #[derive(clap::Args)]
@@ -440,7 +445,7 @@ fn run_autograder(args: AutograderArgs) -> Result<ExitCode, ToolError> {
             grading.hidden.clone(),
             grading.timeout,
             target,
-            sandbox_setup(build.unsandboxed, build.sandbox)?,
+            sandbox_setup(build.sandbox.level())?,
             grading.leaderboard,
         );
         Ok((root, manifest, setup))
@@ -483,7 +488,7 @@ fn run_autograder(args: AutograderArgs) -> Result<ExitCode, ToolError> {
                 hidden: args.grading.hidden.clone(),
                 timeout: args.grading.timeout,
                 settings: args.grading.settings(),
-                sandbox: (!args.unsandboxed).then_some(args.sandbox),
+                sandbox: args.sandbox.level(),
             };
             if let Some(h) = &options.hidden
                 && !h.is_dir()
@@ -509,14 +514,12 @@ fn run_autograder(args: AutograderArgs) -> Result<ExitCode, ToolError> {
     }
 }
 
-/// The sandbox of a grading: this program runs each test binary; none with `--unsandboxed`.
-fn sandbox_setup(
-    unsandboxed: bool,
-    level: SandboxLevel,
-) -> Result<Option<grade::SandboxSetup>, ToolError> {
-    if unsandboxed {
+/// The sandbox of a grading at `level` (none when `None`): this program runs each test
+/// binary.
+fn sandbox_setup(level: Option<SandboxLevel>) -> Result<Option<grade::SandboxSetup>, ToolError> {
+    let Some(level) = level else {
         return Ok(None);
-    }
+    };
     let runner = std::env::current_exe()
         .map_err(|e| ToolError::Usage(format!("cannot find this program's path: {e}")))?;
     Ok(Some(grade::SandboxSetup {
@@ -566,7 +569,7 @@ fn run_grade(args: &GradeArgs) -> Result<ExitCode, ToolError> {
                 .unwrap_or_else(|| root.join("target").join("grade")),
         ),
         keep: args.keep,
-        sandbox: sandbox_setup(args.unsandboxed, args.sandbox)?,
+        sandbox: sandbox_setup(args.sandbox.level())?,
         render: false,
     };
     let class = match (&args.class, &args.out) {

@@ -85,9 +85,8 @@ pub enum Level {
     Namespaces,
     /// Where no namespace can be made (a platform's container), as root: the tests run as a
     /// user of their own with the limits, and what they must not read is closed to other
-    /// users ([`Sandbox::protect`]); the build is not sandboxed, so a body that would read
-    /// files at compile time is not compiled. The tests keep the network and the machine's
-    /// shared `/tmp`.
+    /// users; the build is not sandboxed, so a body that would read files at compile time
+    /// is not compiled. The tests keep the network and the machine's shared `/tmp`.
     User,
 }
 
