@@ -46,17 +46,21 @@
 //!   which a handout holds instead of this one);
 //! - [`readme`] writes each chapter README's exercises from the manifest;
 //! - [`grade`] grades a student's copy, or a class, with the instructor's tests (public and
-//!   hidden), each test in its own process under a time limit; [`report`] writes the table,
-//!   Gradescope's `results.json`, JUnit XML and gradebook CSV;
+//!   hidden), each test in its own process under a time limit, the student's code built and
+//!   run in a sandbox; [`report`] writes the table, Gradescope's `results.json`, JUnit XML
+//!   and gradebook CSV;
+//! - [`autograder`] fits grading to Gradescope, GitHub Classroom, PrairieLearn and CodeGrade:
+//!   the package each one takes, and each one's results file from one report;
 //! - [`figures`] renders the course book's figures and compares them; [`book`] checks the
 //!   built book.
 //!
 //! The binary `whitted` exposes them: `whitted formulas [list | prove | deps [--write] |
 //! readmes]` ([`formulas`]), `whitted handout`, `whitted learn [list | hint | watch]`,
-//! `whitted grade`, `whitted figures [--check]`, `whitted book`.
+//! `whitted grade`, `whitted autograder`, `whitted figures [--check]`, `whitted book`.
 //!
 //! Course book: [The instructor's guide](../../../docs/book/instructor-guide.html) (`docs/src/instructor-guide.md`).
 
+pub mod autograder;
 pub mod book;
 pub mod deps;
 pub mod figures;

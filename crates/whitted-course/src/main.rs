@@ -14,6 +14,9 @@
 //! whitted grade [DIR] [--chapter N] [--hidden DIR] [--json F] [--junit F] [--csv F]
 //!                                                   a student's copy graded with the instructor's tests
 //! whitted grade --class DIR --out REPORTS           every submission of a class
+//! whitted autograder --platform P --out DIR         a grading platform's package (gradescope,
+//!                                                   classroom, prairielearn, codegrade)
+//! whitted autograder grade|prebuild|check           what those packages run
 //! whitted figures [--check]                         the book's figures, rendered or compared
 //! whitted book                                      the book, built and checked
 //! ```
@@ -29,8 +32,10 @@ use std::process::ExitCode;
 use std::time::Duration;
 
 use clap::{Parser, Subcommand};
+use whitted_course::autograder::{self, Platform};
 use whitted_course::cli::{find_root, read_manifest};
 use whitted_course::grade::command::{Class, Reports};
+use whitted_course::grade::sandbox::Level as SandboxLevel;
 use whitted_course::prove::PoisonedRuns;
 use whitted_course::{ToolError, book, figures, formulas, grade, handout, syllabus};
 
@@ -78,6 +83,17 @@ enum Command {
     /// endless loop costs only its own tests. An exercise's points (chapters/formulas.toml) are
     /// shared by its tests. Exit status 0 once graded, whatever the score; 2 on an error.
     Grade(GradeArgs),
+    /// Writes what a grading platform takes (Gradescope's zip, PrairieLearn's image and entry
+    /// point, CodeGrade's scripts, GitHub Classroom's workflow) into --out; its subcommands are
+    /// what those packages run.
+    Autograder(AutograderArgs),
+    /// Runs a test binary in the grader's sandbox: nextest's target runner while grading.
+    #[command(name = "sandbox-run", hide = true)]
+    SandboxRun {
+        /// The test binary and its arguments.
+        #[arg(trailing_var_arg = true, allow_hyphen_values = true, required = true)]
+        command: Vec<std::ffi::OsString>,
+    },
     /// Renders the course book's figures (docs/figures.toml), or checks them with --check.
     ///
     /// Each figure is `BINARY ARGS -o docs/src/figures/FILE`, run from the project's root
@@ -165,10 +181,142 @@ struct GradeArgs {
     /// Keep each graded copy (its path is printed).
     #[arg(long)]
     keep: bool,
+    #[command(flatten)]
+    sandbox: SandboxArgs,
     /// The instructor's project, whose tests and manifest grade [default: the nearest
     /// Cargo.toml at or above the current directory].
     #[arg(long, value_name = "DIR")]
     root: Option<PathBuf>,
+}
+
+#[derive(clap::Args)]
+#[command(args_conflicts_with_subcommands = true)]
+struct AutograderArgs {
+    #[command(subcommand)]
+    what: Option<AutograderCommand>,
+    /// The platform.
+    #[arg(long, value_enum, required = true)]
+    platform: Option<Platform>,
+    /// The directory to write the package into.
+    #[arg(long, value_name = "DIR", required = true)]
+    out: Option<PathBuf>,
+    #[command(flatten)]
+    grading: PackageGrading,
+    /// The sandbox of the package's gradings (`--sandbox user` for a platform whose
+    /// container makes no namespace: its setup.sh closes the project to other users).
+    #[command(flatten)]
+    sandbox: SandboxArgs,
+    /// The instructor's project [default: the nearest Cargo.toml at or above the current
+    /// directory].
+    #[arg(long, value_name = "DIR")]
+    root: Option<PathBuf>,
+}
+
+/// How a package grades: the same for the package and for each grading it runs.
+#[derive(clap::Args, Clone)]
+struct PackageGrading {
+    /// The instructor's hidden tests: a directory of .rs test files.
+    #[arg(long, value_name = "DIR")]
+    hidden: Option<PathBuf>,
+    /// Grade only this chapter's exercises (1-5).
+    #[arg(long, value_name = "N",
+          value_parser = clap::value_parser!(u8).range(i64::from(syllabus::FIRST)..=i64::from(syllabus::LAST)))]
+    chapter: Option<u8>,
+    /// The time limit of one test, in seconds.
+    #[arg(long, value_name = "SECONDS", default_value_t = 20,
+          value_parser = clap::value_parser!(u64).range(1..=3600))]
+    timeout: u64,
+    /// When students see the hidden tests' points (Gradescope's visibility).
+    #[arg(long, value_name = "WHEN", default_value = "after_due_date",
+          value_parser = ["hidden", "after_due_date", "after_published", "visible"])]
+    hidden_visibility: String,
+    /// Post the leaderboard: the render's M rays/s and its error against the reference.
+    #[arg(long)]
+    leaderboard: bool,
+}
+
+impl PackageGrading {
+    fn settings(&self) -> autograder::Settings {
+        autograder::Settings {
+            hidden_visibility: self.hidden_visibility.clone(),
+            leaderboard: self.leaderboard,
+        }
+    }
+}
+
+#[derive(Subcommand)]
+enum AutograderCommand {
+    /// Grades one submission for a platform and writes its results file, always: a
+    /// submission that cannot be graded gets one that says why.
+    Grade {
+        /// The platform whose results file is written.
+        #[arg(long, value_enum)]
+        platform: Platform,
+        /// What the platform handed over: a copy of the handout, a folder holding one, or
+        /// the exercise files uploaded one by one.
+        #[arg(long, value_name = "DIR")]
+        submission: PathBuf,
+        /// Where the results go.
+        #[arg(long, value_name = "FILE")]
+        results: PathBuf,
+        #[command(flatten)]
+        grading: PackageGrading,
+        #[command(flatten)]
+        build: PackageBuild,
+    },
+    /// Builds once, in --target-dir, what every grading reuses (a handout whose every
+    /// exercise is todo!(), built and run in the sandbox).
+    Prebuild {
+        #[command(flatten)]
+        grading: PackageGrading,
+        #[command(flatten)]
+        build: PackageBuild,
+    },
+    /// Exit status 0 when the exercise (its name or id) got all its points in a
+    /// results.json written for Gradescope or Classroom, 1 when not.
+    Check {
+        /// The results file.
+        #[arg(long, value_name = "FILE")]
+        results: PathBuf,
+        /// The exercise.
+        #[arg(long, value_name = "NAME")]
+        exercise: String,
+    },
+}
+
+/// Where a package's gradings build, and from which project.
+#[derive(clap::Args, Clone)]
+struct PackageBuild {
+    /// The instructor's project [default: the nearest Cargo.toml at or above the current
+    /// directory].
+    #[arg(long, value_name = "DIR")]
+    root: Option<PathBuf>,
+    /// Where cargo builds, kept from one grading to the next [default: target/grade in the
+    /// project].
+    #[arg(long, value_name = "DIR")]
+    target_dir: Option<PathBuf>,
+    #[command(flatten)]
+    sandbox: SandboxArgs,
+}
+
+/// The sandbox of a grading.
+#[derive(clap::Args, Clone, Copy)]
+struct SandboxArgs {
+    /// The sandbox: bubblewrap's namespaces, or (as root, where no namespace can be made)
+    /// the tests as a user of their own with limits, the project closed to other users.
+    #[arg(long, value_enum, value_name = "LEVEL", default_value = "namespaces")]
+    sandbox: SandboxLevel,
+    /// Build and run the student's code without any sandbox, with this program's rights:
+    /// only for work you trust.
+    #[arg(long, conflicts_with = "sandbox")]
+    unsandboxed: bool,
+}
+
+impl SandboxArgs {
+    /// The level asked for; `None` unsandboxed.
+    fn level(self) -> Option<SandboxLevel> {
+        (!self.unsandboxed).then_some(self.sandbox)
+    }
 }
 
 #[derive(clap::Args)]
@@ -267,6 +415,8 @@ fn main() -> ExitCode {
         Command::Handout(h) => run_handout(&h),
         Command::Learn(l) => whitted_course::cli::learn(&l),
         Command::Grade(g) => run_grade(&g),
+        Command::Autograder(a) => run_autograder(a),
+        Command::SandboxRun { command } => return grade::sandbox::run_test(&command),
         Command::Figures(f) => project(f.root.as_ref())
             .and_then(|root| figures::command(&root, f.check, f.only.as_deref())),
         Command::Book(b) => {
@@ -280,6 +430,103 @@ fn main() -> ExitCode {
             ExitCode::from(2)
         }
     }
+}
+
+fn run_autograder(args: AutograderArgs) -> Result<ExitCode, ToolError> {
+    let setup = |grading: &PackageGrading, build: &PackageBuild| -> Result<_, ToolError> {
+        let root = project(build.root.as_ref())?;
+        let manifest = read_manifest(&root)?;
+        let target = build
+            .target_dir
+            .clone()
+            .unwrap_or_else(|| root.join("target").join("grade"));
+        let setup = autograder::run::setup(
+            grading.chapter,
+            grading.hidden.clone(),
+            grading.timeout,
+            target,
+            sandbox_setup(build.sandbox.level())?,
+            grading.leaderboard,
+        );
+        Ok((root, manifest, setup))
+    };
+    match args.what {
+        Some(AutograderCommand::Grade {
+            platform,
+            submission,
+            results,
+            grading,
+            build,
+        }) => {
+            let (root, manifest, setup) = setup(&grading, &build)?;
+            let s = autograder::run::Submission {
+                platform,
+                dir: &submission,
+                results: &results,
+                settings: grading.settings(),
+            };
+            autograder::run::grade_submission(&root, &manifest, &setup, &s)?;
+            Ok(ExitCode::SUCCESS)
+        }
+        Some(AutograderCommand::Prebuild { grading, build }) => {
+            let (root, manifest, setup) = setup(&grading, &build)?;
+            autograder::run::prebuild(&root, &manifest, &setup)
+        }
+        Some(AutograderCommand::Check { results, exercise }) => {
+            autograder::run::check(&results, &exercise)
+        }
+        None => {
+            let (Some(platform), Some(out)) = (args.platform, args.out) else {
+                return Err(ToolError::Usage(
+                    "whitted autograder needs --platform and --out".into(),
+                ));
+            };
+            let root = project(args.root.as_ref())?;
+            let manifest = read_manifest(&root)?;
+            let options = autograder::package::Options {
+                chapter: args.grading.chapter,
+                hidden: args.grading.hidden.clone(),
+                timeout: args.grading.timeout,
+                settings: args.grading.settings(),
+                sandbox: args.sandbox.level(),
+            };
+            if let Some(h) = &options.hidden
+                && !h.is_dir()
+            {
+                return Err(ToolError::Usage(format!(
+                    "--hidden {}: not a directory",
+                    h.display()
+                )));
+            }
+            let written = autograder::package::write(&root, &manifest, platform, &options, &out)?;
+            println!(
+                "{} package in {}: {}",
+                platform.name(),
+                out.display(),
+                written
+                    .iter()
+                    .map(|p| p.display().to_string())
+                    .collect::<Vec<_>>()
+                    .join(", ")
+            );
+            Ok(ExitCode::SUCCESS)
+        }
+    }
+}
+
+/// The sandbox of a grading at `level` (none when `None`): this program runs each test
+/// binary.
+fn sandbox_setup(level: Option<SandboxLevel>) -> Result<Option<grade::SandboxSetup>, ToolError> {
+    let Some(level) = level else {
+        return Ok(None);
+    };
+    let runner = std::env::current_exe()
+        .map_err(|e| ToolError::Usage(format!("cannot find this program's path: {e}")))?;
+    Ok(Some(grade::SandboxSetup {
+        runner,
+        worker: 0,
+        level,
+    }))
 }
 
 /// The project: `--root DIR`, or the nearest one at or above the current directory.
@@ -322,6 +569,8 @@ fn run_grade(args: &GradeArgs) -> Result<ExitCode, ToolError> {
                 .unwrap_or_else(|| root.join("target").join("grade")),
         ),
         keep: args.keep,
+        sandbox: sandbox_setup(args.sandbox.level())?,
+        render: false,
     };
     let class = match (&args.class, &args.out) {
         (Some(dir), Some(out)) => Some(Class {

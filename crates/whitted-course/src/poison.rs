@@ -218,6 +218,7 @@ pub fn build_tests(
         debug_info: false,
         locked: true,
         stderr: Stderr::Inherit,
+        wrapper: None,
     }
     .run()?;
     let exes: BTreeMap<String, PathBuf> = built

@@ -1,5 +1,6 @@
 //! The reports of `whitted grade`: a table per chapter for the terminal, Gradescope's
-//! `results.json`, JUnit XML, and gradebook CSV rows.
+//! `results.json` and JUnit XML (both written by the platforms' adapters of
+//! [`crate::autograder`], from its one report), and gradebook CSV rows.
 //!
 //! Every point is explained: each exercise's line gives its tests passed and, for each failed
 //! one, its first message and the formula it checks. Hidden tests show in the instructor's
@@ -9,6 +10,8 @@
 //!
 //! Course book: [The instructor's guide](../../../../docs/book/instructor-guide.html) (`docs/src/instructor-guide.md`).
 
+use super::autograder::codegrade::Audience;
+use super::autograder::{Report, Settings};
 use super::grade::{Grade, Status, TestResult};
 use super::manifest::Manifest;
 
@@ -90,136 +93,20 @@ pub fn table(grade: &Grade, manifest: &Manifest) -> String {
     out
 }
 
-/// Each test's share of its exercise's points.
-fn test_points(grade: &Grade, manifest: &Manifest, t: &TestResult) -> (f64, f64) {
-    let Some(e) = t.exercise else {
-        return (0.0, 0.0);
-    };
-    let total = grade.tests.iter().filter(|u| u.exercise == Some(e)).count();
-    let max = f64::from(manifest.entries[e].exercise.points) / total.max(1) as f64;
-    let score = if t.status == Status::Passed { max } else { 0.0 };
-    (score, max)
-}
-
-/// Gradescope's `results.json`: the total `score`, an `output` for the student, and one entry
-/// per test with `name`, `score`, `max_score`, `status`, `output` and `visibility`.
+/// Gradescope's `results.json` ([`crate::autograder::gradescope`]), shown with the default
+/// settings.
 #[must_use]
 pub fn gradescope(grade: &Grade, manifest: &Manifest) -> serde_json::Value {
-    let mut hidden_seen: std::collections::BTreeMap<usize, usize> = Default::default();
-    let mut tests = Vec::new();
-    for t in &grade.tests {
-        let (score, max) = test_points(grade, manifest, t);
-        let exercise = t.exercise.map(|e| &manifest.entries[e]);
-        let (name, output) = if t.hidden {
-            let n = hidden_seen
-                .entry(t.exercise.unwrap_or(usize::MAX))
-                .or_default();
-            *n += 1;
-            let id = exercise.map_or("-", |e| e.exercise.id.as_str());
-            (
-                format!("exercise {id}, hidden test {n}"),
-                t.status.word().to_string(),
-            )
-        } else {
-            let title = exercise.map_or(String::new(), |e| {
-                format!("{} {} ({}): ", e.exercise.id, e.exercise.title, e.formula)
-            });
-            let output = if t.status == Status::Passed {
-                String::new()
-            } else {
-                format!("{}: {}", t.status.word(), t.message)
-            };
-            (format!("{title}{}", t.name), output)
-        };
-        tests.push(serde_json::json!({
-            "name": name,
-            "score": round2(score),
-            "max_score": round2(max),
-            "status": if t.status == Status::Passed { "passed" } else { "failed" },
-            "output": output,
-            "visibility": "visible",
-        }));
-    }
-    let mut output = String::new();
-    for note in &grade.notes {
-        output += &format!("{note}\n");
-    }
-    for e in &grade.exercises {
-        if let Some(note) = &e.note {
-            output += &format!(
-                "exercise {}: {note}\n",
-                manifest.entries[e.entry].exercise.id
-            );
-        }
-    }
-    serde_json::json!({
-        "score": round2(grade.score()),
-        "output": output,
-        "tests": tests,
-    })
+    let report = Report::new(grade, manifest, &Settings::default());
+    crate::autograder::gradescope::results(&report)
 }
 
-fn round2(x: f64) -> f64 {
-    (x * 100.0).round() / 100.0
-}
-
-/// XML text with `& < > " '` escaped.
-fn xml(text: &str) -> String {
-    text.replace('&', "&amp;")
-        .replace('<', "&lt;")
-        .replace('>', "&gt;")
-        .replace('"', "&quot;")
-        .replace('\'', "&apos;")
-}
-
-/// JUnit XML: a test suite per chapter, a test case per test (named by its exercise), its
-/// failure with the message.
+/// The instructor's JUnit XML ([`crate::autograder::codegrade::junit`]): a test suite per
+/// chapter, a test case per test (named by its exercise), its failure with the message.
 #[must_use]
 pub fn junit(grade: &Grade, manifest: &Manifest) -> String {
-    let failures = grade
-        .tests
-        .iter()
-        .filter(|t| t.status != Status::Passed)
-        .count();
-    let mut out = format!(
-        "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<testsuites name=\"whitted grade {}\" tests=\"{}\" failures=\"{failures}\">\n",
-        xml(&grade.student),
-        grade.tests.len()
-    );
-    for &c in &grade.chapters {
-        let tests: Vec<&TestResult> = grade
-            .tests
-            .iter()
-            .filter(|t| t.exercise.is_some_and(|e| manifest.entries[e].chapter == c))
-            .collect();
-        let failed = tests.iter().filter(|t| t.status != Status::Passed).count();
-        out += &format!(
-            "  <testsuite name=\"chapter {c} {}\" tests=\"{}\" failures=\"{failed}\">\n",
-            crate::syllabus::chapter(c).map_or("", |c| c.title),
-            tests.len()
-        );
-        for t in tests {
-            let e = &manifest.entries[t.exercise.unwrap_or_default()];
-            out += &format!(
-                "    <testcase name=\"{}\" classname=\"exercise {}\"",
-                xml(&t.name),
-                xml(&e.exercise.id)
-            );
-            if t.status == Status::Passed {
-                out += "/>\n";
-            } else {
-                out += &format!(
-                    ">\n      <failure type=\"{}\" message=\"{}\">{}</failure>\n    </testcase>\n",
-                    t.status.word(),
-                    xml(&t.message),
-                    xml(&format!("{} — formula: {}", t.message, e.formula))
-                );
-            }
-        }
-        out += "  </testsuite>\n";
-    }
-    out += "</testsuites>\n";
-    out
+    let report = Report::new(grade, manifest, &Settings::default());
+    crate::autograder::codegrade::junit(&report, &grade.chapters, Audience::Instructor)
 }
 
 /// The gradebook's header: student, total, maximum, each graded chapter, each exercise.

@@ -6,7 +6,7 @@
 use std::path::{Path, PathBuf};
 use std::time::Duration;
 
-use whitted_course::grade::{self, ExerciseScore, Grade, Status, TestResult};
+use whitted_course::grade::{self, Grade, Status, TestResult};
 use whitted_course::handout::{self, Region};
 use whitted_course::manifest::{self, Manifest};
 use whitted_course::report;
@@ -167,29 +167,14 @@ fn nextests_junit_report_is_read_test_by_test() {
 fn graded(m: &Manifest) -> Grade {
     let mut tests = junit_results(m);
     tests.retain(|t| t.exercise.is_some_and(|e| m.entries[e].chapter == 1));
-    let chapter1: Vec<usize> = (0..m.entries.len())
-        .filter(|&i| m.entries[i].chapter == 1)
-        .collect();
-    let exercises = chapter1
+    let notes = m
+        .entries
         .iter()
-        .map(|&i| {
-            let own: Vec<&TestResult> = tests.iter().filter(|t| t.exercise == Some(i)).collect();
-            let passed = own.iter().filter(|t| t.status == Status::Passed).count();
-            let max = f64::from(m.entries[i].exercise.points);
-            ExerciseScore {
-                entry: i,
-                score: if own.is_empty() {
-                    0.0
-                } else {
-                    max * passed as f64 / own.len() as f64
-                },
-                max,
-                passed,
-                total: own.len(),
-                note: (m.entries[i].exercise.id == "1.3").then(|| "does not compile".to_string()),
-            }
-        })
+        .position(|e| e.exercise.id == "1.3")
+        .map(|i| (i, "does not compile".to_string()))
+        .into_iter()
         .collect();
+    let exercises = grade::scores(m, &[1], &tests, &notes);
     Grade {
         student: "ada, l.".into(),
         chapters: vec![1],
@@ -197,6 +182,8 @@ fn graded(m: &Manifest) -> Grade {
         tests,
         notes: vec![],
         elapsed: Duration::from_secs(42),
+        timings: Default::default(),
+        render: None,
     }
 }
 
@@ -360,5 +347,71 @@ fn grading_something_that_cannot_be_graded_is_one_line_of_error() {
             err.starts_with("error: ") && err.contains(says),
             "{args:?}: {err}"
         );
+    }
+}
+
+/// Without bubblewrap the grader says so in one line and grades nothing: no copy, no build;
+/// `--unsandboxed` is named as the way to grade anyway.
+#[test]
+fn without_its_sandbox_grading_refuses_in_one_line() {
+    let dir = tempfile::tempdir().unwrap();
+    let submission = dir.path().join("ada");
+    std::fs::create_dir_all(submission.join("crates/whitted/src")).unwrap();
+    let target = dir.path().join("build");
+    let out = std::process::Command::new(env!("CARGO_BIN_EXE_whitted"))
+        .arg("grade")
+        .arg(&submission)
+        .arg("--target-dir")
+        .arg(&target)
+        .current_dir(root())
+        // a PATH without bwrap
+        .env("PATH", dir.path())
+        .output()
+        .unwrap();
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(2), "{err}");
+    assert_eq!(err.lines().count(), 1, "{err}");
+    assert!(
+        err.starts_with("error: the sandbox cannot be set up: bubblewrap (bwrap) is not installed")
+            && err.contains("--unsandboxed"),
+        "{err}"
+    );
+    assert!(
+        !target.join("graded-copy").exists(),
+        "it copied the project"
+    );
+}
+
+/// Without the sandbox a body that would read a file or the environment when it compiles is
+/// not compiled: the macros by any path or spacing, `#[path]`, a body that closes its
+/// function; a name, a string or a comment that merely says them is fine.
+#[test]
+fn a_body_that_reads_at_compile_time_is_found() {
+    for (body, found) in [
+        ("    near * (fov.to_radians() / 2.0).tan()\n", None),
+        ("include_str!(\"/etc/passwd\")", Some("`include_str!`")),
+        (
+            "std::include_bytes /* spaced */ ! (\"x\")",
+            Some("`include_bytes!`"),
+        ),
+        ("{ let a = [core::include!(\"x\")]; a }", Some("`include!`")),
+        ("env!(\"HOME\").len() as f64", Some("`env!`")),
+        ("option_env!(\"TOKEN\").is_some()", Some("`option_env!`")),
+        (
+            "macro_rules! m { ($e:expr) => { $e } }\nm!(include_str!(\"x\"))",
+            Some("`include_str!`"),
+        ),
+        ("#[path = \"/x.rs\"] mod m;", Some("`#[path = …]`")),
+        (
+            "0.0 }\nfn evil() -> &'static str { \"\" ",
+            Some("delimiters that do not balance"),
+        ),
+        ("let include_str = 1.0; include_str * 2.0", None),
+        (
+            "// include_str!(\"x\")\n\"include_str!(x)\".len() as f64",
+            None,
+        ),
+    ] {
+        assert_eq!(grade::compile_time_read(body).as_deref(), found, "{body}");
     }
 }

@@ -10,83 +10,43 @@
 //! - a tampered handout: its test files edited to pass and its manifest's points raised, its
 //!   exercises left as `todo!()`: zero, since the grader's tests and manifest are its own;
 //! - one copy per hand-written mutant (`crates/whitted-course/tests/mutants/hand-written.toml`): each loses points in
-//!   its exercise and its chapter.
+//!   its exercise and its chapter;
+//! - hostile submissions, each a chapter-3 handout with one exercise of chapters 1–2 written
+//!   to attack the grader ([`hostile`]): reading the reference's sources and panicking with
+//!   them, writing the results, reading the hidden tests, a fork bomb, a disk filler, a memory
+//!   hog, a network connect, megabytes of output, editing files outside its copy, and
+//!   `include_str!` of a reference or hidden file at compile time. Each loses exactly what its
+//!   handout and its attacked exercise carry and gains nothing, and no report of any
+//!   submission quotes a solution line the submission did not write itself, nor a hidden
+//!   test's source.
+//!
+//! Everything is built and run in the grader's sandbox (bubblewrap). The platforms' packages
+//! then run in their layouts, sharing the class's build directory: Gradescope's zip
+//! (`setup.sh`'s build step and `run_autograder`, in an `/autograder`-shaped temporary root),
+//! PrairieLearn's entry point (in a `/grade`-shaped one) and GitHub Classroom's workflow (its
+//! commands, in a student's repository).
 //!
 //! Ignored by default (it builds every submission: minutes); `.ci/run` runs it with
-//! `cargo test --test grade_build -- --ignored`. Needs cargo-nextest.
+//! `cargo test --test grade_build -- --ignored`. Needs cargo-nextest and bubblewrap.
 
 use std::collections::BTreeSet;
 use std::path::{Path, PathBuf};
+use std::sync::Mutex;
 use std::time::Duration;
 
+mod class;
+
+use class::{copy, index, manifest, mutant_body, mutants, root, set_body};
+use whitted_course::autograder::{self, Platform, Report, Settings};
+use whitted_course::grade::sandbox::Level;
 use whitted_course::grade::{self, ClassEntry, Grade, Status};
 use whitted_course::manifest::{self, Manifest};
 use whitted_course::{deps, files, handout};
 
-/// The workspace's root: this crate sits in `crates/whitted-course`.
-fn root() -> PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR"))
-        .ancestors()
-        .nth(2)
-        .expect("the crate sits two levels below the workspace's root")
-        .to_path_buf()
-}
-
-fn manifest() -> Manifest {
-    manifest::load(&root().join(manifest::DEFAULT_PATH)).unwrap()
-}
-
-/// The entry of the exercise named `name`.
-fn index(m: &Manifest, name: &str) -> usize {
-    m.by_name(name)
-        .unwrap_or_else(|| panic!("no exercise named {name}"))
-}
-
-/// A copy of the reference project at `to`.
-fn copy(to: &Path) {
-    for f in files::project_files(&root()).unwrap() {
-        let dest = to.join(&f);
-        std::fs::create_dir_all(dest.parent().unwrap()).unwrap();
-        std::fs::copy(root().join(&f), dest).unwrap();
-    }
-}
-
-/// Replaces the body of the exercise named `id` in the copy at `dir` with `body`.
-fn set_body(dir: &Path, m: &Manifest, id: &str, body: &str) {
-    let r = &handout::regions(&root(), m).unwrap()[index(m, id)];
-    let path = dir.join(&r.file);
-    let text = std::fs::read_to_string(&path).unwrap();
-    assert!(
-        text.contains(&r.solution),
-        "exercise {id}: the body is not in the copy"
-    );
-    std::fs::write(&path, text.replacen(&r.solution, &format!("{body}\n"), 1)).unwrap();
-}
-
-#[derive(serde::Deserialize)]
-struct Mutants {
-    mutant: Vec<Mutant>,
-}
-
-#[derive(serde::Deserialize)]
-struct Mutant {
-    name: String,
-    exercise: String,
-    why: String,
-    find: String,
-    replace: String,
-}
-
-fn mutants() -> Vec<Mutant> {
-    let text = std::fs::read_to_string(
-        root().join("crates/whitted-course/tests/mutants/hand-written.toml"),
-    )
-    .unwrap();
-    toml::from_str::<Mutants>(&text).unwrap().mutant
-}
-
-/// The hidden test the instructor adds: exercise 1.2 at 90°, where H = N.
+/// The hidden test the instructor adds: exercise 1.2 at 90°, where H = N. Its marker must
+/// appear in no report.
 const HIDDEN: &str = r#"
+// hidden-marker-3f9a: the source of a hidden test
 use whitted::camera::near_plane_half_height;
 
 #[test]
@@ -118,6 +78,217 @@ fn find<'a>(entries: &'a [ClassEntry], student: &str) -> &'a Grade {
     e.grade
         .as_ref()
         .unwrap_or_else(|why| panic!("{student} not graded: {why}"))
+}
+
+/// The marker of the hidden test's source.
+const HIDDEN_MARKER: &str = "hidden-marker-3f9a";
+
+/// The class's build directory, shared by the class and the platforms' layouts: one grading
+/// at a time in it.
+fn build_dir() -> PathBuf {
+    root().join("target").join("grade-tests")
+}
+
+/// One grading at a time in [`build_dir`].
+static BUILD: Mutex<()> = Mutex::new(());
+
+/// The grading setup of these tests: sandboxed, 5 s a test.
+fn setup(hidden: &Path) -> grade::GradeSetup {
+    grade::GradeSetup {
+        chapter: None,
+        hidden: Some(hidden.to_path_buf()),
+        timeout: Duration::from_secs(5),
+        target_dir: Some(build_dir()),
+        keep: false,
+        sandbox: Some(grade::SandboxSetup {
+            runner: PathBuf::from(env!("CARGO_BIN_EXE_whitted")),
+            worker: 0,
+            level: Level::Namespaces,
+        }),
+        render: false,
+    }
+}
+
+/// The places a hostile submission aims at, outside its copy.
+struct Targets {
+    /// The instructor's project.
+    root: PathBuf,
+    /// The graded copy (inside the worker's build directory).
+    copy: PathBuf,
+    /// The hidden tests' directory.
+    hidden: PathBuf,
+    /// A results directory the grader owns.
+    results: PathBuf,
+    /// A file outside every copy.
+    outside: PathBuf,
+    /// A port on which this test listens on the loopback.
+    port: u16,
+}
+
+/// A hostile submission: its name, the chapter-1–2 exercise it attacks, and the body.
+/// `SOLUTION` in the body stands for the exercise's reference body: the attack returns it
+/// only if it succeeded (a gain the grader must not allow).
+fn hostile(t: &Targets) -> Vec<(&'static str, &'static str, String)> {
+    let root = t.root.display();
+    let copy = t.copy.display();
+    let hidden = t.hidden.display();
+    let results = t.results.display();
+    let outside = t.outside.display();
+    let port = t.port;
+    vec![
+        (
+            "reads-reference",
+            "direction_colour",
+            format!(
+                r##"    let read = |p: &str| std::fs::read_to_string(p).map(|s| s.lines().filter(|l| l.contains("max(0.0)")).collect::<Vec<_>>().join(" | ")).unwrap_or_else(|e| e.to_string());
+    panic!("reference: {{}} // copy: {{}}", read("{root}/crates/whitted/src/shading.rs"), read("{copy}/crates/whitted/src/shading.rs"))"##
+            ),
+        ),
+        (
+            "writes-results",
+            "hit_polyhedron",
+            format!(
+                r##"    let a = std::fs::write("{results}/results.json", "{{\"score\": 1000}}");
+    let b = std::fs::write("{copy}/nextest-store/grading/junit.xml", "<testsuites/>");
+    if a.is_ok() || b.is_ok() {{ SOLUTION }} else {{ panic!("could not write the results: {{:?}} {{:?}}", a, b) }}"##
+            ),
+        ),
+        (
+            "reads-hidden",
+            "facet_crossing",
+            format!(
+                r##"    let a = std::fs::read_to_string("{hidden}/extra.rs");
+    let b = std::fs::read_to_string("{copy}/crates/whitted/tests/hidden_extra.rs");
+    match (a, b) {{ (Ok(s), _) | (_, Ok(s)) => panic!("{{s}}"), (Err(e), Err(f)) => panic!("the hidden tests: {{e}}; {{f}}") }}"##
+            ),
+        ),
+        (
+            "fork-bomb",
+            "hit_cylinder",
+            r##"    let mut forked = 0;
+    while forked < 5000 && std::process::Command::new("sleep").arg("30").spawn().is_ok() { forked += 1; }
+    panic!("forked {forked} processes")"##
+                .to_string(),
+        ),
+        (
+            "disk-filler",
+            "cylinder_discriminant",
+            format!(
+                r##"    use std::io::Write;
+    let chunk = vec![7u8; 1 << 20];
+    let mut written = 0usize;
+    for path in ["/tmp/fill", "fill", "/dev/shm/fill", "{outside}.fill"] {{
+        if let Ok(mut f) = std::fs::File::create(path) {{
+            while written < (4usize << 30) && f.write_all(&chunk).is_ok() {{ written += chunk.len(); }}
+        }}
+    }}
+    panic!("wrote {{written}} bytes")"##
+            ),
+        ),
+        (
+            "memory-hog",
+            "cylinder_normal",
+            // 256 MiB at a time, a byte written in each: without a limit it would grow until
+            // the time limit stopped it; with one, the allocation fails within the second
+            r##"    let mut hoard: Vec<Vec<u8>> = Vec::new();
+    loop { let mut v = Vec::with_capacity(256 << 20); v.push(1u8); hoard.push(v); std::hint::black_box(&hoard); }"##
+                .to_string(),
+        ),
+        (
+            "network",
+            "hit_cone",
+            format!(
+                r##"    if std::net::TcpStream::connect(("127.0.0.1", {port})).is_ok() {{ SOLUTION }} else {{ panic!("no network") }}"##
+            ),
+        ),
+        (
+            "prints-megabytes",
+            "cone_normal",
+            r##"    let line = "x".repeat(1023);
+    for _ in 0..(16 << 10) { println!("{line}"); eprintln!("{line}"); }
+    panic!("printed 32 MiB")"##
+                .to_string(),
+        ),
+        (
+            "edits-outside",
+            "cylinder_coefficients",
+            format!(
+                r##"    let a = std::fs::write("{outside}", "edited by a student");
+    let b = std::fs::write("{root}/target/grade-tests/edited-by-a-student", "");
+    if a.is_ok() || b.is_ok() {{ SOLUTION }} else {{ panic!("could not edit: {{:?}} {{:?}}", a, b) }}"##
+            ),
+        ),
+        (
+            "includes-reference",
+            "cone_discriminant",
+            format!(
+                r##"    panic!("{{}}", include_str!("{root}/crates/whitted/src/shading.rs"))"##
+            ),
+        ),
+        (
+            "includes-hidden",
+            "cone_coefficients",
+            // the body is in src/shapes/cone.rs: the copy's tests/ is two levels up
+            r##"    panic!("{}", include_str!("../../tests/hidden_extra.rs"))"##.to_string(),
+        ),
+    ]
+}
+
+/// Every report the grader writes for `g`, by name: the table, Gradescope's and
+/// PrairieLearn's results, the instructor's and CodeGrade's JUnit, the gradebook's row.
+fn reports(g: &Grade, m: &Manifest) -> Vec<(&'static str, String)> {
+    let r = Report::new(g, m, &Settings::default());
+    let chapters = g.chapters.clone();
+    vec![
+        ("table", whitted_course::report::table(g, m)),
+        (
+            "gradescope",
+            autograder::run::results_text(&r, &chapters, Platform::Gradescope),
+        ),
+        (
+            "prairielearn",
+            autograder::run::results_text(&r, &chapters, Platform::Prairielearn),
+        ),
+        (
+            "codegrade",
+            autograder::run::results_text(&r, &chapters, Platform::Codegrade),
+        ),
+        ("junit", whitted_course::report::junit(g, m)),
+        ("csv", whitted_course::report::csv_row(g, m)),
+    ]
+}
+
+/// The lines of the reference's solution regions worth a check (code, not a brace or a
+/// word), trimmed.
+fn solution_lines(m: &Manifest) -> BTreeSet<String> {
+    handout::regions(&root(), m)
+        .unwrap()
+        .iter()
+        .flat_map(|r| {
+            r.solution
+                .lines()
+                .map(|l| l.trim().to_string())
+                .collect::<Vec<_>>()
+        })
+        .filter(|l| l.len() >= 12 && !l.starts_with("//"))
+        .collect()
+}
+
+/// Every text file of a submission, joined: what the student wrote or was given.
+fn submission_text(dir: &Path) -> String {
+    let mut files = Vec::new();
+    let mut stack = vec![dir.to_path_buf()];
+    while let Some(d) = stack.pop() {
+        for e in std::fs::read_dir(&d).unwrap().flatten() {
+            let p = e.path();
+            if p.is_dir() {
+                stack.push(p);
+            } else if let Ok(text) = std::fs::read_to_string(&p) {
+                files.push(text);
+            }
+        }
+    }
+    files.join("\n")
 }
 
 #[test]
@@ -173,34 +344,45 @@ fn a_class_is_graded_as_each_submission_deserves() {
     let mutants = mutants();
     assert!(mutants.len() >= 10);
     for mu in &mutants {
-        let r = &handout::regions(&root(), &m).unwrap()[index(&m, &mu.exercise)];
-        assert!(
-            r.solution.contains(&mu.find),
-            "mutant {}: `{}` is not in exercise {}'s body",
-            mu.name,
-            mu.find,
-            mu.exercise
-        );
         let dir = class.join(format!("mutant-{}", mu.name));
         copy(&dir);
-        set_body(
-            &dir,
-            &m,
-            &mu.exercise,
-            r.solution.replacen(&mu.find, &mu.replace, 1).trim_end(),
-        );
+        set_body(&dir, &m, &mu.exercise, &mutant_body(&m, mu));
     }
     let hidden = work.path().join("hidden");
     std::fs::create_dir_all(&hidden).unwrap();
     std::fs::write(hidden.join("extra.rs"), HIDDEN).unwrap();
-
-    let options = grade::GradeSetup {
-        chapter: None,
-        hidden: Some(hidden),
-        timeout: Duration::from_secs(5),
-        target_dir: Some(root().join("target").join("grade-tests")),
-        keep: false,
+    // 6. the hostile ones: a chapter-3 handout each, one exercise of chapters 1–2 attacking
+    let listener = std::net::TcpListener::bind("127.0.0.1:0").unwrap();
+    let targets = Targets {
+        root: root(),
+        copy: build_dir().join("slot-0").join("graded-copy"),
+        hidden: hidden.clone(),
+        results: work.path().join("results"),
+        outside: work.path().join("outside.txt"),
+        port: listener.local_addr().unwrap().port(),
     };
+    std::fs::create_dir_all(&targets.results).unwrap();
+    std::fs::write(&targets.outside, "untouched").unwrap();
+    let edited = build_dir().join("edited-by-a-student");
+    let _ = std::fs::remove_file(&edited);
+    let chapter3: Vec<usize> = (0..m.entries.len())
+        .filter(|&i| m.entries[i].chapter == 3)
+        .collect();
+    let attacks = hostile(&targets);
+    for (name, exercise, body) in &attacks {
+        let dir = class.join(format!("hostile-{name}"));
+        handout::write(&root(), &m, &chapter3, &dir).unwrap();
+        let r = &handout::regions(&root(), &m).unwrap()[index(&m, exercise)];
+        set_body(
+            &dir,
+            &m,
+            exercise,
+            &body.replace("SOLUTION", &format!("{{\n{}    }}", r.solution)),
+        );
+    }
+
+    let _one = BUILD.lock().unwrap_or_else(|p| p.into_inner());
+    let options = setup(&hidden);
     let start = std::time::Instant::now();
     // one at a time: the dependencies are built once, and the time a submission takes is its own
     let entries = grade::grade_class(&root(), &m, &class, &options, 1, &|e| {
@@ -307,6 +489,139 @@ fn a_class_is_graded_as_each_submission_deserves() {
     assert_eq!(t.score(), 0.0);
     assert_eq!(t.max(), reference.max());
 
+    // the hostile ones: each loses exactly its handout's and its attacked exercise's tests,
+    // gains nothing, and reaches nothing outside its copy
+    for (name, exercise, _) in &attacks {
+        let g = find(&entries, &format!("hostile-{name}"));
+        let i = index(&m, exercise);
+        let mut lost = chapter3.clone();
+        lost.push(i);
+        assert_eq!(
+            failed(g),
+            deps::expected(&map, &all_tests, &lost),
+            "hostile-{name} ({exercise}): lost other tests than its own, or gained some"
+        );
+        assert!(
+            g.tests
+                .iter()
+                .any(|t| t.hidden && t.status == Status::Passed),
+            "hostile-{name}: the hidden test of 1.2 must still pass"
+        );
+        let attacked = g.exercises.iter().find(|e| e.entry == i).unwrap();
+        assert_eq!(attacked.score, 0.0, "hostile-{name}");
+        eprintln!(
+            "hostile-{name} ({exercise}): {} / {} points; its attack: {}",
+            whitted_course::report::points(g.score()),
+            whitted_course::report::points(g.max()),
+            g.tests
+                .iter()
+                .find(|t| t.exercise == Some(i) && !t.hidden)
+                .map_or_else(
+                    || attacked.note.clone().unwrap_or_default(),
+                    |t| format!("{}: {}", t.status.word(), t.message)
+                )
+                .chars()
+                .take(160)
+                .collect::<String>()
+        );
+    }
+    let message = |name: &str, exercise: &str| -> String {
+        let g = find(&entries, &format!("hostile-{name}"));
+        let i = index(&m, exercise);
+        let t = g.tests.iter().find(|t| t.exercise == Some(i)).unwrap();
+        format!("{}: {}", t.status.word(), t.message)
+    };
+    let forked = message("fork-bomb", "hit_cylinder");
+    let n: usize = forked
+        .split("forked ")
+        .nth(1)
+        .and_then(|r| r.split(' ').next())
+        .and_then(|n| n.parse().ok())
+        .unwrap_or_else(|| panic!("the fork bomb's message: {forked}"));
+    assert!(n < 64, "the fork bomb made {n} processes");
+    assert!(message("network", "hit_cone").contains("no network"));
+    assert!(
+        message("memory-hog", "cylinder_normal").starts_with("crashed"),
+        "{}",
+        message("memory-hog", "cylinder_normal")
+    );
+    for (name, exercise) in [
+        ("includes-reference", "cone_discriminant"),
+        ("includes-hidden", "cone_coefficients"),
+    ] {
+        let g = find(&entries, &format!("hostile-{name}"));
+        let e = g
+            .exercises
+            .iter()
+            .find(|e| e.entry == index(&m, exercise))
+            .unwrap();
+        assert!(
+            e.note
+                .as_deref()
+                .is_some_and(|n| n.starts_with("does not compile")),
+            "hostile-{name}: {:?}",
+            e.note
+        );
+    }
+    listener.set_nonblocking(true).unwrap();
+    assert!(
+        listener.accept().is_err(),
+        "a submission connected to the loopback"
+    );
+    assert_eq!(
+        std::fs::read_dir(&targets.results).unwrap().count(),
+        0,
+        "a submission wrote into the results"
+    );
+    assert_eq!(
+        std::fs::read_to_string(&targets.outside).unwrap(),
+        "untouched"
+    );
+    assert!(!edited.exists(), "a submission wrote into the project");
+    assert!(!work.path().join("outside.txt.fill").exists());
+    // no report quotes a solution line its submission did not write, nor the hidden test's
+    // source; none is larger than a report needs to be
+    let solutions = solution_lines(&m);
+    for e in &entries {
+        let Ok(g) = &e.grade else { continue };
+        let own = submission_text(&class.join(&e.student));
+        let secret: Vec<&String> = solutions
+            .iter()
+            .filter(|l| !own.contains(l.as_str()))
+            .collect();
+        for (kind, text) in reports(g, &m) {
+            for line in &secret {
+                assert!(
+                    !text.contains(line.as_str()),
+                    "{}'s {kind} report quotes the solution line `{line}`",
+                    e.student
+                );
+            }
+            assert!(
+                !text.contains(HIDDEN_MARKER),
+                "{}'s {kind} report quotes the hidden test's source",
+                e.student
+            );
+            assert!(
+                text.len() < 512 << 10,
+                "{}'s {kind} report is {} bytes",
+                e.student,
+                text.len()
+            );
+        }
+    }
+    let leaker = find(&entries, "hostile-reads-reference");
+    let own = submission_text(&class.join("hostile-reads-reference"));
+    let secret = solutions
+        .iter()
+        .filter(|l| !own.contains(l.as_str()))
+        .count();
+    assert!(
+        secret > 20,
+        "the leak check needs solution lines the leaker lacks: {secret}"
+    );
+    assert!(leaker.score() < leaker.max());
+
     // each mutant loses points in its exercise and its chapter
     for mu in &mutants {
         let g = find(&entries, &format!("mutant-{}", mu.name));
@@ -322,4 +637,375 @@ fn a_class_is_graded_as_each_submission_deserves() {
         let (s, max) = g.chapter(&m, m.entries[i].chapter);
         assert!(s < max);
     }
+}
+
+/// Runs `script` with `env`, its output kept; panics with it when the script fails.
+fn run_script(script: &Path, env: &[(&str, &Path)]) -> String {
+    let out = std::process::Command::new("bash")
+        .arg(script)
+        .envs(env.iter().map(|(k, v)| (*k, v.as_os_str())))
+        .output()
+        .unwrap();
+    let text = format!(
+        "{}{}",
+        String::from_utf8_lossy(&out.stdout),
+        String::from_utf8_lossy(&out.stderr)
+    );
+    assert!(out.status.success(), "{} failed:\n{text}", script.display());
+    text
+}
+
+fn json(path: &Path) -> serde_json::Value {
+    let text = std::fs::read_to_string(path).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
+    serde_json::from_str(&text).unwrap()
+}
+
+/// The platforms' packages run in their layouts: Gradescope's zip unpacked in an
+/// `/autograder`-shaped root (`AUTOGRADER_ROOT`), its `setup.sh` (installs skipped, since the
+/// tools are here; its build step run) and `run_autograder` on a chapter-4 handout, then on
+/// a submission that is not a copy; PrairieLearn's entry point in a `/grade`-shaped root
+/// (`GRADE_ROOT`) on the same handout uploaded as a folder, then on an essay. They build in
+/// the class's directory, so only the student's crate compiles.
+#[test]
+#[ignore = "builds and grades through the platforms' scripts (a minute): .ci/run runs it"]
+fn the_platforms_packages_grade_in_their_layouts() {
+    let m = manifest();
+    let work = tempfile::tempdir().unwrap();
+    let hidden = work.path().join("hidden-tests");
+    std::fs::create_dir_all(&hidden).unwrap();
+    std::fs::write(hidden.join("extra.rs"), HIDDEN).unwrap();
+    let chapter4: Vec<usize> = (0..m.entries.len())
+        .filter(|&i| m.entries[i].chapter == 4)
+        .collect();
+    let handout4 = work.path().join("handout4");
+    handout::write(&root(), &m, &chapter4, &handout4).unwrap();
+    let whitted = PathBuf::from(env!("CARGO_BIN_EXE_whitted"));
+    let build = build_dir();
+    let options = autograder::package::Options {
+        chapter: None,
+        hidden: Some(hidden.clone()),
+        timeout: 5,
+        settings: Settings::default(),
+        sandbox: Some(Level::Namespaces),
+    };
+    let _one = BUILD.lock().unwrap_or_else(|p| p.into_inner());
+
+    // Gradescope
+    let ag = work.path().join("autograder");
+    let package = work.path().join("gradescope");
+    autograder::package::write(&root(), &m, Platform::Gradescope, &options, &package).unwrap();
+    let source = ag.join("source");
+    std::fs::create_dir_all(&source).unwrap();
+    let unzip = std::process::Command::new("unzip")
+        .args(["-q", "-o"])
+        .arg(package.join("autograder.zip"))
+        .arg("-d")
+        .arg(&source)
+        .status()
+        .unwrap();
+    assert!(unzip.success());
+    let env = [
+        ("AUTOGRADER_ROOT", ag.as_path()),
+        ("WHITTED_BIN", whitted.as_path()),
+        ("WHITTED_BUILD_DIR", build.as_path()),
+    ];
+    let started = std::time::Instant::now();
+    let said = run_script(&source.join("setup.sh"), &env);
+    assert!(
+        !said.contains("setup: installing"),
+        "setup.sh installed something: {said}"
+    );
+    assert!(said.contains("prebuilt in"), "{said}");
+    eprintln!(
+        "gradescope setup.sh: {:.0} s (skipped: installing the toolchain, cargo-nextest and bubblewrap, which are here and need the network on the platform; building whitted itself, WHITTED_BIN is this test's)",
+        started.elapsed().as_secs_f64()
+    );
+    let submission = ag.join("submission");
+    files::copy_tree(&handout4, &submission).unwrap();
+    let started = std::time::Instant::now();
+    run_script(&source.join("run_autograder"), &env);
+    let took = started.elapsed().as_secs_f64();
+    let results = json(&ag.join("results/results.json"));
+    let tests = results["tests"].as_array().unwrap();
+    let max: f64 = tests.iter().map(|t| t["max_score"].as_f64().unwrap()).sum();
+    let total: u32 = m.entries.iter().map(|e| e.exercise.points).sum();
+    assert!((max - f64::from(total)).abs() < 0.1, "{max} vs {total}");
+    let score = results["score"].as_f64().unwrap();
+    let chapter4_points: u32 = chapter4.iter().map(|&i| m.entries[i].exercise.points).sum();
+    assert!(
+        score > 0.0 && score <= f64::from(total - chapter4_points) + 0.01,
+        "the chapter-4 handout scored {score}"
+    );
+    let hidden_test = tests
+        .iter()
+        .find(|t| t["name"].as_str().unwrap().contains("hidden test"))
+        .unwrap();
+    assert_eq!(hidden_test["visibility"], "after_due_date");
+    assert_eq!(hidden_test["status"], "passed");
+    for t in tests {
+        if t["number"] == "4.1" {
+            assert_eq!(t["status"], "failed", "{t}");
+            assert_eq!(t["tags"][0], "chapter 4");
+        }
+    }
+    eprintln!("gradescope run_autograder: {score} / {max} in {took:.1} s");
+    // a submission that is not a copy still gets a results file that says why
+    std::fs::remove_dir_all(&submission).unwrap();
+    std::fs::create_dir_all(&submission).unwrap();
+    std::fs::write(submission.join("essay.txt"), "no code").unwrap();
+    run_script(&source.join("run_autograder"), &env);
+    let results = json(&ag.join("results/results.json"));
+    assert_eq!(results["score"], 0.0);
+    assert!(
+        results["output"]
+            .as_str()
+            .unwrap()
+            .contains("not a copy of the handout"),
+        "{results}"
+    );
+
+    // PrairieLearn
+    let pl = work.path().join("prairielearn");
+    autograder::package::write(&root(), &m, Platform::Prairielearn, &options, &pl).unwrap();
+    let grade_root = work.path().join("grade");
+    let student = grade_root.join("student");
+    files::copy_tree(&handout4, &student.join("my-copy")).unwrap();
+    files::copy_tree(&pl.join("tests"), &grade_root.join("tests")).unwrap();
+    std::fs::create_dir_all(grade_root.join("data")).unwrap();
+    std::fs::write(grade_root.join("data/data.json"), "{}").unwrap();
+    let project = root();
+    let env = [
+        ("GRADE_ROOT", grade_root.as_path()),
+        ("WHITTED_ROOT", project.as_path()),
+        ("WHITTED_BIN", whitted.as_path()),
+        ("WHITTED_BUILD_DIR", build.as_path()),
+    ];
+    let started = std::time::Instant::now();
+    run_script(&pl.join("run.sh"), &env);
+    let took = started.elapsed().as_secs_f64();
+    let results = json(&grade_root.join("results/results.json"));
+    assert_eq!(results["gradable"], true);
+    let fraction = results["score"].as_f64().unwrap();
+    assert!(
+        (fraction - score / max).abs() < 0.01,
+        "PrairieLearn's {fraction} vs Gradescope's {score} / {max}"
+    );
+    let tests = results["tests"].as_array().unwrap();
+    assert!(
+        tests
+            .iter()
+            .any(|t| t["name"].as_str().unwrap().contains("hidden test"))
+    );
+    eprintln!("prairielearn run.sh: score {fraction} in {took:.1} s");
+    std::fs::remove_dir_all(&student).unwrap();
+    std::fs::create_dir_all(&student).unwrap();
+    std::fs::write(student.join("essay.txt"), "no code").unwrap();
+    run_script(&pl.join("run.sh"), &env);
+    let results = json(&grade_root.join("results/results.json"));
+    assert_eq!(results["gradable"], false, "{results}");
+    assert!(
+        results["format_errors"][0]
+            .as_str()
+            .unwrap()
+            .contains("not a copy of the handout")
+    );
+
+    // Gradescope again, packaged for a container that makes no namespace: the tests run as a
+    // user of their own, and a submission that reads the reference, the hidden test and its
+    // binary and writes the results reaches none of them
+    let user_build = if open_to_others(&build) {
+        build.clone()
+    } else {
+        eprintln!(
+            "the class's build directory {} is closed to other users: the user sandbox builds in a directory of its own (slower)",
+            build.display()
+        );
+        let dir = Path::new("/var/tmp").join(format!("whitted-user-build-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).unwrap();
+        dir
+    };
+    let ag = work.path().join("autograder-user");
+    let package = work.path().join("gradescope-user");
+    let user = autograder::package::Options {
+        sandbox: Some(Level::User),
+        ..options
+    };
+    autograder::package::write(&root(), &m, Platform::Gradescope, &user, &package).unwrap();
+    let source = ag.join("source");
+    std::fs::create_dir_all(&source).unwrap();
+    let unzip = std::process::Command::new("unzip")
+        .args(["-q", "-o"])
+        .arg(package.join("autograder.zip"))
+        .arg("-d")
+        .arg(&source)
+        .status()
+        .unwrap();
+    assert!(unzip.success());
+    let env = [
+        ("AUTOGRADER_ROOT", ag.as_path()),
+        ("WHITTED_BIN", whitted.as_path()),
+        ("WHITTED_BUILD_DIR", user_build.as_path()),
+    ];
+    run_script(&source.join("setup.sh"), &env);
+    let submission = ag.join("submission");
+    files::copy_tree(&handout4, &submission).unwrap();
+    let attack = format!(
+        r##"    let read = |p: &str| std::fs::read_to_string(p).map(|s| s.lines().take(3).collect::<Vec<_>>().join(" | ")).unwrap_or_else(|e| e.to_string());
+    let bins = std::fs::read_dir("{build}/debug/deps").map(|d| d.filter_map(Result::ok).filter(|e| e.file_name().to_string_lossy().starts_with("hidden_")).map(|e| std::fs::read(e.path()).map(|b| b.len().to_string()).unwrap_or_else(|e| e.to_string())).collect::<Vec<_>>().join(",")).unwrap_or_else(|e| e.to_string());
+    let wrote = std::fs::write("{results}/results.json", "{{}}").is_ok();
+    panic!("src: {{}} / copy: {{}} / bins: {{}} / wrote: {{wrote}}", read("{source}/whitted/crates/whitted/src/shading.rs"), read("{build}/graded-copy/crates/whitted/tests/hidden_extra.rs"), bins)"##,
+        build = user_build.display(),
+        results = ag.join("results").display(),
+        source = source.display(),
+    );
+    let r = &handout::regions(&root(), &m).unwrap()[index(&m, "direction_colour")];
+    let path = submission.join(&r.file);
+    let text = std::fs::read_to_string(&path).unwrap();
+    std::fs::write(&path, text.replacen(&r.solution, &format!("{attack}\n"), 1)).unwrap();
+    run_script(&source.join("run_autograder"), &env);
+    let text = std::fs::read_to_string(ag.join("results/results.json")).unwrap();
+    let results: serde_json::Value = serde_json::from_str(&text).unwrap();
+    let attacked = results["tests"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .find(|t| t["number"] == "1.7")
+        .unwrap_or_else(|| panic!("no test of 1.7: {text}"));
+    let said = attacked["output"].as_str().unwrap();
+    let part = |name: &str| {
+        said.split(" / ")
+            .find_map(|p| {
+                p.split_once(&format!("{name}: "))
+                    .map(|(_, v)| v.to_string())
+            })
+            .unwrap_or_else(|| panic!("no `{name}` in {said}"))
+    };
+    assert!(part("src").starts_with("Permission denied"), "{said}");
+    assert!(part("copy").starts_with("Permission denied"), "{said}");
+    let bins = part("bins");
+    assert!(
+        !bins.is_empty() && bins.split(',').all(|b| b.starts_with("Permission denied")),
+        "the hidden test's binary: {said}"
+    );
+    assert!(part("wrote").starts_with("false"), "{said}");
+    assert!(!text.contains(HIDDEN_MARKER));
+    assert!(
+        results["tests"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .any(|t| t["name"].as_str().unwrap().contains("hidden test") && t["status"] == "passed"),
+        "{text}"
+    );
+    eprintln!("gradescope with --sandbox user: the attack met {said}");
+    if user_build != build {
+        let _ = std::fs::remove_dir_all(&user_build);
+    }
+}
+
+/// Whether every directory down to `path` is searchable by other users.
+fn open_to_others(path: &Path) -> bool {
+    use std::os::unix::fs::PermissionsExt;
+    path.canonicalize().is_ok_and(|p| {
+        p.ancestors()
+            .all(|a| std::fs::metadata(a).is_ok_and(|m| m.permissions().mode() & 0o001 != 0))
+    })
+}
+
+/// GitHub Classroom's workflow, its commands run as its steps would in a student's
+/// repository: a chapter-4 handout committed as the template with the package, the grading
+/// step against the first commit (the build directory swapped for the class's, so only the
+/// student's crate compiles), then the check step of an exercise the handout keeps, which
+/// passes, and of one it leaves out, which fails.
+#[test]
+#[ignore = "builds and grades through the workflow's commands (a minute): .ci/run runs it"]
+fn the_classroom_workflow_grades_the_students_repository() {
+    let m = manifest();
+    let work = tempfile::tempdir().unwrap();
+    let repo = work.path().join("repo");
+    let chapter4: Vec<usize> = (0..m.entries.len())
+        .filter(|&i| m.entries[i].chapter == 4)
+        .collect();
+    handout::write(&root(), &m, &chapter4, &repo).unwrap();
+    let options = autograder::package::Options {
+        chapter: None,
+        hidden: None,
+        timeout: 5,
+        settings: Settings::default(),
+        sandbox: Some(Level::Namespaces),
+    };
+    autograder::package::write(&root(), &m, Platform::Classroom, &options, &repo).unwrap();
+    let git = |args: &[&str]| {
+        let ok = std::process::Command::new("git")
+            .args(["-c", "user.name=t", "-c", "user.email=t@t"])
+            .args(args)
+            .current_dir(&repo)
+            .status()
+            .unwrap()
+            .success();
+        assert!(ok, "git {args:?}");
+    };
+    git(&["init", "-q"]);
+    git(&["add", "-A"]);
+    git(&["commit", "-qm", "the handout"]);
+    let yml = std::fs::read_to_string(repo.join(autograder::classroom::WORKFLOW)).unwrap();
+    let whitted = env!("CARGO_BIN_EXE_whitted");
+    let tool = format!("{}/target/release/whitted", autograder::classroom::GRADER);
+    // a line of the grading step's script, or a check step's command (a quoted string)
+    let step = |needle: &str| -> String {
+        let line = yml
+            .lines()
+            .find(|l| l.contains(needle))
+            .unwrap_or_else(|| panic!("no step with `{needle}` in {yml}"))
+            .trim();
+        match line.strip_prefix("command: \"") {
+            Some(quoted) => quoted
+                .strip_suffix('"')
+                .unwrap_or(quoted)
+                .replace("\\\"", "\""),
+            None => line.to_string(),
+        }
+    };
+    let run = |line: &str| {
+        std::process::Command::new("bash")
+            .args(["-c", line])
+            .current_dir(&repo)
+            .output()
+            .unwrap()
+    };
+    let worktree = step("git worktree add");
+    assert!(run(&worktree).status.success(), "{worktree}");
+    let grade = step("autograder grade --platform classroom")
+        .replace("sudo -E env \"PATH=$PATH\" ", "")
+        .replace(&tool, whitted)
+        .replace(
+            "--target-dir ../build",
+            &format!("--target-dir {}", build_dir().display()),
+        );
+    let _one = BUILD.lock().unwrap_or_else(|p| p.into_inner());
+    let graded = run(&grade);
+    assert!(
+        graded.status.success(),
+        "{grade}: {}",
+        String::from_utf8_lossy(&graded.stderr)
+    );
+    for (exercise, passes) in [("viewing_basis", true), ("feeler_ray", false)] {
+        let check = step(&format!("--exercise {exercise}\"")).replace(&tool, whitted);
+        let out = run(&check);
+        assert_eq!(
+            out.status.success(),
+            passes,
+            "{check}: {}",
+            String::from_utf8_lossy(&out.stdout)
+        );
+    }
+    let results = json(&work.path().join("results.json"));
+    let score = results["score"].as_f64().unwrap();
+    let chapter4_points: u32 = chapter4.iter().map(|&i| m.entries[i].exercise.points).sum();
+    let total: u32 = m.entries.iter().map(|e| e.exercise.points).sum();
+    assert!(
+        score > 0.0 && score <= f64::from(total - chapter4_points) + 0.01,
+        "{score}"
+    );
+    eprintln!("classroom: the chapter-4 handout scored {score} through the workflow's commands");
 }

@@ -31,7 +31,41 @@ pub fn program() -> OsString {
 /// information (the tools read messages, not backtraces: builds and links are twice as fast).
 #[must_use]
 pub fn command(project: &Path, target_dir: Option<&Path>, debug_info: bool) -> Command {
-    let mut command = Command::new(program());
+    wrapped(project, target_dir, debug_info, None)
+}
+
+/// A program that cargo is started inside, a sandbox for instance: cargo runs as
+/// `PROGRAM ARGS… cargo …`, with only the environment variables listed here (every other one
+/// is removed), and the working directory is the wrapper's business (`bwrap --chdir`).
+#[derive(Clone, Debug, Default, PartialEq, Eq)]
+pub struct Wrapper {
+    /// The program (`bwrap`).
+    pub program: OsString,
+    /// Its arguments, up to the command it runs.
+    pub args: Vec<OsString>,
+    /// The whole environment cargo gets, besides the variables [`command`] sets.
+    pub env: Vec<(OsString, OsString)>,
+}
+
+/// [`command`], started inside `wrapper` when there is one.
+#[must_use]
+pub fn wrapped(
+    project: &Path,
+    target_dir: Option<&Path>,
+    debug_info: bool,
+    wrapper: Option<&Wrapper>,
+) -> Command {
+    let mut command = match wrapper {
+        None => Command::new(program()),
+        Some(w) => {
+            let mut c = Command::new(&w.program);
+            c.args(&w.args)
+                .arg(program())
+                .env_clear()
+                .envs(w.env.iter().cloned());
+            c
+        }
+    };
     command.current_dir(project).stdin(Stdio::null());
     if let Some(dir) = target_dir {
         command.env("CARGO_TARGET_DIR", dir);
@@ -76,6 +110,9 @@ pub struct Build<'a> {
     pub locked: bool,
     /// Where cargo's status lines go.
     pub stderr: Stderr<'a>,
+    /// The program cargo runs inside (a sandbox that sees only what the build needs); cargo
+    /// itself when `None`.
+    pub wrapper: Option<&'a Wrapper>,
 }
 
 /// A compiler error (or cargo's, when it names no source file).
@@ -149,7 +186,7 @@ impl Build<'_> {
     /// Runs the build; `Err` only when cargo cannot be started.
     pub fn run(&self) -> Result<Built, ToolError> {
         let started = Instant::now();
-        let mut command = command(self.project, self.target_dir, self.debug_info);
+        let mut command = wrapped(self.project, self.target_dir, self.debug_info, self.wrapper);
         if self.tests.is_empty() {
             command.arg("build");
             if let Some(p) = self.profile {
@@ -268,6 +305,14 @@ pub struct Nextest<'a> {
     pub profile: &'a str,
     /// Where cargo builds.
     pub target_dir: &'a Path,
+    /// Run what was built, without building: nextest's binaries metadata (of `cargo nextest
+    /// list --list-type binaries-only --message-format json`) and cargo's metadata (of
+    /// `cargo metadata --no-deps`); the binaries listed are the ones that run, and
+    /// `package` and `tests` are not used.
+    pub reuse: Option<(&'a Path, &'a Path)>,
+    /// More environment variables (a target runner that starts each test binary in a
+    /// sandbox: `CARGO_TARGET_<TRIPLE>_RUNNER`).
+    pub env: &'a [(OsString, OsString)],
 }
 
 impl Nextest<'_> {
@@ -278,17 +323,24 @@ impl Nextest<'_> {
         command.args([
             "nextest",
             "run",
-            "--locked",
             "--profile",
             self.profile,
             "--no-fail-fast",
             "--no-tests=pass",
-            "-p",
-            self.package,
         ]);
-        for t in self.tests {
-            command.args(["--test", t]);
+        match self.reuse {
+            Some((binaries, metadata)) => {
+                command.arg("--binaries-metadata").arg(binaries);
+                command.arg("--cargo-metadata").arg(metadata);
+            }
+            None => {
+                command.args(["--locked", "-p", self.package]);
+                for t in self.tests {
+                    command.args(["--test", t]);
+                }
+            }
         }
+        command.envs(self.env.iter().cloned());
         let out = command
             .env("RUST_BACKTRACE", "0")
             .env("NO_COLOR", "1")

@@ -129,13 +129,23 @@ fn copy_files(from: &Path, to: &Path, files: &[PathBuf]) -> Result<usize, ToolEr
 /// Makes `dest` a copy of the project's files at `root`, writing only the files that are
 /// missing or differ, so that cargo (which goes by modification times) rebuilds only what
 /// changed since the last copy, and removing the files the project no longer has (but those
-/// under `keep`, relative to `dest`); returns how many files it wrote.
-pub fn sync_project(root: &Path, dest: &Path, keep: &[&str]) -> Result<usize, ToolError> {
+/// under `keep`, relative to `dest`); returns how many files it wrote. A file for which
+/// `whole` says no is copied empty: it exists (cargo wants every target a manifest names to
+/// exist) and says nothing.
+pub fn sync_project(
+    root: &Path,
+    dest: &Path,
+    keep: &[&str],
+    whole: &dyn Fn(&Path) -> bool,
+) -> Result<usize, ToolError> {
     let files = project_files(root)?;
     let mut written = 0;
     for file in &files {
-        let bytes =
-            std::fs::read(root.join(file)).map_err(|e| ToolError::io(root.join(file), e))?;
+        let bytes = if whole(file) {
+            std::fs::read(root.join(file)).map_err(|e| ToolError::io(root.join(file), e))?
+        } else {
+            Vec::new()
+        };
         if write_if_changed(&dest.join(file), &bytes)? {
             written += 1;
         }

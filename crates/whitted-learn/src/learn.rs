@@ -651,6 +651,7 @@ fn build(root: &Path, tests: &[String], bins: &[String], say: &Say) -> Result<Bu
         debug_info: true,
         locked: false,
         stderr: Stderr::Lines(&relay),
+        wrapper: None,
     }
     .run()
 }

@@ -12,26 +12,49 @@ use crate::{ToolError, cargo, layout};
 /// A compiler error: the file and line of its primary span, and its message with its place.
 pub(super) type CompileError = ((PathBuf, usize), String);
 
-/// Builds the test targets; returns the compiler's errors, each as the primary span's file
-/// and line, and the error's first line with its place (empty when the build succeeded).
-pub(super) fn build(
+/// Builds `tests` (test targets) or else `bins` of `package` in the graded copy, inside
+/// `wrapper` (the build sandbox) when there is one, without debug information.
+pub(super) fn cargo_build(
     project: &Path,
     target_dir: &Path,
-    targets: &[String],
-) -> Result<Vec<CompileError>, ToolError> {
-    let built = cargo::Build {
+    package: &str,
+    tests: &[String],
+    bins: &[String],
+    wrapper: Option<&cargo::Wrapper>,
+) -> Result<cargo::Built, ToolError> {
+    cargo::Build {
         project,
-        packages: &[layout::CORE_PACKAGE],
-        tests: targets,
-        bins: &[],
+        packages: &[package],
+        tests,
+        bins,
         profile: None,
         features: &[],
         target_dir: Some(target_dir),
         debug_info: false,
         locked: true,
         stderr: cargo::Stderr::Keep,
+        wrapper,
     }
-    .run()?;
+    .run()
+}
+
+/// Builds the test targets (inside `wrapper`, the build sandbox, when there is one); returns
+/// the compiler's errors, each as the primary span's file and line, and the error's first line
+/// with its place (empty when the build succeeded).
+pub(super) fn build(
+    project: &Path,
+    target_dir: &Path,
+    targets: &[String],
+    wrapper: Option<&cargo::Wrapper>,
+) -> Result<Vec<CompileError>, ToolError> {
+    let built = cargo_build(
+        project,
+        target_dir,
+        layout::CORE_PACKAGE,
+        targets,
+        &[],
+        wrapper,
+    )?;
     if built.success {
         return Ok(Vec::new());
     }

@@ -21,7 +21,8 @@ pub struct ClassEntry {
 /// Grades every submission of a class: each subdirectory of `dir`, in name order, `jobs` at
 /// a time, each in its own copy. With `options.target_dir` set, each of the `jobs` workers
 /// builds into its own directory under it (`slot-0`, `slot-1` …), kept from one submission
-/// to the next, so the dependencies are built once per worker. (One shared directory would
+/// to the next; the first worker grades the first submission alone, and the others' start as
+/// copies of its directory, so the dependencies are built once for the class. (One shared directory would
 /// not do: every copy of the crate builds its tests to the same file names, and one
 /// submission's tests would run another's code.) A submission that cannot be graded is
 /// reported and the others go on.
@@ -51,16 +52,44 @@ pub fn grade_class(
             dir.display()
         )));
     }
-    let items: Vec<usize> = (0..submissions.len()).collect();
+    let jobs = jobs.max(1).min(submissions.len());
+    // the first submission on the first worker alone, then every other worker's build
+    // directory starts as a copy of the first's: the dependencies and the instructor's code are
+    // compiled once for the class, not once per worker
+    let mut first = Vec::new();
+    if jobs > 1
+        && let Some(dir) = &options.target_dir
+    {
+        let mut own = options.clone();
+        own.target_dir = Some(dir.join("slot-0"));
+        if let Some(s) = &mut own.sandbox {
+            s.worker = 0;
+        }
+        let path = &submissions[0];
+        let entry = ClassEntry {
+            student: student_name(path),
+            grade: grade(root, manifest, path, &own).map_err(|e| e.to_string()),
+        };
+        done(&entry);
+        first.push(entry);
+        for i in 1..jobs {
+            let to = dir.join(format!("slot-{i}"));
+            if !to.join("debug").is_dir() {
+                seed(&dir.join("slot-0").join("debug"), &to.join("debug"))?;
+            }
+        }
+    }
+    let items: Vec<usize> = (first.len()..submissions.len()).collect();
     // one build directory per worker: two copies of the crate build to the same file names,
     // so two submissions must never share one at the same time
-    let slots: std::sync::Mutex<Vec<Option<PathBuf>>> = std::sync::Mutex::new(
-        (0..jobs.max(1))
+    let slots: std::sync::Mutex<Vec<(usize, Option<PathBuf>)>> = std::sync::Mutex::new(
+        (0..jobs)
             .map(|i| {
-                options
+                let dir = options
                     .target_dir
                     .as_ref()
-                    .map(|t| t.join(format!("slot-{i}")))
+                    .map(|t| t.join(format!("slot-{i}")));
+                (i, dir)
             })
             .collect(),
     );
@@ -70,18 +99,53 @@ pub fn grade_class(
             .lock()
             .unwrap_or_else(|p| p.into_inner())
             .pop()
-            .flatten();
+            .unwrap_or((0, None));
         let mut own = options.clone();
-        own.target_dir.clone_from(&slot);
+        own.target_dir.clone_from(&slot.1);
+        // each worker's tests run as a user of their own: one submission's processes never
+        // count against another's limit
+        if let Some(s) = &mut own.sandbox {
+            s.worker = slot.0;
+        }
         let entry = ClassEntry {
-            student: path.file_name().map_or_else(
-                || path.display().to_string(),
-                |n| n.to_string_lossy().into_owned(),
-            ),
+            student: student_name(path),
             grade: grade(root, manifest, path, &own).map_err(|e| e.to_string()),
         };
         slots.lock().unwrap_or_else(|p| p.into_inner()).push(slot);
         done(&entry);
         Ok(entry)
     })
+    .map(|rest| first.into_iter().chain(rest).collect())
+}
+
+/// A submission's name: its directory's.
+fn student_name(path: &Path) -> String {
+    path.file_name().map_or_else(
+        || path.display().to_string(),
+        |n| n.to_string_lossy().into_owned(),
+    )
+}
+
+/// Copies the build directory `from` to `to`, every file with its modification time (cargo
+/// decides what is fresh by them), so that a worker starts with what another built.
+fn seed(from: &Path, to: &Path) -> Result<(), ToolError> {
+    let entries = std::fs::read_dir(from).map_err(|e| ToolError::io(from, e))?;
+    std::fs::create_dir_all(to).map_err(|e| ToolError::io(to, e))?;
+    for entry in entries {
+        let entry = entry.map_err(|e| ToolError::io(from, e))?;
+        let (src, dest) = (entry.path(), to.join(entry.file_name()));
+        let meta = entry.metadata().map_err(|e| ToolError::io(&src, e))?;
+        if meta.is_dir() {
+            seed(&src, &dest)?;
+        } else if meta.is_file() {
+            std::fs::copy(&src, &dest).map_err(|e| ToolError::io(&src, e))?;
+            let modified = meta.modified().map_err(|e| ToolError::io(&src, e))?;
+            std::fs::File::options()
+                .write(true)
+                .open(&dest)
+                .and_then(|f| f.set_modified(modified))
+                .map_err(|e| ToolError::io(&dest, e))?;
+        }
+    }
+    Ok(())
 }

@@ -47,7 +47,12 @@ pub fn parse_junit(
             }
         };
         let exercise = manifest.exercise_of_test(test_name(&name));
+        let time = case
+            .attribute("time")
+            .and_then(|t| t.parse::<f64>().ok())
+            .unwrap_or(0.0);
         out.push(TestResult {
+            time,
             hidden: hidden.contains(&target),
             name,
             target,
@@ -60,20 +65,29 @@ pub fn parse_junit(
     Ok(out)
 }
 
+/// The longest message a report quotes, in characters.
+pub const MESSAGE_CHARS: usize = 400;
+
 /// The message of a panic in a test's output: the lines after `panicked at …:`, up to the
-/// backtrace note, at most three.
+/// backtrace note, at most three, at most [`MESSAGE_CHARS`] characters.
 #[must_use]
 pub fn panic_message(output: &str) -> String {
     let mut lines = output.lines();
     if !lines.by_ref().any(|l| l.contains("panicked at")) {
-        return output.lines().next().unwrap_or("failed").trim().to_string();
+        let first = output.lines().next().unwrap_or("failed").trim();
+        return first.chars().take(MESSAGE_CHARS).collect();
     }
     let message: Vec<&str> = lines
         .take_while(|l| !l.starts_with("note:") && !l.starts_with("stack backtrace"))
         .filter(|l| !l.trim().is_empty())
         .take(3)
         .collect();
-    let text = message.join(" / ");
+    let mut text = message.join(" / ");
+    // a report quotes a message, not a test's whole output
+    if let Some((cut, _)) = text.char_indices().nth(MESSAGE_CHARS) {
+        text.truncate(cut);
+        text.push('…');
+    }
     if text.starts_with("not yet implemented") {
         format!("not written ({text})")
     } else {

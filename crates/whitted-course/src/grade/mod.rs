@@ -34,6 +34,8 @@ mod class;
 pub mod command;
 mod junit;
 mod nextest;
+mod render;
+pub mod sandbox;
 mod splice;
 
 use std::collections::{BTreeMap, BTreeSet};
@@ -45,9 +47,11 @@ use super::manifest::Manifest;
 use super::{ToolError, files, layout};
 
 pub use class::{ClassEntry, grade_class};
-pub use junit::{panic_message, parse_junit};
+pub use junit::{MESSAGE_CHARS, panic_message, parse_junit};
 pub use nextest::NEXTEST_PROFILE;
-pub use splice::student_body;
+pub use render::RenderScore;
+pub(crate) use splice::hidden_files;
+pub use splice::{compile_time_read, student_body};
 
 /// The graded copy's directory, inside the build directory when grading has one.
 const COPY: &str = "graded-copy";
@@ -71,6 +75,24 @@ pub struct GradeSetup {
     pub target_dir: Option<PathBuf>,
     /// Keep the graded copy (its path is printed) instead of removing it.
     pub keep: bool,
+    /// Build and run the student's code in a sandbox ([`sandbox`]); with `None` it runs with
+    /// the grader's rights.
+    pub sandbox: Option<SandboxSetup>,
+    /// Render the last graded chapter's figure with the student's code, for the leaderboard
+    /// ([`Grade::render`]).
+    pub render: bool,
+}
+
+/// What a sandboxed grading needs to know.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct SandboxSetup {
+    /// The `whitted` program, whose hidden `sandbox-run` command nextest starts each test
+    /// binary with.
+    pub runner: PathBuf,
+    /// The worker's number: as root, its tests run as user [`sandbox::FIRST_UID`] + this.
+    pub worker: usize,
+    /// Namespaces (bubblewrap), or a user of its own only.
+    pub level: sandbox::Level,
 }
 
 impl Default for GradeSetup {
@@ -81,6 +103,8 @@ impl Default for GradeSetup {
             timeout: DEFAULT_TIMEOUT,
             target_dir: None,
             keep: false,
+            sandbox: None,
+            render: false,
         }
     }
 }
@@ -127,6 +151,8 @@ pub struct TestResult {
     pub status: Status,
     /// Why it failed, in a line or two (empty when it passed).
     pub message: String,
+    /// How long it ran, in seconds.
+    pub time: f64,
 }
 
 /// One exercise's points.
@@ -161,6 +187,23 @@ pub struct Grade {
     pub notes: Vec<String>,
     /// How long grading took.
     pub elapsed: Duration,
+    /// Where that time went.
+    pub timings: Timings,
+    /// The render of the leaderboard when it was asked for ([`GradeSetup::render`]): its
+    /// speed and error, or why there is none.
+    pub render: Option<Result<RenderScore, String>>,
+}
+
+/// Where a grading's time went.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct Timings {
+    /// Copying the project and splicing the student's bodies into it.
+    pub splice: Duration,
+    /// Building (the student's crate and the tests, the hidden ones too, each build again
+    /// after a body that did not compile).
+    pub build: Duration,
+    /// Running the tests (listing them, nextest, the sandbox).
+    pub run: Duration,
 }
 
 impl Grade {
@@ -221,42 +264,61 @@ pub fn grade(
     // the next and updated file by file, so that cargo recompiles only what differs from the
     // last submission; else a fresh temporary directory
     let mut temp = None;
-    let project = match &options.target_dir {
-        Some(dir) => {
-            let project = dir.join(COPY);
-            files::sync_project(root, &project, &[".config", nextest::STORE])?;
-            if options.keep {
-                eprintln!("grade: the graded copy is {}", project.display());
-            }
-            project
-        }
+    // absolute: the sandbox binds the directories at their paths
+    let build_dir = match &options.target_dir {
+        Some(dir) => Some(std::path::absolute(dir).map_err(|e| ToolError::io(dir, e))?),
+        None => None,
+    };
+    let project = match &build_dir {
+        Some(dir) => dir.join(COPY),
         None => {
             let mut t = tempfile::Builder::new()
                 .prefix("whitted-grade-")
                 .tempdir()
                 .map_err(|e| ToolError::io(std::env::temp_dir(), e))?;
             t.disable_cleanup(options.keep);
-            if options.keep {
-                eprintln!("grade: the graded copy is kept in {}", t.path().display());
-            }
             let project = t.path().join("project");
-            files::copy_project(root, &project)?;
             temp = Some(t);
             project
         }
     };
+    // before anything is copied or built: without its sandbox, grading does not start
+    let sandbox = match &options.sandbox {
+        Some(s) => Some(
+            sandbox::Sandbox::probe(&s.runner, s.worker, run_reads(&project), s.level).map_err(
+                |why| {
+                    ToolError::Usage(format!(
+                        "the sandbox cannot be set up: {why}; as root, --sandbox user runs the tests as a user of their own without namespaces, and --unsandboxed with your rights"
+                    ))
+                },
+            )?,
+        ),
+        None => None,
+    };
+    let whole = |f: &Path| whole_in_copy(root, manifest, f);
+    files::sync_project(root, &project, &[".config", nextest::STORE], &whole)?;
+    if options.keep {
+        eprintln!("grade: the graded copy is {}", project.display());
+    }
+    let target_dir = build_dir.unwrap_or_else(|| project.join("target"));
+    std::fs::create_dir_all(&target_dir).map_err(|e| ToolError::io(&target_dir, e))?;
+    let wrapper = sandbox
+        .as_ref()
+        .and_then(|s| s.build_wrapper(&project, &target_dir));
     let mut notes: BTreeMap<usize, String> = BTreeMap::new();
-    let mut files = splice::splice(root, manifest, submission, &chapters, &mut notes)?;
-    let hidden = splice::add_hidden(&project, options.hidden.as_deref())?;
+    // without the sandbox, a body that reads files at compile time is not compiled at all
+    let screen = wrapper.is_none();
+    let mut files = splice::splice(root, manifest, submission, &chapters, screen, &mut notes)?;
+    // the student's crate compiles while no hidden test is in the copy, so that a body cannot
+    // include one; the hidden targets are added and built after it
+    splice::remove_hidden(&project, &target_dir)?;
     nextest::write_profile(&project, options.timeout)?;
-    let targets: Vec<String> = chapter_targets(manifest, &chapters)
-        .into_iter()
-        .chain(hidden.iter().cloned())
-        .collect();
-    let target_dir = options
-        .target_dir
-        .clone()
-        .unwrap_or_else(|| project.join("target"));
+    let public: Vec<String> = chapter_targets(manifest, &chapters).into_iter().collect();
+    let mut timings = Timings {
+        splice: start.elapsed(),
+        ..Timings::default()
+    };
+    let built = Instant::now();
     let mut whole = Vec::new();
     // build; an exercise that does not compile goes back to its todo!() and the build again
     loop {
@@ -267,7 +329,7 @@ pub fn grade(
             files::write_if_changed(&project.join(&f.file), text.as_bytes())?;
             placed.push((f.file.clone(), lines));
         }
-        let errors = blame::build(&project, &target_dir, &targets)?;
+        let errors = blame::build(&project, &target_dir, &public, wrapper.as_ref())?;
         if errors.is_empty() {
             break;
         }
@@ -301,12 +363,64 @@ pub fn grade(
             }
         }
     }
-    let tests = if whole.is_empty() {
-        nextest::run(&project, &target_dir, &targets, manifest, &hidden)?
+    let mut hidden = Vec::new();
+    if whole.is_empty() && options.hidden.is_some() {
+        hidden = splice::add_hidden(&project, options.hidden.as_deref())?;
+        let errors = blame::build(&project, &target_dir, &hidden, wrapper.as_ref())?;
+        if let Some((_, first)) = errors.first() {
+            // the student's crate built for the public tests: the hidden ones are the
+            // instructor's to fix, and the public ones still count
+            whole.push(format!("the hidden tests do not build: {first}"));
+            splice::remove_hidden(&project, &target_dir)?;
+            hidden.clear();
+        }
+    }
+    let targets: Vec<String> = public.iter().chain(&hidden).cloned().collect();
+    splice::seal_hidden(&target_dir)?;
+    if let Some(s) = &sandbox {
+        let mut secrets = vec![root];
+        secrets.extend(options.hidden.as_deref());
+        s.protect(&secrets, &target_dir, &project)?;
+    }
+    timings.build = built.elapsed();
+    let ran = Instant::now();
+    let tests = if whole.iter().all(|w| w.starts_with("the hidden tests")) {
+        nextest::run(
+            &project,
+            &target_dir,
+            &targets,
+            manifest,
+            &hidden,
+            wrapper.as_ref(),
+            sandbox.as_ref(),
+        )
     } else {
-        Vec::new()
+        Ok(Vec::new())
     };
-    let exercises = score(manifest, &chapters, &tests, &notes);
+    // the hidden tests' sources and binaries leave the copy before anything else is built
+    // in it, whether the run went well or not
+    splice::remove_hidden(&project, &target_dir)?;
+    if let Some(s) = &sandbox {
+        s.reopen(&project)?;
+    }
+    let tests = tests?;
+    let render = (options.render && whole.is_empty()).then(|| {
+        let last = chapters
+            .iter()
+            .copied()
+            .max()
+            .unwrap_or(crate::syllabus::LAST);
+        render::measure(
+            &project,
+            &target_dir,
+            last,
+            wrapper.as_ref(),
+            sandbox.as_ref(),
+            options.timeout * 3,
+        )
+    });
+    timings.run = ran.elapsed();
+    let exercises = scores(manifest, &chapters, &tests, &notes);
     drop(temp);
     Ok(Grade {
         student,
@@ -315,11 +429,51 @@ pub fn grade(
         tests,
         notes: whole,
         elapsed: start.elapsed(),
+        timings,
+        render,
     })
 }
 
-/// Each graded exercise's points: its points shared equally by its tests.
-fn score(
+/// Whether the project file `file` goes whole into the graded copy: what the student's crate
+/// and its tests are built from (every manifest, the lock, cargo's settings, the syllabus, the
+/// renderer with the handout's tests, the scenes), and the chapter binaries and the book's
+/// figures for the leaderboard's render: all of it in the handout too. Every other file is there empty, so that a
+/// body compiled in the copy cannot include the instructor's other files (a mutant list, a
+/// guide, tools that quote the solutions).
+fn whole_in_copy(root: &Path, manifest: &Manifest, file: &Path) -> bool {
+    let name = file.file_name().map(|n| n.to_string_lossy().into_owned());
+    if matches!(name.as_deref(), Some("Cargo.toml"))
+        || file == Path::new("Cargo.lock")
+        || file.starts_with(".cargo")
+        || name
+            .as_deref()
+            .is_some_and(|n| n.starts_with("rust-toolchain"))
+        || file.starts_with(layout::SYLLABUS)
+        || file.starts_with(layout::APP)
+        || file.starts_with("scenes")
+        || render::needs(file)
+    {
+        return true;
+    }
+    if file.starts_with(layout::core_tests()) {
+        return handout::part_of(file, &manifest.handout.tests, root) == handout::Part::Copied;
+    }
+    file.starts_with(layout::CORE)
+}
+
+/// What the tests read at run time, shown to them read-only: the scenes and the golden
+/// images.
+fn run_reads(project: &Path) -> Vec<PathBuf> {
+    vec![
+        project.join("scenes"),
+        project.join(layout::core_tests()).join("golden"),
+    ]
+}
+
+/// Each exercise of `chapters`' points: its points shared equally by its tests; `notes` are
+/// what the grader noticed about an exercise (it did not compile …).
+#[must_use]
+pub fn scores(
     manifest: &Manifest,
     chapters: &[u8],
     tests: &[TestResult],

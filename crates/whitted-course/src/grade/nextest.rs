@@ -8,6 +8,7 @@ use std::time::Duration;
 
 use super::TestResult;
 use super::junit::parse_junit;
+use super::sandbox::Sandbox;
 use crate::manifest::Manifest;
 use crate::{ToolError, cargo, files, layout};
 
@@ -43,23 +44,75 @@ pub(super) fn write_profile(project: &Path, timeout: Duration) -> Result<(), Too
     files::write_if_changed(&dir.join("nextest.toml"), text.as_bytes()).map(|_| ())
 }
 
-/// Runs the built targets with nextest's grading profile and reads its JUnit report.
+/// Runs the built targets with nextest's grading profile and reads its JUnit report. What
+/// runs is what was built: nextest is given the binaries that `cargo nextest list` finds
+/// (inside `wrapper`, the build sandbox, when there is one) and builds nothing itself; each
+/// test binary goes through the `sandbox`'s runner when there is one.
 pub(super) fn run(
     project: &Path,
     target_dir: &Path,
     targets: &[String],
     manifest: &Manifest,
     hidden: &[String],
+    wrapper: Option<&cargo::Wrapper>,
+    sandbox: Option<&Sandbox>,
 ) -> Result<Vec<TestResult>, ToolError> {
     // in the copy, not the (perhaps shared) target directory: one report per copy
-    let junit = project.join(STORE).join(NEXTEST_PROFILE).join("junit.xml");
+    let store = project.join(STORE);
+    let junit = store.join(NEXTEST_PROFILE).join("junit.xml");
     let _ = std::fs::remove_file(&junit);
+    std::fs::create_dir_all(&store).map_err(|e| ToolError::io(&store, e))?;
+    let listed = |args: &[&str], to: &Path| -> Result<(), ToolError> {
+        let out = cargo::wrapped(project, Some(target_dir), false, wrapper)
+            .args(args)
+            .output()
+            .map_err(|e| ToolError::Cargo(format!("cannot run cargo {}: {e}", args[0])))?;
+        if !out.status.success() {
+            let err = String::from_utf8_lossy(&out.stderr);
+            return Err(ToolError::Cargo(format!(
+                "cargo {} failed: {}",
+                args[0],
+                err.lines()
+                    .rev()
+                    .find(|l| !l.trim().is_empty())
+                    .unwrap_or("")
+            )));
+        }
+        files::write_file(to, &out.stdout)
+    };
+    let binaries = store.join("binaries.json");
+    let metadata = store.join("cargo-metadata.json");
+    let mut list = vec![
+        "nextest",
+        "list",
+        "--list-type",
+        "binaries-only",
+        "--message-format",
+        "json",
+        "--locked",
+        "-p",
+        layout::CORE_PACKAGE,
+    ];
+    for t in targets {
+        list.extend(["--test", t.as_str()]);
+    }
+    listed(&list, &binaries)?;
+    listed(
+        &["metadata", "--format-version", "1", "--no-deps", "--locked"],
+        &metadata,
+    )?;
+    let env = match sandbox {
+        Some(s) => s.runner_env()?,
+        None => Vec::new(),
+    };
     let ran = cargo::Nextest {
         project,
         package: layout::CORE_PACKAGE,
         tests: targets,
         profile: NEXTEST_PROFILE,
         target_dir,
+        reuse: Some((&binaries, &metadata)),
+        env: &env,
     }
     .run();
     let text = match (std::fs::read_to_string(&junit), ran) {
@@ -72,5 +125,7 @@ pub(super) fn run(
             )));
         }
     };
+    // the next submission graded in this copy must not find this one's results
+    let _ = std::fs::remove_dir_all(&store);
     parse_junit(&text, manifest, hidden)
 }

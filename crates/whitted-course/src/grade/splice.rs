@@ -89,24 +89,88 @@ impl Spliced {
     }
 }
 
+/// The macros that read files or the build's environment at compile time.
+const COMPILE_TIME_READS: [&str; 5] = [
+    "include",
+    "include_str",
+    "include_bytes",
+    "env",
+    "option_env",
+];
+
+/// What in `body` would read a file or the environment when it compiles: `include!`,
+/// `include_str!`, `include_bytes!`, `env!` or `option_env!` (by any path,
+/// `std::include_str!` too) or a `#[path = …]`
+/// attribute, named as the body writes it; or that its delimiters do not balance (a body that
+/// closes its function could add items of its own). `None` when it reads nothing. A
+/// submission cannot make such a macro up otherwise: it has no procedural macro of its own,
+/// and `macro_rules!` pastes only the tokens it is given.
+#[must_use]
+pub fn compile_time_read(body: &str) -> Option<String> {
+    use proc_macro2::{TokenStream, TokenTree};
+    fn walk(tokens: TokenStream) -> Option<String> {
+        let tokens: Vec<TokenTree> = tokens.into_iter().collect();
+        for (i, t) in tokens.iter().enumerate() {
+            match t {
+                TokenTree::Ident(id) => {
+                    let name = id.to_string();
+                    let name = name.trim_start_matches("r#");
+                    let bang = matches!(tokens.get(i + 1), Some(TokenTree::Punct(p)) if p.as_char() == '!');
+                    if bang && COMPILE_TIME_READS.contains(&name) {
+                        return Some(format!("`{name}!`"));
+                    }
+                }
+                TokenTree::Group(g) => {
+                    let after_hash = i > 0
+                        && matches!(&tokens[i - 1], TokenTree::Punct(p) if p.as_char() == '#');
+                    let first = g.stream().into_iter().next();
+                    if after_hash && matches!(first, Some(TokenTree::Ident(ref id)) if id == "path")
+                    {
+                        return Some("`#[path = …]`".into());
+                    }
+                    if let Some(found) = walk(g.stream()) {
+                        return Some(found);
+                    }
+                }
+                _ => {}
+            }
+        }
+        None
+    }
+    match body.parse::<TokenStream>() {
+        Ok(tokens) => walk(tokens),
+        Err(_) => Some("delimiters that do not balance".into()),
+    }
+}
+
 /// The graded copy's source files with the student's bodies in the regions of `chapters`
 /// (the other regions keep the reference code). A body that cannot be found is noted and
-/// replaced by the exercise's `todo!()`.
+/// replaced by the exercise's `todo!()`; so is, when `screen` (grading without the sandbox,
+/// whose build shows no file worth reading), a body that would read files or the environment
+/// at compile time ([`compile_time_read`]).
 pub(super) fn splice(
     root: &Path,
     manifest: &Manifest,
     submission: &Path,
     chapters: &[u8],
+    screen: bool,
     notes: &mut BTreeMap<usize, String>,
 ) -> Result<Vec<Spliced>, ToolError> {
     let mut by_file: BTreeMap<PathBuf, Vec<(Region, String)>> = BTreeMap::new();
     for r in handout::regions(root, manifest)? {
         let e = &manifest.entries[r.entry];
         let body = if chapters.contains(&e.chapter) {
-            student_body(submission, &r, &e.exercise.name).unwrap_or_else(|why| {
-                notes.insert(r.entry, why);
-                format!("{}{}\n", r.indent, handout::todo_statement(e))
-            })
+            student_body(submission, &r, &e.exercise.name)
+                .and_then(|body| match compile_time_read(&body).filter(|_| screen) {
+                    Some(what) => Err(format!(
+                        "uses {what}, which reads files or the environment when it compiles; without the sandbox the grader does not compile it: graded as not written"
+                    )),
+                    None => Ok(body),
+                })
+                .unwrap_or_else(|why| {
+                    notes.insert(r.entry, why);
+                    format!("{}{}\n", r.indent, handout::todo_statement(e))
+                })
         } else {
             r.solution.clone()
         };
@@ -127,22 +191,29 @@ pub(super) fn splice(
         .collect()
 }
 
-/// Copies each `*.rs` of the hidden directory into the copy's `tests/` as `hidden_NAME.rs`;
-/// returns the test targets added.
-pub(super) fn add_hidden(project: &Path, hidden: Option<&Path>) -> Result<Vec<String>, ToolError> {
-    // a kept copy may hold the hidden tests of an earlier grading
-    let tests = project.join(layout::core_tests());
-    if let Ok(entries) = std::fs::read_dir(&tests) {
+/// Removes the hidden tests from the copy (`tests/hidden_*`) and their binaries from the
+/// build directory (`debug/deps/hidden_*`): what the student's crate is compiled next to, and
+/// what a later build in the same directory could read, holds none of them.
+pub(super) fn remove_hidden(project: &Path, target_dir: &Path) -> Result<(), ToolError> {
+    for dir in [
+        project.join(layout::core_tests()),
+        target_dir.join("debug").join("deps"),
+    ] {
+        let Ok(entries) = std::fs::read_dir(&dir) else {
+            continue;
+        };
         for e in entries.flatten() {
             if e.file_name().to_string_lossy().starts_with("hidden_") {
-                let _ = std::fs::remove_file(e.path());
+                let path = e.path();
+                std::fs::remove_file(&path).map_err(|err| ToolError::io(&path, err))?;
             }
         }
     }
-    let Some(dir) = hidden else {
-        return Ok(Vec::new());
-    };
-    let mut targets = Vec::new();
+    Ok(())
+}
+
+/// The hidden tests of the directory `dir`: its `*.rs` files, in name order.
+pub(crate) fn hidden_files(dir: &Path) -> Result<Vec<PathBuf>, ToolError> {
     let entries = std::fs::read_dir(dir).map_err(|e| ToolError::io(dir, e))?;
     let mut files: Vec<PathBuf> = entries
         .filter_map(Result::ok)
@@ -150,6 +221,41 @@ pub(super) fn add_hidden(project: &Path, hidden: Option<&Path>) -> Result<Vec<St
         .filter(|p| p.is_file() && p.extension().is_some_and(|x| x == "rs"))
         .collect();
     files.sort();
+    Ok(files)
+}
+
+/// Makes the hidden tests' binaries in the build directory executable and nothing else for
+/// other users: a test running as one (the user sandbox) cannot read their names or
+/// messages out of them.
+pub(super) fn seal_hidden(target_dir: &Path) -> Result<(), ToolError> {
+    use std::os::unix::fs::PermissionsExt;
+    let deps = target_dir.join("debug").join("deps");
+    let Ok(entries) = std::fs::read_dir(&deps) else {
+        return Ok(());
+    };
+    for e in entries.flatten() {
+        if e.file_name().to_string_lossy().starts_with("hidden_") {
+            let path = e.path();
+            let mode = if path.extension().is_none() {
+                0o711
+            } else {
+                0o600
+            };
+            std::fs::set_permissions(&path, std::fs::Permissions::from_mode(mode))
+                .map_err(|err| ToolError::io(&path, err))?;
+        }
+    }
+    Ok(())
+}
+
+/// Copies each `*.rs` of the hidden directory into the copy's `tests/` as `hidden_NAME.rs`;
+/// returns the test targets added.
+pub(super) fn add_hidden(project: &Path, hidden: Option<&Path>) -> Result<Vec<String>, ToolError> {
+    let Some(dir) = hidden else {
+        return Ok(Vec::new());
+    };
+    let mut targets = Vec::new();
+    let files = hidden_files(dir)?;
     if files.is_empty() {
         return Err(ToolError::Usage(format!(
             "--hidden {}: the directory holds no .rs test file",

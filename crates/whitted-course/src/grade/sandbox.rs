@@ -1,0 +1,653 @@
+//! The sandbox a submission is built and run in (Linux, bubblewrap): the student's code never
+//! runs, nor is compiled, with the grader's view of the machine.
+//!
+//! - **Build.** cargo runs in a bubblewrap sandbox that sees the system (`/usr`, and of `/etc`
+//!   what the linker needs), the toolchain and the registry read-only, the graded copy
+//!   read-only, the build directory writable, and nothing else: not the instructor's project,
+//!   not the hidden tests, not the results, not the machine's own files. A body's
+//!   `include_str!`, `include_bytes!` or `#[path]` can read only what the sandbox shows, which
+//!   holds nothing secret (the graded copy carries no reference body of a graded exercise and
+//!   no hidden test while the student's crate compiles).
+//! - **Run.** nextest stays outside and writes its report; each test binary it starts goes
+//!   through [`run_test`] (nextest's target runner, `CARGO_TARGET_<TRIPLE>_RUNNER`): a new
+//!   root that holds only the system's libraries, the test binary read-only, the files the
+//!   tests read and a small private `/tmp`; namespaces of its own (network, processes, IPC,
+//!   host name, and users when the grader is not root); an empty environment; an
+//!   unprivileged user (as root, a user id of its own per worker, so that its limit on
+//!   processes counts only its own); limits on memory,
+//!   processes, file size and open files (`prlimit`); and its output cut at a size, so a test
+//!   that prints megabytes costs the grader nothing. nextest's time limit stops a test and,
+//!   with it, the sandbox (`--die-with-parent`, and the PID namespace ends with its first
+//!   process).
+//!
+//! When bubblewrap is missing or cannot make namespaces, [`Sandbox::probe`] says why in one
+//! line; the grader then refuses unless told to grade at [`Level::User`] (as root, in a
+//! container that makes no namespace: the same user, limits and environment without the new
+//! root, the secrets closed by their permissions) or unsandboxed.
+//!
+//! Course book: [The instructor's guide](../../../../../docs/book/instructor-guide.html) (`docs/src/instructor-guide.md`).
+
+use std::ffi::{OsStr, OsString};
+use std::io::{Read, Write};
+use std::path::{Path, PathBuf};
+use std::process::{Command, ExitCode, Stdio};
+
+use serde::{Deserialize, Serialize};
+
+use crate::ToolError;
+use crate::cargo::Wrapper;
+
+/// The environment variable that carries the run sandbox's policy from the grader to
+/// [`run_test`] (through nextest, which passes its environment to the runner).
+pub const POLICY_VAR: &str = "WHITTED_SANDBOX_POLICY";
+
+/// The hidden subcommand of `whitted` that nextest starts each test binary with.
+pub const RUNNER_COMMAND: &str = "sandbox-run";
+
+/// The first user id the tests run as when the grader is root; worker `N` uses this plus `N`.
+pub const FIRST_UID: u32 = 61_000;
+
+/// What a test may use.
+#[derive(Clone, Debug, PartialEq, Eq, Serialize, Deserialize)]
+pub struct Limits {
+    /// Address space of each process, in bytes (`RLIMIT_AS`).
+    pub memory: u64,
+    /// Processes of the sandbox's user (`RLIMIT_NPROC`).
+    pub processes: u64,
+    /// The largest file it may write, in bytes (`RLIMIT_FSIZE`).
+    pub file_size: u64,
+    /// Its `/tmp` and `/dev/shm`, each a memory file system of this many bytes.
+    pub tmp: u64,
+    /// What is kept of its stdout and of its stderr, in bytes each; the rest is dropped.
+    pub output: u64,
+    /// Open files (`RLIMIT_NOFILE`).
+    pub open_files: u64,
+}
+
+impl Default for Limits {
+    fn default() -> Self {
+        Self {
+            memory: 2 << 30,
+            processes: 64,
+            file_size: 16 << 20,
+            tmp: 32 << 20,
+            output: 64 << 10,
+            open_files: 256,
+        }
+    }
+}
+
+/// How much of the machine the student's code is kept from.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize, clap::ValueEnum)]
+pub enum Level {
+    /// bubblewrap's namespaces: the build and the tests see only what they are shown, and the
+    /// tests have no network.
+    Namespaces,
+    /// Where no namespace can be made (a platform's container), as root: the tests run as a
+    /// user of their own with the limits, and what they must not read is closed to other
+    /// users; the build is not sandboxed, so a body that would read files at compile time
+    /// is not compiled. The tests keep the network and the machine's shared `/tmp`.
+    User,
+}
+
+/// How the tests of one grading are sandboxed: what [`run_test`] reads from [`POLICY_VAR`].
+#[derive(Clone, Debug, PartialEq, Eq, Serialize, Deserialize)]
+pub struct Policy {
+    /// Namespaces, or a user of its own only.
+    pub level: Level,
+    /// The bubblewrap program.
+    pub bwrap: PathBuf,
+    /// The user id to drop to inside the sandbox (when the grader is root); `None` runs as
+    /// the grader's own user, in a user namespace.
+    pub uid: Option<u32>,
+    /// The limits.
+    pub limits: Limits,
+    /// Directories and files the tests read at run time, shown read-only at their own paths.
+    pub read: Vec<PathBuf>,
+}
+
+/// The sandbox of one worker: found and tried by [`Sandbox::probe`].
+#[derive(Clone, Debug)]
+pub struct Sandbox {
+    /// The policy of its test runs.
+    pub policy: Policy,
+    /// The program nextest starts each test binary with (`whitted`, given
+    /// [`RUNNER_COMMAND`]).
+    pub runner: PathBuf,
+    /// The host's target triple (the `CARGO_TARGET_<TRIPLE>_RUNNER` variable's name).
+    pub triple: String,
+}
+
+/// Whether this process runs as root.
+fn is_root() -> bool {
+    // the owner of /proc/self is the process's effective user
+    std::fs::metadata("/proc/self").is_ok_and(|m| {
+        use std::os::unix::fs::MetadataExt;
+        m.uid() == 0
+    })
+}
+
+/// `name` found on the `PATH`.
+fn on_path(name: &str) -> Option<PathBuf> {
+    let path = std::env::var_os("PATH")?;
+    std::env::split_paths(&path)
+        .map(|d| d.join(name))
+        .find(|p| p.is_file())
+}
+
+/// The arguments that give a new root with the system's programs and libraries read-only:
+/// `/usr` and the top-level links into it (or the directories, where they are not links).
+fn system(args: &mut Vec<OsString>) {
+    push(args, ["--ro-bind", "/usr", "/usr"]);
+    for top in ["/bin", "/sbin", "/lib", "/lib32", "/lib64", "/libx32"] {
+        let p = Path::new(top);
+        match std::fs::read_link(p) {
+            Ok(to) => {
+                args.push("--symlink".into());
+                args.push(to.into_os_string());
+                args.push(top.into());
+            }
+            Err(_) if p.is_dir() => push(args, ["--ro-bind", top, top]),
+            Err(_) => {}
+        }
+    }
+}
+
+fn push<const N: usize>(args: &mut Vec<OsString>, items: [&str; N]) {
+    args.extend(items.iter().map(OsString::from));
+}
+
+fn push_path(args: &mut Vec<OsString>, flag: &str, path: &Path) {
+    args.push(flag.into());
+    args.push(path.as_os_str().to_owned());
+}
+
+/// `--perms 0755 --dir D` for each ancestor of `path` not made yet, so that an unprivileged
+/// user can reach what is bound below them (bubblewrap makes missing parents private).
+fn ancestors(args: &mut Vec<OsString>, made: &mut Vec<PathBuf>, path: &Path) {
+    let mut chain: Vec<&Path> = path.ancestors().skip(1).collect();
+    chain.reverse();
+    for dir in chain {
+        if dir.parent().is_none() || made.iter().any(|m| m == dir) {
+            continue;
+        }
+        push(args, ["--perms", "0755"]);
+        push_path(args, "--dir", dir);
+        made.push(dir.to_path_buf());
+    }
+}
+
+/// The namespaces to leave: all of them; as root, all but the user namespace (the test drops
+/// to its own user instead, with `setpriv`).
+fn unshare(args: &mut Vec<OsString>, root: bool) {
+    if root {
+        push(
+            args,
+            [
+                "--unshare-ipc",
+                "--unshare-pid",
+                "--unshare-net",
+                "--unshare-uts",
+                "--unshare-cgroup-try",
+            ],
+        );
+    } else {
+        push(args, ["--unshare-all"]);
+    }
+    push(args, ["--die-with-parent", "--new-session"]);
+}
+
+impl Policy {
+    /// The command that runs `bin` in `cwd` under this policy, the test's own arguments to
+    /// follow: with an empty environment but for what a test needs, reading no input.
+    #[must_use]
+    pub fn command(&self, bin: &Path, cwd: &Path) -> Command {
+        let inner = self.inner(bin);
+        let mut command = match self.level {
+            Level::Namespaces => {
+                let mut c = Command::new(&self.bwrap);
+                c.args(self.namespaces(bin, cwd)).args(&inner);
+                c
+            }
+            Level::User => {
+                let mut c = Command::new(&inner[0]);
+                c.args(&inner[1..]);
+                c
+            }
+        };
+        command
+            .env_clear()
+            .envs([
+                ("PATH", "/usr/bin:/bin"),
+                ("HOME", "/tmp"),
+                ("TMPDIR", "/tmp"),
+                ("RUST_BACKTRACE", "0"),
+                ("NO_COLOR", "1"),
+            ])
+            .stdin(Stdio::null());
+        command
+    }
+
+    /// bubblewrap's arguments, up to its `--`: the new root and namespaces.
+    fn namespaces(&self, bin: &Path, cwd: &Path) -> Vec<OsString> {
+        let mut args = Vec::new();
+        unshare(&mut args, self.uid.is_some());
+        system(&mut args);
+        push(&mut args, ["--proc", "/proc", "--dev", "/dev"]);
+        let size = self.limits.tmp.to_string();
+        for tmp in ["/tmp", "/dev/shm"] {
+            push(
+                &mut args,
+                ["--size", &size, "--perms", "1777", "--tmpfs", tmp],
+            );
+        }
+        let mut made = Vec::new();
+        for p in self.read.iter().filter(|p| p.exists()) {
+            ancestors(&mut args, &mut made, p);
+            push_path(&mut args, "--ro-bind", p);
+            args.push(p.as_os_str().to_owned());
+        }
+        ancestors(&mut args, &mut made, bin);
+        push_path(&mut args, "--ro-bind", bin);
+        args.push(bin.as_os_str().to_owned());
+        if !self.read.iter().any(|r| cwd.starts_with(r)) {
+            ancestors(&mut args, &mut made, &cwd.join("x"));
+        }
+        push_path(&mut args, "--chdir", cwd);
+        args.push("--".into());
+        args
+    }
+
+    /// The user and the limits, then `bin`: `setpriv` to the policy's user (when there is
+    /// one) without capabilities, `prlimit` with the limits.
+    fn inner(&self, bin: &Path) -> Vec<OsString> {
+        let mut args: Vec<OsString> = Vec::new();
+        if let Some(uid) = self.uid {
+            let id = uid.to_string();
+            args.push("setpriv".into());
+            for a in [
+                format!("--reuid={id}"),
+                format!("--regid={id}"),
+                "--clear-groups".into(),
+                "--inh-caps=-all".into(),
+                "--bounding-set=-all".into(),
+                "--".into(),
+            ] {
+                args.push(a.into());
+            }
+        }
+        let l = &self.limits;
+        args.push("prlimit".into());
+        for a in [
+            format!("--as={}", l.memory),
+            format!("--nproc={}", l.processes),
+            format!("--fsize={}", l.file_size),
+            format!("--nofile={}", l.open_files),
+            "--core=0".into(),
+            "--".into(),
+        ] {
+            args.push(a.into());
+        }
+        args.push(bin.as_os_str().to_owned());
+        args
+    }
+}
+
+/// Whether a user other than the owner can reach `path`: every directory from the root to it
+/// searchable by others (and the path itself readable, when it is a file).
+fn open_to_others(path: &Path) -> bool {
+    use std::os::unix::fs::PermissionsExt;
+    let Ok(path) = path.canonicalize() else {
+        return false;
+    };
+    path.ancestors().all(|a| {
+        std::fs::metadata(a).is_ok_and(|m| {
+            let mode = m.permissions().mode();
+            if m.is_dir() {
+                mode & 0o001 != 0
+            } else {
+                mode & 0o004 != 0
+            }
+        })
+    })
+}
+
+impl Sandbox {
+    /// Finds bubblewrap and tries a sandbox like the tests' with `true` in it; `Err` says in
+    /// one line why there can be none. `runner` is the `whitted` program, `worker` the
+    /// worker's number (its user id when the grader is root), `read` what the tests read.
+    pub fn probe(
+        runner: &Path,
+        worker: usize,
+        read: Vec<PathBuf>,
+        level: Level,
+    ) -> Result<Self, String> {
+        let bwrap = match level {
+            Level::Namespaces => on_path("bwrap").ok_or(
+                "bubblewrap (bwrap) is not installed: apt-get install bubblewrap".to_string(),
+            )?,
+            Level::User if !is_root() => {
+                return Err(
+                    "--sandbox user runs the tests as a user of their own, which only root can"
+                        .into(),
+                );
+            }
+            Level::User => PathBuf::new(),
+        };
+        for tool in ["setpriv", "prlimit"] {
+            if on_path(tool).is_none() {
+                return Err(format!("{tool} (util-linux) is not installed"));
+            }
+        }
+        let uid = is_root().then(|| FIRST_UID + u32::try_from(worker).unwrap_or(0));
+        let policy = Policy {
+            level,
+            bwrap,
+            uid,
+            limits: Limits::default(),
+            read,
+        };
+        let truth = on_path("true").ok_or("no `true` program on the PATH".to_string())?;
+        let out = policy
+            .command(&truth, Path::new("/tmp"))
+            .output()
+            .map_err(|e| format!("cannot start the sandbox: {e}"))?;
+        if !out.status.success() {
+            let why = String::from_utf8_lossy(&out.stderr);
+            return Err(format!(
+                "{} cannot make a sandbox here{}: {}",
+                if level == Level::User {
+                    "setpriv"
+                } else {
+                    "bubblewrap"
+                },
+                if level == Level::User {
+                    ""
+                } else {
+                    " (user namespaces off?)"
+                },
+                why.lines().next().unwrap_or("it failed").trim()
+            ));
+        }
+        let triple = host_triple().ok_or("`rustc -vV` names no host triple".to_string())?;
+        Ok(Self {
+            policy,
+            runner: runner.to_path_buf(),
+            triple,
+        })
+    }
+
+    /// The wrapper cargo builds in: the system (`/usr`, of `/etc` what the linker needs), the
+    /// toolchain and the registry (never cargo's credentials) read-only, the graded copy `project` read-only, the build directory `target_dir` writable, a private
+    /// `/tmp`, no network; its environment only what cargo needs.
+    /// `None` at [`Level::User`], whose build is not sandboxed.
+    #[must_use]
+    pub fn build_wrapper(&self, project: &Path, target_dir: &Path) -> Option<Wrapper> {
+        if self.policy.level == Level::User {
+            return None;
+        }
+        let mut args = Vec::new();
+        unshare(&mut args, self.policy.uid.is_some());
+        system(&mut args);
+        // of /etc only what the linker needs (`cc` is a link through the alternatives; the
+        // dynamic linker's cache): the build runs as the grader's user, and a body's
+        // include_bytes! must find nothing of the machine's own there
+        for etc in [
+            "/etc/alternatives",
+            "/etc/ld.so.cache",
+            "/etc/ld.so.conf",
+            "/etc/ld.so.conf.d",
+        ] {
+            if Path::new(etc).exists() {
+                push(&mut args, ["--ro-bind", etc, etc]);
+            }
+        }
+        push(
+            &mut args,
+            ["--proc", "/proc", "--dev", "/dev", "--tmpfs", "/tmp"],
+        );
+        let home = std::env::var_os("HOME").map(PathBuf::from);
+        let cargo_home = std::env::var_os("CARGO_HOME")
+            .map(PathBuf::from)
+            .or_else(|| home.as_ref().map(|h| h.join(".cargo")));
+        let rustup_home = std::env::var_os("RUSTUP_HOME")
+            .map(PathBuf::from)
+            .or_else(|| home.as_ref().map(|h| h.join(".rustup")));
+        let mut read: Vec<PathBuf> = Vec::new();
+        if let Some(c) = &cargo_home {
+            // the programs, the crates and the settings: never the credentials
+            for part in ["bin", "registry", "git", "config.toml", "config"] {
+                read.push(c.join(part));
+            }
+        }
+        read.extend(rustup_home.iter().cloned());
+        // a toolchain outside both homes ($CARGO set by a cargo that started us)
+        if let Some(cargo) = std::env::var_os("CARGO").map(PathBuf::from)
+            && let Some(toolchain) = cargo.parent().and_then(Path::parent)
+            && !read.iter().any(|r| toolchain.starts_with(r))
+            && !toolchain.starts_with("/usr")
+        {
+            read.push(toolchain.to_path_buf());
+        }
+        for p in read.iter().filter(|p| p.exists()) {
+            push_path(&mut args, "--ro-bind", p);
+            args.push(p.as_os_str().to_owned());
+        }
+        push_path(&mut args, "--bind", target_dir);
+        args.push(target_dir.as_os_str().to_owned());
+        // the copy after the build directory: it may lie inside it, and stays read-only
+        push_path(&mut args, "--ro-bind", project);
+        args.push(project.as_os_str().to_owned());
+        push_path(&mut args, "--chdir", project);
+        args.push("--".into());
+        let mut env: Vec<(OsString, OsString)> = vec![
+            ("CARGO_NET_OFFLINE".into(), "true".into()),
+            ("TMPDIR".into(), "/tmp".into()),
+            ("HOME".into(), "/tmp".into()),
+        ];
+        if let Some(c) = cargo_home {
+            env.push(("CARGO_HOME".into(), c.into_os_string()));
+        }
+        if let Some(r) = rustup_home {
+            env.push(("RUSTUP_HOME".into(), r.into_os_string()));
+        }
+        for (k, v) in std::env::vars_os() {
+            let name = k.to_string_lossy();
+            let keep = name == "PATH"
+                || name == "RUSTUP_TOOLCHAIN"
+                || name == "RUSTFLAGS"
+                || name == "CARGO_INCREMENTAL"
+                || name == "CARGO"
+                || name.starts_with("CARGO_PROFILE_")
+                || name.starts_with("CARGO_BUILD_");
+            if keep {
+                env.push((k, v));
+            }
+        }
+        Some(Wrapper {
+            program: self.policy.bwrap.clone().into_os_string(),
+            args,
+            env,
+        })
+    }
+
+    /// At [`Level::User`], before the tests run: refuses when one of `secrets` (the
+    /// instructor's project, the hidden tests) is open to other users, or when the build
+    /// directory is not (the tests' user must reach its binaries), and closes the graded copy
+    /// (which holds the hidden tests while they run) to other users until [`Sandbox::reopen`].
+    /// Nothing at
+    /// [`Level::Namespaces`], whose tests see none of these.
+    pub fn protect(
+        &self,
+        secrets: &[&Path],
+        target_dir: &Path,
+        project: &Path,
+    ) -> Result<(), ToolError> {
+        use std::os::unix::fs::PermissionsExt;
+        if self.policy.level != Level::User {
+            return Ok(());
+        }
+        for s in secrets {
+            if open_to_others(s) {
+                return Err(ToolError::Usage(format!(
+                    "--sandbox user: {} is open to other users, and the tests would read it: close it (chmod o-rwx)",
+                    s.display()
+                )));
+            }
+        }
+        if !open_to_others(target_dir) {
+            return Err(ToolError::Usage(format!(
+                "--sandbox user: the build directory {} is closed to other users, and the tests run as one: every directory above it must be searchable (o+x)",
+                target_dir.display()
+            )));
+        }
+        std::fs::set_permissions(project, std::fs::Permissions::from_mode(0o700))
+            .map_err(|e| ToolError::io(project, e))
+    }
+
+    /// Opens the graded copy again once the hidden tests have left it (the leaderboard's
+    /// render reads its scenes and figures as the tests' user).
+    pub fn reopen(&self, project: &Path) -> Result<(), ToolError> {
+        use std::os::unix::fs::PermissionsExt;
+        if self.policy.level != Level::User {
+            return Ok(());
+        }
+        std::fs::set_permissions(project, std::fs::Permissions::from_mode(0o755))
+            .map_err(|e| ToolError::io(project, e))
+    }
+
+    /// The environment nextest runs with: its target runner is [`RUNNER_COMMAND`], which
+    /// reads the policy from [`POLICY_VAR`].
+    pub fn runner_env(&self) -> Result<Vec<(OsString, OsString)>, ToolError> {
+        let runner = self.runner.to_string_lossy();
+        if runner.contains(char::is_whitespace) {
+            return Err(ToolError::Usage(format!(
+                "the sandbox's runner {runner} has a space in its path, which cargo's runner setting cannot hold"
+            )));
+        }
+        let var = format!(
+            "CARGO_TARGET_{}_RUNNER",
+            self.triple.to_uppercase().replace(['-', '.'], "_")
+        );
+        let policy = serde_json::to_string(&self.policy)
+            .map_err(|e| ToolError::Usage(format!("the sandbox's policy: {e}")))?;
+        Ok(vec![
+            (var.into(), format!("{runner} {RUNNER_COMMAND}").into()),
+            (POLICY_VAR.into(), policy.into()),
+        ])
+    }
+}
+
+/// The host's target triple, from `rustc -vV`.
+fn host_triple() -> Option<String> {
+    let rustc = std::env::var_os("RUSTC").unwrap_or_else(|| "rustc".into());
+    let out = Command::new(rustc).arg("-vV").output().ok()?;
+    String::from_utf8_lossy(&out.stdout)
+        .lines()
+        .find_map(|l| l.strip_prefix("host: "))
+        .map(|t| t.trim().to_string())
+}
+
+/// Copies what `from` gives to `to`, at most `cap` bytes: its first half as it comes, then,
+/// when there was more, a line saying how much was cut and the last half (where a panic's
+/// message is). Reads to the end either way, so the writer is never blocked, and holds at
+/// most `cap / 2` bytes.
+fn capped(mut from: impl Read, mut to: impl Write, cap: u64) {
+    let half = usize::try_from(cap / 2).unwrap_or(usize::MAX);
+    let mut head = 0usize;
+    let mut tail: std::collections::VecDeque<u8> = std::collections::VecDeque::new();
+    let mut dropped = 0u64;
+    let mut buf = [0u8; 16 * 1024];
+    loop {
+        let n = match from.read(&mut buf) {
+            Ok(0) | Err(_) => break,
+            Ok(n) => n,
+        };
+        let take = n.min(half - head);
+        if take > 0 {
+            let _ = to.write_all(&buf[..take]);
+            let _ = to.flush();
+            head += take;
+        }
+        tail.extend(&buf[take..n]);
+        if tail.len() > half {
+            let extra = tail.len() - half;
+            tail.drain(..extra);
+            dropped += extra as u64;
+        }
+    }
+    if dropped > 0 {
+        let _ = writeln!(to, "\n[whitted: {dropped} bytes of output cut here]");
+    }
+    let (a, b) = tail.as_slices();
+    let _ = to.write_all(a);
+    let _ = to.write_all(b);
+    let _ = to.flush();
+}
+
+/// The target runner: runs the test binary `command[0]` with its arguments in the sandbox
+/// that [`POLICY_VAR`] describes, passes its output on (cut at the policy's size) and ends as
+/// it ended (by the same signal when it was killed, so that nextest sees a crash).
+#[must_use]
+pub fn run_test(command: &[OsString]) -> ExitCode {
+    let fail = |why: String| {
+        eprintln!("whitted {RUNNER_COMMAND}: {why}");
+        ExitCode::from(2)
+    };
+    let Some((bin, args)) = command.split_first() else {
+        return fail("no test binary to run".into());
+    };
+    let policy: Policy = match std::env::var(POLICY_VAR)
+        .map_err(|e| e.to_string())
+        .and_then(|t| serde_json::from_str(&t).map_err(|e| e.to_string()))
+    {
+        Ok(p) => p,
+        Err(e) => return fail(format!("no sandbox policy in {POLICY_VAR}: {e}")),
+    };
+    let bin = Path::new(bin);
+    let cwd = std::env::current_dir().unwrap_or_else(|_| PathBuf::from("/tmp"));
+    let mut child = match policy
+        .command(bin, &cwd)
+        .args(args)
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+    {
+        Ok(c) => c,
+        Err(e) => return fail(format!("cannot start the sandbox: {e}")),
+    };
+    let cap = policy.limits.output;
+    let (out, err) = (child.stdout.take(), child.stderr.take());
+    std::thread::scope(|s| {
+        if let Some(err) = err {
+            s.spawn(move || capped(err, std::io::stderr(), cap));
+        }
+        if let Some(out) = out {
+            capped(out, std::io::stdout(), cap);
+        }
+    });
+    let status = match child.wait() {
+        Ok(s) => s,
+        Err(e) => return fail(format!("waiting for the sandbox: {e}")),
+    };
+    // killed by signal N (bubblewrap ends with 128 + N then): end the same way
+    let signal = {
+        use std::os::unix::process::ExitStatusExt;
+        status.signal().or_else(|| {
+            status
+                .code()
+                .filter(|c| (129..=128 + 31).contains(c))
+                .map(|c| c - 128)
+        })
+    };
+    let code = status.code().unwrap_or(1);
+    if let Some(signal) = signal {
+        let signal = signal.to_string();
+        let _ = Command::new("kill")
+            .args([OsStr::new("-s"), OsStr::new(&signal)])
+            .arg(std::process::id().to_string())
+            .status();
+        std::thread::sleep(std::time::Duration::from_millis(200));
+    }
+    ExitCode::from(u8::try_from(code).unwrap_or(1))
+}

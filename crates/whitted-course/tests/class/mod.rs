@@ -1,0 +1,97 @@
+//! What the tests that grade classes share: the project, its manifest, copies of the
+//! reference with one body changed, and the hand-written mutants.
+
+#![allow(dead_code)]
+
+use std::path::{Path, PathBuf};
+
+use whitted_course::manifest::{self, Manifest};
+use whitted_course::{files, handout};
+
+/// The workspace's root: this crate sits in `crates/whitted-course`.
+pub fn root() -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR"))
+        .ancestors()
+        .nth(2)
+        .expect("the crate sits two levels below the workspace's root")
+        .to_path_buf()
+}
+
+/// The project's manifest.
+pub fn manifest() -> Manifest {
+    manifest::load(&root().join(manifest::DEFAULT_PATH)).unwrap()
+}
+
+/// The entry of the exercise named `name`.
+pub fn index(m: &Manifest, name: &str) -> usize {
+    m.by_name(name)
+        .unwrap_or_else(|| panic!("no exercise named {name}"))
+}
+
+/// A copy of the reference project at `to`.
+pub fn copy(to: &Path) {
+    for f in files::project_files(&root()).unwrap() {
+        let dest = to.join(&f);
+        std::fs::create_dir_all(dest.parent().unwrap()).unwrap();
+        std::fs::copy(root().join(&f), dest).unwrap();
+    }
+}
+
+/// Replaces the body of the exercise named `id` in the copy at `dir` with `body`.
+pub fn set_body(dir: &Path, m: &Manifest, id: &str, body: &str) {
+    let r = &handout::regions(&root(), m).unwrap()[index(m, id)];
+    let path = dir.join(&r.file);
+    let text = std::fs::read_to_string(&path).unwrap();
+    assert!(
+        text.contains(&r.solution),
+        "exercise {id}: the body is not in the copy"
+    );
+    std::fs::write(&path, text.replacen(&r.solution, &format!("{body}\n"), 1)).unwrap();
+}
+
+/// `crates/whitted-course/tests/mutants/hand-written.toml`.
+#[derive(serde::Deserialize)]
+pub struct Mutants {
+    /// Its mutants.
+    pub mutant: Vec<Mutant>,
+}
+
+/// A mistake we expect: in the body of `exercise`, `find` replaced by `replace`.
+#[derive(serde::Deserialize)]
+pub struct Mutant {
+    /// Its name.
+    pub name: String,
+    /// The exercise it is in.
+    pub exercise: String,
+    /// The mistake, in words.
+    pub why: String,
+    /// The text of the reference body it changes.
+    pub find: String,
+    /// What it puts there.
+    pub replace: String,
+}
+
+/// The body of the mutant `mu`: its exercise's reference body with the change.
+pub fn mutant_body(m: &Manifest, mu: &Mutant) -> String {
+    let r = &handout::regions(&root(), m).unwrap()[index(m, &mu.exercise)];
+    assert!(
+        r.solution.contains(&mu.find),
+        "mutant {}: `{}` is not in exercise {}'s body",
+        mu.name,
+        mu.find,
+        mu.exercise
+    );
+    r.solution
+        .replacen(&mu.find, &mu.replace, 1)
+        .trim_end()
+        .to_string()
+}
+
+/// The hand-written mutants.
+pub fn mutants() -> Vec<Mutant> {
+    let text = std::fs::read_to_string(
+        root().join("crates/whitted-course/tests/mutants/hand-written.toml"),
+    )
+    .unwrap();
+    toml::from_str::<Mutants>(&text).unwrap().mutant
+}
