@@ -13,8 +13,9 @@
 //!     [--no-grade]  skip the grading
 //! ```
 //!
-//! The verdict is the first line of `cargo learn`'s report, the picture the `picture:` line after
-//! it. Every cargo it runs is the course tools' one runner ([`whitted_learn::cargo::command`]),
+//! The verdict is the first line of `cargo learn`'s report, the picture the `✓ picture:` or
+//! `✗ picture:` line after it (the student's render beside the book's figure and their
+//! difference). Every cargo it runs is the course tools' one runner ([`whitted_learn::cargo::command`]),
 //! every exercise is found by its name's markers, and copies are [`whitted_learn::files`]'.
 //! Times are wall-clock, medians and 90th percentiles of the saves; the machine should be
 //! otherwise idle.
@@ -97,12 +98,12 @@ fn cargo(dir: &Path, args: &[&str]) -> Command {
 }
 
 /// Runs `command`; returns when its stdout showed a line starting with one of `verdict`
-/// (or the end, when `verdict` is empty) and when it showed a line starting with `picture`,
-/// and the whole output.
+/// (or the end, when `verdict` is empty) and when it showed a line starting with one of
+/// `picture`, and the whole output.
 fn timed(
     mut command: Command,
     verdict: &[&str],
-    picture: Option<&str>,
+    picture: &[&str],
 ) -> (Duration, Option<Duration>, String) {
     let started = Instant::now();
     let mut child = command
@@ -118,7 +119,7 @@ fn timed(
             if seen_verdict.is_none() && verdict.iter().any(|v| line.starts_with(v)) {
                 seen_verdict = Some(started.elapsed());
             }
-            if seen_picture.is_none() && picture.is_some_and(|p| line.starts_with(p)) {
+            if seen_picture.is_none() && picture.iter().any(|p| line.starts_with(p)) {
                 seen_picture = Some(started.elapsed());
             }
             text += &line;
@@ -238,14 +239,15 @@ fn main() {
     let _ = cargo(&args.project, &warm).output();
 
     let verdict_marks: &[&str] = &["✗", "✓"];
-    let picture_mark = Some("✓ picture:");
+    // a picture drawn, the same as the book's or not (a chapter that cannot render yet is none)
+    let picture_mark: &[&str] = &["✓ picture:", "✗ picture:"];
     let temp = tempfile::tempdir().expect("a temporary directory");
     let mut firsts = Vec::new();
     let mut dir = PathBuf::new();
     for run in 0..args.runs.max(1) {
         dir = temp.path().join(format!("handout-{run}"));
         handout(&args.project, &dir);
-        let (verdict, _, _) = timed(cargo(&dir, &VERDICT), verdict_marks, None);
+        let (verdict, _, _) = timed(cargo(&dir, &VERDICT), verdict_marks, &[]);
         eprintln!(
             "first verdict on a fresh handout: {:.1} s",
             verdict.as_secs_f64()
