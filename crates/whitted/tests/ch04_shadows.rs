@@ -163,8 +163,9 @@ fn ex_transmittance_multiplies_the_shares() {
         .into_iter()
         .chain(std::iter::from_fn(|| -> Option<Real> {
             panic!(
-                "transmittance looked at an object after an opaque one (k_t = 0): stop at the \
-                 first 0, the share is 0 whatever comes after"
+                "transmittance of k_t = {:?}, … asked for a k_t after the opaque one (k_t = 0): \
+                 stop at the first 0, the share is 0 whatever comes after",
+                [0.5, 0.0]
             )
         }));
     assert_eq!(
@@ -430,7 +431,7 @@ fn ex_blocks_light_occluder_at_u_zero_does_not_shadow() {
     );
     assert!(
         !shadow::blocks(&floor, 0.0),
-        "the floor met at u = 0 (u_min = 0) blocks the feeler: u = 0 is where it starts"
+        "the floor met at u = {u:?} (u_min = 0) blocks the feeler: u = 0 is where it starts"
     );
     // the same point on the underside of a sphere above it: the feeler crosses it, u = 0.2
     assert_blocks(

@@ -7,7 +7,8 @@
 mod common;
 
 use common::{
-    TOL, assert_near, assert_vec_eq, centre, render_at, render_both_ways, render_here, scene,
+    TOL, assert_near, assert_vec_eq, centre, first_difference, render_at, render_both_ways,
+    render_here, scene,
 };
 use whitted::offset::Offset;
 use whitted::optics::{critical_angle, critical_angle_sine, indices, reflect, refract};
@@ -424,7 +425,11 @@ fn supersampling_is_the_same_every_run() {
     o.samples = 4;
     let (a, sa) = render_both_ways(&s, &o);
     let (b, _) = render_here(&s, &o);
-    assert!(a == b, "two renders with 4 samples per pixel differ");
+    let differ = first_difference(&a, &b);
+    assert!(
+        differ.is_none(),
+        "two renders with 4 samples per pixel differ: (x, y, first, second) = {differ:?}"
+    );
     assert_eq!(
         sa.primary,
         40 * 30 * 4,
@@ -433,8 +438,9 @@ fn supersampling_is_the_same_every_run() {
     o.samples = 1;
     let (c, _) = render_here(&s, &o);
     assert!(
-        a != c,
-        "the render with 4 samples per pixel is the same as with one"
+        first_difference(&a, &c).is_some(),
+        "the render with 4 samples per pixel is the same as with one, all {} pixels of it",
+        a.pixels.len()
     );
 }
 
@@ -766,12 +772,11 @@ fn ex_reflect_and_refract_the_recursion_stops_at_max_depth_or_at_the_weight_limi
     let (at_5, stats) = render_at(&s, Chapter::ReflectionRefraction, 6, 4);
     assert_eq!(stats.reflected, 0, "the mirror rays with max_depth = 0");
     let (at_4, _) = render_at(&s, Chapter::Shadows, 6, 4);
+    let differ = first_difference(&at_5, &at_4);
     assert!(
-        at_5 == at_4,
-        "the image with max_depth = 0 differs from chapter 4's: the first pixel is {} at \
-         chapter 5, {} at chapter 4",
-        at_5.pixels[0],
-        at_4.pixels[0]
+        differ.is_none(),
+        "the image with max_depth = 0 differs from chapter 4's: (x, y, chapter 5, chapter 4) = \
+         {differ:?}"
     );
 }
 

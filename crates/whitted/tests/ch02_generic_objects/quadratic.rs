@@ -85,7 +85,7 @@ fn ex_stable_roots_come_in_increasing_order() {
 fn ex_stable_roots_the_small_root_keeps_its_digits() {
     let (a, b, c) = (1.0, -1e8, 1.0);
     let (t1, t2) = stable_roots(a, b, c, discriminant(a, b, c)).unwrap_or_else(|| {
-        panic!("stable_roots of t² − 2·10⁸·t + 1 gave none, expected 5·10⁻⁹ and 2·10⁸")
+        panic!("stable_roots(a = {a}, b = {b}, c = {c}) gave none, expected 5·10⁻⁹ and 2·10⁸")
     });
     assert_near(
         "t₁/5·10⁻⁹ for t² − 2·10⁸·t + 1 (the small root, c/q)",

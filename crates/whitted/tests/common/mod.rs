@@ -67,19 +67,9 @@ pub fn render_both_ways(scene: &Scene, options: &Options) -> (Framebuffer, Stats
     packets.packets = true;
     let (fb, stats) = render_here(scene, &road);
     let (fb2, stats2) = render_here(scene, &packets);
-    let bits = |fb: &Framebuffer| -> Vec<_> {
-        fb.pixels
-            .iter()
-            .flat_map(|p| p.to_array().map(|x| x.to_bits()))
-            .collect()
-    };
-    let (road_bits, packet_bits) = (bits(&fb), bits(&fb2));
-    if let Some(i) = (0..road_bits.len()).find(|&i| road_bits[i] != packet_bits[i]) {
-        let p = i / 3;
-        let (x, y) = (p % fb.width as usize, p / fb.width as usize);
+    if let Some((x, y, road, packed)) = first_difference(&fb, &fb2) {
         panic!(
-            "packets changed the image: pixel ({x}, {y}) is {} by the road, {} with packets",
-            fb.pixels[p], fb2.pixels[p]
+            "packets changed the image: pixel ({x}, {y}) is {road} by the road, {packed} with packets"
         );
     }
     assert_eq!(
@@ -98,6 +88,16 @@ pub fn render_both_ways(scene: &Scene, options: &Options) -> (Framebuffer, Stats
         "packets changed the rays cast"
     );
     (fb, stats)
+}
+
+/// The first pixel, in row order, where two images of the same size differ bit for bit: its
+/// (x, y) and its colour in each.
+pub fn first_difference(a: &Framebuffer, b: &Framebuffer) -> Option<(u32, u32, Vec3, Vec3)> {
+    let bits = |p: &Vec3| p.to_array().map(|x| x.to_bits());
+    let i = (0..a.pixels.len().max(b.pixels.len()))
+        .find(|&i| a.pixels.get(i).map(bits) != b.pixels.get(i).map(bits))?;
+    let at = |fb: &Framebuffer| fb.pixels.get(i).copied().unwrap_or(Vec3::NAN);
+    Some((i as u32 % a.width, i as u32 / a.width, at(a), at(b)))
 }
 
 /// Renders as [`render`] does, on threads of this test's own. A panic on one of them (an
