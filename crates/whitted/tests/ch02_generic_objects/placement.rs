@@ -337,7 +337,7 @@ fn ex_normal_to_world_normals_go_back_by_the_inverse_transpose() {
     ] {
         let n = placement.normal_to_world(n_object);
         assert_vec_eq(
-            &format!("n/‖n‖ for {what}, n = {n}"),
+            &format!("n/‖n‖ for {what} (n = {n})"),
             unit(n),
             expected,
             TOL,
@@ -370,7 +370,7 @@ fn ex_normal_to_world_normals_come_back_unit() {
         ),
     ] {
         let n = placed(&steps, what).normal_to_world(n_object);
-        assert_near(&format!("‖n‖ for {what}, n = {n}"), n.length(), 1.0, TOL);
+        assert_near(&format!("‖n‖ for {what} (n = {n})"), n.length(), 1.0, TOL);
     }
     assert_vec_eq(
         "n for the cone's n′ = (0, −1, 1) under the identity: (0, −1, 1)/√2",
@@ -400,7 +400,7 @@ fn ex_normal_to_world_under_a_non_uniform_scale_the_normal_of_a_hit_is_perpendic
     let right = vec3(1.0, 2.0, 0.0) / (5.0 as Real).sqrt();
     assert_vec_eq(
         &format!(
-            "n/‖n‖ at P {what}, n = {}: (M⁻¹)ᵀ·n′ made unit (M·n′ would give (2, 1, 0)/√5)",
+            "n/‖n‖ at P {what} (n = {}): (M⁻¹)ᵀ·n′ made unit; M·n′ would give (2, 1, 0)/√5",
             hit.normal
         ),
         unit(hit.normal),
@@ -410,7 +410,7 @@ fn ex_normal_to_world_under_a_non_uniform_scale_the_normal_of_a_hit_is_perpendic
     // the tangent at P: M·(−1/√2, 1/√2, 0)
     let tangent = Vec3::new(-s, 1.0 / s, 0.0);
     assert_near(
-        &format!("n·tangent at P, n = {}, tangent = {tangent}", hit.normal),
+        &format!("n·tangent at P (n = {}, tangent = {tangent})", hit.normal),
         hit.normal.dot(tangent),
         0.0,
         10.0 * TOL,
