@@ -477,7 +477,8 @@ pub fn place(root: &Path, name: &str) -> Option<(PathBuf, usize)> {
 pub fn message_lines(text: &str) -> Vec<&str> {
     text.lines()
         .filter(|l| {
-            !l.trim().is_empty() && !(l.starts_with("note: ") && l.contains("RUST_BACKTRACE"))
+            let backtrace_note = l.starts_with("note: ") && l.contains("RUST_BACKTRACE");
+            !l.trim().is_empty() && !backtrace_note
         })
         .collect()
 }
