@@ -365,30 +365,20 @@ fn ex_pixel_ray_renderer_samples_pixel_centres_not_corners() {
 #[test]
 fn ex_pixel_ray_top_image_row_looks_up() {
     let cam = straight_camera(60.0, 1.0, 10, 10);
-    for (x, y, side, up) in [
-        (5, 0, "the top row: up, d·v > 0", true),
-        (5, 9, "the bottom row: down, d·v < 0", false),
+    for (x, y, name, positive, side) in [
+        (5, 0, "v", true, "the top row looks up"),
+        (5, 9, "v", false, "the bottom row looks down"),
+        (0, 5, "u", false, "the left column looks left"),
+        (9, 5, "u", true, "the right column looks right"),
     ] {
         let d = cam.pixel_ray(x, y, 0.5, 0.5).dir;
-        let dv = d.dot(cam.v());
+        let along = d.dot(if name == "v" { cam.v() } else { cam.u() });
         assert!(
-            if up { dv > 0.0 } else { dv < 0.0 },
-            "d of pixel_ray(x = {x}, y = {y}, ½, ½) of 10 × 10 pixels is {d}, d·v = {}; \
-             expected {side} (y counts rows from the top, r from the bottom)",
-            dv
-        );
-    }
-    for (x, y, side, right) in [
-        (0, 5, "the left column: d·u < 0", false),
-        (9, 5, "the right column: d·u > 0", true),
-    ] {
-        let d = cam.pixel_ray(x, y, 0.5, 0.5).dir;
-        let du = d.dot(cam.u());
-        assert!(
-            if right { du > 0.0 } else { du < 0.0 },
-            "d of pixel_ray(x = {x}, y = {y}, ½, ½) of 10 × 10 pixels is {d}, d·u = {}; \
-             expected {side}",
-            du
+            if positive { along > 0.0 } else { along < 0.0 },
+            "d of pixel_ray(x = {x}, y = {y}, ½, ½) of 10 × 10 pixels is {d}, d·{name} = \
+             {along}: expected {side}, d·{name} {} 0 (y counts rows from the top, r from the \
+             bottom)",
+            if positive { ">" } else { "<" }
         );
     }
 }

@@ -81,18 +81,8 @@ fn ex_hit_cone_cone_wall_two_hits_with_normals_x_y_one_minus_z() {
         let what = format!("from (0, −5, 0) along +y, {numerics:?}");
         let hits = cone::intersect(&ray([0.0, -5.0, 0.0], [0.0, 1.0, 0.0]), numerics);
         assert_hits(&what, &hits, &[(4.0, Part::Wall), (6.0, Part::Wall)]);
-        assert_vec_eq(
-            &format!("n/‖n‖ of the hit at t = 4 {what}: (x, y, 1 − z) made unit"),
-            unit(nth(&hits, 0, &what).normal),
-            vec3(0.0, -1.0, 1.0) * k,
-            TOL,
-        );
-        assert_vec_eq(
-            &format!("n/‖n‖ of the hit at t = 6 {what}: (x, y, 1 − z) made unit"),
-            unit(nth(&hits, 1, &what).normal),
-            vec3(0.0, 1.0, 1.0) * k,
-            TOL,
-        );
+        assert_normal_direction(&what, &hits, 0, vec3(0.0, -1.0, 1.0) * k, TOL);
+        assert_normal_direction(&what, &hits, 1, vec3(0.0, 1.0, 1.0) * k, TOL);
     }
 }
 
@@ -107,18 +97,8 @@ fn ex_hit_cone_cone_base_then_wall() {
         let what = format!("from (0.5, 0, −3) along +z, {numerics:?}");
         let hits = cone::intersect(&ray([0.5, 0.0, -3.0], [0.0, 0.0, 1.0]), numerics);
         assert_hits(&what, &hits, &[(2.0, Part::Base), (3.5, Part::Wall)]);
-        assert_vec_eq(
-            &format!("n of the base's hit {what}"),
-            nth(&hits, 0, &what).normal,
-            Vec3::NEG_Z,
-            TOL,
-        );
-        assert_vec_eq(
-            &format!("n/‖n‖ of the wall's hit at t = 3.5 {what}"),
-            unit(nth(&hits, 1, &what).normal),
-            vec3(1.0, 0.0, 1.0) * k,
-            TOL,
-        );
+        assert_normal(&what, &hits, 0, Vec3::NEG_Z, TOL);
+        assert_normal_direction(&what, &hits, 1, vec3(1.0, 0.0, 1.0) * k, TOL);
     }
 }
 
@@ -144,12 +124,7 @@ fn ex_hit_cone_cone_apex_has_a_finite_unit_normal() {
     let what = "from (0, 0, 3) along −z, down the axis";
     let hits = cone::intersect(&ray([0.0, 0.0, 3.0], [0.0, 0.0, -1.0]), Numerics::Robust);
     assert_hits(what, &hits, &[(2.0, Part::Apex), (4.0, Part::Base)]);
-    assert_vec_eq(
-        &format!("n at the apex {what}"),
-        nth(&hits, 0, what).normal,
-        Vec3::Z,
-        TOL,
-    );
+    assert_normal(what, &hits, 0, Vec3::Z, TOL);
 }
 
 /// "Generic Cone": a ray touching the wall at z = 0 (radius 1) has b² − ac = 0 and grazes once,
@@ -169,12 +144,7 @@ fn ex_hit_cone_cone_tangent_ray_grazes_once() {
         let what = format!("from (1, −5, 0) along +y, tangent, {numerics:?}");
         let hits = cone::intersect(&r, numerics);
         assert_hits(&what, &hits, &[(5.0, Part::Wall)]);
-        assert_vec_eq(
-            &format!("n/‖n‖ of the graze {what}"),
-            unit(nth(&hits, 0, &what).normal),
-            vec3(1.0, 0.0, 1.0) * k,
-            TOL,
-        );
+        assert_normal_direction(&what, &hits, 0, vec3(1.0, 0.0, 1.0) * k, TOL);
     }
     let hits = cone::intersect(&ray([1.2, -5.0, 0.0], [0.0, 1.0, 0.0]), Numerics::Robust);
     assert!(
@@ -193,12 +163,7 @@ fn ex_hit_cone_cone_base_has_radius_two() {
         let what = format!("from (1.5, 0, −3) along +z, {numerics:?} (the base has radius 2)");
         let hits = cone::intersect(&ray([1.5, 0.0, -3.0], [0.0, 0.0, 1.0]), numerics);
         assert_hits(&what, &hits, &[(2.0, Part::Base), (2.5, Part::Wall)]);
-        assert_vec_eq(
-            &format!("n/‖n‖ of the wall's hit at t = 2.5 {what}"),
-            unit(nth(&hits, 1, &what).normal),
-            vec3(1.0, 0.0, 1.0) * k,
-            TOL,
-        );
+        assert_normal_direction(&what, &hits, 1, vec3(1.0, 0.0, 1.0) * k, TOL);
         // just outside the radius-2 base: a miss
         let hits = cone::intersect(&ray([2.01, 0.0, -3.0], [0.0, 0.0, 1.0]), numerics);
         assert!(

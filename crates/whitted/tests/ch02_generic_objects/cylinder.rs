@@ -64,18 +64,8 @@ fn ex_hit_cylinder_cylinder_wall_two_hits_with_normals_x_y_0() {
         let what = format!("from (0, −5, 0.5) along +y, {numerics:?}");
         let hits = cylinder::intersect(&ray([0.0, -5.0, 0.5], [0.0, 1.0, 0.0]), numerics);
         assert_hits(&what, &hits, &[(4.0, Part::Wall), (6.0, Part::Wall)]);
-        assert_vec_eq(
-            &format!("n of the hit at t = 4 {what}: (x, y, 0)"),
-            nth(&hits, 0, &what).normal,
-            Vec3::NEG_Y,
-            TOL,
-        );
-        assert_vec_eq(
-            &format!("n of the hit at t = 6 {what}: (x, y, 0)"),
-            nth(&hits, 1, &what).normal,
-            Vec3::Y,
-            TOL,
-        );
+        assert_normal(&what, &hits, 0, Vec3::NEG_Y, TOL);
+        assert_normal(&what, &hits, 1, Vec3::Y, TOL);
     }
 }
 
@@ -96,12 +86,7 @@ fn ex_hit_cylinder_cylinder_miss_beyond_the_caps_and_tangent_graze() {
         let what = format!("from (1, −5, 0) along +y, tangent to the wall, {numerics:?}");
         let graze = cylinder::intersect(&ray([1.0, -5.0, 0.0], [0.0, 1.0, 0.0]), numerics);
         assert_hits(&what, &graze, &[(5.0, Part::Wall)]);
-        assert_vec_eq(
-            &format!("n of the graze at t = 5 {what}"),
-            nth(&graze, 0, &what).normal,
-            Vec3::X,
-            TOL,
-        );
+        assert_normal(&what, &graze, 0, Vec3::X, TOL);
     }
 }
 
@@ -114,18 +99,8 @@ fn ex_hit_cylinder_cylinder_ray_along_the_axis_crosses_both_caps() {
         let what = format!("from (0.3, 0.2, 5) along −z, {numerics:?}");
         let hits = cylinder::intersect(&ray([0.3, 0.2, 5.0], [0.0, 0.0, -1.0]), numerics);
         assert_hits(&what, &hits, &[(4.0, Part::TopCap), (6.0, Part::BottomCap)]);
-        assert_vec_eq(
-            &format!("n of the top cap's hit {what}"),
-            nth(&hits, 0, &what).normal,
-            Vec3::Z,
-            TOL,
-        );
-        assert_vec_eq(
-            &format!("n of the bottom cap's hit {what}"),
-            nth(&hits, 1, &what).normal,
-            Vec3::NEG_Z,
-            TOL,
-        );
+        assert_normal(&what, &hits, 0, Vec3::Z, TOL);
+        assert_normal(&what, &hits, 1, Vec3::NEG_Z, TOL);
     }
 }
 
@@ -138,11 +113,6 @@ fn ex_hit_cylinder_cylinder_ray_from_cap_to_wall() {
         let what = format!("from (0, 0, 2) along (0.5, 0, −1), {numerics:?}");
         let hits = cylinder::intersect(&ray([0.0, 0.0, 2.0], [0.5, 0.0, -1.0]), numerics);
         assert_hits(&what, &hits, &[(1.0, Part::TopCap), (2.0, Part::Wall)]);
-        assert_vec_eq(
-            &format!("n of the wall's hit at t = 2 {what}"),
-            nth(&hits, 1, &what).normal,
-            Vec3::X,
-            TOL,
-        );
+        assert_normal(&what, &hits, 1, Vec3::X, TOL);
     }
 }

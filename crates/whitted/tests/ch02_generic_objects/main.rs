@@ -64,6 +64,35 @@ fn assert_entering(what: &str, hits: &Hits, expected: &[bool]) {
     );
 }
 
+/// Asserts the normal of hit number `i` of `hits`, the hits of the ray `what`; the message
+/// names the hit by its t and part.
+#[track_caller]
+fn assert_normal(what: &str, hits: &Hits, i: usize, expected: Vec3, tol: Real) {
+    let h = nth(hits, i, what);
+    assert_vec_eq(
+        &format!("n of hit {i} (t = {}, {:?}) of the ray {what}", h.t, h.part),
+        h.normal,
+        expected,
+        tol,
+    );
+}
+
+/// Asserts the direction n/‖n‖ of the normal of hit number `i`, for normals that are not
+/// unit (the cone's wall has (x, y, 1 − z)).
+#[track_caller]
+fn assert_normal_direction(what: &str, hits: &Hits, i: usize, expected: Vec3, tol: Real) {
+    let h = nth(hits, i, what);
+    assert_vec_eq(
+        &format!(
+            "n/‖n‖ of hit {i} (t = {}, {:?}, n = {}) of the ray {what}",
+            h.t, h.part, h.normal
+        ),
+        unit(h.normal),
+        expected,
+        tol,
+    );
+}
+
 /// The hit number `i` of `hits`, which must be there; `what` names the ray.
 #[track_caller]
 fn nth(hits: &Hits, i: usize, what: &str) -> Hit {

@@ -283,18 +283,8 @@ fn ex_hit_placed_shape_a_placed_shape_is_hit_at_the_world_rays_t() {
     let world = ray([0.0, 0.0, 0.0], [0.0, 0.0, -2.0]);
     let hits = Shape::Sphere.intersect_placed(placement.inv(), &world, Numerics::Robust);
     assert_hits(what, &hits, &[(4.0, Part::Surface), (6.0, Part::Surface)]);
-    assert_vec_eq(
-        &format!("n′ (object space) of the hit at t = 4 {what}"),
-        nth(&hits, 0, what).normal,
-        Vec3::Z,
-        TOL,
-    );
-    assert_vec_eq(
-        &format!("n′ (object space) of the hit at t = 6 {what}"),
-        nth(&hits, 1, what).normal,
-        Vec3::NEG_Z,
-        TOL,
-    );
+    assert_normal(what, &hits, 0, Vec3::Z, TOL);
+    assert_normal(what, &hits, 1, Vec3::NEG_Z, TOL);
 }
 
 /// "Surface Normals at Intersections": n = (M⁻¹)ᵀ·n′ points the right way. Under the scale
@@ -439,28 +429,13 @@ fn placed_cylinder_from_base_top_radius() {
     let across = "from (−3, 1, 0) along +x across the cylinder from (0, 0, 0) to (0, 4, 0)";
     let hits = o.intersect(&ray([-3.0, 1.0, 0.0], [1.0, 0.0, 0.0]), Numerics::Robust);
     assert_hits(across, &hits, &[(2.5, Part::Wall), (3.5, Part::Wall)]);
-    assert_vec_eq(
-        &format!("n of the first hit {across}"),
-        nth(&hits, 0, across).normal,
-        Vec3::NEG_X,
-        TOL,
-    );
+    assert_normal(across, &hits, 0, Vec3::NEG_X, TOL);
     // down the axis: top cap at y = 4, bottom at y = 0
     let down = "from (0.1, 10, 0) along −y down the cylinder's axis";
     let hits = o.intersect(&ray([0.1, 10.0, 0.0], [0.0, -1.0, 0.0]), Numerics::Robust);
     assert_hits(down, &hits, &[(6.0, Part::TopCap), (10.0, Part::BottomCap)]);
-    assert_vec_eq(
-        &format!("n of the top cap's hit {down}"),
-        nth(&hits, 0, down).normal,
-        Vec3::Y,
-        TOL,
-    );
-    assert_vec_eq(
-        &format!("n of the bottom cap's hit {down}"),
-        nth(&hits, 1, down).normal,
-        Vec3::NEG_Y,
-        TOL,
-    );
+    assert_normal(down, &hits, 0, Vec3::Y, TOL);
+    assert_normal(down, &hits, 1, Vec3::NEG_Y, TOL);
 }
 
 /// "Ray Tracing Process": a zero scale has no inverse; the placement refuses it.

@@ -10,12 +10,7 @@ fn ex_hit_plane_plane_is_hit_at_minus_ez_over_dz() {
     let above = "from (3, −1, 2) along (1, 0, −0.5)";
     let hits = plane::intersect(&ray([3.0, -1.0, 2.0], [1.0, 0.0, -0.5]));
     assert_hits(above, &hits, &[(4.0, Part::Surface)]);
-    assert_vec_eq(
-        &format!("n of the hit {above}"),
-        nth(&hits, 0, above).normal,
-        Vec3::Z,
-        TOL,
-    );
+    assert_normal(above, &hits, 0, Vec3::Z, TOL);
     assert_entering(&format!("{above}, from the +z side"), &hits, &[true]);
     let below = "from (0, 0, −2) along (0, 0, 4)";
     let hits = plane::intersect(&ray([0.0, 0.0, -2.0], [0.0, 0.0, 4.0]));

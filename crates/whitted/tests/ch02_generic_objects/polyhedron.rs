@@ -39,18 +39,8 @@ fn ex_hit_polyhedron_cube_entering_and_leaving_facets() {
     let what = "from (0.2, 0.3, 5) along −z through the cube";
     let hits = Polyhedron::cube().intersect(&ray([0.2, 0.3, 5.0], [0.0, 0.0, -1.0]));
     assert_hits(what, &hits, &[(4.0, Part::Facet(4)), (6.0, Part::Facet(5))]);
-    assert_vec_eq(
-        &format!("n of the entering hit {what}: facet +z's"),
-        nth(&hits, 0, what).normal,
-        Vec3::Z,
-        TOL,
-    );
-    assert_vec_eq(
-        &format!("n of the leaving hit {what}: facet −z's"),
-        nth(&hits, 1, what).normal,
-        Vec3::NEG_Z,
-        TOL,
-    );
+    assert_normal(what, &hits, 0, Vec3::Z, TOL);
+    assert_normal(what, &hits, 1, Vec3::NEG_Z, TOL);
     assert_entering(what, &hits, &[true, false]);
 }
 
@@ -129,18 +119,8 @@ fn ex_hit_polyhedron_octahedron_hits_through_its_facets() {
         10.0 * TOL
     );
     let k = 1.0 / (3.0 as Real).sqrt();
-    assert_vec_eq(
-        &format!("n of the entering hit {what}"),
-        nth(&hits, 0, what).normal,
-        vec3(1.0, 1.0, 1.0) * k,
-        TOL,
-    );
-    assert_vec_eq(
-        &format!("n of the leaving hit {what}"),
-        nth(&hits, 1, what).normal,
-        vec3(-1.0, 1.0, 1.0) * k,
-        TOL,
-    );
+    assert_normal(what, &hits, 0, vec3(1.0, 1.0, 1.0) * k, TOL);
+    assert_normal(what, &hits, 1, vec3(-1.0, 1.0, 1.0) * k, TOL);
 }
 
 /// "Convex Polyhedra": the tetrahedron with vertices (1,1,1), (1,−1,−1), (−1,1,−1), (−1,−1,1),
@@ -151,18 +131,8 @@ fn ex_hit_polyhedron_tetrahedron_hits_through_its_facets() {
     let hits = Polyhedron::tetrahedron().intersect(&ray([0.2, 0.0, 5.0], [0.0, 0.0, -1.0]));
     let k = 1.0 / (3.0 as Real).sqrt();
     assert_hits(what, &hits, &[(4.2, Part::Facet(2)), (5.8, Part::Facet(3))]);
-    assert_vec_eq(
-        &format!("n of the entering hit {what}"),
-        nth(&hits, 0, what).normal,
-        vec3(1.0, -1.0, 1.0) * k,
-        TOL,
-    );
-    assert_vec_eq(
-        &format!("n of the leaving hit {what}"),
-        nth(&hits, 1, what).normal,
-        vec3(1.0, 1.0, -1.0) * k,
-        TOL,
-    );
+    assert_normal(what, &hits, 0, vec3(1.0, -1.0, 1.0) * k, TOL);
+    assert_normal(what, &hits, 1, vec3(1.0, 1.0, -1.0) * k, TOL);
     // every preset's vertices satisfy n·P ≤ d with equality on three or more facets
     let vertices = [
         [1.0, 1.0, 1.0],
@@ -347,19 +317,9 @@ fn ex_hit_polyhedron_polyhedron_enters_where_n_dot_d_is_negative_and_leaves_wher
                 (expected[1].0, Part::Facet(expected[1].1)),
             ],
         );
+        assert_normal(&what, &hits, 0, expected[0].2, TOL);
+        assert_normal(&what, &hits, 1, expected[1].2, TOL);
         let [enter, leave] = [nth(&hits, 0, &what), nth(&hits, 1, &what)];
-        assert_vec_eq(
-            &format!("n of the entering hit {what}"),
-            enter.normal,
-            expected[0].2,
-            TOL,
-        );
-        assert_vec_eq(
-            &format!("n of the leaving hit {what}"),
-            leave.normal,
-            expected[1].2,
-            TOL,
-        );
         assert_entering(
             &format!(
                 "{what} (n·d = {} then {})",

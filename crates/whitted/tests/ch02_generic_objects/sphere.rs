@@ -77,19 +77,8 @@ fn ex_hit_sphere_sphere_two_hits_with_the_point_as_normal() {
         &hits,
         &[(4.0, Part::Surface), (6.0, Part::Surface)],
     );
-    let [h1, h2] = [nth(&hits, 0, through), nth(&hits, 1, through)];
-    assert_vec_eq(
-        &format!("n of the hit at t = 4 {through}"),
-        h1.normal,
-        Vec3::Z,
-        TOL,
-    );
-    assert_vec_eq(
-        &format!("n of the hit at t = 6 {through}"),
-        h2.normal,
-        Vec3::NEG_Z,
-        TOL,
-    );
+    assert_normal(through, &hits, 0, Vec3::Z, TOL);
+    assert_normal(through, &hits, 1, Vec3::NEG_Z, TOL);
     assert_entering(through, &hits, &[true, false]);
     // an oblique ray: e = (0.6, 0, 5), d = (0, 0, −1) meets z = ±0.8
     let oblique = "from (0.6, 0, 5) along −z";
@@ -99,12 +88,7 @@ fn ex_hit_sphere_sphere_two_hits_with_the_point_as_normal() {
         &hits,
         &[(4.2, Part::Surface), (5.8, Part::Surface)],
     );
-    assert_vec_eq(
-        &format!("n of the hit at t = 4.2 {oblique}: P"),
-        nth(&hits, 0, oblique).normal,
-        vec3(0.6, 0.0, 0.8),
-        10.0 * TOL,
-    );
+    assert_normal(oblique, &hits, 0, vec3(0.6, 0.0, 0.8), 10.0 * TOL);
 }
 
 /// "Generic Sphere": b² − ac = 0 grazes (one hit), b² − ac < 0 misses.
@@ -115,12 +99,7 @@ fn ex_hit_sphere_sphere_tangent_ray_grazes_once_and_outside_ray_misses() {
             let what = format!("from {e:?} along −z, {numerics:?} (b² − ac = 0)");
             let hits = sphere::intersect(&ray(e, [0.0, 0.0, -1.0]), numerics);
             assert_hits(&what, &hits, &[(5.0, Part::Surface)]);
-            assert_vec_eq(
-                &format!("n of the graze at t = 5 {what}"),
-                nth(&hits, 0, &what).normal,
-                graze,
-                TOL,
-            );
+            assert_normal(&what, &hits, 0, graze, TOL);
         }
         // along −z from (1.5, 0, 5) and from (0, 2, 5) it misses (b² − ac < 0)
         for e in [[1.5, 0.0, 5.0], [0.0, 2.0, 5.0]] {
