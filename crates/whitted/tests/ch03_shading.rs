@@ -1,7 +1,7 @@
 //! Chapter 3 — shading (notes: "Shading"): ambient, diffuse and specular per RGB channel,
 //! attenuation, several lights, and the rays a shaded render casts.
 //!
-//! A test named `ex3_K_…` checks exercise 3.K of `chapters/formulas.toml`. The local light
+//! A test named `ex_NAME_…` checks the exercise NAME of `chapters/formulas.toml`. The local light
 //! (3.7) is seen only through the renderer, which also asks `Tracer::feeler` (4.4) for a
 //! feeler and hands the colour to `Tracer::reflect_and_refract` (5.5): before chapter 4 and 5
 //! they give nothing and return it unchanged, but they must not be `todo!()`.

@@ -1,8 +1,8 @@
 //! Chapter 4 — shadows (notes: "Shadowing"): feeler rays S(u) = P + (L − P)u, occluders with
 //! u ∈ ]0, 1], translucent occluders, and no self-shadowing ("acne").
 //!
-//! A test named `ex4_K_…` checks exercise 4.K of `chapters/formulas.toml`. `Tracer::feeler`
-//! (4.4) is seen only through the renderer, which hands each colour to
+//! A test named `ex_NAME_…` checks the exercise NAME of `chapters/formulas.toml`.
+//! `Tracer::feeler` (4.4) is seen only through the renderer, which hands each colour to
 //! `Tracer::reflect_and_refract` (5.5): before chapter 5 it returns the colour unchanged, but it
 //! must not be `todo!()`.
 

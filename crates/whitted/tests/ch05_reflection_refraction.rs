@@ -1,7 +1,7 @@
 //! Chapter 5 — reflection and refraction (notes: "Reflection and Refraction", "Lighting
 //! Equations"): the mirror direction, Snell's law, total internal reflection, recursion.
 //!
-//! A test named `ex5_K_…` checks exercise 5.K of `chapters/formulas.toml`;
+//! A test named `ex_NAME_…` checks the exercise NAME of `chapters/formulas.toml`;
 //! `Tracer::reflect_and_refract` (5.5) is seen through the renderer and the inspector.
 
 mod common;
