@@ -176,9 +176,9 @@ fn macro_problem(name: &str, args: &[Vec<TokenTree>]) -> Option<String> {
 /// - `.expect("what was expected")` and `.unwrap_or_else(|| panic!("… {v} …"))`: the failure
 ///   says what was missing (an `expect` has no format string; its text names the quantity).
 ///
-/// Refused: a bare `assert!(…)` (`assertion failed` and nothing else: the three cases of
-/// issue 28 were `assert!(close(at(8.0, 0.0), (2.0, -1.5)))`,
-/// `assert!(hits.as_slice()[0].entering)` and `assert!(!nearer(2.0, 1, 2.0, 0))`), an
+/// Refused: a bare `assert!(…)` (`assertion failed` and nothing else, as
+/// `assert!(close(at(8.0, 0.0), (2.0, -1.5)))`, `assert!(hits.as_slice()[0].entering)` or
+/// `assert!(!nearer(2.0, 1, 2.0, 0))` would fail), an
 /// `assert_eq!` without a message, approx's macros, a `panic!` without a value, and every
 /// `.unwrap()` or `.unwrap_err()`: nearly every value in these files comes through an exercise
 /// (a scene's parse builds the camera and the placements), and `called Option::unwrap() on a
@@ -258,7 +258,8 @@ fn every_failure_of_the_students_tests_shows_a_value() {
     );
 }
 
-/// The check finds the three assertions of issue 28 if they came back, each at its line, and
+/// The check finds the three bare assertions above (a pixel's place, a hit's entering flag, the
+/// tie rule of the nearest hit) should they be written again, each at its line, and
 /// the other kinds it refuses; it lets pass what shows a value.
 #[test]
 fn the_check_finds_assertions_without_a_value_and_lets_the_others_pass() {
