@@ -698,3 +698,143 @@ fn learn_shows_every_failing_test_the_telling_one_first() {
     assert!(at("right = 1.0") < at("assertion failed: ok"), "{text}");
     assert!(!text.contains("more of its tests"), "{text}");
 }
+
+/// The todo!() panic of exercise `name`, as a test's output shows it.
+fn stopped_at(m: &Manifest, name: &str) -> String {
+    let x = &m.entries[m.find(name).unwrap()].exercise;
+    format!(
+        "thread 't' panicked at crates/whitted/src/shadow.rs:50:5:\nnot yet implemented: {}\n",
+        todo::message(&x.name, &x.id, &x.title, "R.md")
+    )
+}
+
+/// An exercise whose failing tests stop at an earlier exercise's todo!() waits for it, though
+/// one of them printed nothing (a panic on a thread another test started prints in that
+/// test's output): 4.4 on a handout of chapter 4 waits for 4.1, in the state and in the list.
+/// When all of its failures are silent, nothing says it waits: it is failing.
+#[test]
+fn an_exercise_whose_tests_stop_at_an_earlier_todo_waits_though_one_printed_nothing() {
+    let m = manifest();
+    let i = m.find("send_feeler").unwrap();
+    let mut run = run_with_done(&m, i);
+    let target = binary(4);
+    let id = |rest: &str| format!("{target}::{}{rest}", m.entries[i].exercise.test_prefix());
+    run.outcomes.remove(&id("works"));
+    run.failures.remove(&id("works"));
+    for (rest, text) in [
+        ("a", stopped_at(&m, "feeler_ray")),
+        ("b", stopped_at(&m, "feeler_ray")),
+        ("silent", String::new()),
+    ] {
+        run.outcomes.insert(id(rest), TestOutcome::Failed);
+        run.failures.insert(id(rest), text);
+    }
+    // a silent test libtest printed no block for at all
+    run.outcomes.insert(id("unprinted"), TestOutcome::Failed);
+    let states = learn::states(&m, &run);
+    assert_eq!(states[i], State::Waiting("feeler_ray".into()));
+    let list = learn::list(&m, &states, Style::plain());
+    let line = list
+        .lines()
+        .find(|l| l.contains(&m.entries[i].exercise.title))
+        .unwrap_or_else(|| panic!("the list has no line for 4.4:\n{list}"));
+    assert!(
+        line.contains(&format!("waits for {}", m.display("feeler_ray"))),
+        "{line}"
+    );
+    // nothing but silence: failing, as far as anyone can tell
+    for rest in ["a", "b"] {
+        run.failures.insert(id(rest), String::new());
+    }
+    assert!(
+        matches!(learn::states(&m, &run)[i], State::Failing(_)),
+        "{:?}",
+        learn::states(&m, &run)[i]
+    );
+}
+
+/// The note of the first panic of a test process (`note: run with RUST_BACKTRACE=1 …`), and
+/// the one of a backtrace, never reach the verdict, whichever test carries them; the runner
+/// runs the tests with RUST_BACKTRACE=0 whatever the student's environment holds.
+#[test]
+fn the_backtrace_notes_never_reach_the_verdict() {
+    let m = manifest();
+    let i = m.find("near_plane_half_height").unwrap();
+    let x = &m.entries[i].exercise;
+    let mut run = run_with_done(&m, i);
+    let id = format!("{}::{}works", binary(1), x.test_prefix());
+    run.failures.insert(
+        id.clone(),
+        "\nthread 't' panicked at tests/ch01.rs:40:9:\nH for N = 1, θ = 60° = 1.7320508075688772, expected 0.5773502691896258 (tolerance 1e-12, off by 1.1547005383792515e0)\nnote: run with `RUST_BACKTRACE=1` environment variable to display a backtrace\nnote: Some details are omitted, run with `RUST_BACKTRACE=full` for a verbose backtrace.\n".into(),
+    );
+    let states = learn::states(&m, &run);
+    assert!(matches!(states[i], State::Failing(_)), "{:?}", states[i]);
+    let text = learn::verdict(&m, &run, &states, i, Style::plain(), None);
+    assert!(text.contains("H for N = 1, θ = 60° = 1.73"), "{text}");
+    assert!(!text.contains("RUST_BACKTRACE"), "{text}");
+    assert_eq!(
+        learn::message_lines(&run.failures[&id]).len(),
+        2,
+        "the panic's place and its message"
+    );
+}
+
+/// The runner sets RUST_BACKTRACE=0 for the test executables it runs (a script standing for
+/// one prints what it finds in its failure's block).
+#[cfg(unix)]
+#[test]
+fn the_runner_runs_tests_without_backtraces() {
+    use std::os::unix::fs::PermissionsExt;
+    let dir = tempfile::tempdir().unwrap();
+    let exe = dir.path().join("fake-tests");
+    std::fs::write(
+        &exe,
+        "#!/bin/sh\nprintf 'running 1 test\\ntest t ... FAILED\\n\\nfailures:\\n\\n---- t stdout ----\\nRUST_BACKTRACE=%s\\n\\nfailures:\\n    t\\n\\ntest result: FAILED. 0 passed; 1 failed\\n' \"$RUST_BACKTRACE\"\nexit 101\n",
+    )
+    .unwrap();
+    std::fs::set_permissions(&exe, std::fs::Permissions::from_mode(0o755)).unwrap();
+    let run = learn::run_tests("fake", &exe, dir.path()).unwrap();
+    assert_eq!(run.outcomes["fake::t"], TestOutcome::Failed);
+    assert_eq!(run.failures["fake::t"].trim(), "RUST_BACKTRACE=0");
+}
+
+/// Long titles, with characters of several bytes, keep the columns of `list` and the bars of
+/// the progress aligned (widths in characters, measured on the widest).
+#[test]
+fn the_list_and_the_progress_stay_aligned_with_long_titles() {
+    let mut m = manifest();
+    m.entries[2].exercise.title =
+        "M⁻¹, (M⁻¹)ᵀ and a title much longer than the others — ½ of it".into();
+    let states = learn::states(&m, &run_with_done(&m, 5));
+    let list = learn::list(&m, &states, Style::plain());
+    let column = |needle: &str| -> std::collections::BTreeSet<usize> {
+        list.lines()
+            .filter(|l| l.starts_with("  "))
+            .map(|l| l[..l.find(needle).unwrap_or(0)].chars().count())
+            .collect()
+    };
+    assert_eq!(column(" pt").len(), 1, "the points column:\n{list}");
+    for e in &m.entries {
+        let function = format!("  {}  ", e.function);
+        assert!(list.contains(&function), "{function:?}:\n{list}");
+    }
+    let at = |l: &str, needle: &str| l[..l.find(needle).unwrap()].chars().count();
+    let functions: std::collections::BTreeSet<usize> = list
+        .lines()
+        .filter(|l| l.starts_with("  "))
+        .zip(&m.entries)
+        .map(|(l, e)| at(l, &format!("  {}", e.function)))
+        .collect();
+    assert_eq!(functions.len(), 1, "the functions' column:\n{list}");
+    assert!(
+        list.lines().last().unwrap().contains("5 done,"),
+        "the summary line: {list}"
+    );
+    let progress = learn::progress(&m, &states, Style::plain());
+    let bars: std::collections::BTreeSet<usize> = progress
+        .lines()
+        .filter(|l| l.contains('['))
+        .map(|l| at(l, "["))
+        .collect();
+    assert_eq!(bars.len(), 1, "the bars:\n{progress}");
+}

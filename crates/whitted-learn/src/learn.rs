@@ -150,10 +150,21 @@ pub fn states(manifest: &Manifest, run: &TestRun) -> Vec<State> {
                 .iter()
                 .filter_map(|n| run.failures.get(n).and_then(|t| todo_name(t)))
                 .collect();
+            // a failure that printed nothing says nothing of where it stopped (a panic on a
+            // thread that another test spawned prints in that test's output)
+            let telling = failed
+                .iter()
+                .filter(|n| {
+                    run.failures
+                        .get(*n)
+                        .is_some_and(|t| !message_lines(t).is_empty())
+                })
+                .count();
             if stopped_at.contains(&e.exercise.name.as_str()) {
                 State::ToDo
-            } else if stopped_at.len() == failed.len() {
-                // every failing test stopped at another exercise's todo!(): that one comes first
+            } else if !stopped_at.is_empty() && stopped_at.len() == telling {
+                // every failing test that tells stopped at another exercise's todo!(): that
+                // one comes first
                 State::Waiting(stopped_at[0].to_string())
             } else {
                 State::Failing(failed)
@@ -297,6 +308,12 @@ pub fn progress(manifest: &Manifest, states: &[State], style: Style) -> String {
         "{} — {done} of {total} exercises done\n",
         style.strong("progress")
     );
+    // the widest title, in characters: the bars line up whatever the titles
+    let title_w = whitted_syllabus::CHAPTERS
+        .iter()
+        .map(|c| c.title.chars().count())
+        .max()
+        .unwrap_or(0);
     for chapter in &whitted_syllabus::CHAPTERS {
         let (number, title) = (chapter.number, chapter.title);
         let of: Vec<usize> = (0..total)
@@ -307,7 +324,7 @@ pub fn progress(manifest: &Manifest, states: &[State], style: Style) -> String {
         }
         let d = of.iter().filter(|&&i| states[i] == State::Done).count();
         let line = format!(
-            "  chapter {number}  {title:<26} {} {d:>2}/{}",
+            "  chapter {number}  {title:<title_w$}  {} {d:>2}/{}",
             bar(d, of.len(), 20),
             of.len()
         );
@@ -454,10 +471,15 @@ pub fn place(root: &Path, name: &str) -> Option<(PathBuf, usize)> {
 }
 
 /// The lines of a failed test's output worth showing: the panic's place and message, without
-/// the notes on backtraces.
-fn message_lines(text: &str) -> Vec<&str> {
+/// the notes on backtraces (the first panic of a test process prints `note: run with
+/// RUST_BACKTRACE=1 …`, in whichever test panicked first: it would come and go).
+#[must_use]
+pub fn message_lines(text: &str) -> Vec<&str> {
     text.lines()
-        .filter(|l| !l.trim().is_empty() && !l.starts_with("note: run with `RUST_BACKTRACE"))
+        .filter(|l| {
+            let backtrace_note = l.starts_with("note: ") && l.contains("RUST_BACKTRACE");
+            !l.trim().is_empty() && !backtrace_note
+        })
         .collect()
 }
 
@@ -680,6 +702,24 @@ impl Say {
     }
 }
 
+/// Runs the test executable `exe` of the test target `target` in `dir` as every check does:
+/// all its tests, within [`TEST_TIME_LIMIT`], without `WHITTED_BLESS` (no golden image is
+/// rewritten) and with RUST_BACKTRACE=0 (the runner's: a student's RUST_BACKTRACE=1 would put
+/// a stack in every message).
+pub fn run_tests(target: &str, exe: &Path, dir: &Path) -> Result<TestRun, ToolError> {
+    cargo::Run {
+        target,
+        exe,
+        dir,
+        args: &[],
+        env: &[],
+        env_remove: &["WHITTED_BLESS"],
+        log: None,
+        timeout: TEST_TIME_LIMIT,
+    }
+    .run()
+}
+
 /// What one check found.
 pub struct Checked {
     /// The test runs.
@@ -712,17 +752,7 @@ fn check_targets(
                 layout::core_test_target(root, target).display()
             ))
         })?;
-        let result = cargo::Run {
-            target,
-            exe,
-            dir: &root.join(layout::CORE),
-            args: &[],
-            env: &[],
-            env_remove: &["WHITTED_BLESS"],
-            log: None,
-            timeout: TEST_TIME_LIMIT,
-        }
-        .run()?;
+        let result = run_tests(target, exe, &root.join(layout::CORE))?;
         if let Some(why) = &result.unfinished {
             return Err(ToolError::Cargo(format!(
                 "the tests of {} did not finish: {why}",

@@ -1,15 +1,14 @@
 //! Chapter 3 — shading (notes: "Shading"): ambient, diffuse and specular per RGB channel,
 //! attenuation, several lights, and the rays a shaded render casts.
 //!
-//! A test named `ex3_K_…` checks exercise 3.K of `chapters/formulas.toml`. The local light
+//! A test named `ex_NAME_…` checks the exercise NAME of `chapters/formulas.toml`. The local light
 //! (3.7) is seen only through the renderer, which also asks `Tracer::feeler` (4.4) for a
 //! feeler and hands the colour to `Tracer::reflect_and_refract` (5.5): before chapter 4 and 5
 //! they give nothing and return it unchanged, but they must not be `todo!()`.
 
 mod common;
 
-use approx::assert_abs_diff_eq;
-use common::{TOL, assert_vec_eq, centre, render_at, scene};
+use common::{TOL, assert_near, assert_vec_eq, centre, render_at, scene};
 use whitted::light::Light;
 use whitted::material::Material;
 use whitted::real::{Real, Vec3, vec3};
@@ -34,7 +33,12 @@ fn ex_local_light_light_behind_the_eye_gives_ambient_plus_full_diffuse_and_specu
     let (c, _) = centre(&s, Chapter::Shading);
     let expected = vec3(0.1 * 0.5, 0.2 * 0.4, 0.3 * 0.3)
         + vec3(0.9, 0.8, 0.7) * vec3(0.5 + 0.2, 0.4 + 0.3, 0.3 + 0.4);
-    assert_vec_eq(c, expected, 10.0 * TOL);
+    assert_vec_eq(
+        "I at the sphere's nearest point, the light behind the eye: ρa·I_m + I_p·(ρd + ρs)",
+        c,
+        expected,
+        10.0 * TOL,
+    );
 }
 
 /// "Shading": a light behind the surface (n·s < 0) adds nothing: ambient only.
@@ -42,8 +46,13 @@ fn ex_local_light_light_behind_the_eye_gives_ambient_plus_full_diffuse_and_specu
 fn ex_local_light_light_behind_the_surface_gives_ambient_only() {
     let s = scene(&sphere_scene("[0.0, 0.0, -10.0]", ""));
     let (c, stats) = centre(&s, Chapter::Shading);
-    assert_vec_eq(c, vec3(0.05, 0.08, 0.09), 10.0 * TOL);
-    assert_eq!(stats.shadow, 0);
+    assert_vec_eq(
+        "I at the sphere's nearest point, the light behind the sphere: I_a = ρa·I_m only",
+        c,
+        vec3(0.05, 0.08, 0.09),
+        10.0 * TOL,
+    );
+    assert_eq!(stats.shadow, 0, "the feelers cast at chapter 3");
 }
 
 /// "Shading" (erratum: negative dot products): unclamped, the notes' n·s would subtract light
@@ -53,16 +62,24 @@ fn ex_local_light_light_behind_the_surface_gives_ambient_only() {
 fn ex_lambert_negative_dot_products_are_clamped() {
     let n = Vec3::Z;
     let a = (60.0 as Real).to_radians();
-    assert_abs_diff_eq!(lambert(n, n), 1.0, epsilon = TOL);
-    assert_abs_diff_eq!(
+    assert_near("max(n·s, 0) for s = n = z", lambert(n, n), 1.0, TOL);
+    assert_near(
+        "max(n·s, 0) for n = z, s 60° from it",
         lambert(n, Vec3::new(a.sin(), 0.0, a.cos())),
         0.5,
-        epsilon = TOL
+        TOL,
     );
-    assert_eq!(lambert(n, Vec3::X), 0.0);
+    assert_eq!(
+        lambert(n, Vec3::X),
+        0.0,
+        "max(n·s, 0) for n = z, s = x (90°)"
+    );
     let s = Vec3::NEG_Z; // light exactly behind
-    assert_eq!(lambert(n, s), 0.0);
-    assert_abs_diff_eq!(n.dot(s), -1.0, epsilon = TOL); // the notes' n·s
+    assert_eq!(
+        lambert(n, s),
+        0.0,
+        "max(n·s, 0) for n = z, s = −z (behind): clamped, not n·s = −1"
+    );
 }
 
 /// "Shading" (erratum: negative dot products): unclamped, the notes' (r·v)^f would add a
@@ -73,17 +90,40 @@ fn ex_highlight_negative_dot_products_are_clamped() {
     let n = Vec3::Z;
     let s = Vec3::NEG_Z; // light exactly behind
     let v = Vec3::NEG_Z; // viewer on the far side too (e.g. seen through glass)
-    assert_eq!(highlight(n, s, v, 2.0), 0.0);
     // the notes' expression, unclamped, gives +1 here: r = −z is along v
-    let notes_specular = (mirror(s, n).dot(v)).powf(2.0);
-    assert_abs_diff_eq!(notes_specular, 1.0, epsilon = TOL);
+    assert_near(
+        "the notes' unclamped (r·v)^f for n = z, s = v = −z, f = 2",
+        mirror(s, n).dot(v).powf(2.0),
+        1.0,
+        TOL,
+    );
+    assert_eq!(
+        highlight(n, s, v, 2.0),
+        0.0,
+        "the highlight for n = z, s = v = −z (light and viewer behind), f = 2: 0, though the \
+         notes' (r·v)^f = 1 there"
+    );
     // a light in front, a viewer more than 90° from r: r·v < 0, and f = 2 must not square it
     let k = 1.0 / (2.0 as Real).sqrt();
     let s = vec3(1.0, 0.0, 1.0) * k; // r = (−1, 0, 1)/√2
-    assert_eq!(highlight(n, s, Vec3::X, 2.0), 0.0);
-    assert_abs_diff_eq!(mirror(s, n).dot(Vec3::X).powf(2.0), 0.5, epsilon = TOL);
+    assert_near(
+        "the notes' unclamped (r·v)^f for n = z, s = (1, 0, 1)/√2, v = x, f = 2",
+        mirror(s, n).dot(Vec3::X).powf(2.0),
+        0.5,
+        TOL,
+    );
+    assert_eq!(
+        highlight(n, s, Vec3::X, 2.0),
+        0.0,
+        "the highlight for n = z, s = (1, 0, 1)/√2, v = x (r·v = −1/√2 < 0), f = 2: \
+         max(r·v, 0)^f, not (r·v)^f = ½"
+    );
     // a light grazing the surface (n·s = 0) gives no highlight even to a viewer along r
-    assert_eq!(highlight(n, Vec3::X, Vec3::NEG_X, 5.0), 0.0);
+    assert_eq!(
+        highlight(n, Vec3::X, Vec3::NEG_X, 5.0),
+        0.0,
+        "the highlight for n = z, s = x (grazing, n·s = 0), v = r = −x, f = 5"
+    );
 }
 
 /// "Shading": r is the mirror of s about n, r = 2(n·s)n − s.
@@ -91,21 +131,33 @@ fn ex_highlight_negative_dot_products_are_clamped() {
 fn ex_mirror_direction_of_the_light() {
     let k = 1.0 / (2.0 as Real).sqrt();
     assert_vec_eq(
+        "r for s = (1, 0, 1)/√2, n = z",
         mirror(vec3(1.0, 0.0, 1.0) * k, Vec3::Z),
         vec3(-1.0, 0.0, 1.0) * k,
         TOL,
     );
-    assert_vec_eq(mirror(Vec3::Z, Vec3::Z), Vec3::Z, TOL);
+    assert_vec_eq("r for s = n = z", mirror(Vec3::Z, Vec3::Z), Vec3::Z, TOL);
     // for unit s and n: r is unit, n·r = n·s, and r + s is parallel to n
     let n = vec3(1.0, 2.0, 2.0) / 3.0;
     let s = vec3(0.6, 0.0, 0.8);
     let r = mirror(s, n);
-    assert_abs_diff_eq!(r.length(), 1.0, epsilon = TOL);
-    assert_abs_diff_eq!(n.dot(r), n.dot(s), epsilon = TOL);
-    assert_vec_eq((r + s).cross(n), Vec3::ZERO, TOL);
+    let of = format!("for s = (0.6, 0, 0.8), n = (1, 2, 2)/3 (r = {r})");
+    assert_near(&format!("‖r‖ {of}"), r.length(), 1.0, TOL);
+    assert_near(&format!("n·r {of}: n·s"), n.dot(r), n.dot(s), TOL);
+    assert_vec_eq(
+        &format!("(r + s) × n {of}: 0, r + s along n"),
+        (r + s).cross(n),
+        Vec3::ZERO,
+        TOL,
+    );
     // by hand: n·s = (0.6 + 1.6)/3 = 2.2/3, r = 2·(2.2/3)·(1, 2, 2)/3 − s
     let h = 4.4 / 9.0;
-    assert_vec_eq(r, vec3(h - 0.6, 2.0 * h, 2.0 * h - 0.8), TOL);
+    assert_vec_eq(
+        "r = 2(n·s)·n − s for s = (0.6, 0, 0.8), n = (1, 2, 2)/3",
+        r,
+        vec3(h - 0.6, 2.0 * h, 2.0 * h - 0.8),
+        TOL,
+    );
 }
 
 /// "Shading": the highlight (r·v)^f is 1 with v along r, cos(60°)^f = ½^f with v 60° away
@@ -115,21 +167,37 @@ fn ex_highlight_is_one_along_r_and_falls_with_the_angle() {
     let k = 1.0 / (2.0 as Real).sqrt();
     let s = vec3(1.0, 0.0, 1.0) * k;
     let r = vec3(-1.0, 0.0, 1.0) * k;
-    assert_abs_diff_eq!(highlight(Vec3::Z, s, r, 50.0), 1.0, epsilon = TOL);
+    assert_near(
+        "the highlight for n = z, s = (1, 0, 1)/√2, v = r = (−1, 0, 1)/√2, f = 50: 1",
+        highlight(Vec3::Z, s, r, 50.0),
+        1.0,
+        TOL,
+    );
     // r points 45° from +z towards −x; v 15° towards +x is 60° away from it
     let a = (15.0 as Real).to_radians();
     let v = Vec3::new(a.sin(), 0.0, a.cos());
-    assert_abs_diff_eq!(
+    let (h3, h10) = (
         highlight(Vec3::Z, s, v, 3.0),
-        (0.5 as Real).powi(3),
-        epsilon = 10.0 * TOL
-    );
-    assert_abs_diff_eq!(
         highlight(Vec3::Z, s, v, 10.0),
-        (0.5 as Real).powi(10),
-        epsilon = 10.0 * TOL
     );
-    assert!(highlight(Vec3::Z, s, v, 10.0) < highlight(Vec3::Z, s, v, 3.0));
+    let at_60 = "for n = z, s = (1, 0, 1)/√2 and v 60° from r";
+    assert_near(
+        &format!("the highlight (r·v)^f {at_60}, f = 3: ½³"),
+        h3,
+        (0.5 as Real).powi(3),
+        10.0 * TOL,
+    );
+    assert_near(
+        &format!("the highlight (r·v)^f {at_60}, f = 10: ½¹⁰"),
+        h10,
+        (0.5 as Real).powi(10),
+        10.0 * TOL,
+    );
+    assert!(
+        h10 < h3,
+        "the highlight {at_60} is {h10} for f = 10 and {h3} for f = 3: a larger f should give \
+         less"
+    );
 }
 
 /// "Shading": the diffuse term follows the cosine law ρd·I_p·(n·s).
@@ -147,7 +215,12 @@ fn ex_direct_light_diffuse_follows_the_cosine_law() {
     let a = (60.0 as Real).to_radians();
     let light = Light::white(Vec3::new(2.0 * a.sin(), 2.0 * a.cos(), 0.0));
     let i = direct(&m, &light, p, n, Vec3::Y);
-    assert_vec_eq(i, Vec3::splat(0.8 * 0.5), 10.0 * TOL);
+    assert_vec_eq(
+        "I_d + I_s for ρd = 0.8, ρs = 0, a white light at 60° from n: ρd·I_p·(n·s) = 0.8·½",
+        i,
+        Vec3::splat(0.8 * 0.5),
+        10.0 * TOL,
+    );
 }
 
 /// "Shading": I_a = ρa·I_m, channel by channel: ρa = (0.1, 0.2, 0.3) under I_m = (0.5, 0.4, 0.3)
@@ -159,16 +232,22 @@ fn ex_ambient_is_rho_a_times_i_m_per_channel() {
         ..Material::default()
     };
     assert_vec_eq(
+        "I_a for ρa = (0.1, 0.2, 0.3), I_m = (0.5, 0.4, 0.3)",
         ambient(&m, vec3(0.5, 0.4, 0.3)),
         vec3(0.05, 0.08, 0.09),
         TOL,
     );
     assert_vec_eq(
+        "I_a for the default material (ρa = 0.1), I_m = 0.5",
         ambient(&Material::default(), Vec3::splat(0.5)),
         Vec3::splat(0.05),
         TOL,
     );
-    assert_eq!(ambient(&m, Vec3::ZERO), Vec3::ZERO);
+    assert_eq!(
+        ambient(&m, Vec3::ZERO),
+        Vec3::ZERO,
+        "I_a for ρa = (0.1, 0.2, 0.3), I_m = 0"
+    );
 }
 
 /// "Shading", one light per RGB channel: a light straight above a surface facing up, seen from
@@ -192,16 +271,30 @@ fn ex_direct_light_one_light_three_channels() {
         shadows: true,
     };
     assert_vec_eq(
+        "I_d + I_s for I_p = (0.9, 0.8, 0.7) straight above, v = n: I_p·(ρd + ρs)",
         direct(&m, &light, p, n, n),
         vec3(0.9 * 0.7, 0.8 * 0.7, 0.7 * 0.7),
         10.0 * TOL,
     );
     light.intensity = vec3(1.0, 0.0, 0.0);
-    assert_vec_eq(direct(&m, &light, p, n, n), vec3(0.7, 0.0, 0.0), 10.0 * TOL);
+    assert_vec_eq(
+        "I_d + I_s for a red light I_p = (1, 0, 0) straight above, v = n",
+        direct(&m, &light, p, n, n),
+        vec3(0.7, 0.0, 0.0),
+        10.0 * TOL,
+    );
     light.position = vec3(1.0, -3.0, -2.0);
-    assert_eq!(direct(&m, &light, p, n, n), Vec3::ZERO);
+    assert_eq!(
+        direct(&m, &light, p, n, n),
+        Vec3::ZERO,
+        "I_d + I_s for a light below the surface"
+    );
     light.position = p;
-    assert_eq!(direct(&m, &light, p, n, n), Vec3::ZERO);
+    assert_eq!(
+        direct(&m, &light, p, n, n),
+        Vec3::ZERO,
+        "I_d + I_s for a light at the point itself (d = 0, no s)"
+    );
 }
 
 /// The shortcuts that skip `powf` leave the numbers as they were: a viewer beyond 90° of r
@@ -213,10 +306,18 @@ fn ex_direct_light_skipping_the_highlight_changes_no_number() {
     let s = vec3(1.0, 0.0, 1.0) * k; // r = (−1, 0, 1)/√2
     let beyond = vec3(1.0, 0.0, 0.0); // r·v = −1/√2 < 0
     let at_90 = vec3(1.0, 0.0, 1.0) * k; // r·v = 0
-    assert_eq!(highlight(Vec3::Z, s, beyond, 3.0), 0.0);
-    assert_eq!(highlight(Vec3::Z, s, at_90, 30.0), 0.0);
-    assert_eq!(highlight(Vec3::Z, s, at_90, 0.0), 1.0);
-    assert_eq!(highlight(Vec3::Z, s, beyond, 0.0), 1.0);
+    for (v, f, expected, what) in [
+        (beyond, 3.0, 0.0, "r·v < 0, f = 3: 0^f"),
+        (at_90, 30.0, 0.0, "r·v = 0, f = 30: 0^f"),
+        (at_90, 0.0, 1.0, "r·v = 0, f = 0: 0⁰ = 1"),
+        (beyond, 0.0, 1.0, "r·v < 0, f = 0: 0⁰ = 1"),
+    ] {
+        assert_eq!(
+            highlight(Vec3::Z, s, v, f),
+            expected,
+            "the highlight for n = z, s = (1, 0, 1)/√2, v = {v}, {what}"
+        );
+    }
     let matte = Material {
         ambient: Vec3::ZERO,
         diffuse: vec3(0.7, 0.4, 0.2),
@@ -232,7 +333,11 @@ fn ex_direct_light_skipping_the_highlight_changes_no_number() {
     let d = to_light.length();
     let expected =
         light.intensity * light.attenuation_at(d) * (matte.diffuse * lambert(n, to_light / d));
-    assert_eq!(direct(&matte, &light, p, n, v), expected);
+    assert_eq!(
+        direct(&matte, &light, p, n, v),
+        expected,
+        "I_d + I_s of a matte material (ρs = 0) seen along r: I_p·att·ρd·(n·s) bit for bit"
+    );
 }
 
 /// "Shading": I_p/(a0 + a1·d + a2·d²): at d = 2 with (1, 0.5, 0.25), the light is divided by 3;
@@ -241,21 +346,33 @@ fn ex_direct_light_skipping_the_highlight_changes_no_number() {
 #[test]
 fn ex_attenuation_divides_by_a0_plus_a1_d_plus_a2_d_squared() {
     let mut light = Light::white(vec3(0.0, 2.0, 0.0));
-    light.attenuation = [1.0, 0.5, 0.25];
-    assert_abs_diff_eq!(light.attenuation_at(2.0), 1.0 / 3.0, epsilon = TOL);
-    assert_abs_diff_eq!(light.attenuation_at(0.0), 1.0, epsilon = TOL);
-    light.attenuation = [1.0, 0.0, 0.0];
-    for d in [0.0, 1.0, 7.5, 1e6] {
-        assert_abs_diff_eq!(light.attenuation_at(d), 1.0, epsilon = TOL);
+    for (a, d, expected) in [
+        ([1.0, 0.5, 0.25], 2.0, 1.0 / 3.0),
+        ([1.0, 0.5, 0.25], 0.0, 1.0),
+        ([1.0, 0.0, 0.0], 0.0, 1.0),
+        ([1.0, 0.0, 0.0], 1.0, 1.0),
+        ([1.0, 0.0, 0.0], 7.5, 1.0),
+        ([1.0, 0.0, 0.0], 1e6, 1.0),
+        ([0.0, 0.0, 1.0], 2.0, 0.25), // inverse square
+        ([0.0, 0.0, 1.0], 4.0, 1.0 / 16.0),
+        ([1.0, 1.0, 0.0], 2.0, 1.0 / 3.0),
+        ([0.0, 1.0, 0.0], 0.5, 2.0),
+    ] {
+        light.attenuation = a;
+        assert_near(
+            &format!("1/(a0 + a1·d + a2·d²) for (a0, a1, a2) = {a:?}, d = {d}"),
+            light.attenuation_at(d),
+            expected,
+            TOL,
+        );
     }
-    light.attenuation = [0.0, 0.0, 1.0]; // inverse square
-    assert_abs_diff_eq!(light.attenuation_at(2.0), 0.25, epsilon = TOL);
-    assert_abs_diff_eq!(light.attenuation_at(4.0), 1.0 / 16.0, epsilon = TOL);
-    light.attenuation = [1.0, 1.0, 0.0];
-    assert_abs_diff_eq!(light.attenuation_at(2.0), 1.0 / 3.0, epsilon = TOL);
     light.attenuation = [0.0, 1.0, 0.0];
-    assert!(light.attenuation_at(0.0).is_finite());
-    assert_abs_diff_eq!(light.attenuation_at(0.5), 2.0, epsilon = TOL);
+    let at_zero = light.attenuation_at(0.0);
+    assert!(
+        at_zero.is_finite(),
+        "1/(a0 + a1·d + a2·d²) for (0, 1, 0) at d = 0 is {at_zero}: the denominator must be \
+         kept at least Real::EPSILON"
+    );
 }
 
 /// "Shading": `direct` divides the light by its attenuation: a white light 2 above a white
@@ -271,7 +388,12 @@ fn ex_direct_light_is_divided_by_the_attenuation() {
     };
     light.attenuation = [1.0, 0.5, 0.25];
     let i = direct(&m, &light, Vec3::ZERO, Vec3::Y, Vec3::Y);
-    assert_vec_eq(i, Vec3::splat(1.0 / 3.0), 10.0 * TOL);
+    assert_vec_eq(
+        "I_d + I_s for a white light 2 above, (a0, a1, a2) = (1, 0.5, 0.25): ρd·I_p/3",
+        i,
+        Vec3::splat(1.0 / 3.0),
+        10.0 * TOL,
+    );
 }
 
 /// "Shading": through the renderer, the light at (0, 0, 10) with (1, 0.5, 0.25) reaches the
@@ -286,7 +408,12 @@ fn ex_local_light_attenuated_light_through_the_renderer() {
     let d: Real = 9.0; // from (0, 0, 1) to (0, 0, 10)
     let k = 1.0 / (1.0 + 0.5 * d + 0.25 * d * d);
     let expected = vec3(0.05, 0.08, 0.09) + vec3(0.9, 0.8, 0.7) * vec3(0.7, 0.7, 0.7) * k;
-    assert_vec_eq(c, expected, 10.0 * TOL);
+    assert_vec_eq(
+        "I at the sphere's nearest point, the light 9 away, (1, 0.5, 0.25): I_a + I_p·(ρd + ρs)/25.75",
+        c,
+        expected,
+        10.0 * TOL,
+    );
 }
 
 /// "Shading": with several lights, each adds its own diffuse and specular terms.
@@ -299,7 +426,12 @@ fn ex_local_light_several_lights_add_up() {
     ));
     let (c1, _) = centre(&one, Chapter::Shading);
     let (c2, _) = centre(&two, Chapter::Shading);
-    assert_vec_eq(c2 - c1, Vec3::splat(0.5) * vec3(0.7, 0.7, 0.7), 10.0 * TOL);
+    assert_vec_eq(
+        "I with a second light of 0.5 behind the first, less I with one light: 0.5·(ρd + ρs)",
+        c2 - c1,
+        Vec3::splat(0.5) * vec3(0.7, 0.7, 0.7),
+        10.0 * TOL,
+    );
 }
 
 /// "Shading": the plane is open; seen from below it is shaded with the normal turned to the
@@ -317,9 +449,24 @@ fn open_plane_is_shaded_on_the_side_the_viewer_sees() {
     let (above, _) = centre(&scene(&text(3.0, 5.0)), Chapter::Shading);
     let (below, _) = centre(&scene(&text(-3.0, -5.0)), Chapter::Shading);
     let (across, _) = centre(&scene(&text(-3.0, 5.0)), Chapter::Shading);
-    assert_vec_eq(above, Vec3::splat(0.5), TOL);
-    assert_vec_eq(below, Vec3::splat(0.5), TOL);
-    assert_vec_eq(across, Vec3::ZERO, TOL); // light on the other side: dark
+    assert_vec_eq(
+        "I of the plane seen and lit from above",
+        above,
+        Vec3::splat(0.5),
+        TOL,
+    );
+    assert_vec_eq(
+        "I of the plane seen and lit from below",
+        below,
+        Vec3::splat(0.5),
+        TOL,
+    );
+    assert_vec_eq(
+        "I of the plane seen from below, lit from above: dark",
+        across,
+        Vec3::ZERO,
+        TOL,
+    );
 }
 
 /// "Shading": a chapter-3 render casts primary rays only — no feelers, no secondary rays.
@@ -327,8 +474,12 @@ fn open_plane_is_shaded_on_the_side_the_viewer_sees() {
 fn shading_casts_primary_rays_only() {
     let s = scene(&sphere_scene("[3.0, 3.0, 10.0]", ""));
     let (_, stats) = render_at(&s, Chapter::Shading, 20, 10);
-    assert_eq!(stats.primary, 200);
-    assert_eq!((stats.shadow, stats.reflected, stats.refracted), (0, 0, 0));
+    assert_eq!(stats.primary, 200, "the camera rays of a 20 × 10 image");
+    assert_eq!(
+        (stats.shadow, stats.reflected, stats.refracted),
+        (0, 0, 0),
+        "(feelers, mirror rays, transmitted rays) at chapter 3"
+    );
 }
 
 /// "Shading": I = I_a + I_p/(a0 + a1·d + a2·d²)·(ρd·(n·s) + ρs·(r·v)^f) per channel, with both
@@ -366,20 +517,42 @@ fn phong_with_both_cosines_between_zero_and_one() {
     let a = (15.0 as Real).to_radians();
     let v = Vec3::new(-a.sin(), a.cos(), 0.0);
     let s = (light.position - p).normalize();
-    assert_abs_diff_eq!(lambert(n, s), 0.5, epsilon = TOL);
-    assert_abs_diff_eq!(
+    assert_near("max(n·s, 0) for s 60° from n", lambert(n, s), 0.5, TOL);
+    assert_near(
+        "r·v for r 60° on the other side of n, v 15° from n",
         mirror(s, n).dot(v),
         (2.0 as Real).sqrt() / 2.0,
-        epsilon = 10.0 * TOL
+        10.0 * TOL,
     );
-    assert_abs_diff_eq!(highlight(n, s, v, 3.0), h, epsilon = 10.0 * TOL);
-    assert_abs_diff_eq!(light.attenuation_at(2.0), 0.4, epsilon = TOL);
+    assert_near(
+        "the highlight (r·v)³ for r·v = √2/2",
+        highlight(n, s, v, 3.0),
+        h,
+        10.0 * TOL,
+    );
+    assert_near(
+        "1/(a0 + a1·d + a2·d²) for (1, 0.25, 0.25), d = 2",
+        light.attenuation_at(2.0),
+        0.4,
+        TOL,
+    );
     let direct_by_hand =
         vec3(0.9, 0.8, 0.7) * 0.4 * (vec3(0.25, 0.2, 0.15) + vec3(0.2, 0.3, 0.4) * h);
-    assert_vec_eq(direct_by_hand, vec3(0.115_456, 0.097_941, 0.081_598), 1e-6);
-    assert_vec_eq(direct(&m, &light, p, n, v), direct_by_hand, 10.0 * TOL);
+    assert_vec_eq(
+        "I_d + I_s by hand",
+        direct_by_hand,
+        vec3(0.115_456, 0.097_941, 0.081_598),
+        1e-6,
+    );
+    assert_vec_eq(
+        "I_d + I_s by shading::direct, n·s = ½, r·v = √2/2, f = 3, att = 0.4",
+        direct(&m, &light, p, n, v),
+        direct_by_hand,
+        10.0 * TOL,
+    );
     let i = vec3(0.05, 0.08, 0.09) + direct_by_hand;
     assert_vec_eq(
+        "I = I_a + I_d + I_s by shading::ambient and shading::direct",
         ambient(&m, vec3(0.5, 0.4, 0.3)) + direct(&m, &light, p, n, v),
         i,
         10.0 * TOL,
@@ -393,8 +566,13 @@ fn phong_with_both_cosines_between_zero_and_one() {
         specular = [0.2, 0.3, 0.4]\nshininess = 3\n\
         [[objects]]\nplane = { point = [0.0, 0.0, 0.0], normal = [0.0, 1.0, 0.0] }\nmaterial = \"m\"\n";
     let (c, stats) = centre(&scene(text), Chapter::Shading);
-    assert_vec_eq(c, i, 10.0 * TOL);
-    assert_eq!(stats.shadow, 0);
+    assert_vec_eq(
+        "I in a 1 × 1 image of the floor seen along v",
+        c,
+        i,
+        10.0 * TOL,
+    );
+    assert_eq!(stats.shadow, 0, "the feelers cast at chapter 3");
 }
 
 /// "Shading", as the inspector sees it: the local light tells the recorder each term it adds.
@@ -411,19 +589,68 @@ fn ex_local_light_the_recorder_hears_the_ambient_term_each_light_and_the_local_l
     let mut o = Options::for_scene(&s, Chapter::Shading);
     (o.width, o.height) = (1, 1);
     let tree = Tracer::new(&s, &o).inspect(0, 0);
-    let hit = tree.samples[0].ray.hit.as_ref().expect("the sphere is hit");
+    let hit = tree.samples[0]
+        .ray
+        .hit
+        .as_ref()
+        .expect("the ray tree of the centre pixel records the sphere's hit");
     let i_a = vec3(0.05, 0.08, 0.09);
     let lit = vec3(0.9, 0.8, 0.7) * 0.7;
-    assert_vec_eq(hit.ambient.unwrap(), i_a, TOL);
-    assert_eq!(hit.lights.len(), 2);
+    let ambient = hit
+        .ambient
+        .expect("the recorder hears I_a (rec.ambient): it heard nothing");
+    assert_vec_eq("I_a told to rec.ambient", ambient, i_a, TOL);
+    assert_eq!(
+        hit.lights.len(),
+        2,
+        "the lights told to rec.light, one call per light: {:?}",
+        hit.lights
+    );
     let (front, back) = (&hit.lights[0], &hit.lights[1]);
-    assert_eq!((front.index, back.index), (0, 1));
-    assert_vec_eq(front.unshadowed, lit, 10.0 * TOL);
-    assert_eq!((front.feeler.is_none(), front.share), (true, 1.0));
-    assert_vec_eq(front.arriving, lit, 10.0 * TOL);
-    assert_eq!(back.unshadowed, Vec3::ZERO);
-    assert_eq!((back.feeler.is_none(), back.share), (true, 1.0));
-    assert_vec_eq(hit.local.unwrap(), i_a + lit, 10.0 * TOL);
-    assert_eq!(hit.local.unwrap(), tree.colour);
-    assert_eq!(tree.rays, 1, "no feeler at chapter 3");
+    assert_eq!(
+        (front.index, back.index),
+        (0, 1),
+        "the light numbers told to rec.light, in scene order"
+    );
+    assert_vec_eq(
+        "I_d + I_s of light 0 told to rec.light (unshadowed)",
+        front.unshadowed,
+        lit,
+        10.0 * TOL,
+    );
+    assert_eq!(
+        (front.feeler.is_none(), front.share),
+        (true, 1.0),
+        "(no feeler, share) of light 0 at chapter 3"
+    );
+    assert_vec_eq(
+        "(I_d + I_s)·share of light 0 told to rec.light (arriving)",
+        front.arriving,
+        lit,
+        10.0 * TOL,
+    );
+    assert_eq!(
+        back.unshadowed,
+        Vec3::ZERO,
+        "I_d + I_s of light 1, behind the sphere"
+    );
+    assert_eq!(
+        (back.feeler.is_none(), back.share),
+        (true, 1.0),
+        "(no feeler, share) of light 1, behind the sphere"
+    );
+    let local = hit
+        .local
+        .expect("the recorder hears the local light I (rec.local): it heard nothing");
+    assert_vec_eq(
+        "I told to rec.local: I_a + Σ arriving",
+        local,
+        i_a + lit,
+        10.0 * TOL,
+    );
+    assert_eq!(
+        local, tree.colour,
+        "I told to rec.local, and the pixel's colour"
+    );
+    assert_eq!(tree.rays, 1, "the rays of the tree: no feeler at chapter 3");
 }

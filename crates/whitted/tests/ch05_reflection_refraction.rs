@@ -1,18 +1,21 @@
 //! Chapter 5 — reflection and refraction (notes: "Reflection and Refraction", "Lighting
 //! Equations"): the mirror direction, Snell's law, total internal reflection, recursion.
 //!
-//! A test named `ex5_K_…` checks exercise 5.K of `chapters/formulas.toml`;
+//! A test named `ex_NAME_…` checks the exercise NAME of `chapters/formulas.toml`;
 //! `Tracer::reflect_and_refract` (5.5) is seen through the renderer and the inspector.
 
 mod common;
 
-use approx::assert_abs_diff_eq;
-use common::{TOL, assert_vec_eq, centre, render_at, render_both_ways, scene};
+use common::{
+    TOL, assert_near, assert_vec_eq, centre, first_difference, render_at, render_both_ways,
+    render_here, scene,
+};
 use whitted::offset::Offset;
 use whitted::optics::{critical_angle, critical_angle_sine, indices, reflect, refract};
 use whitted::real::{Real, Vec3, real, vec3};
 use whitted::render::inspect::RayTree;
-use whitted::render::{Chapter, Options, RayKind, Stop, Tracer, render};
+use whitted::render::inspect::{HitNode, RayNode};
+use whitted::render::{Chapter, Options, RayKind, Stop, Tracer};
 
 fn deg(x: Real) -> Real {
     x.to_radians()
@@ -24,6 +27,40 @@ fn incoming(angle: Real) -> Vec3 {
     Vec3::new(deg(angle).sin(), -deg(angle).cos(), 0.0)
 }
 
+/// The transmitted direction of `d` through a surface of normal +y, from index `n1` into `n2`,
+/// which must exist.
+#[track_caller]
+fn refracted(d: Vec3, n1: Real, n2: Real) -> Vec3 {
+    refract(d, Vec3::Y, n1, n2).unwrap_or_else(|| {
+        panic!(
+            "refract(d = {d}, n = y, n₁ = {n1}, n₂ = {n2}) gave none (total internal reflection), \
+             expected a transmitted direction: sin θ₁ = {} is below sin θc",
+            d.x
+        )
+    })
+}
+
+/// The hit of a ray tree's camera ray, which must be there; `what` names it.
+#[track_caller]
+fn first_hit(tree: &RayTree, what: &str) -> HitNode {
+    tree.samples[0]
+        .ray
+        .hit
+        .clone()
+        .unwrap_or_else(|| panic!("the camera ray of the ray tree hits nothing, expected {what}"))
+}
+
+/// The hit of a branch of the ray tree, which must be there; `what` names the branch.
+#[track_caller]
+fn branch_hit(branch: &RayNode, what: &str) -> HitNode {
+    branch.hit.clone().unwrap_or_else(|| {
+        panic!(
+            "{what} ({:?}, from {} along {}) hits nothing, expected a hit",
+            branch.kind, branch.origin, branch.direction
+        )
+    })
+}
+
 /// "Reflection and Refraction" (erratum): l = d − 2(d·n)n from the ray direction d. A 45° ray
 /// (1, −1, 0)/√2 on the floor y = 0 leaves as (1, 1, 0)/√2. The notes' r(t₀) − 2(r(t₀)·n)n,
 /// built from the hit point, depends on where the floor is hit — it is not a direction.
@@ -31,26 +68,62 @@ fn incoming(angle: Real) -> Vec3 {
 fn ex_mirror_ray_reflection_of_a_45_degree_ray() {
     let k = 1.0 / (2.0 as Real).sqrt();
     let d = vec3(1.0, -1.0, 0.0) * k;
-    assert_vec_eq(reflect(d, Vec3::Y), vec3(1.0, 1.0, 0.0) * k, TOL);
+    assert_vec_eq(
+        "l for d = (1, −1, 0)/√2 on the floor n = y",
+        reflect(d, Vec3::Y),
+        vec3(1.0, 1.0, 0.0) * k,
+        TOL,
+    );
     // the notes' formula with the hit point r(t₀) = (3, 0, 0) instead of d
     let p = vec3(3.0, 0.0, 0.0);
     let as_printed = p - 2.0 * p.dot(Vec3::Y) * Vec3::Y;
-    assert!((as_printed.normalize() - vec3(1.0, 1.0, 0.0) * k).length() > 0.5);
+    assert!(
+        (as_printed.normalize() - vec3(1.0, 1.0, 0.0) * k).length() > 0.5,
+        "the notes' r(t₀) − 2(r(t₀)·n)n at r(t₀) = (3, 0, 0) is {as_printed}, not a mirror \
+         direction"
+    );
     // angle in = angle out, and unit length kept, for any incidence
     for a in [0.0, 10.0, 45.0, 80.0] {
         let l = reflect(incoming(a), Vec3::Y);
-        assert_abs_diff_eq!(l.length(), 1.0, epsilon = TOL);
-        assert_abs_diff_eq!(l.dot(Vec3::Y), deg(a).cos(), epsilon = TOL);
+        let of = format!("for d {a}° from −n, n = y (l = {l})");
+        assert_near(&format!("‖l‖ {of}"), l.length(), 1.0, TOL);
+        assert_near(
+            &format!("l·n {of}: cos {a}°"),
+            l.dot(Vec3::Y),
+            deg(a).cos(),
+            TOL,
+        );
     }
     // for any d: ‖l‖ = ‖d‖, l·n = −(d·n), and −n gives the same l
     let n = vec3(2.0, -1.0, 2.0) / 3.0;
     let d = vec3(0.3, -4.0, 1.2);
     let l = reflect(d, n);
-    assert_abs_diff_eq!(l.length(), d.length(), epsilon = 10.0 * TOL);
-    assert_abs_diff_eq!(l.dot(n), -d.dot(n), epsilon = 10.0 * TOL);
-    assert_vec_eq(reflect(d, -n), l, 10.0 * TOL);
+    let of = format!("for d = (0.3, −4, 1.2), n = (2, −1, 2)/3 (l = {l})");
+    assert_near(
+        &format!("‖l‖ {of}: ‖d‖"),
+        l.length(),
+        d.length(),
+        10.0 * TOL,
+    );
+    assert_near(
+        &format!("l·n {of}: −(d·n)"),
+        l.dot(n),
+        -d.dot(n),
+        10.0 * TOL,
+    );
+    assert_vec_eq(
+        &format!("l for −n {of}: the same l"),
+        reflect(d, -n),
+        l,
+        10.0 * TOL,
+    );
     // by hand: d·n = (0.6 + 4 + 2.4)/3 = 7/3, l = d − (14/3)·n
-    assert_vec_eq(l, d - (14.0 / 3.0) * n, 10.0 * TOL);
+    assert_vec_eq(
+        "l = d − 2(d·n)·n for d = (0.3, −4, 1.2), n = (2, −1, 2)/3",
+        l,
+        d - (14.0 / 3.0) * n,
+        10.0 * TOL,
+    );
 }
 
 /// "Reflection and Refraction": Snell's law air → glass (n = 1.5) at 30°:
@@ -58,16 +131,35 @@ fn ex_mirror_ray_reflection_of_a_45_degree_ray() {
 /// plane of incidence.
 #[test]
 fn ex_refract_snell_air_to_glass_at_30_degrees() {
-    let t = refract(incoming(30.0), Vec3::Y, 1.0, 1.5).unwrap();
-    assert_abs_diff_eq!(t.length(), 1.0, epsilon = TOL);
+    let t = refract(incoming(30.0), Vec3::Y, 1.0, 1.5)
+        .expect("refract from air into glass at 30°: a transmitted direction, not none");
+    let of = format!("for air → glass at θ₁ = 30° (t = {t})");
+    assert_near(&format!("‖t‖ {of}"), t.length(), 1.0, TOL);
     let sin2 = t.x; // the tangential component of a unit vector is sin θ₂
-    assert_abs_diff_eq!(sin2, 1.0 / 3.0, epsilon = TOL);
-    assert_abs_diff_eq!(-t.y, (8.0 as Real).sqrt() / 3.0, epsilon = TOL); // cos θ₂ = √(1 − 1/9)
-    assert_abs_diff_eq!(t.z, 0.0, epsilon = TOL);
-    assert_abs_diff_eq!(
+    assert_near(
+        &format!("sin θ₂ = t_x {of}: sin 30°/1.5"),
+        sin2,
+        1.0 / 3.0,
+        TOL,
+    );
+    // cos θ₂ = √(1 − 1/9)
+    assert_near(
+        &format!("cos θ₂ = −t_y {of}: √(1 − 1/9)"),
+        -t.y,
+        (8.0 as Real).sqrt() / 3.0,
+        TOL,
+    );
+    assert_near(
+        &format!("t_z {of}: in the plane of incidence"),
+        t.z,
+        0.0,
+        TOL,
+    );
+    assert_near(
+        &format!("θ₂ in degrees {of}"),
         sin2.asin().to_degrees(),
         real(19.471_220_634_490_69),
-        epsilon = 1e4 * TOL
+        1e4 * TOL,
     );
 }
 
@@ -76,24 +168,38 @@ fn ex_refract_snell_air_to_glass_at_30_degrees() {
 /// sin θc = 1.5, which no angle has.
 #[test]
 fn ex_critical_angle_from_glass_to_air() {
-    let theta_c = critical_angle(1.5, 1.0).unwrap();
-    assert_abs_diff_eq!(theta_c.sin(), 1.0 / 1.5, epsilon = TOL);
-    assert_abs_diff_eq!(
+    let theta_c = critical_angle(1.5, 1.0)
+        .expect("glass (1.5) to air (1) has a critical angle: critical_angle_sine gave none");
+    assert_near(
+        "sin θc from glass to air: 1/1.5",
+        theta_c.sin(),
+        1.0 / 1.5,
+        TOL,
+    );
+    assert_near(
+        "θc in degrees from glass to air",
         theta_c.to_degrees(),
         real(41.810_314_895_778_6),
-        epsilon = 1e4 * TOL
+        1e4 * TOL,
     );
     // speeds: c = c₀/n, medium 1 glass, medium 2 air
     let (c1, c2): (Real, Real) = (1.0 / 1.5, 1.0);
-    assert_abs_diff_eq!((c2 / c1) * theta_c.sin(), 1.0, epsilon = TOL);
+    assert_near(
+        "(c₂/c₁)·sin θc from glass to air: 1",
+        (c2 / c1) * theta_c.sin(),
+        1.0,
+        TOL,
+    );
     let notes_sin = 1.0 / (c1 / c2); // from (c₁/c₂)·sin θc = 1
     assert!(
         notes_sin > 1.0,
         "the notes' form has no solution: sin θc = {notes_sin}"
     );
+    let none = critical_angle(1.0, 1.5);
     assert!(
-        critical_angle(1.0, 1.5).is_none(),
-        "no TIR from air into glass"
+        none.is_none(),
+        "the critical angle from air into glass: {none:?}, expected none (no total internal \
+         reflection into a denser medium)"
     );
 }
 
@@ -101,12 +207,30 @@ fn ex_critical_angle_from_glass_to_air() {
 /// grazing out (sin θ₂ close to 1); just above it, total internal reflection.
 #[test]
 fn ex_refract_glass_to_air_just_below_and_just_above_the_critical_angle() {
-    let theta_c = critical_angle(1.5, 1.0).unwrap().to_degrees();
-    let below = refract(incoming(theta_c - 0.1), Vec3::Y, 1.5, 1.0).unwrap();
-    assert_abs_diff_eq!(below.length(), 1.0, epsilon = 10.0 * TOL);
-    assert!(below.x > 0.99 && below.x < 1.0, "sin θ₂ = {}", below.x);
-    assert!(refract(incoming(theta_c + 0.1), Vec3::Y, 1.5, 1.0).is_none());
-    assert!(refract(incoming(89.0), Vec3::Y, 1.5, 1.0).is_none());
+    let theta_c = critical_angle(1.5, 1.0)
+        .expect("glass (1.5) to air (1) has a critical angle")
+        .to_degrees();
+    let below = refract(incoming(theta_c - 0.1), Vec3::Y, 1.5, 1.0).unwrap_or_else(|| {
+        panic!(
+            "refract from glass to air at θc − 0.1° = {}°: none, expected a ray",
+            theta_c - 0.1
+        )
+    });
+    let of = format!("for glass → air at θc − 0.1° (t = {below})");
+    assert_near(&format!("‖t‖ {of}"), below.length(), 1.0, 10.0 * TOL);
+    assert!(
+        below.x > 0.99 && below.x < 1.0,
+        "sin θ₂ = t_x {of} is {}, expected just under 1 (grazing out)",
+        below.x
+    );
+    for a in [theta_c + 0.1, 89.0] {
+        let t = refract(incoming(a), Vec3::Y, 1.5, 1.0);
+        assert!(
+            t.is_none(),
+            "refract from glass to air at θ₁ = {a}°, past θc = {theta_c}°: {t:?}, expected none \
+             (total internal reflection)"
+        );
+    }
 }
 
 /// A camera on the axis of a glass sphere, a red wall behind it.
@@ -126,14 +250,25 @@ fn glass_sphere_scene(max_depth: u32) -> String {
 #[test]
 fn ex_reflect_and_refract_ray_along_the_axis_of_a_glass_sphere_leaves_undeflected() {
     assert_vec_eq(
-        refract(Vec3::NEG_Z, Vec3::Z, 1.0, 1.5).unwrap(),
+        "t for d = −z at normal incidence, air → glass",
+        refract(Vec3::NEG_Z, Vec3::Z, 1.0, 1.5)
+            .expect("refract at normal incidence: a transmitted direction, not none"),
         Vec3::NEG_Z,
         TOL,
     );
     let s = scene(&glass_sphere_scene(5));
     let (c, stats) = centre(&s, Chapter::ReflectionRefraction);
-    assert_vec_eq(c, vec3(0.81, 0.0, 0.0), 10.0 * TOL); // 0.9 · 0.9 · red
-    assert_eq!((stats.refracted, stats.reflected), (2, 0));
+    assert_vec_eq(
+        "I through the glass sphere's axis: k_t·k_t·red = 0.9·0.9·(1, 0, 0)",
+        c,
+        vec3(0.81, 0.0, 0.0),
+        10.0 * TOL,
+    );
+    assert_eq!(
+        (stats.refracted, stats.reflected),
+        (2, 0),
+        "(transmitted, mirror) rays through the glass sphere's axis"
+    );
 }
 
 /// "Lighting Equations": recursion stops at max_depth — a refracted ray needs depth 2 to get
@@ -144,13 +279,25 @@ fn ex_reflect_and_refract_recursion_depth_limits_the_refracted_path() {
         &scene(&glass_sphere_scene(1)),
         Chapter::ReflectionRefraction,
     );
-    assert_eq!(stats.refracted, 1);
-    assert_vec_eq(c, Vec3::ZERO, TOL); // the inner hit has no local light and may recurse no more
+    assert_eq!(
+        stats.refracted, 1,
+        "the transmitted rays with max_depth = 1"
+    );
+    assert_vec_eq(
+        "I through the glass sphere with max_depth = 1: the inner hit has no local light and may \
+         recurse no more",
+        c,
+        Vec3::ZERO,
+        TOL,
+    );
     let (_, stats) = centre(
         &scene(&glass_sphere_scene(0)),
         Chapter::ReflectionRefraction,
     );
-    assert_eq!(stats.refracted, 0);
+    assert_eq!(
+        stats.refracted, 0,
+        "the transmitted rays with max_depth = 0"
+    );
 }
 
 /// Two parallel mirrors facing each other, the camera between them looking at one.
@@ -172,11 +319,19 @@ fn ex_reflect_and_refract_two_facing_mirrors_stop_at_max_depth() {
             &scene(&facing_mirrors(depth, 0.5)),
             Chapter::ReflectionRefraction,
         );
-        assert_eq!(stats.reflected, depth as u64, "max_depth {depth}");
+        assert_eq!(
+            stats.reflected, depth as u64,
+            "the mirror rays between two mirrors, max_depth = {depth}"
+        );
         let expected: Real = (0..=depth)
             .map(|i| 0.1 * (0.5 as Real).powi(i as i32))
             .sum();
-        assert_abs_diff_eq!(c.x, expected, epsilon = 10.0 * TOL);
+        assert_near(
+            &format!("I (red) between two mirrors of k_r = 0.5, max_depth = {depth}: ρa·Σ k_r^i"),
+            c.x,
+            expected,
+            10.0 * TOL,
+        );
     }
 }
 
@@ -186,8 +341,11 @@ fn ex_reflect_and_refract_two_facing_mirrors_stop_at_max_depth() {
 fn ex_reflect_and_refract_recursion_stops_when_the_weight_falls_below_the_threshold() {
     let s = scene(&facing_mirrors(50, 0.5));
     let (_, stats) = centre(&s, Chapter::ReflectionRefraction);
-    assert_eq!(stats.reflected, 9, "0.5^9 ≥ 1e-3 > 0.5^10");
-    assert_eq!(Options::MIN_WEIGHT, 1e-3);
+    assert_eq!(
+        stats.reflected, 9,
+        "the mirror rays between two mirrors of k_r = 0.5, max_depth = 50: 0.5⁹ ≥ 10⁻³ > 0.5¹⁰"
+    );
+    assert_eq!(Options::MIN_WEIGHT, 1e-3, "the weight threshold");
 }
 
 /// "Reflection and Refraction": inside a glass sphere, a ray meeting the wall beyond the
@@ -201,12 +359,20 @@ fn ex_reflect_and_refract_total_internal_reflection_sends_the_transmitted_share_
         [materials.glass]\nambient = 0.1\ndiffuse = 0.0\nspecular = 0.0\ntransmission = 0.5\nreflection = 0.0\nior = 1.5\n\
         [[objects]]\nsphere = { radius = 10.0 }\nmaterial = \"glass\"\n";
     let (c, stats) = centre(&scene(text), Chapter::ReflectionRefraction);
-    assert_eq!(stats.refracted, 0);
-    assert_eq!(stats.total_internal, 4);
-    assert_eq!(stats.reflected, 4);
+    assert_eq!(
+        (stats.refracted, stats.total_internal, stats.reflected),
+        (0, 4, 4),
+        "(transmitted rays, total internal reflections, mirror rays) inside the glass ball, \
+         max_depth = 4"
+    );
     // each bounce adds ρa·I_m = 0.1, weighted by the whole transmitted share 0.5 per level
     let expected: Real = (0..=4).map(|i| 0.1 * (0.5 as Real).powi(i)).sum();
-    assert_abs_diff_eq!(c.x, expected, epsilon = 10.0 * TOL);
+    assert_near(
+        "I (red) inside the glass ball: ρa·Σ (k_r + k_t)^i, the transmitted share reflected",
+        c.x,
+        expected,
+        10.0 * TOL,
+    );
 }
 
 /// "Lighting Equations" and "model only what a scene requires": matte scenes cast no secondary
@@ -215,21 +381,38 @@ fn ex_reflect_and_refract_total_internal_reflection_sends_the_transmitted_share_
 fn ex_reflect_and_refract_secondary_rays_only_for_mirror_and_glass_materials() {
     let matte = "[camera]\neye = [0.0, 0.0, 5.0]\n[[lights]]\nposition = [3.0, 3.0, 5.0]\n[[objects]]\nsphere = {}\n";
     let (_, stats) = render_at(&scene(matte), Chapter::ReflectionRefraction, 24, 24);
-    assert_eq!((stats.reflected, stats.refracted), (0, 0));
-    assert!(stats.shadow > 0);
+    assert_eq!(
+        (stats.reflected, stats.refracted),
+        (0, 0),
+        "(mirror, transmitted) rays of a matte sphere"
+    );
+    assert!(
+        stats.shadow > 0,
+        "the feelers of a lit matte sphere: {}",
+        stats.shadow
+    );
     let mirror = format!("{matte}material = \"m\"\n[materials.m]\nreflection = 0.5\n");
     let (_, stats) = render_at(&scene(&mirror), Chapter::ReflectionRefraction, 24, 24);
-    assert!(stats.reflected > 0);
-    assert_eq!(stats.refracted, 0);
+    assert!(
+        stats.reflected > 0 && stats.refracted == 0,
+        "(mirror, transmitted) rays of a mirror sphere (k_r = 0.5): ({}, {}), expected some \
+         mirror rays and no transmitted one",
+        stats.reflected,
+        stats.refracted
+    );
     let (_, stats) = render_at(&scene(&mirror), Chapter::Shadows, 24, 24);
     assert_eq!(
         (stats.reflected, stats.refracted),
         (0, 0),
-        "chapter 4 never recurses"
+        "(mirror, transmitted) rays of a mirror sphere at chapter 4, which never recurses"
     );
     let glass = format!("{matte}material = \"g\"\n[materials.g]\ntransmission = 0.5\n");
     let (_, stats) = render_at(&scene(&glass), Chapter::ReflectionRefraction, 24, 24);
-    assert!(stats.refracted > 0);
+    assert!(
+        stats.refracted > 0,
+        "the transmitted rays of a glass sphere (k_t = 0.5): {}",
+        stats.refracted
+    );
 }
 
 /// Supersampling is deterministic: the same image every run, and different from one sample.
@@ -241,12 +424,24 @@ fn supersampling_is_the_same_every_run() {
     o.height = 30;
     o.samples = 4;
     let (a, sa) = render_both_ways(&s, &o);
-    let (b, _) = render(&s, &o);
-    assert_eq!(a, b);
-    assert_eq!(sa.primary, 40 * 30 * 4);
+    let (b, _) = render_here(&s, &o);
+    let differ = first_difference(&a, &b);
+    assert!(
+        differ.is_none(),
+        "two renders with 4 samples per pixel differ: (x, y, first, second) = {differ:?}"
+    );
+    assert_eq!(
+        sa.primary,
+        40 * 30 * 4,
+        "the camera rays of 40 × 30 pixels, 4 samples each"
+    );
     o.samples = 1;
-    let (c, _) = render(&s, &o);
-    assert_ne!(a, c);
+    let (c, _) = render_here(&s, &o);
+    assert!(
+        first_difference(&a, &c).is_some(),
+        "the render with 4 samples per pixel is the same as with one, all {} pixels of it",
+        a.pixels.len()
+    );
 }
 
 /// "Reflection and Refraction": a ray entering a material of index `ior` from air goes from
@@ -255,19 +450,39 @@ fn supersampling_is_the_same_every_run() {
 /// air → water c₁/c₂ = 1.33, water → air 1/1.33 ≈ 0.7519.
 #[test]
 fn ex_refractive_indices_indices_go_from_air_into_the_material_and_back() {
-    assert_eq!(indices(true, 1.5), (1.0, 1.5));
-    assert_eq!(indices(false, 1.5), (1.5, 1.0));
-    assert_eq!(indices(true, 1.33), (1.0, 1.33));
-    assert_eq!(indices(false, 2.42), (2.42, 1.0));
+    for (entering, ior, expected) in [
+        (true, 1.5, (1.0, 1.5)),
+        (false, 1.5, (1.5, 1.0)),
+        (true, 1.33, (1.0, 1.33)),
+        (false, 2.42, (2.42, 1.0)),
+    ] {
+        assert_eq!(
+            indices(entering, ior),
+            expected,
+            "(n₁, n₂) for entering = {entering}, ior = {ior}"
+        );
+    }
     let speed = |n: Real| 1.0 / n; // c = c₀/n with c₀ = 1
     let (n1, n2) = indices(true, 1.33);
-    assert_abs_diff_eq!(speed(n1) / speed(n2), 1.33, epsilon = TOL); // n₂₁ = c₁/c₂
-    assert_abs_diff_eq!(speed(n1) / speed(n2), n2 / n1, epsilon = TOL);
-    let (n1, n2) = indices(false, 1.33);
-    assert_abs_diff_eq!(
+    // n₂₁ = c₁/c₂
+    assert_near(
+        &format!("n₂₁ = c₁/c₂ from air into water, (n₁, n₂) = ({n1}, {n2})"),
         speed(n1) / speed(n2),
-        real(0.751_879_699_248_120_3), // 1/1.33
-        epsilon = TOL
+        1.33,
+        TOL,
+    );
+    assert_near(
+        &format!("c₁/c₂ from air into water: n₂/n₁, (n₁, n₂) = ({n1}, {n2})"),
+        speed(n1) / speed(n2),
+        n2 / n1,
+        TOL,
+    );
+    let (n1, n2) = indices(false, 1.33);
+    assert_near(
+        &format!("n₂₁ = c₁/c₂ from water into air: 1/1.33, (n₁, n₂) = ({n1}, {n2})"),
+        speed(n1) / speed(n2),
+        real(0.751_879_699_248_120_3),
+        TOL,
     );
 }
 
@@ -276,18 +491,27 @@ fn ex_refractive_indices_indices_go_from_air_into_the_material_and_back() {
 /// glass or between equal indices, where no angle reflects totally.
 #[test]
 fn ex_critical_angle_sine_is_n2_over_n1() {
-    assert_abs_diff_eq!(
-        critical_angle_sine(1.5, 1.0).unwrap(),
-        2.0 / 3.0,
-        epsilon = TOL
-    );
-    assert_abs_diff_eq!(
-        critical_angle_sine(2.42, 1.33).unwrap(),
-        real(0.549_586_776_859_504_1),
-        epsilon = TOL
-    );
-    assert_eq!(critical_angle_sine(1.0, 1.5), None);
-    assert_eq!(critical_angle_sine(1.5, 1.5), None);
+    for (n1, n2, expected) in [
+        (1.5, 1.0, 2.0 / 3.0),
+        (2.42, 1.33, real(0.549_586_776_859_504_1)),
+    ] {
+        let sine = critical_angle_sine(n1, n2).unwrap_or_else(|| {
+            panic!("sin θc from n₁ = {n1} to n₂ = {n2}: none, expected n₂/n₁ = {expected}")
+        });
+        assert_near(
+            &format!("sin θc from n₁ = {n1} to n₂ = {n2}: n₂/n₁"),
+            sine,
+            expected,
+            TOL,
+        );
+    }
+    for (n1, n2) in [(1.0, 1.5), (1.5, 1.5)] {
+        assert_eq!(
+            critical_angle_sine(n1, n2),
+            None,
+            "sin θc from n₁ = {n1} to n₂ = {n2} (n₁ ≤ n₂: no total internal reflection)"
+        );
+    }
 }
 
 /// "Reflection and Refraction": at normal incidence the ray goes on unbent, whatever the
@@ -297,19 +521,36 @@ fn ex_critical_angle_sine_is_n2_over_n1() {
 fn ex_refract_refraction_bends_only_between_different_indices() {
     for (n1, n2) in [(1.0, 1.5), (1.5, 1.0), (1.33, 2.42)] {
         assert_vec_eq(
-            refract(Vec3::NEG_Y, Vec3::Y, n1, n2).unwrap(),
+            &format!("t for d = −y at normal incidence, n₁ = {n1} → n₂ = {n2}: unbent"),
+            refracted(Vec3::NEG_Y, n1, n2),
             Vec3::NEG_Y,
             TOL,
         );
     }
     for a in [10.0, 45.0, 80.0] {
         let d = incoming(a);
-        assert_vec_eq(refract(d, Vec3::Y, 1.5, 1.5).unwrap(), d, 10.0 * TOL);
-        let into = refract(d, Vec3::Y, 1.0, 1.5).unwrap();
-        assert!(into.x < d.x, "{a}°: towards the normal");
+        assert_vec_eq(
+            &format!("t for d {a}° from −n, n₁ = n₂ = 1.5: unbent"),
+            refracted(d, 1.5, 1.5),
+            d,
+            10.0 * TOL,
+        );
+        let into = refracted(d, 1.0, 1.5);
+        assert!(
+            into.x < d.x,
+            "sin θ₂ = t_x for d {a}° from −n, air → glass, is {}, sin θ₁ = {}: expected \
+             smaller (towards the normal)",
+            into.x,
+            d.x
+        );
     }
-    let out = refract(incoming(30.0), Vec3::Y, 1.5, 1.0).unwrap();
-    assert!(out.x > incoming(30.0).x, "away from the normal");
+    let out = refracted(incoming(30.0), 1.5, 1.0);
+    assert!(
+        out.x > incoming(30.0).x,
+        "sin θ₂ = t_x for d 30° from −n, glass → air, is {}, sin θ₁ = ½: expected larger \
+         (away from the normal)",
+        out.x
+    );
 }
 
 /// "Reflection and Refraction": through a glass slab with parallel faces a ray comes out
@@ -321,10 +562,15 @@ fn ex_refract_a_slab_with_parallel_faces_lets_the_ray_out_parallel() {
     for a in [0.0, 20.0, 55.0, 85.0] {
         let d = incoming(a);
         let (n1, n2) = indices(true, 1.5);
-        let inside = refract(d, Vec3::Y, n1, n2).unwrap();
+        let inside = refracted(d, n1, n2);
         let (n1, n2) = indices(false, 1.5);
-        let out = refract(inside, Vec3::Y, n1, n2).unwrap();
-        assert_vec_eq(out, d, 10.0 * TOL);
+        let out = refracted(inside, n1, n2);
+        assert_vec_eq(
+            &format!("t out of a slab of glass for d {a}° from −n (inside: {inside}): d"),
+            out,
+            d,
+            10.0 * TOL,
+        );
     }
 }
 
@@ -341,12 +587,32 @@ fn ex_refract_refracted_ray_obeys_n1_sin_theta1_equals_n2_sin_theta2() {
         (true, 45.0, 0.531_659_233_974_847_8),
     ] {
         let (n1, n2) = indices(entering, 1.33);
-        let t = refract(incoming(angle), Vec3::Y, n1, n2).unwrap();
-        assert_abs_diff_eq!(t.length(), 1.0, epsilon = 10.0 * TOL);
-        assert_abs_diff_eq!(t.x, real(sin2), epsilon = 10.0 * TOL); // sin θ₂
-        assert_abs_diff_eq!(t.z, 0.0, epsilon = TOL); // in the plane of incidence
-        assert!(t.y < 0.0, "the ray goes on through the surface");
-        assert_abs_diff_eq!(n1 * deg(angle).sin(), n2 * t.x, epsilon = 10.0 * TOL);
+        let t = refracted(incoming(angle), n1, n2);
+        let of = format!("for θ₁ = {angle}°, n₁ = {n1} → n₂ = {n2} (t = {t})");
+        assert_near(&format!("‖t‖ {of}"), t.length(), 1.0, 10.0 * TOL);
+        assert_near(
+            &format!("sin θ₂ = t_x {of}: n₁·sin θ₁/n₂"),
+            t.x,
+            real(sin2),
+            10.0 * TOL,
+        );
+        assert_near(
+            &format!("t_z {of}: in the plane of incidence"),
+            t.z,
+            0.0,
+            TOL,
+        );
+        assert!(
+            t.y < 0.0,
+            "t_y {of} is {}: the ray should go on through the surface (t_y < 0)",
+            t.y
+        );
+        assert_near(
+            &format!("n₁·sin θ₁ − n₂·sin θ₂ {of}: Snell's law"),
+            n1 * deg(angle).sin() - n2 * t.x,
+            0.0,
+            10.0 * TOL,
+        );
     }
 }
 
@@ -364,26 +630,48 @@ fn ex_refract_critical_angles_of_the_notes_table() {
         (1.9, 0.526_315_789_473_684_2, 31.756_863_859_297_127),
     ] {
         let n = real(n);
-        assert_abs_diff_eq!(
-            critical_angle_sine(n, 1.0).unwrap(),
+        let sine = critical_angle_sine(n, 1.0)
+            .unwrap_or_else(|| panic!("sin θc from n = {n} into air: none, expected 1/n"));
+        assert_near(
+            &format!("sin θc from n = {n} into air: 1/n"),
+            sine,
             real(sin_c),
-            epsilon = TOL
+            TOL,
         );
-        let theta_c = critical_angle(n, 1.0).unwrap();
-        assert_abs_diff_eq!(theta_c, deg(real(theta_c_deg)), epsilon = 10.0 * TOL);
-        assert!(critical_angle(1.0, n).is_none(), "none from air into {n}");
-        let below = refract(incoming(real(theta_c_deg - 0.01)), Vec3::Y, n, 1.0).unwrap();
+        let theta_c = critical_angle(n, 1.0)
+            .unwrap_or_else(|| panic!("θc from n = {n} into air: none, expected asin(1/n)"));
+        assert_near(
+            &format!("θc in radians from n = {n} into air"),
+            theta_c,
+            deg(real(theta_c_deg)),
+            10.0 * TOL,
+        );
+        let none = critical_angle(1.0, n);
+        assert!(
+            none.is_none(),
+            "θc from air into n = {n}: {none:?}, expected none"
+        );
+        let a = real(theta_c_deg - 0.01);
+        let below = refract(incoming(a), Vec3::Y, n, 1.0).unwrap_or_else(|| {
+            panic!("refract from n = {n} into air at θc − 0.01° = {a}°: none, expected a ray")
+        });
         assert!(
             below.x < 1.0 && below.x > 0.99,
-            "n = {n}: sin θ₂ = {}",
+            "sin θ₂ = t_x from n = {n} into air at θc − 0.01° is {}, expected just under 1",
             below.x
         );
-        assert_abs_diff_eq!(
-            n * deg(real(theta_c_deg - 0.01)).sin(),
+        assert_near(
+            &format!("sin θ₂ = t_x from n = {n} into air at θc − 0.01°: n·sin θ₁"),
             below.x,
-            epsilon = 10.0 * TOL
+            n * deg(a).sin(),
+            10.0 * TOL,
         );
-        assert!(refract(incoming(real(theta_c_deg + 0.01)), Vec3::Y, n, 1.0).is_none());
+        let past = refract(incoming(real(theta_c_deg + 0.01)), Vec3::Y, n, 1.0);
+        assert!(
+            past.is_none(),
+            "refract from n = {n} into air at θc + 0.01°: {past:?}, expected none (total \
+             internal reflection)"
+        );
     }
 }
 
@@ -418,7 +706,13 @@ const FIVE_TERMS: &str = "[camera]\neye = [0.0, 2.0, 0.0]\nlook_at = [0.0, 0.0, 
 fn ex_reflect_and_refract_five_terms_of_the_lighting_equation_add_up() {
     let s = scene(FIVE_TERMS);
     let (c, stats) = centre(&s, Chapter::ReflectionRefraction);
-    assert_vec_eq(c, vec3(0.545, 0.53, 0.555), 10.0 * TOL);
+    assert_vec_eq(
+        "I = I_a + I_d + I_s + k_r·I_l + k_t·I_r at the floor (k_r and k_t exchanged would give \
+         (0.585, 0.51, 0.455))",
+        c,
+        vec3(0.545, 0.53, 0.555),
+        10.0 * TOL,
+    );
     assert_eq!(
         (
             stats.primary,
@@ -426,11 +720,17 @@ fn ex_reflect_and_refract_five_terms_of_the_lighting_equation_add_up() {
             stats.reflected,
             stats.refracted
         ),
-        (1, 1, 1, 1)
+        (1, 1, 1, 1),
+        "(camera, feeler, mirror, transmitted) rays at the floor"
     );
     // the local part alone, at chapter 4: I_a + I_d + I_s
     let (local, _) = centre(&s, Chapter::Shadows);
-    assert_vec_eq(local, vec3(0.325, 0.24, 0.225), 10.0 * TOL);
+    assert_vec_eq(
+        "I_a + I_d + I_s at the floor, chapter 4",
+        local,
+        vec3(0.325, 0.24, 0.225),
+        10.0 * TOL,
+    );
 }
 
 /// "Lighting Equations": between two facing mirrors of k_r = 0.5, the number of reflected rays
@@ -448,16 +748,36 @@ fn ex_reflect_and_refract_the_recursion_stops_at_max_depth_or_at_the_weight_limi
             4,
         );
         let per_pixel = stats.reflected / 24;
-        assert_eq!(stats.reflected % 24, 0, "every pixel sees the mirrors");
-        assert!(per_pixel >= last, "max_depth {depth}");
-        assert_eq!(per_pixel, u64::from(depth.min(9)), "max_depth {depth}");
+        assert_eq!(
+            stats.reflected % 24,
+            0,
+            "the mirror rays of 6 × 4 pixels, {} with max_depth = {depth}, split evenly: every \
+             pixel sees the mirrors",
+            stats.reflected
+        );
+        assert!(
+            per_pixel >= last,
+            "the mirror rays per pixel with max_depth = {depth}: {per_pixel}, fewer than the \
+             {last} of max_depth = {}",
+            depth - 1
+        );
+        assert_eq!(
+            per_pixel,
+            u64::from(depth.min(9)),
+            "the mirror rays per pixel with max_depth = {depth}: min(max_depth, 9)"
+        );
         last = per_pixel;
     }
     let s = scene(&facing_mirrors(0, 0.5));
     let (at_5, stats) = render_at(&s, Chapter::ReflectionRefraction, 6, 4);
-    assert_eq!(stats.reflected, 0);
+    assert_eq!(stats.reflected, 0, "the mirror rays with max_depth = 0");
     let (at_4, _) = render_at(&s, Chapter::Shadows, 6, 4);
-    assert_eq!(at_5, at_4);
+    let differ = first_difference(&at_5, &at_4);
+    assert!(
+        differ.is_none(),
+        "the image with max_depth = 0 differs from chapter 4's: (x, y, chapter 5, chapter 4) = \
+         {differ:?}"
+    );
 }
 
 /// A row of 20 panes of clear glass (k_t = 0.5, k_r = 0, index 1: rays go straight through),
@@ -480,22 +800,41 @@ fn ex_reflect_and_refract_a_transmitted_ray_too_faint_to_matter_is_not_traced() 
     let mut o = Options::for_scene(&s, Chapter::ReflectionRefraction);
     (o.width, o.height) = (1, 1);
     let tree = Tracer::new(&s, &o).inspect(0, 0);
-    let mut hit = tree.samples[0].ray.hit.clone().unwrap();
+    let mut hit = first_hit(&tree, "the first pane");
     let mut through = 0;
     while let Some(branch) = hit.branches.first() {
-        assert_eq!(branch.kind, RayKind::Transmitted);
         through += 1;
-        assert_abs_diff_eq!(branch.weight, 0.5_f64.powi(through) as Real, epsilon = TOL);
-        hit = branch.hit.clone().unwrap_or_else(|| {
-            panic!("transmitted ray {through} passed all 20 panes: the tenth should be stopped")
-        });
+        assert_eq!(
+            branch.kind,
+            RayKind::Transmitted,
+            "the kind of branch {through} down the panes (k_r = 0)"
+        );
+        assert_near(
+            &format!("the weight of transmitted ray {through}: 0.5^{through}"),
+            branch.weight,
+            0.5_f64.powi(through) as Real,
+            TOL,
+        );
+        hit = branch_hit(branch, &format!("transmitted ray {through}"));
     }
-    assert_eq!(through, 9);
-    assert_eq!(hit.stopped, vec![(RayKind::Transmitted, Stop::Weight)]);
+    assert_eq!(
+        through, 9,
+        "the transmitted rays traced down the panes: the tenth (weight 0.5¹⁰ < 10⁻³) is not"
+    );
+    assert_eq!(
+        hit.stopped,
+        vec![(RayKind::Transmitted, Stop::Weight)],
+        "why the branches of the ninth pane's hit stopped"
+    );
     let (c, stats) = centre(&s, Chapter::ReflectionRefraction);
     let expected: f64 = (0..10).map(|k| 0.1 * 0.5_f64.powi(k)).sum();
-    assert_vec_eq(c, Vec3::splat(expected as Real), 1e-5);
-    assert_eq!(stats.refracted, 9);
+    assert_vec_eq(
+        "I through the panes: ρa·Σ 0.5^k for k = 0…9",
+        c,
+        Vec3::splat(expected as Real),
+        1e-5,
+    );
+    assert_eq!(stats.refracted, 9, "the transmitted rays through the panes");
 }
 
 /// "Lighting Equations", as the inspector sees it: the floor of [`FIVE_TERMS`] sends its
@@ -516,61 +855,137 @@ fn ex_reflect_and_refract_the_recorder_hears_each_branch_and_why_one_stopped() {
     };
     let inspect = |text: &str| inspect_with(text, Offset::default());
     let tree = inspect_with(FIVE_TERMS, Offset::Scaled(0.01));
-    let floor = tree.samples[0].ray.hit.as_ref().unwrap();
-    assert!(floor.stopped.is_empty(), "{:?}", floor.stopped);
-    assert_eq!(floor.branches.len(), 2);
+    let floor = first_hit(&tree, "the floor");
+    assert!(
+        floor.stopped.is_empty(),
+        "the floor's branches stopped: {:?}, expected none stopped",
+        floor.stopped
+    );
+    let kinds: Vec<RayKind> = floor.branches.iter().map(|b| b.kind).collect();
+    assert_eq!(
+        kinds,
+        [RayKind::Transmitted, RayKind::Mirror],
+        "the floor's branches, in order: the transmitted ray first, then the mirror ray"
+    );
     let (through, mirror) = (&floor.branches[0], &floor.branches[1]);
     assert_eq!(
-        (through.kind, mirror.kind),
-        (RayKind::Transmitted, RayKind::Mirror)
+        (through.depth, mirror.depth),
+        (1, 1),
+        "the depths of the floor's (transmitted, mirror) rays"
     );
-    assert_eq!((through.depth, mirror.depth), (1, 1));
-    assert_abs_diff_eq!(through.k, 0.5, epsilon = TOL);
-    assert_abs_diff_eq!(through.weight, 0.5, epsilon = TOL);
-    assert_abs_diff_eq!(mirror.k, 0.3, epsilon = TOL);
-    assert_abs_diff_eq!(mirror.weight, 0.3, epsilon = TOL);
-    assert_vec_eq(through.direction, Vec3::NEG_Y, TOL);
-    assert_vec_eq(mirror.direction, Vec3::Y, TOL);
-    assert_vec_eq(through.origin, vec3(0.0, -0.01, 0.0), 10.0 * TOL);
-    assert_vec_eq(mirror.origin, vec3(0.0, 0.01, 0.0), 10.0 * TOL);
-    assert!(through.hit.is_none());
-    assert_vec_eq(through.colour, vec3(0.2, 0.4, 0.6), TOL);
-    assert_vec_eq(mirror.colour, vec3(0.4, 0.3, 0.1), 10.0 * TOL);
+    for (what, value, expected) in [
+        ("k of the transmitted ray: k_t", through.k, 0.5),
+        ("weight of the transmitted ray: 1·k_t", through.weight, 0.5),
+        ("k of the mirror ray: k_r", mirror.k, 0.3),
+        ("weight of the mirror ray: 1·k_r", mirror.weight, 0.3),
+    ] {
+        assert_near(&format!("the {what}"), value, expected, TOL);
+    }
+    assert_vec_eq(
+        "the transmitted ray's direction (normal incidence, straight on)",
+        through.direction,
+        Vec3::NEG_Y,
+        TOL,
+    );
+    assert_vec_eq(
+        "the mirror ray's direction l = d − 2(d·n)·n",
+        mirror.direction,
+        Vec3::Y,
+        TOL,
+    );
+    assert_vec_eq(
+        "the transmitted ray's origin, 0.01 below the floor",
+        through.origin,
+        vec3(0.0, -0.01, 0.0),
+        10.0 * TOL,
+    );
+    assert_vec_eq(
+        "the mirror ray's origin, 0.01 above the floor",
+        mirror.origin,
+        vec3(0.0, 0.01, 0.0),
+        10.0 * TOL,
+    );
+    assert!(
+        through.hit.is_none(),
+        "the transmitted ray hits {:?}, expected nothing below the floor",
+        through.hit.as_ref().map(|h| (h.object, h.t))
+    );
+    assert_vec_eq(
+        "the colour the transmitted ray brings back: the background",
+        through.colour,
+        vec3(0.2, 0.4, 0.6),
+        TOL,
+    );
+    assert_vec_eq(
+        "the colour the mirror ray brings back: the ceiling's ρa·I_m",
+        mirror.colour,
+        vec3(0.4, 0.3, 0.1),
+        10.0 * TOL,
+    );
 
     let tir = "[camera]\neye = [0.0, 9.5, 0.0]\nlook_at = [1.0, 9.5, 0.0]\n[render]\nmax_depth = 1\n\
         [materials.glass]\nambient = 0.1\ndiffuse = 0.0\nspecular = 0.0\ntransmission = 0.5\nreflection = 0.0\nior = 1.5\n\
         [[objects]]\nsphere = { radius = 10.0 }\nmaterial = \"glass\"\n";
     let tree = inspect(tir);
-    let wall = tree.samples[0].ray.hit.as_ref().unwrap();
+    let wall = first_hit(&tree, "the glass ball's wall from inside");
     assert_eq!(
         wall.stopped,
-        vec![(RayKind::Transmitted, Stop::TotalInternalReflection)]
+        vec![(RayKind::Transmitted, Stop::TotalInternalReflection)],
+        "why the wall's branches stopped, seen from inside past the critical angle"
     );
-    assert_eq!(wall.branches.len(), 1);
-    assert_eq!(wall.branches[0].kind, RayKind::Mirror);
-    assert_abs_diff_eq!(wall.branches[0].k, 0.5, epsilon = TOL);
-    let next = wall.branches[0].hit.as_ref().unwrap();
+    let kinds: Vec<RayKind> = wall.branches.iter().map(|b| b.kind).collect();
+    assert_eq!(
+        kinds,
+        [RayKind::Mirror],
+        "the wall's branches under total internal reflection"
+    );
+    assert_near(
+        "the k of the mirror ray under total internal reflection: k_r + k_t = 0 + 0.5",
+        wall.branches[0].k,
+        0.5,
+        TOL,
+    );
+    let next = branch_hit(&wall.branches[0], "the mirror ray inside the ball");
     assert_eq!(
         next.stopped,
         vec![(RayKind::Transmitted, Stop::MaxDepth)],
-        "glass asks for a transmitted ray only"
+        "why the next hit's branches stopped at max_depth = 1: glass asks for a transmitted ray \
+         only"
     );
 
     // the last hit down the chain of mirror rays, and how many mirror rays lead to it
     let deepest = |tree: &RayTree| {
-        let mut hit = tree.samples[0].ray.hit.clone().unwrap();
+        let mut hit = first_hit(tree, "a mirror");
         let mut mirrors = 0;
         while let Some(branch) = hit.branches.first() {
-            assert_eq!(branch.kind, RayKind::Mirror);
             mirrors += 1;
-            hit = branch.hit.clone().unwrap();
+            assert_eq!(
+                branch.kind,
+                RayKind::Mirror,
+                "the kind of branch {mirrors} between the mirrors"
+            );
+            hit = branch_hit(branch, &format!("mirror ray {mirrors}"));
         }
         (hit, mirrors)
     };
     let (last, mirrors) = deepest(&inspect(&facing_mirrors(50, 0.5)));
-    assert_eq!(mirrors, 9);
-    assert_eq!(last.stopped, vec![(RayKind::Mirror, Stop::Weight)]);
+    assert_eq!(
+        mirrors, 9,
+        "the mirror rays traced between two mirrors of k_r = 0.5, max_depth = 50"
+    );
+    assert_eq!(
+        last.stopped,
+        vec![(RayKind::Mirror, Stop::Weight)],
+        "why the ninth mirror ray's hit stopped: its branch's weight 0.5¹⁰ < 10⁻³"
+    );
     let (last, mirrors) = deepest(&inspect(&facing_mirrors(2, 0.5)));
-    assert_eq!(mirrors, 2);
-    assert_eq!(last.stopped, vec![(RayKind::Mirror, Stop::MaxDepth)]);
+    assert_eq!(
+        mirrors, 2,
+        "the mirror rays traced between two mirrors, max_depth = 2"
+    );
+    assert_eq!(
+        last.stopped,
+        vec![(RayKind::Mirror, Stop::MaxDepth)],
+        "why the second mirror ray's hit stopped at max_depth = 2"
+    );
 }

@@ -15,11 +15,14 @@
 //! from the plain road with `WHITTED_BLESS=1 cargo test --test render_paths road` and look at
 //! them before committing.
 
+mod common;
+
 use std::path::PathBuf;
 
+use common::render_here;
 use whitted::accel::Accel;
 use whitted::output::{Encoding, read_png, to_rgb8, write_png};
-use whitted::render::{Chapter, Framebuffer, Options, render};
+use whitted::render::{Chapter, Framebuffer, Options};
 use whitted::scene::{Scene, load_parts};
 
 /// Share of pixels allowed to differ by more than [`MAX_DIFF`].
@@ -108,7 +111,8 @@ const PATHS: [Path; 7] = [
 fn load_chapter(n: u32) -> (Scene, Options, &'static str) {
     let (file, chapter, golden) = chapter(n);
     // what the chapter's binary reads: chapter 1 places no object
-    let scene = load_parts(&root().join("scenes").join(file), chapter.reads()).unwrap();
+    let scene = load_parts(&root().join("scenes").join(file), chapter.reads())
+        .unwrap_or_else(|e| panic!("chapter {n}'s scene: {e}"));
     let mut options = Options::for_scene(&scene, chapter);
     options.width = WIDTH;
     options.height = (WIDTH as f64 * scene.height as f64 / scene.width as f64).round() as u32;
@@ -119,7 +123,7 @@ fn render_path(scene: &Scene, options: &Options, path: Path) -> Framebuffer {
     let mut o = options.clone();
     o.accel = path.accel;
     o.packets = path.packets;
-    render(scene, &o).0
+    render_here(scene, &o).0
 }
 
 /// Renders chapter `n`'s scene through `path` and compares it with its golden image (or, with
@@ -135,7 +139,8 @@ fn check(n: u32, path: Path) {
 
     if std::env::var_os("WHITTED_BLESS").is_some() {
         if matches!(path.accel, Accel::None) {
-            write_png(&golden, fb.width, fb.height, &actual).unwrap();
+            write_png(&golden, fb.width, fb.height, &actual)
+                .unwrap_or_else(|e| panic!("cannot bless {}: {e}", golden.display()));
         }
         return;
     }
@@ -150,7 +155,12 @@ fn check(n: u32, path: Path) {
     let mut diff = Vec::with_capacity(actual.len());
     let mut off = 0usize;
     for (a, e) in actual.chunks(3).zip(expected.chunks(3)) {
-        let worst = a.iter().zip(e).map(|(x, y)| x.abs_diff(*y)).max().unwrap();
+        let worst = a
+            .iter()
+            .zip(e)
+            .map(|(x, y)| x.abs_diff(*y))
+            .max()
+            .unwrap_or(0);
         if worst > MAX_DIFF {
             off += 1;
             diff.extend_from_slice(&[255, 0, 0]);
@@ -163,14 +173,17 @@ fn check(n: u32, path: Path) {
     let share = off as f64 / pixels as f64;
     if share > MAX_SHARE {
         let dir = root().join("target/golden-diff");
-        std::fs::create_dir_all(&dir).unwrap();
+        std::fs::create_dir_all(&dir)
+            .unwrap_or_else(|e| panic!("cannot create {}: {e}", dir.display()));
         let tag = format!("{golden_name}-{}-{}", path.accel.name(), path.packets);
         let (act, dif) = (
             dir.join(format!("{tag}-actual.png")),
             dir.join(format!("{tag}-diff.png")),
         );
-        write_png(&act, fb.width, fb.height, &actual).unwrap();
-        write_png(&dif, fb.width, fb.height, &diff).unwrap();
+        for (path, bytes) in [(&act, &actual), (&dif, &diff)] {
+            write_png(path, fb.width, fb.height, bytes)
+                .unwrap_or_else(|e| panic!("cannot write {}: {e}", path.display()));
+        }
         panic!(
             "{golden_name} by {path:?}: {off} of {pixels} pixels ({:.2}%) differ by more than {MAX_DIFF}/255 (allowed {:.1}%); see {} and {}",
             100.0 * share,

@@ -8,9 +8,16 @@ use whitted::shapes::cone;
 #[test]
 fn ex_cone_coefficients_follow_the_notes() {
     let (a, b, c) = cone::coefficients(&ray([1.0, 2.0, 3.0], [0.5, -1.0, 2.0]));
-    assert_abs_diff_eq!(a, -2.75, epsilon = TOL); // 0.25 + 1 − 4
-    assert_abs_diff_eq!(b, -5.5, epsilon = TOL); // 0.5 − 2 + 2·(1 − 3)
-    assert_abs_diff_eq!(c, 1.0, epsilon = TOL); // 1 + 4 − 4
+    let of = "of the ray e = (1, 2, 3), d = (0.5, −1, 2)";
+    // 0.25 + 1 − 4; 0.5 − 2 + 2·(1 − 3); 1 + 4 − 4
+    assert_near(&format!("a = d_x² + d_y² − d_z² {of}"), a, -2.75, TOL);
+    assert_near(
+        &format!("b = e_x·d_x + e_y·d_y + d_z·(1 − e_z) {of}"),
+        b,
+        -5.5,
+        TOL,
+    );
+    assert_near(&format!("c = e_x² + e_y² − (1 − e_z)² {of}"), c, 1.0, TOL);
 }
 
 /// "Generic Cone": b² − ac = w_x² + w_y² − w_z² with w = d × (e − (0, 0, 1)). For e = (1, 2, 3),
@@ -26,8 +33,19 @@ fn ex_cone_discriminant_is_b2_minus_ac() {
     ] {
         let r = ray(e, d);
         let (a, b, c) = cone::coefficients(&r);
-        assert_abs_diff_eq!(b * b - a * c, expected, epsilon = 10.0 * TOL);
-        assert_abs_diff_eq!(cone::discriminant(&r), expected, epsilon = 10.0 * TOL);
+        let of = format!("of the ray e = {e:?}, d = {d:?}");
+        assert_near(
+            &format!("b² − ac from the coefficients (a, b, c) = ({a}, {b}, {c}) {of}"),
+            b * b - a * c,
+            expected,
+            10.0 * TOL,
+        );
+        assert_near(
+            &format!("b² − ac = w_x² + w_y² − w_z², w = d × (e − (0, 0, 1)), {of}"),
+            cone::discriminant(&r),
+            expected,
+            10.0 * TOL,
+        );
     }
 }
 
@@ -36,24 +54,22 @@ fn ex_cone_discriminant_is_b2_minus_ac() {
 /// the notes give no normal there).
 #[test]
 fn ex_cone_normal_cone_normals_are_x_y_one_minus_z_on_the_wall_and_minus_z_on_the_base() {
-    assert_vec_eq(
-        cone::normal(Part::Wall, vec3(0.5, 0.0, 0.5)),
-        vec3(0.5, 0.0, 0.5),
-        TOL,
-    );
-    assert_vec_eq(
-        cone::normal(Part::Wall, vec3(0.0, -1.0, 0.0)),
-        vec3(0.0, -1.0, 1.0),
-        TOL,
-    );
-    assert_vec_eq(
-        cone::normal(Part::Wall, vec3(1.2, -1.6, -1.0)),
-        vec3(1.2, -1.6, 2.0),
-        TOL,
-    );
-    assert_eq!(cone::normal(Part::Base, vec3(0.3, 0.4, -1.0)), Vec3::NEG_Z);
-    assert_eq!(cone::normal(Part::Apex, Vec3::Z), Vec3::Z);
-    assert_eq!(cone::normal(Part::Wall, Vec3::Z), Vec3::Z);
+    // the base's and the apex's normals are constants: exactly
+    for (part, p, expected, tol) in [
+        (Part::Wall, vec3(0.5, 0.0, 0.5), vec3(0.5, 0.0, 0.5), TOL),
+        (Part::Wall, vec3(0.0, -1.0, 0.0), vec3(0.0, -1.0, 1.0), TOL),
+        (Part::Wall, vec3(1.2, -1.6, -1.0), vec3(1.2, -1.6, 2.0), TOL),
+        (Part::Base, vec3(0.3, 0.4, -1.0), Vec3::NEG_Z, 0.0),
+        (Part::Apex, Vec3::Z, Vec3::Z, 0.0),
+        (Part::Wall, Vec3::Z, Vec3::Z, 0.0), // the wall's formula gives 0 there
+    ] {
+        assert_vec_eq(
+            &format!("n on the {part:?} at P = {p}"),
+            cone::normal(part, p),
+            expected,
+            tol,
+        );
+    }
 }
 
 /// "Generic Cone" and "Surface Normals at Intersections": across the wall at z = 0 the radius
@@ -62,18 +78,11 @@ fn ex_cone_normal_cone_normals_are_x_y_one_minus_z_on_the_wall_and_minus_z_on_th
 fn ex_hit_cone_cone_wall_two_hits_with_normals_x_y_one_minus_z() {
     let k = 1.0 / (2.0 as Real).sqrt();
     for numerics in [Numerics::Textbook, Numerics::Robust] {
+        let what = format!("from (0, −5, 0) along +y, {numerics:?}");
         let hits = cone::intersect(&ray([0.0, -5.0, 0.0], [0.0, 1.0, 0.0]), numerics);
-        assert_hits(&hits, &[(4.0, Part::Wall), (6.0, Part::Wall)]);
-        assert_vec_eq(
-            unit(hits.as_slice()[0].normal),
-            vec3(0.0, -1.0, 1.0) * k,
-            TOL,
-        );
-        assert_vec_eq(
-            unit(hits.as_slice()[1].normal),
-            vec3(0.0, 1.0, 1.0) * k,
-            TOL,
-        );
+        assert_hits(&what, &hits, &[(4.0, Part::Wall), (6.0, Part::Wall)]);
+        assert_normal_direction(&what, &hits, 0, vec3(0.0, -1.0, 1.0) * k, TOL);
+        assert_normal_direction(&what, &hits, 1, vec3(0.0, 1.0, 1.0) * k, TOL);
     }
 }
 
@@ -85,14 +94,11 @@ fn ex_hit_cone_cone_wall_two_hits_with_normals_x_y_one_minus_z() {
 fn ex_hit_cone_cone_base_then_wall() {
     let k = 1.0 / (2.0 as Real).sqrt();
     for numerics in [Numerics::Textbook, Numerics::Robust] {
+        let what = format!("from (0.5, 0, −3) along +z, {numerics:?}");
         let hits = cone::intersect(&ray([0.5, 0.0, -3.0], [0.0, 0.0, 1.0]), numerics);
-        assert_hits(&hits, &[(2.0, Part::Base), (3.5, Part::Wall)]);
-        assert_vec_eq(hits.as_slice()[0].normal, Vec3::NEG_Z, TOL);
-        assert_vec_eq(
-            unit(hits.as_slice()[1].normal),
-            vec3(1.0, 0.0, 1.0) * k,
-            TOL,
-        );
+        assert_hits(&what, &hits, &[(2.0, Part::Base), (3.5, Part::Wall)]);
+        assert_normal(&what, &hits, 0, Vec3::NEG_Z, TOL);
+        assert_normal_direction(&what, &hits, 1, vec3(1.0, 0.0, 1.0) * k, TOL);
     }
 }
 
@@ -102,7 +108,11 @@ fn ex_hit_cone_cone_base_then_wall() {
 fn ex_hit_cone_upper_nappe_of_the_double_cone_is_not_hit() {
     for numerics in [Numerics::Textbook, Numerics::Robust] {
         let hits = cone::intersect(&ray([0.0, -5.0, 1.5], [0.0, 1.0, 0.0]), numerics);
-        assert!(hits.is_empty(), "{numerics:?}: {hits:?}");
+        assert!(
+            hits.is_empty(),
+            "the ray from (0, −5, 1.5) along +y crosses only the upper nappe (z = 1.5 > 1), \
+             {numerics:?}: hits {hits:?}, expected none"
+        );
     }
 }
 
@@ -111,14 +121,10 @@ fn ex_hit_cone_upper_nappe_of_the_double_cone_is_not_hit() {
 /// leaves through the base.
 #[test]
 fn ex_hit_cone_cone_apex_has_a_finite_unit_normal() {
+    let what = "from (0, 0, 3) along −z, down the axis";
     let hits = cone::intersect(&ray([0.0, 0.0, 3.0], [0.0, 0.0, -1.0]), Numerics::Robust);
-    assert_eq!(hits.len(), 2, "{hits:?}");
-    let (apex, base) = (hits.as_slice()[0], hits.as_slice()[1]);
-    assert_abs_diff_eq!(apex.t, 2.0, epsilon = 10.0 * TOL);
-    assert_vec_eq(apex.normal, Vec3::Z, TOL);
-    assert!(apex.normal.is_finite());
-    assert_abs_diff_eq!(base.t, 4.0, epsilon = 10.0 * TOL);
-    assert_eq!(base.part, Part::Base);
+    assert_hits(what, &hits, &[(2.0, Part::Apex), (4.0, Part::Base)]);
+    assert_normal(what, &hits, 0, Vec3::Z, TOL);
 }
 
 /// "Generic Cone": a ray touching the wall at z = 0 (radius 1) has b² − ac = 0 and grazes once,
@@ -127,18 +133,24 @@ fn ex_hit_cone_cone_apex_has_a_finite_unit_normal() {
 fn ex_hit_cone_cone_tangent_ray_grazes_once() {
     let r = ray([1.0, -5.0, 0.0], [0.0, 1.0, 0.0]);
     let (a, b, c) = cone::coefficients(&r);
-    assert_abs_diff_eq!(b * b - a * c, 0.0, epsilon = TOL);
+    assert_near(
+        &format!("b² − ac of the ray from (1, −5, 0) along +y, (a, b, c) = ({a}, {b}, {c})"),
+        b * b - a * c,
+        0.0,
+        TOL,
+    );
     let k = 1.0 / (2.0 as Real).sqrt();
     for numerics in [Numerics::Textbook, Numerics::Robust] {
+        let what = format!("from (1, −5, 0) along +y, tangent, {numerics:?}");
         let hits = cone::intersect(&r, numerics);
-        assert_hits(&hits, &[(5.0, Part::Wall)]);
-        assert_vec_eq(
-            unit(hits.as_slice()[0].normal),
-            vec3(1.0, 0.0, 1.0) * k,
-            TOL,
-        );
+        assert_hits(&what, &hits, &[(5.0, Part::Wall)]);
+        assert_normal_direction(&what, &hits, 0, vec3(1.0, 0.0, 1.0) * k, TOL);
     }
-    assert!(cone::intersect(&ray([1.2, -5.0, 0.0], [0.0, 1.0, 0.0]), Numerics::Robust).is_empty());
+    let hits = cone::intersect(&ray([1.2, -5.0, 0.0], [0.0, 1.0, 0.0]), Numerics::Robust);
+    assert!(
+        hits.is_empty(),
+        "the ray from (1.2, −5, 0) along +y passes beside the wall: hits {hits:?}, expected none"
+    );
 }
 
 /// "Generic Cone" (erratum: the base radius): at z = −1 the wall reaches x² + y² = (1 + 1)² = 4,
@@ -148,14 +160,16 @@ fn ex_hit_cone_cone_tangent_ray_grazes_once() {
 fn ex_hit_cone_cone_base_has_radius_two() {
     let k = 1.0 / (2.0 as Real).sqrt();
     for numerics in [Numerics::Textbook, Numerics::Robust] {
+        let what = format!("from (1.5, 0, −3) along +z, {numerics:?} (the base has radius 2)");
         let hits = cone::intersect(&ray([1.5, 0.0, -3.0], [0.0, 0.0, 1.0]), numerics);
-        assert_hits(&hits, &[(2.0, Part::Base), (2.5, Part::Wall)]);
-        assert_vec_eq(
-            unit(hits.as_slice()[1].normal),
-            vec3(1.0, 0.0, 1.0) * k,
-            TOL,
-        );
+        assert_hits(&what, &hits, &[(2.0, Part::Base), (2.5, Part::Wall)]);
+        assert_normal_direction(&what, &hits, 1, vec3(1.0, 0.0, 1.0) * k, TOL);
         // just outside the radius-2 base: a miss
-        assert!(cone::intersect(&ray([2.01, 0.0, -3.0], [0.0, 0.0, 1.0]), numerics).is_empty());
+        let hits = cone::intersect(&ray([2.01, 0.0, -3.0], [0.0, 0.0, 1.0]), numerics);
+        assert!(
+            hits.is_empty(),
+            "the ray from (2.01, 0, −3) along +z passes outside the base of radius 2, \
+             {numerics:?}: hits {hits:?}, expected none"
+        );
     }
 }

@@ -10,8 +10,7 @@
 #[path = "../common/mod.rs"]
 mod common;
 
-use approx::assert_abs_diff_eq;
-use common::{TOL, assert_vec_eq, centre, render_at, render_both_ways, scene};
+use common::{TOL, assert_near, assert_vec_eq, centre, render_at, render_both_ways, scene};
 use whitted::accel::Accel;
 use whitted::ray::Ray;
 use whitted::real::{Mat4, Real, Vec3, vec3};
@@ -31,22 +30,78 @@ fn unit(n: Vec3) -> Vec3 {
     n.normalize()
 }
 
-/// Asserts the hits' t values and parts.
+/// Asserts the hits' t values and parts; `what` names the ray ("from (0, 0, 5) along −z").
 #[track_caller]
-fn assert_hits(hits: &Hits, expected: &[(Real, Part)]) {
+fn assert_hits(what: &str, hits: &Hits, expected: &[(Real, Part)]) {
     let got: Vec<(Real, Part)> = hits.as_slice().iter().map(|h| (h.t, h.part)).collect();
     assert_eq!(
         got.len(),
         expected.len(),
-        "hits {got:?}, expected {expected:?}"
+        "the number of hits of the ray {what}: (t, part) = {got:?}, expected {expected:?}"
     );
-    for ((t, part), (te, pe)) in got.iter().zip(expected) {
+    for (i, ((t, part), (te, pe))) in got.iter().zip(expected).enumerate() {
         assert!(
             (t - te).abs() <= 10.0 * TOL,
-            "t = {t}, expected {te} (all: {got:?})"
+            "hit {i} of the ray {what}: t = {t}, expected {te} (tolerance {:e}; all hits: \
+             {got:?})",
+            10.0 * TOL
         );
-        assert_eq!(part, pe);
+        assert_eq!(
+            part, pe,
+            "hit {i} of the ray {what}, at t = {t}: its part (all hits: {got:?})"
+        );
     }
+}
+
+/// Asserts the `entering` flag of each hit, in order; `what` names the ray.
+#[track_caller]
+fn assert_entering(what: &str, hits: &Hits, expected: &[bool]) {
+    let got: Vec<(Real, bool)> = hits.as_slice().iter().map(|h| (h.t, h.entering)).collect();
+    let flags: Vec<bool> = got.iter().map(|&(_, e)| e).collect();
+    assert_eq!(
+        flags, expected,
+        "the entering flags of the hits of the ray {what}, (t, entering) = {got:?}"
+    );
+}
+
+/// Asserts the normal of hit number `i` of `hits`, the hits of the ray `what`; the message
+/// names the hit by its t and part.
+#[track_caller]
+fn assert_normal(what: &str, hits: &Hits, i: usize, expected: Vec3, tol: Real) {
+    let h = nth(hits, i, what);
+    assert_vec_eq(
+        &format!("n of hit {i} (t = {}, {:?}) of the ray {what}", h.t, h.part),
+        h.normal,
+        expected,
+        tol,
+    );
+}
+
+/// Asserts the direction n/‖n‖ of the normal of hit number `i`, for normals that are not
+/// unit (the cone's wall has (x, y, 1 − z)).
+#[track_caller]
+fn assert_normal_direction(what: &str, hits: &Hits, i: usize, expected: Vec3, tol: Real) {
+    let h = nth(hits, i, what);
+    assert_vec_eq(
+        &format!(
+            "n/‖n‖ of hit {i} (t = {}, {:?}, n = {}) of the ray {what}",
+            h.t, h.part, h.normal
+        ),
+        unit(h.normal),
+        expected,
+        tol,
+    );
+}
+
+/// The hit number `i` of `hits`, which must be there; `what` names the ray.
+#[track_caller]
+fn nth(hits: &Hits, i: usize, what: &str) -> Hit {
+    *hits.as_slice().get(i).unwrap_or_else(|| {
+        panic!(
+            "the ray {what} has {} hit(s), expected a hit number {i}: {hits:?}",
+            hits.len()
+        )
+    })
 }
 
 // One module per shape, and the placement and the nearest hit around them.

@@ -25,26 +25,39 @@ fn nearest_hit_has_the_smallest_positive_t() {
         let mut o = Options::for_scene(&s, Chapter::GenericObjects);
         o.accel = accel;
         let tracer = Tracer::new(&s, &o);
-        let near = tracer
-            .nearest(&ray, 0.0)
-            .expect("the near sphere is in front");
-        assert_eq!(near.object, 2, "{accel:?}");
-        assert_abs_diff_eq!(near.hit.t, 2.0, epsilon = 10.0 * TOL);
-        assert_vec_eq(near.hit.normal, Vec3::Z, 10.0 * TOL);
-        assert!(near.hit.entering);
-        let inside = tracer.nearest(&ray, 2.5).unwrap();
-        assert_eq!(inside.object, 2, "{accel:?}");
-        assert_abs_diff_eq!(inside.hit.t, 3.0, epsilon = 10.0 * TOL);
-        assert_vec_eq(inside.hit.normal, Vec3::NEG_Z, 10.0 * TOL);
-        assert!(!inside.hit.entering);
-        let beyond = tracer.nearest(&ray, 3.5).unwrap();
-        assert_eq!(beyond.object, 0, "{accel:?}");
-        assert_abs_diff_eq!(beyond.hit.t, 4.5, epsilon = 10.0 * TOL);
-        assert!(tracer.nearest(&ray, 5.5).is_none(), "{accel:?}");
+        for (t_min, object, t, normal, entering) in [
+            (0.0, 2, 2.0, Vec3::Z, true),
+            (2.5, 2, 3.0, Vec3::NEG_Z, false),
+            (3.5, 0, 4.5, Vec3::Z, true),
+        ] {
+            let what =
+                format!("the nearest hit after t_min = {t_min} along (0, 0, −2t), {accel:?}");
+            let near = tracer
+                .nearest(&ray, t_min)
+                .unwrap_or_else(|| panic!("{what}: none, expected object {object} at t = {t}"));
+            assert_eq!(
+                near.object, object,
+                "the object of {what} (t = {})",
+                near.hit.t
+            );
+            assert_near(&format!("t of {what}"), near.hit.t, t, 10.0 * TOL);
+            assert_vec_eq(&format!("n of {what}"), near.hit.normal, normal, 10.0 * TOL);
+            assert_eq!(near.hit.entering, entering, "entering of {what}");
+        }
+        let none = tracer.nearest(&ray, 5.5);
+        assert!(
+            none.is_none(),
+            "the nearest hit after t_min = 5.5, past every sphere, {accel:?}: {none:?}, expected none"
+        );
     }
     // the chapter-2 image shows the near sphere's flat colour ρd
     let (c, _) = centre(&s, Chapter::GenericObjects);
-    assert_vec_eq(c, vec3(1.0, 0.0, 0.0), 0.0);
+    assert_vec_eq(
+        "the colour of a 1 × 1 image: the near sphere's ρd",
+        c,
+        vec3(1.0, 0.0, 0.0),
+        0.0,
+    );
 }
 
 /// "Ray Tracing Process", step 5 for one object: of its hits at t = 2 (entering) and t = 5
@@ -59,25 +72,50 @@ fn ex_visible_hit_the_visible_hit_is_the_first_after_t_min() {
         entering,
     };
     let hits = Hits::two(at(2.0, true), at(5.0, false));
-    assert_eq!(hits.first_after(-10.0), Some(at(2.0, true)));
-    assert_eq!(hits.first_after(0.0), Some(at(2.0, true)));
-    assert_eq!(hits.first_after(2.0), Some(at(5.0, false)));
-    assert_eq!(hits.first_after(3.0), Some(at(5.0, false)));
-    assert_eq!(hits.first_after(5.0), None);
-    assert_eq!(Hits::one(at(-1.0, true)).first_after(0.0), None);
-    assert_eq!(Hits::none().first_after(0.0), None);
+    for (t_min, expected) in [
+        (-10.0, Some(at(2.0, true))),
+        (0.0, Some(at(2.0, true))),
+        (2.0, Some(at(5.0, false))),
+        (3.0, Some(at(5.0, false))),
+        (5.0, None),
+    ] {
+        assert_eq!(
+            hits.first_after(t_min),
+            expected,
+            "the visible hit after t_min = {t_min} of hits at t = 2 and t = 5"
+        );
+    }
+    assert_eq!(
+        Hits::one(at(-1.0, true)).first_after(0.0),
+        None,
+        "the visible hit after t_min = 0 of one hit at t = −1"
+    );
+    assert_eq!(
+        Hits::none().first_after(0.0),
+        None,
+        "the visible hit after t_min = 0 of no hit"
+    );
 }
 
 /// "Ray Tracing Process", step 5 (the tie rule of `shapes::nearer`): a smaller t wins whatever
 /// the order; of two hits at the same t, the object listed first.
 #[test]
 fn ex_nearer_hit_equal_t_goes_to_the_object_listed_first() {
-    assert!(nearer(2.0, 0, 2.0, 1));
-    assert!(!nearer(2.0, 1, 2.0, 0));
-    assert!(!nearer(2.0, 3, 2.0, 3));
-    assert!(nearer(1.5, 7, 2.0, 0));
-    assert!(!nearer(2.5, 0, 2.0, 7));
-    assert!(nearer(1e9, usize::MAX, Real::INFINITY, 0)); // anything beats "no hit yet"
+    for (t, object, best_t, best_object, expected) in [
+        (2.0, 0, 2.0, 1, true),
+        (2.0, 1, 2.0, 0, false),
+        (2.0, 3, 2.0, 3, false),
+        (1.5, 7, 2.0, 0, true),
+        (2.5, 0, 2.0, 7, false),
+        (1e9, usize::MAX, Real::INFINITY, 0, true), // anything beats "no hit yet"
+    ] {
+        assert_eq!(
+            nearer(t, object, best_t, best_object),
+            expected,
+            "nearer(t = {t}, object = {object}, best_t = {best_t}, best_object = {best_object}): \
+             is a hit of object {object} at t = {t} nearer than the best so far?"
+        );
+    }
 }
 
 /// Two coincident unit spheres of different materials at (0, 0, −5), seen along the camera's
@@ -105,12 +143,16 @@ fn coincident_objects_show_the_first_listed_for_every_accel() {
             let mut o = Options::for_scene(&s, Chapter::GenericObjects);
             (o.width, o.height, o.accel) = (1, 1, accel);
             let (fb, _) = render_both_ways(&s, &o);
-            assert_eq!(fb.pixels[0], colour, "{first} first, {accel:?}");
+            assert_eq!(
+                fb.pixels[0], colour,
+                "the colour of a 1 × 1 image, {first} first, {accel:?}"
+            );
+            let what = format!("the nearest hit along −z, {first} first, {accel:?}");
             let near = Tracer::new(&s, &o)
                 .nearest(&ray([0.0, 0.0, 0.0], [0.0, 0.0, -1.0]), 0.0)
-                .unwrap();
-            assert_eq!(near.object, 0, "{first} first, {accel:?}");
-            assert_abs_diff_eq!(near.hit.t, 4.0, epsilon = 10.0 * TOL);
+                .unwrap_or_else(|| panic!("{what}: none, expected object 0 at t = 4"));
+            assert_eq!(near.object, 0, "the object of {what}");
+            assert_near(&format!("t of {what}"), near.hit.t, 4.0, 10.0 * TOL);
         }
     }
 }

@@ -6,15 +6,18 @@ use whitted::shapes::sphere;
 /// "Generic Sphere": a = |d|², b = e·d, c = |e|² − 1.
 #[test]
 fn ex_sphere_coefficients_are_d_squared_e_dot_d_and_e_squared_minus_one() {
-    let (a, b, c) = sphere::coefficients(&ray([1.0, 2.0, 3.0], [0.5, -1.0, 2.0]));
-    assert_abs_diff_eq!(a, 5.25, epsilon = TOL); // 0.25 + 1 + 4
-    assert_abs_diff_eq!(b, 4.5, epsilon = TOL); // 0.5 − 2 + 6
-    assert_abs_diff_eq!(c, 13.0, epsilon = TOL); // 1 + 4 + 9 − 1
+    // from (1, 2, 3) along (0.5, −1, 2): 0.25 + 1 + 4, 0.5 − 2 + 6, 1 + 4 + 9 − 1;
     // from (0, 0, 5) along −z: (1, −5, 24), the roots 4 and 6 of t² − 10t + 24
-    let (a, b, c) = sphere::coefficients(&ray([0.0, 0.0, 5.0], [0.0, 0.0, -1.0]));
-    assert_abs_diff_eq!(a, 1.0, epsilon = TOL);
-    assert_abs_diff_eq!(b, -5.0, epsilon = TOL);
-    assert_abs_diff_eq!(c, 24.0, epsilon = TOL);
+    for (e, d, expected) in [
+        ([1.0, 2.0, 3.0], [0.5, -1.0, 2.0], [5.25, 4.5, 13.0]),
+        ([0.0, 0.0, 5.0], [0.0, 0.0, -1.0], [1.0, -5.0, 24.0]),
+    ] {
+        let (a, b, c) = sphere::coefficients(&ray(e, d));
+        let of = format!("of the ray e = {e:?}, d = {d:?}");
+        assert_near(&format!("a = ‖d‖² {of}"), a, expected[0] as Real, TOL);
+        assert_near(&format!("b = e·d {of}"), b, expected[1] as Real, TOL);
+        assert_near(&format!("c = ‖e‖² − 1 {of}"), c, expected[2] as Real, TOL);
+    }
 }
 
 /// "Generic Sphere": b² − ac computed as a·(1 − ‖e − (b/a)·d‖²). Along −z from (0, 0, 5):
@@ -33,7 +36,12 @@ fn ex_sphere_discriminant_is_b2_minus_ac_without_cancellation() {
     ] {
         let r = ray(e, d);
         let (a, b, _) = sphere::coefficients(&r);
-        assert_abs_diff_eq!(sphere::discriminant(&r, a, b), expected, epsilon = TOL);
+        assert_near(
+            &format!("b² − ac of the ray e = {e:?}, d = {d:?} (a = {a}, b = {b})"),
+            sphere::discriminant(&r, a, b),
+            expected,
+            TOL,
+        );
     }
     #[cfg(feature = "f32")]
     {
@@ -41,7 +49,7 @@ fn ex_sphere_discriminant_is_b2_minus_ac_without_cancellation() {
         assert_eq!(
             discriminant(a, b, c),
             0.0,
-            "the textbook b² − ac loses it all"
+            "the textbook b² − ac from (0, ½, 10⁴) along −z loses it all"
         );
     }
 }
@@ -54,7 +62,7 @@ fn ex_sphere_normal_is_the_point() {
         vec3(0.0, 0.0, -1.0),
         vec3(0.48, 0.6, 0.64),
     ] {
-        assert_eq!(sphere::normal(p), p);
+        assert_eq!(sphere::normal(p), p, "n at P = {p}: P itself");
     }
 }
 
@@ -62,31 +70,50 @@ fn ex_sphere_normal_is_the_point() {
 /// equal to the hit points ("Surface Normals at Intersections").
 #[test]
 fn ex_hit_sphere_sphere_two_hits_with_the_point_as_normal() {
+    let through = "from (0, 0, 5) along −z";
     let hits = sphere::intersect(&ray([0.0, 0.0, 5.0], [0.0, 0.0, -1.0]), Numerics::Robust);
-    assert_hits(&hits, &[(4.0, Part::Surface), (6.0, Part::Surface)]);
-    let [h1, h2] = [hits.as_slice()[0], hits.as_slice()[1]];
-    assert_vec_eq(h1.normal, Vec3::Z, TOL);
-    assert_vec_eq(h2.normal, Vec3::NEG_Z, TOL);
-    assert!(h1.entering && !h2.entering);
+    assert_hits(
+        through,
+        &hits,
+        &[(4.0, Part::Surface), (6.0, Part::Surface)],
+    );
+    assert_normal(through, &hits, 0, Vec3::Z, TOL);
+    assert_normal(through, &hits, 1, Vec3::NEG_Z, TOL);
+    assert_entering(through, &hits, &[true, false]);
     // an oblique ray: e = (0.6, 0, 5), d = (0, 0, −1) meets z = ±0.8
+    let oblique = "from (0.6, 0, 5) along −z";
     let hits = sphere::intersect(&ray([0.6, 0.0, 5.0], [0.0, 0.0, -1.0]), Numerics::Robust);
-    assert_hits(&hits, &[(4.2, Part::Surface), (5.8, Part::Surface)]);
-    assert_vec_eq(hits.as_slice()[0].normal, vec3(0.6, 0.0, 0.8), 10.0 * TOL);
+    assert_hits(
+        oblique,
+        &hits,
+        &[(4.2, Part::Surface), (5.8, Part::Surface)],
+    );
+    assert_normal(oblique, &hits, 0, vec3(0.6, 0.0, 0.8), 10.0 * TOL);
 }
 
 /// "Generic Sphere": b² − ac = 0 grazes (one hit), b² − ac < 0 misses.
 #[test]
 fn ex_hit_sphere_sphere_tangent_ray_grazes_once_and_outside_ray_misses() {
     for numerics in [Numerics::Textbook, Numerics::Robust] {
-        let graze = sphere::intersect(&ray([1.0, 0.0, 5.0], [0.0, 0.0, -1.0]), numerics);
-        assert_hits(&graze, &[(5.0, Part::Surface)]);
-        assert_vec_eq(graze.as_slice()[0].normal, Vec3::X, TOL);
-        assert!(sphere::intersect(&ray([1.5, 0.0, 5.0], [0.0, 0.0, -1.0]), numerics).is_empty());
-        // along −z from (0, 1, 5) it grazes at t = 5, from (0, 2, 5) it misses (b² − ac < 0)
-        let graze = sphere::intersect(&ray([0.0, 1.0, 5.0], [0.0, 0.0, -1.0]), numerics);
-        assert_hits(&graze, &[(5.0, Part::Surface)]);
-        assert!(sphere::intersect(&ray([0.0, 2.0, 5.0], [0.0, 0.0, -1.0]), numerics).is_empty());
+        for (e, graze) in [([1.0, 0.0, 5.0], Vec3::X), ([0.0, 1.0, 5.0], Vec3::Y)] {
+            let what = format!("from {e:?} along −z, {numerics:?} (b² − ac = 0)");
+            let hits = sphere::intersect(&ray(e, [0.0, 0.0, -1.0]), numerics);
+            assert_hits(&what, &hits, &[(5.0, Part::Surface)]);
+            assert_normal(&what, &hits, 0, graze, TOL);
+        }
+        // along −z from (1.5, 0, 5) and from (0, 2, 5) it misses (b² − ac < 0)
+        for e in [[1.5, 0.0, 5.0], [0.0, 2.0, 5.0]] {
+            let hits = sphere::intersect(&ray(e, [0.0, 0.0, -1.0]), numerics);
+            assert!(
+                hits.is_empty(),
+                "the ray from {e:?} along −z, {numerics:?}, misses (b² − ac < 0): {hits:?}"
+            );
+        }
     }
     // a degenerate direction hits nothing
-    assert!(sphere::intersect(&ray([0.0, 0.0, 5.0], [0.0, 0.0, 0.0]), Numerics::Robust).is_empty());
+    let hits = sphere::intersect(&ray([0.0, 0.0, 5.0], [0.0, 0.0, 0.0]), Numerics::Robust);
+    assert!(
+        hits.is_empty(),
+        "a ray from (0, 0, 5) with d = 0 (a = 0) hits nothing: {hits:?}"
+    );
 }

@@ -10,12 +10,27 @@ pub const TOL: Real = 1e-12;
 #[cfg(feature = "f32")]
 pub const TOL: Real = 1e-5;
 
-/// Asserts two vectors agree component by component within `tol`.
+/// Asserts that the real `actual` lies within `tol` of `expected`; `what` names it in the notes'
+/// symbols, with what it was computed from ("H for N = 1, θ = 60°"). The message gives the
+/// value computed, the value expected, the tolerance and the difference. A NaN never passes.
 #[track_caller]
-pub fn assert_vec_eq(actual: Vec3, expected: Vec3, tol: Real) {
+pub fn assert_near(what: &str, actual: Real, expected: Real, tol: Real) {
+    let off = (actual - expected).abs();
     assert!(
-        (actual - expected).abs().max_element() <= tol,
-        "expected {expected:?}, got {actual:?} (tolerance {tol})"
+        off <= tol,
+        "{what} = {actual}, expected {expected} (tolerance {tol:e}, off by {off:e})"
+    );
+}
+
+/// Asserts two vectors agree component by component within `tol`; `what` names the vector in
+/// the notes' symbols ("u", "d for (c, r) = (0, 0)"). The message gives the vector computed,
+/// the one expected, the tolerance and each component's difference. A NaN never passes.
+#[track_caller]
+pub fn assert_vec_eq(what: &str, actual: Vec3, expected: Vec3, tol: Real) {
+    let off = (actual - expected).abs();
+    assert!(
+        off.cmple(Vec3::splat(tol)).all(),
+        "{what} = {actual}, expected {expected} (tolerance {tol:e} per component, off by {off})"
     );
 }
 
@@ -50,15 +65,13 @@ pub fn render_both_ways(scene: &Scene, options: &Options) -> (Framebuffer, Stats
     road.packets = false;
     let mut packets = options.clone();
     packets.packets = true;
-    let (fb, stats) = render(scene, &road);
-    let (fb2, stats2) = render(scene, &packets);
-    let bits = |fb: &Framebuffer| -> Vec<_> {
-        fb.pixels
-            .iter()
-            .flat_map(|p| p.to_array().map(|x| x.to_bits()))
-            .collect()
-    };
-    assert!(bits(&fb) == bits(&fb2), "packets changed the image");
+    let (fb, stats) = render_here(scene, &road);
+    let (fb2, stats2) = render_here(scene, &packets);
+    if let Some((x, y, road, packed)) = first_difference(&fb, &fb2) {
+        panic!(
+            "packets changed the image: pixel ({x}, {y}) is {road} by the road, {packed} with packets"
+        );
+    }
     assert_eq!(
         (
             stats.primary,
@@ -75,6 +88,30 @@ pub fn render_both_ways(scene: &Scene, options: &Options) -> (Framebuffer, Stats
         "packets changed the rays cast"
     );
     (fb, stats)
+}
+
+/// The first pixel, in row order, where two images of the same size differ bit for bit: its
+/// (x, y) and its colour in each.
+pub fn first_difference(a: &Framebuffer, b: &Framebuffer) -> Option<(u32, u32, Vec3, Vec3)> {
+    let bits = |p: &Vec3| p.to_array().map(|x| x.to_bits());
+    let i = (0..a.pixels.len().max(b.pixels.len()))
+        .find(|&i| a.pixels.get(i).map(bits) != b.pixels.get(i).map(bits))?;
+    let at = |fb: &Framebuffer| fb.pixels.get(i).copied().unwrap_or(Vec3::NAN);
+    Some((i as u32 % a.width, i as u32 / a.width, at(a), at(b)))
+}
+
+/// Renders as [`render`] does, on threads of this test's own. A panic on one of them (an
+/// exercise's `todo!()` met while rendering, a student's failing `expect`) prints its message
+/// into this test's captured output, where `cargo learn` reads which exercise stopped it. On
+/// rayon's global pool the message would go to the output of whichever test first started the
+/// pool (a thread prints where the thread that spawned it printed), and this test would fail
+/// without a word.
+pub fn render_here(scene: &Scene, options: &Options) -> (Framebuffer, Stats) {
+    rayon::ThreadPoolBuilder::new()
+        .num_threads(2)
+        .build()
+        .unwrap_or_else(|e| panic!("cannot start the test's render threads: {e}"))
+        .install(|| render(scene, options))
 }
 
 /// The colour seen along the camera's axis: a 1 × 1 render, whose only ray is d = −N·n.
