@@ -42,7 +42,11 @@ use crate::manifest::Manifest;
 use crate::mistakes::{self, Mutant};
 use crate::syllabus::{self, Chapter};
 use crate::{ToolError, layout};
-use whitted_learn::trees::{Against, Fingerprint, Mistake, Mistakes, read_output};
+use whitted_learn::trees::{Against, Fingerprint, Mistake, read_output};
+
+/// Where the known mistakes and each chapter's trees are kept, and the known mistakes' file
+/// (the student's loop reads them).
+pub use whitted_learn::trees::{MISTAKES, Mistakes, trees_file};
 
 /// The distance in pixels between the pixels whose trees are traced to choose from: every
 /// pixel, so that a steady pixel's neighbours are the pixels next to it.
@@ -595,7 +599,7 @@ pub fn command(root: &Path, manifest: &Manifest, check: bool) -> Result<ExitCode
             .iter()
             .map(|(i, covers)| (g.tree(*i), covers.clone()))
             .collect();
-        let path = root.join(whitted_learn::trees::trees_file(chapter.number).unwrap_or_default());
+        let path = root.join(trees_file(chapter.number).unwrap_or_default());
         crate::files::write_file(
             &path,
             file_text(chapter, &g.settings, &pixels, true).as_bytes(),
@@ -607,7 +611,7 @@ pub fn command(root: &Path, manifest: &Manifest, check: bool) -> Result<ExitCode
     for m in &mutants {
         let chapter = chapter_of(m)?;
         let figure = figure_of(&figures, chapter)?;
-        let file = root.join(whitted_learn::trees::trees_file(chapter.number).unwrap_or_default());
+        let file = root.join(trees_file(chapter.number).unwrap_or_default());
         let png = scratch.path().join(format!("{}.png", m.name));
         let extra = [
             "--compare".to_string(),
@@ -663,7 +667,7 @@ pub fn command(root: &Path, manifest: &Manifest, check: bool) -> Result<ExitCode
             .into(),
         mistakes: known,
     };
-    let path = root.join(whitted_learn::trees::MISTAKES);
+    let path = root.join(MISTAKES);
     let text = serde_json::to_string_pretty(&doc)
         .map_err(|e| ToolError::Usage(format!("cannot write the mistakes: {e}")))?;
     crate::files::write_file(&path, (text + "\n").as_bytes())?;
@@ -692,7 +696,7 @@ fn check_all(root: &Path, figures: &[Figure]) -> Result<ExitCode, ToolError> {
         let started = std::time::Instant::now();
         let figure = figure_of(figures, chapter)?;
         let exe = reference_binary(chapter)?;
-        let path = root.join(whitted_learn::trees::trees_file(chapter.number).unwrap_or_default());
+        let path = root.join(trees_file(chapter.number).unwrap_or_default());
         let name = rel(root, &path);
         if !path.is_file() {
             differ += 1;

@@ -145,3 +145,29 @@ fn without_the_figures_manifest_trees_is_one_line_of_error() {
         "{err}"
     );
 }
+
+/// The known mistakes of `chapters/mistakes.json` are told apart by their fingerprints alone:
+/// each resembles itself and no other, so `learn`, which asks only the next exercise's, could
+/// ask them all. Each names an exercise of the manifest and a hand-written mutant.
+#[test]
+fn each_known_mistake_resembles_itself_and_no_other() {
+    let text = std::fs::read_to_string(root().join(trees::MISTAKES)).unwrap();
+    let known: trees::Mistakes = serde_json::from_str(&text).unwrap();
+    let m = manifest::load(&root().join(manifest::DEFAULT_PATH)).unwrap();
+    let mutants = mistakes::load(&root()).unwrap();
+    assert!(known.mistakes.len() >= mutants.len() - 1);
+    for a in &known.mistakes {
+        assert!(m.by_name(&a.exercise).is_some(), "{}", a.exercise);
+        let mu = mutants.iter().find(|mu| mu.name == a.name).unwrap();
+        assert_eq!((&mu.exercise, &mu.why), (&a.exercise, &a.looks_like));
+        for b in &known.mistakes {
+            assert_eq!(
+                a.fingerprint.resembles(&b.fingerprint),
+                a.name == b.name,
+                "{} and {}",
+                a.name,
+                b.name
+            );
+        }
+    }
+}

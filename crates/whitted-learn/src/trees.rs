@@ -340,6 +340,65 @@ mod tests {
         }
     }
 
+    fn manifest() -> Manifest {
+        let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("../..");
+        crate::manifest::load(&root.join(crate::manifest::DEFAULT_PATH)).unwrap()
+    }
+
+    /// The first wrong number names the first exercise that computed it and fails, with the
+    /// notes' formula; when all of them pass, it names them all, and says nothing unless the
+    /// picture differs.
+    #[test]
+    fn the_first_wrong_number_names_the_exercise_that_computed_it_and_fails() {
+        let m = manifest();
+        let i = m.by_name("cone_coefficients").unwrap();
+        let mut states = vec![State::Done; m.entries.len()];
+        states[i] = State::Failing(vec!["x".into()]);
+        let t = Against {
+            pixel: (128, 67),
+            differs: true,
+            text: "pixel (128, 67), camera ray → hit `cone`: t = 9.4089 (reference 9.4929)".into(),
+            functions: vec![
+                "shapes::cone::coefficients".into(),
+                "shapes::cone::intersect".into(),
+                "ray::Ray::transformed".into(),
+            ],
+            ..against((128, 67), "t")
+        };
+        let same = [t.clone(), against((3, 3), "")];
+        let said = first_wrong(&m, &states, &same, false).unwrap();
+        let x = &m.entries[i];
+        assert!(
+            said.contains(&format!("first wrong number: {}", t.text)),
+            "{said}"
+        );
+        assert!(
+            said.contains(&format!(
+                "computed in exercise {} (cone_coefficients), the notes: {}",
+                x.exercise.id, x.formula
+            )),
+            "{said}"
+        );
+        assert!(
+            !said.contains("pixels compared"),
+            "one pixel differs: {said}"
+        );
+        // every exercise that computed it passes: only a picture that differs makes it worth saying
+        let done = vec![State::Done; m.entries.len()];
+        assert_eq!(first_wrong(&m, &done, &same, false), None);
+        let said = first_wrong(&m, &done, &same, true).unwrap();
+        assert!(
+            said.contains("computed by exercises whose tests pass: "),
+            "{said}"
+        );
+        assert!(
+            said.contains(&format!("{} (cone_coefficients)", x.exercise.id)),
+            "{said}"
+        );
+        // no tree differs
+        assert_eq!(first_wrong(&m, &states, &[against((3, 3), "")], true), None);
+    }
+
     #[test]
     fn the_compare_line_gives_its_counts() {
         let line = "compare: 312 of 28800 pixels differ by more than 2/255 (1.08%), by up to 87/255; the first at (17, 40)";
