@@ -55,6 +55,12 @@ pub const STEP: u32 = 1;
 /// The words the pixels a known mistake adds are kept for.
 const MISTAKE_SHOWS: &str = "a known mistake of exercise";
 
+/// A tree kept in a trees file, with what it is kept for.
+type Kept = (Value, Vec<String>);
+
+/// A tree chosen from a [`Grid`], by its index, with what it is chosen for.
+type Pick = (usize, Vec<String>);
+
 /// The trees traced at every [`STEP`]-th pixel of a chapter's scene: each as its line of JSON,
 /// with its shape ([`signature`]) and what it shows ([`features`]).
 struct Grid {
@@ -323,7 +329,7 @@ fn steadiness(grid: &Grid) -> Vec<Steadiness> {
 /// features not shown yet (the steadiest first, then in row order), until every feature a
 /// steady tree shows is shown. Returns each pick (tree index, the features it is kept for)
 /// and the features only unsteady pixels show.
-fn choose(grid: &Grid, steady: &[Steadiness]) -> (Vec<(usize, Vec<String>)>, Vec<String>) {
+fn choose(grid: &Grid, steady: &[Steadiness]) -> (Vec<Pick>, Vec<String>) {
     let shown = &grid.shows;
     let mut wanted: BTreeSet<String> = BTreeSet::new();
     let mut everywhere: BTreeSet<String> = BTreeSet::new();
@@ -358,14 +364,8 @@ fn choose(grid: &Grid, steady: &[Steadiness]) -> (Vec<(usize, Vec<String>)>, Vec
     (picks, unsteady)
 }
 
-/// A trees file's text (`docs/src/inspect.md`).
-/// `pretty` for a file people read.
-fn file_text(
-    chapter: &Chapter,
-    settings: &Value,
-    pixels: &[(Value, Vec<String>)],
-    pretty: bool,
-) -> String {
+/// A trees file's text (`docs/src/inspect.md`), `pretty` for a file people read.
+fn file_text(chapter: &Chapter, settings: &Value, pixels: &[Kept], pretty: bool) -> String {
     let doc = json!({
         "version": 1,
         "about": format!(
@@ -392,7 +392,7 @@ fn file_text(
 }
 
 /// The pixels' trees of a trees file, with what each is kept for.
-fn read_file(path: &Path) -> Result<(Value, Vec<(Value, Vec<String>)>), ToolError> {
+fn read_file(path: &Path) -> Result<(Value, Vec<Kept>), ToolError> {
     let text = std::fs::read_to_string(path).map_err(|e| ToolError::io(path, e))?;
     let doc: Value = serde_json::from_str(&text)
         .map_err(|e| ToolError::Usage(format!("{}: not JSON: {e}", path.display())))?;
@@ -462,7 +462,7 @@ pub fn command(root: &Path, manifest: &Manifest, check: bool) -> Result<ExitCode
         .tempdir()
         .map_err(|e| ToolError::io(std::env::temp_dir(), e))?;
     // 1. each chapter's grid, and the pixels its features need
-    let mut chosen: Vec<(Grid, Vec<Steadiness>, Vec<(usize, Vec<String>)>)> = Vec::new();
+    let mut chosen: Vec<(Grid, Vec<Steadiness>, Vec<Pick>)> = Vec::new();
     for chapter in &syllabus::CHAPTERS {
         let figure = figure_of(&figures, chapter)?;
         let g = grid(&reference_binary(chapter)?, figure, root)?;
@@ -535,7 +535,7 @@ pub fn command(root: &Path, manifest: &Manifest, check: bool) -> Result<ExitCode
         let file = match search_files.get(&chapter.number) {
             Some(f) => f.clone(),
             None => {
-                let search: Vec<(Value, Vec<String>)> = (0..g.lines.len())
+                let search: Vec<Kept> = (0..g.lines.len())
                     .filter(|&i| {
                         let (x, y) = g.pixel(i);
                         picks.iter().any(|(k, _)| *k == i) || x % 2 == 1 && y % 2 == 1
@@ -595,7 +595,7 @@ pub fn command(root: &Path, manifest: &Manifest, check: bool) -> Result<ExitCode
     }
     // 3. the trees files
     for (chapter, (g, _, picks)) in syllabus::CHAPTERS.iter().zip(&chosen) {
-        let pixels: Vec<(Value, Vec<String>)> = picks
+        let pixels: Vec<Kept> = picks
             .iter()
             .map(|(i, covers)| (g.tree(*i), covers.clone()))
             .collect();

@@ -8,7 +8,7 @@
 //! road's order — the camera ray, what it hits, the hit's t, P and n, the ambient term, each
 //! light's factors, its feeler and what it crosses, the share, the local light, the branches
 //! and, recursively, what they bring back — and stops at the first quantity that differs
-//! beyond its [`Tolerance`], or where the trees' shapes part (another object hit, a branch
+//! beyond its [`Tolerance`](super::provenance::Tolerance), or where the trees' shapes part (another object hit, a branch
 //! traced where the reference stops). The [`Difference`] names the pixel, the path to the
 //! node, the quantity in the notes' symbols, both values, and the functions that computed it
 //! ([`super::provenance`]).
