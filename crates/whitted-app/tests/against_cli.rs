@@ -23,6 +23,15 @@ fn stdout(o: &std::process::Output) -> String {
     String::from_utf8_lossy(&o.stdout).into_owned()
 }
 
+/// A run that succeeded, its stdout read as one JSON value a line.
+fn json_lines(o: &std::process::Output) -> Vec<serde_json::Value> {
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    stdout(o)
+        .lines()
+        .map(|l| serde_json::from_str(l).unwrap())
+        .collect()
+}
+
 /// Each chapter binary traces its chapter's trees file and finds every tree the reference's:
 /// one summary line in text, one JSON line a pixel with `"differs": false`, and no image.
 #[test]
@@ -44,11 +53,7 @@ fn each_chapter_agrees_with_its_trees_and_writes_no_image() {
             &[&scene, "--against", &file, "--json"],
             dir.path(),
         );
-        assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
-        let lines: Vec<serde_json::Value> = stdout(&o)
-            .lines()
-            .map(|l| serde_json::from_str(l).unwrap())
-            .collect();
+        let lines = json_lines(&o);
         assert!(lines.len() >= 3, "{lines:?}");
         for l in &lines {
             assert_eq!(l["differs"], false, "{l}");
@@ -195,11 +200,7 @@ fn the_grid_is_the_settings_then_every_steps_tree() {
         ],
         dir.path(),
     );
-    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
-    let lines: Vec<serde_json::Value> = stdout(&o)
-        .lines()
-        .map(|l| serde_json::from_str(l).unwrap())
-        .collect();
+    let lines = json_lines(&o);
     assert_eq!(lines[0]["settings"]["width"], 48);
     assert_eq!(lines[0]["settings"]["chapter"], 3);
     let pixels: Vec<(u64, u64)> = lines[1..]

@@ -501,24 +501,42 @@ impl Walk<'_> {
         }
     }
 
-    fn tree(&mut self, mine: &Value, reference: &Value) -> Agree {
-        let empty = Vec::new();
-        let (ms, rs) = (
-            at(mine, "samples").as_array().unwrap_or(&empty),
-            at(reference, "samples").as_array().unwrap_or(&empty),
-        );
+    /// The items of the lists under `key` of two nodes, side by side; lists of other lengths
+    /// differ as `quantity`, by their counts.
+    fn pairs<'v>(
+        &self,
+        quantity: Quantity,
+        (ray, shapes): (RayKind, &[&str]),
+        mine: &'v Value,
+        reference: &'v Value,
+        key: &str,
+    ) -> Result<Vec<(&'v Value, &'v Value)>, Difference> {
+        let list = |v: &'v Value| at(v, key).as_array().map_or(&[][..], Vec::as_slice);
+        let (ms, rs) = (list(mine), list(reference));
         if ms.len() != rs.len() {
             return Err(self.differs(
-                Quantity::Samples,
-                RayKind::Camera,
-                &[],
+                quantity,
+                ray,
+                shapes,
                 ms.len().to_string(),
                 rs.len().to_string(),
             ));
         }
-        for (i, (m, r)) in ms.iter().zip(rs).enumerate() {
+        Ok(ms.iter().zip(rs).collect())
+    }
+
+    fn tree(&mut self, mine: &Value, reference: &Value) -> Agree {
+        let samples = self.pairs(
+            Quantity::Samples,
+            (RayKind::Camera, &[]),
+            mine,
+            reference,
+            "samples",
+        )?;
+        let several = samples.len() > 1;
+        for (i, (m, r)) in samples.into_iter().enumerate() {
             let depth = self.path.len();
-            if rs.len() > 1 {
+            if several {
                 self.path.push(Step {
                     kind: "sample",
                     label: format!("sample {i}"),
@@ -614,21 +632,7 @@ impl Walk<'_> {
         self.value(Quantity::Point, kind, &shapes, pair, "point")?;
         self.value(Quantity::Normal, kind, &shapes, pair, "normal")?;
         self.value(Quantity::Ambient, kind, &shapes, pair, "ambient")?;
-        let empty = Vec::new();
-        let (ml, rl) = (
-            at(mine, "lights").as_array().unwrap_or(&empty),
-            at(reference, "lights").as_array().unwrap_or(&empty),
-        );
-        if ml.len() != rl.len() {
-            return Err(self.differs(
-                Quantity::Lights,
-                kind,
-                &shapes,
-                ml.len().to_string(),
-                rl.len().to_string(),
-            ));
-        }
-        for (m, r) in ml.iter().zip(rl) {
+        for (m, r) in self.pairs(Quantity::Lights, (kind, &shapes), mine, reference, "lights")? {
             self.path.push(Step {
                 kind: "light",
                 label: format!("light {}", at(r, "index")),
