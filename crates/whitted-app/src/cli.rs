@@ -42,6 +42,7 @@ use whitted::error::{Error, MISSING, panic_text};
 use whitted::offset::OffsetKind;
 use whitted::output::{self, Encoding};
 use whitted::real::Real;
+use whitted::render::inspect::against::{self, TreeFile};
 use whitted::render::{self, Chapter, Options, View};
 use whitted::scene::load::{MAX_DEPTH, MAX_SAMPLES, MAX_SIDE};
 use whitted::scene::scatter::Layout;
@@ -171,6 +172,21 @@ pub struct Common {
     /// Tab shows the reference and the difference.
     #[arg(long, value_name = "REF.png")]
     pub compare: Option<PathBuf>,
+    /// Trace the pixels of TREES.json (the reference's ray trees, chapters/chNN_name/trees.json)
+    /// with this code and the settings the file records, and print, for each pixel whose tree
+    /// differs, the first quantity that does and the functions that computed it. No image is
+    /// written unless -o or --compare asks for one.
+    #[arg(long, value_name = "TREES.json", conflicts_with = "window")]
+    pub against: Option<PathBuf>,
+    /// Print the ray tree of every STEP-th pixel of every STEP-th row as JSON lines, after a
+    /// line with the settings they were traced with, and exit (`whitted trees` reads them).
+    #[arg(long, value_name = "STEP", hide = true,
+          value_parser = clap::value_parser!(u32).range(1..=MAX_SIDE as i64),
+          conflicts_with_all = ["output", "compare", "against", "window"])]
+    pub inspect_grid: Option<u32>,
+    /// With --inspect or --against: print JSON (its shapes: docs/src/inspect.md).
+    #[arg(long)]
+    pub json: bool,
 }
 
 /// The help of `--window`, with the keys from the window's keymap
@@ -208,11 +224,8 @@ pub struct Objects {
     pub no_packets: bool,
     /// Print the ray tree of pixel X,Y (column X, row Y from the top, from 0) — hits, each
     /// light's I_a, I_d, I_s and feeler, mirror and transmitted rays — and exit, writing no image.
-    #[arg(long, value_name = "X,Y", value_parser = parse_pixel, conflicts_with_all = ["output", "compare"], allow_hyphen_values = true)]
+    #[arg(long, value_name = "X,Y", value_parser = parse_pixel, conflicts_with_all = ["output", "compare", "against", "inspect_grid"], allow_hyphen_values = true)]
     pub inspect: Option<(u32, u32)>,
-    /// With --inspect: print the tree as JSON (its shape: docs/src/inspect.md).
-    #[arg(long, requires = "inspect")]
-    pub json: bool,
 }
 
 /// Reads `X,Y` as a pixel's column and row.
@@ -457,11 +470,24 @@ fn run_inner(chapter: Chapter, args: &ChapterArgs) -> Result<(), Error> {
                 .into(),
         ));
     }
+    if common.json && inspect.is_none() && common.against.is_none() {
+        return Err(Error::Usage(
+            "--json goes with --inspect X,Y or --against TREES.json: it says how they print".into(),
+        ));
+    }
+    let against = match &common.against {
+        Some(path) => Some(TreeFile::read(path)?),
+        None => None,
+    };
     let out = common
         .output
         .clone()
         .unwrap_or_else(|| PathBuf::from(format!("{}.png", chapter.about().binary)));
-    if inspect.is_none() {
+    // an image is written unless the run only prints trees
+    let image = inspect.is_none()
+        && common.inspect_grid.is_none()
+        && (against.is_none() || common.output.is_some() || common.compare.is_some());
+    if image {
         output::check_destination(&out)?;
     }
     let scene = read_scene(common.scene.as_deref(), chapter)?;
@@ -483,8 +509,14 @@ fn run_inner(chapter: Chapter, args: &ChapterArgs) -> Result<(), Error> {
         options.numerics = a.numerics;
         options.offset = a.offset.offset();
     }
-    if let (Some(pixel), Some(o)) = (inspect, objects) {
-        return print_tree(&scene, &options, pixel, common.encoding, o.json);
+    if let Some(pixel) = inspect {
+        return print_tree(&scene, &options, pixel, common.encoding, common.json);
+    }
+    if let Some(step) = common.inspect_grid {
+        return print_grid(&scene, &options, step);
+    }
+    if let (Some(trees), false) = (&against, image) {
+        return print_against(&scene, &options, trees, common).map(|_| ());
     }
     let reference = match &common.compare {
         Some(path) => Some(Reference {
@@ -533,6 +565,10 @@ fn run_inner(chapter: Chapter, args: &ChapterArgs) -> Result<(), Error> {
             print_out(&format!("{line}\n"))?;
         }
     }
+    let traced = match &against {
+        Some(trees) => Some(print_against(&scene, &options, trees, common)?),
+        None => None,
+    };
     if !common.quiet {
         match &reference {
             None => eprintln!("wrote {} ({}×{})", out.display(), fb.width, fb.height),
@@ -558,6 +594,9 @@ fn run_inner(chapter: Chapter, args: &ChapterArgs) -> Result<(), Error> {
             }
         }
         eprintln!("{}", summary(fb.width, fb.height, &stats, seconds));
+        if let Some((pixels, seconds)) = traced {
+            eprintln!("traced {pixels} pixels' trees against the reference's in {seconds:.3} s");
+        }
     }
     Ok(())
 }
@@ -637,6 +676,65 @@ fn print_tree(
         tree.to_string()
     };
     print_out(&text)
+}
+
+/// `--inspect-grid STEP`: the settings as one JSON line, then the ray tree of every STEP-th
+/// pixel of every STEP-th row (from STEP/2), one JSON line each.
+fn print_grid(scene: &Scene, options: &Options, step: u32) -> Result<(), Error> {
+    let tracer = render::Tracer::new(scene, options);
+    let header = serde_json::json!({
+        "version": against::FILE_VERSION,
+        "settings": against::Settings::of(options).to_json(),
+    });
+    let mut text = format!("{header}\n");
+    for y in (step / 2..options.height).step_by(step as usize) {
+        for x in (step / 2..options.width).step_by(step as usize) {
+            text += &tracer.inspect(x, y).to_json().to_string();
+            text.push('\n');
+        }
+    }
+    print_out(&text)
+}
+
+/// `--against TREES.json`: each pixel of the file traced with this code and compared with the
+/// reference's tree. In text, a line for each pixel that differs and one that sums up; in JSON
+/// (`--json`), a line for every pixel. Returns how many pixels were traced, and in how many
+/// seconds.
+fn print_against(
+    scene: &Scene,
+    options: &Options,
+    trees: &TreeFile,
+    common: &Common,
+) -> Result<(usize, f64), Error> {
+    let start = Instant::now();
+    let compared = trees.against(scene, options)?;
+    let seconds = start.elapsed().as_secs_f64();
+    let mut text = String::new();
+    for c in &compared {
+        if common.json {
+            text += &c.to_json().to_string();
+            text.push('\n');
+        } else if c.difference.is_some() {
+            text += &c.line();
+            text.push('\n');
+        }
+    }
+    if !common.json {
+        let differ = compared.iter().filter(|c| c.difference.is_some()).count();
+        let file = common.against.as_deref().unwrap_or(Path::new("")).display();
+        text += &match differ {
+            0 => format!(
+                "against: the {} pixels' trees are the reference's ({file})\n",
+                compared.len()
+            ),
+            n => format!(
+                "against: {n} of {} pixels' trees differ from the reference's ({file})\n",
+                compared.len()
+            ),
+        };
+    }
+    print_out(&text)?;
+    Ok((compared.len(), seconds))
 }
 
 /// Writes `text` on stdout; a reader that stops early (`| head`) is not an error.

@@ -135,13 +135,13 @@ fn token(arg: &clap::Arg) -> String {
     }
 }
 
-/// The arguments of `chapter`'s binary, in the order of its `--help`, without `--help` and
-/// `--version`.
+/// The arguments of `chapter`'s binary, in the order of its `--help`, without `--help`,
+/// `--version` and those the help hides (for the course tools).
 fn arguments(chapter: Chapter) -> Vec<clap::Arg> {
     let mut cmd = cli::command(chapter, "");
     cmd.build();
     cmd.get_arguments()
-        .filter(|a| !matches!(a.get_id().as_str(), "help" | "version"))
+        .filter(|a| !matches!(a.get_id().as_str(), "help" | "version") && !a.is_hide_set())
         .cloned()
         .collect()
 }

@@ -52,11 +52,15 @@
 //! - [`autograder`] fits grading to Gradescope, GitHub Classroom, PrairieLearn and CodeGrade:
 //!   the package each one takes, and each one's results file from one report;
 //! - [`figures`] renders the course book's figures and compares them; [`book`] checks the
-//!   built book.
+//!   built book;
+//! - [`trees`] keeps the reference's ray trees at a few pixels of each chapter scene, and
+//!   [`mistakes`] the course's known mistakes (the hand-written mutants) with their
+//!   fingerprints, for `cargo learn`'s first wrong number.
 //!
 //! The binary `whitted` exposes them: `whitted formulas [list | prove | deps [--write] |
 //! readmes]` ([`formulas`]), `whitted handout`, `whitted learn [list | hint | watch]`,
-//! `whitted grade`, `whitted autograder`, `whitted figures [--check]`, `whitted book`.
+//! `whitted grade`, `whitted autograder`, `whitted figures [--check]`, `whitted trees
+//! [--check]`, `whitted book`.
 //!
 //! Course book: [The instructor's guide](../../../docs/book/instructor-guide.html) (`docs/src/instructor-guide.md`).
 
@@ -67,12 +71,14 @@ pub mod figures;
 pub mod formulas;
 pub mod grade;
 pub mod handout;
+pub mod mistakes;
 pub mod parallel;
 pub mod poison;
 pub mod prove;
 pub mod readme;
 pub mod report;
 pub mod source;
+pub mod trees;
 
 pub use whitted_learn::{
     ToolError, args, cargo, cli, files, layout, learn, manifest, map, syllabus,

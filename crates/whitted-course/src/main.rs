@@ -18,6 +18,8 @@
 //!                                                   classroom, prairielearn, codegrade)
 //! whitted autograder grade|prebuild|check           what those packages run
 //! whitted figures [--check]                         the book's figures, rendered or compared
+//! whitted trees [--check]                           the reference's ray trees and the known
+//!                                                   mistakes, written or compared
 //! whitted book                                      the book, built and checked
 //! ```
 //!
@@ -37,7 +39,7 @@ use whitted_course::cli::{find_root, read_manifest};
 use whitted_course::grade::command::{Class, Reports};
 use whitted_course::grade::sandbox::Level as SandboxLevel;
 use whitted_course::prove::PoisonedRuns;
-use whitted_course::{ToolError, book, figures, formulas, grade, handout, syllabus};
+use whitted_course::{ToolError, book, figures, formulas, grade, handout, syllabus, trees};
 
 /// The course tools of whitted, the toolkit for learning classic ray tracing.
 #[derive(Parser)]
@@ -102,6 +104,17 @@ enum Command {
     /// committed PNG: a channel may differ by at most 1/255. Exit status: 0 all written or all
     /// the same, 1 some differ, 2 on an error.
     Figures(FiguresArgs),
+    /// Writes the reference's ray trees at a few pixels of each chapter scene
+    /// (chapters/chNN_name/trees.json) and the known mistakes' fingerprints
+    /// (chapters/mistakes.json), or checks the trees with --check.
+    ///
+    /// The pixels are chosen so that their trees show every object and part, each light lit
+    /// and shadowed, every kind of branch and stop, and every hand-written mutant of
+    /// crates/whitted-course/tests/mutants/hand-written.toml (built once, each behind a switch,
+    /// into target/mistakes). With --check, the committed pixels are traced again by the
+    /// chapter binaries built next to this one and compared. Exit status: 0 written or the same,
+    /// 1 some differ, 2 on an error.
+    Trees(TreesArgs),
     /// Builds the course book (docs/, mdBook with mdbook-katex) and checks it.
     ///
     /// Before the build, every {{#include file:anchor}} must give something; during it,
@@ -121,6 +134,16 @@ struct FiguresArgs {
     /// Only the figures whose file names contain this text.
     #[arg(long, value_name = "TEXT")]
     only: Option<String>,
+    /// The project [default: the nearest Cargo.toml at or above the current directory].
+    #[arg(long, value_name = "DIR")]
+    root: Option<PathBuf>,
+}
+
+#[derive(clap::Args)]
+struct TreesArgs {
+    /// Compare the committed trees with the reference's instead of writing them.
+    #[arg(long)]
+    check: bool,
     /// The project [default: the nearest Cargo.toml at or above the current directory].
     #[arg(long, value_name = "DIR")]
     root: Option<PathBuf>,
@@ -419,6 +442,10 @@ fn main() -> ExitCode {
         Command::SandboxRun { command } => return grade::sandbox::run_test(&command),
         Command::Figures(f) => project(f.root.as_ref())
             .and_then(|root| figures::command(&root, f.check, f.only.as_deref())),
+        Command::Trees(t) => project(t.root.as_ref()).and_then(|root| {
+            let manifest = read_manifest(&root)?;
+            trees::command(&root, &manifest, t.check)
+        }),
         Command::Book(b) => {
             project(b.root.as_ref()).and_then(|root| book::command(&root, &b.mdbook))
         }

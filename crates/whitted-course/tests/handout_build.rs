@@ -10,7 +10,10 @@
 //!   back one by one turns its exercises green in order, and `whitted learn` ends at N of N.
 //! - Across all chapters, exercise by exercise: in a copy where every exercise from the k-th
 //!   on is switched off (the poison switch of `whitted formulas prove`, one build for all
-//!   steps), `whitted learn` shows k of N done and exercise k next, for k = 0 … N.
+//!   steps), `whitted learn` shows k of N done and exercise k next, for k = 0 … N. In the same
+//!   copy, each hand-written mutant switched on in turn (the switch of `whitted trees`): the
+//!   verdict names its exercise, and the first wrong number of the chapter's ray trees and the
+//!   known mistake it looks like name it too.
 //! - `whitted learn watch` reruns when a file is saved by renaming, and draws the chapter.
 
 use std::collections::BTreeSet;
@@ -134,15 +137,23 @@ fn learn_name(t: &str) -> &str {
 
 /// `whitted learn` (this build's) run on the project at `project`.
 fn learn(project: &Path, poison: Option<String>) -> String {
+    let vars: Vec<(&str, String)> = poison.map(|p| ("WHITTED_POISON", p)).into_iter().collect();
+    learn_with(project, &vars)
+}
+
+/// `whitted learn` run on the project at `project` with the switches `vars` set (the poison
+/// switch of `whitted formulas prove`, the mutant switch of `whitted trees`).
+fn learn_with(project: &Path, vars: &[(&str, String)]) -> String {
     let mut c = Command::new(env!("CARGO_BIN_EXE_whitted"));
     c.args(["learn", "--root"])
         .arg(project)
         .env("CARGO_TARGET_DIR", target_dir())
         .env("CARGO_PROFILE_DEV_DEBUG", "0")
         .env("NO_COLOR", "1")
-        .env_remove("WHITTED_POISON");
-    if let Some(p) = poison {
-        c.env("WHITTED_POISON", p);
+        .env_remove("WHITTED_POISON")
+        .env_remove(whitted_course::mistakes::SWITCH_VAR);
+    for (k, v) in vars {
+        c.env(k, v);
     }
     let out = c.output().unwrap();
     assert!(out.status.success(), "{}", text(&out));
@@ -278,16 +289,19 @@ fn a_chapter_handout_fails_its_tests_and_turns_green_as_the_bodies_come_back() {
 }
 
 #[test]
-#[ignore = "builds a poisoned copy and runs whitted learn N + 1 times (minutes); .ci/run runs it"]
-fn exercise_by_exercise_learn_counts_up_to_all_of_them() {
+#[ignore = "builds a poisoned copy and runs whitted learn N + 1 times, and once per known mistake (minutes); .ci/run runs it"]
+fn exercise_by_exercise_learn_counts_up_to_all_of_them_and_tells_each_known_mistake() {
     let m = manifest();
     let n = m.entries.len();
-    // a copy of the project with every exercise behind the poison switch
+    // a copy of the project with every exercise behind the poison switch, and every
+    // hand-written mutant behind the mutant switch: one build for both
     let locations = whitted_course::source::locate_all(&root(), &m).unwrap();
     let poisoned =
         whitted_course::poison::PoisonedCopy::new(&root(), &m, &locations, "whitted-learn-", false)
             .unwrap();
     let copy = &poisoned.project;
+    let mutants = whitted_course::mistakes::load(&root()).unwrap();
+    whitted_course::mistakes::switch(copy, &m, &mutants).unwrap();
 
     for k in 0..=n {
         // exercises k … n−1 missing, those before written
@@ -295,6 +309,106 @@ fn exercise_by_exercise_learn_counts_up_to_all_of_them() {
         let report = learn(copy, Some(poison.unwrap_or_default()));
         assert_progress(&report, &m, k, (k < n).then_some(k));
     }
+    each_known_mistake_is_told_as_itself(copy, &m, &mutants);
+}
+
+/// Each hand-written mutant applied to the copy (all the other exercises written), as a
+/// student who made that mistake and asked for the exercise's first hint runs `learn`: the
+/// verdict names the mutant's exercise; the chapter's picture is drawn beside the book's; the
+/// first wrong number of its ray trees is computed in that exercise; and the mistake is told
+/// by its words (`chapters/mistakes.json`). A mutant the chapter's scene cannot show (its
+/// picture and trees are the reference's, so `whitted trees` kept no fingerprint of it) is
+/// said to be so.
+fn each_known_mistake_is_told_as_itself(
+    copy: &Path,
+    m: &Manifest,
+    mutants: &[whitted_course::mistakes::Mutant],
+) {
+    let known = whitted_course::trees::MISTAKES;
+    let known: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(root().join(known)).unwrap()).unwrap();
+    let state = copy.join(".whitted");
+    let started = std::time::Instant::now();
+    for mu in mutants {
+        let i = m.by_name(&mu.exercise).unwrap();
+        let x = &m.entries[i].exercise;
+        // a student whose last check found this exercise failing and every other one done,
+        // and who has seen its first hint
+        let progress: serde_json::Map<String, serde_json::Value> = m
+            .entries
+            .iter()
+            .map(|e| {
+                let word = if e.exercise.name == mu.exercise {
+                    "failing"
+                } else {
+                    "done"
+                };
+                (e.exercise.name.clone(), word.into())
+            })
+            .collect();
+        std::fs::create_dir_all(&state).unwrap();
+        std::fs::write(
+            state.join("progress.json"),
+            serde_json::Value::Object(progress).to_string(),
+        )
+        .unwrap();
+        std::fs::write(
+            state.join("hints.json"),
+            serde_json::json!({ &mu.exercise: 1 }).to_string(),
+        )
+        .unwrap();
+        let report = learn_with(
+            copy,
+            &[
+                ("WHITTED_POISON", String::new()),
+                (whitted_course::mistakes::SWITCH_VAR, mu.name.clone()),
+            ],
+        );
+        let said = |what: &str| {
+            assert!(
+                report.contains(what),
+                "mutant {} ({}): the report does not say {what:?}:\n{report}",
+                mu.name,
+                mu.why
+            );
+        };
+        said(&format!("✗ exercise {} —", x.id));
+        said(&format!(
+            "picture: chapter {}'s scene as your code draws it, beside the book's",
+            m.entries[i].chapter
+        ));
+        let fingerprinted = known["mistakes"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .any(|k| k["name"] == mu.name.as_str());
+        if fingerprinted {
+            said("first wrong number: pixel (");
+            said(&format!("computed in exercise {} ({})", x.id, x.name));
+            said(&format!("this looks like {}", mu.why));
+            let told: Vec<&str> = report
+                .lines()
+                .filter(|l| l.contains("first wrong number") || l.contains("compare: "))
+                .collect();
+            eprintln!("mutant {}: {}", mu.name, told.join("\n  "));
+        } else {
+            said("compare: the same as the reference");
+            assert!(
+                !report.contains("first wrong number"),
+                "mutant {}: {report}",
+                mu.name
+            );
+            eprintln!(
+                "mutant {} ({}): its chapter's picture and trees are the reference's",
+                mu.name, mu.why
+            );
+        }
+    }
+    eprintln!(
+        "{} known mistakes told in {:.0} s",
+        mutants.len(),
+        started.elapsed().as_secs_f64()
+    );
 }
 
 #[test]

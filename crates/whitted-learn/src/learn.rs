@@ -899,6 +899,9 @@ pub struct Picture {
     /// The chapter binary's `compare:` line (how many pixels differ from the figure, and
     /// where the first one is), when there was a figure.
     pub compare: Option<String>,
+    /// The student's ray trees compared with the reference's at the pixels of the chapter's
+    /// trees file, when the handout has one ([`crate::trees`]).
+    pub against: Vec<crate::trees::Against>,
 }
 
 /// Why a chapter's picture could not be drawn.
@@ -949,6 +952,10 @@ pub fn render_chapter(root: &Path, chapter: u8) -> Result<Picture, NoPicture> {
             command.args(["--width", &PICTURE_WIDTH.to_string()]);
         }
     }
+    // the first wrong number: the same pixels' trees, traced and compared
+    if let Some(trees) = crate::trees::trees_file(chapter).filter(|t| root.join(t).is_file()) {
+        command.arg("--against").arg(root.join(trees)).arg("--json");
+    }
     let out = command
         .arg("--quiet")
         .arg("-o")
@@ -971,11 +978,12 @@ pub fn render_chapter(root: &Path, chapter: u8) -> Result<Picture, NoPicture> {
             .unwrap_or("the render failed");
         return Err(NoPicture::Render(line.to_string()));
     }
-    let compare = String::from_utf8_lossy(&out.stdout)
-        .lines()
-        .find(|l| l.starts_with("compare: "))
-        .map(str::to_string);
-    Ok(Picture { path: png, compare })
+    let (compare, against) = crate::trees::read_output(&String::from_utf8_lossy(&out.stdout));
+    Ok(Picture {
+        path: png,
+        compare,
+        against,
+    })
 }
 
 /// After a check: the picture of the chapter [`picture_chapter`] picks, and what it shows.
@@ -991,25 +999,29 @@ pub fn picture(
         Ok(Picture {
             path,
             compare: Some(compare),
+            against,
         }) => {
             let same = compare.contains("the same as the reference");
             format!(
-                "{} picture: chapter {chapter}'s scene as your code draws it, beside the book's and their difference: {}\n  {compare}\n",
+                "{} picture: chapter {chapter}'s scene as your code draws it, beside the book's and their difference: {}\n  {compare}\n{}",
                 if same {
                     style.good("✓")
                 } else {
                     style.bad("✗")
                 },
-                path.strip_prefix(root).unwrap_or(&path).display()
+                path.strip_prefix(root).unwrap_or(&path).display(),
+                crate::trees::feedback(root, manifest, states, &against, Some(&compare))
             )
         }
         Ok(Picture {
             path,
             compare: None,
+            against,
         }) => format!(
-            "{} picture: chapter {chapter}'s scene as your code draws it: {}\n",
+            "{} picture: chapter {chapter}'s scene as your code draws it: {}\n{}",
             style.good("✓"),
-            path.strip_prefix(root).unwrap_or(&path).display()
+            path.strip_prefix(root).unwrap_or(&path).display(),
+            crate::trees::feedback(root, manifest, states, &against, None)
         ),
         Err(NoPicture::Render(why)) => {
             format!("picture: chapter {chapter} cannot render yet: {why}\n")

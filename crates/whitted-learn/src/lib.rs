@@ -22,6 +22,7 @@ pub mod layout;
 pub mod learn;
 pub mod manifest;
 pub mod map;
+pub mod trees;
 
 /// The course's outline: the chapters (and the notes' sections, the todo!() message), read from
 /// the one table every crate of whitted reads.

@@ -25,10 +25,15 @@
 //! its own numbers.
 //!
 //! Three files, one job each: [`tree`] holds the tree's types (and their JSON, via serde),
-//! [`record`] the recorder that builds it, [`text`] its indented text (`Display`).
+//! [`record`] the recorder that builds it, [`text`] its indented text (`Display`). Two more
+//! compare trees: [`provenance`] says which functions of the road computed each quantity of a
+//! tree, and [`against`] walks a tree beside the reference's and finds the first quantity
+//! that differs (`--against TREES.json`, `cargo learn`).
 //!
 //! Course book: [The ray tree of one pixel](../../../../../docs/book/inspect.html) (`docs/src/inspect.md`).
 
+pub mod against;
+pub mod provenance;
 pub mod record;
 pub mod text;
 pub mod tree;
