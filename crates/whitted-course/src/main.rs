@@ -204,6 +204,11 @@ struct GradeArgs {
     /// Keep each graded copy (its path is printed).
     #[arg(long)]
     keep: bool,
+    /// Leave out the feedback of each chapter that lost points (its picture beside the book's
+    /// figure, and the first wrong number of its ray trees): a faster grading, reports of the
+    /// tests alone.
+    #[arg(long)]
+    no_feedback: bool,
     #[command(flatten)]
     sandbox: SandboxArgs,
     /// The instructor's project, whose tests and manifest grade [default: the nearest
@@ -598,6 +603,7 @@ fn run_grade(args: &GradeArgs) -> Result<ExitCode, ToolError> {
         keep: args.keep,
         sandbox: sandbox_setup(args.sandbox.level())?,
         render: false,
+        feedback: !args.no_feedback,
     };
     let class = match (&args.class, &args.out) {
         (Some(dir), Some(out)) => Some(Class {

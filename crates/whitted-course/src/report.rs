@@ -23,8 +23,9 @@ pub fn points(x: f64) -> String {
     if s == "-0" { "0".into() } else { s.into() }
 }
 
-/// The terminal report: per chapter, the points, the tests passed and failed, and each
-/// exercise that lost points with its failures.
+/// The terminal report: per chapter, the points, the tests passed and failed, how the
+/// student's picture compares with the book's, and each exercise that lost points with its
+/// failures and, for the one the chapter's ray trees point at, the first wrong number.
 #[must_use]
 pub fn table(grade: &Grade, manifest: &Manifest) -> String {
     let mut out = format!(
@@ -38,6 +39,9 @@ pub fn table(grade: &Grade, manifest: &Manifest) -> String {
     for note in &grade.notes {
         out += &format!("  ! {note}\n");
     }
+    let explained = grade.explained(manifest);
+    let indented =
+        |lines: &str, by: &str| -> String { lines.lines().map(|l| format!("{by}{l}\n")).collect() };
     for &c in &grade.chapters {
         let (s, m) = grade.chapter(manifest, c);
         let tests: Vec<&TestResult> = grade
@@ -53,6 +57,13 @@ pub fn table(grade: &Grade, manifest: &Manifest) -> String {
             points(m),
             tests.len() - passed
         );
+        let told = explained.iter().find(|x| x.chapter == c);
+        if let Some(x) = told {
+            out += &format!("  picture: {}\n", x.picture_line);
+            if let Some((None, lines)) = &x.first_wrong {
+                out += &indented(lines, "");
+            }
+        }
         for e in grade
             .exercises
             .iter()
@@ -74,6 +85,11 @@ pub fn table(grade: &Grade, manifest: &Manifest) -> String {
             );
             if let Some(note) = &e.note {
                 out += &format!("      note: {note}\n");
+            }
+            if let Some((Some(at), lines)) = told.and_then(|x| x.first_wrong.as_ref())
+                && *at == e.entry
+            {
+                out += &indented(lines, "    ");
             }
             for t in grade
                 .tests

@@ -50,6 +50,7 @@ fn grade_of(m: &Manifest) -> Grade {
         elapsed: Duration::from_millis(7_400),
         timings: Default::default(),
         render: None,
+        feedback: Vec::new(),
     }
 }
 
@@ -91,7 +92,7 @@ fn gradescope_results_carry_every_field_gradescope_lists() {
         "a leaderboard nobody asked for"
     );
     assert_eq!(json["execution_time"], 7);
-    assert_eq!(json["output_format"], "text");
+    assert_eq!(json["output_format"], "md");
     assert_eq!(json["stdout_visibility"], "hidden");
     assert!(
         json["output"]
@@ -522,8 +523,10 @@ fn the_run_sandbox_shares_nothing_but_what_the_tests_read() {
         level: Level::Namespaces,
         bwrap: "/usr/bin/bwrap".into(),
         uid: Some(61_003),
+        slot: 0,
         limits: Limits::default(),
         read: vec!["/nowhere/scenes".into()],
+        write: Vec::new(),
     };
     let bin = Path::new("/w/target/debug/deps/ch01-abc");
     let command = policy.command(bin, Path::new("/w/copy/crates/whitted"));
@@ -557,6 +560,23 @@ fn the_run_sandbox_shares_nothing_but_what_the_tests_read() {
         env,
         ["HOME", "NO_COLOR", "PATH", "RUST_BACKTRACE", "TMPDIR"],
         "the test's environment"
+    );
+    // a directory made writable for one run is bound read-write at its path
+    let out = tempfile::tempdir().unwrap();
+    let mut writing = policy.clone();
+    writing.write.push(out.path().to_path_buf());
+    let text = words(&writing.command(bin, Path::new("/tmp"))).join(" ");
+    let p = out.path().display();
+    assert!(text.contains(&format!("--bind {p} {p}")), "{text}");
+    // the test in nextest's slot 3 runs as a user of its own, in its worker's group
+    let slot = Policy {
+        slot: 3,
+        ..policy.clone()
+    };
+    let text = words(&slot.command(bin, Path::new("/tmp"))).join(" ");
+    assert!(
+        text.contains("setpriv --reuid=61006 --regid=61003 --clear-groups"),
+        "{text}"
     );
     let user = Policy {
         uid: None,
@@ -603,8 +623,10 @@ fn the_user_sandbox_keeps_the_project_closed() {
             level: Level::User,
             bwrap: "".into(),
             uid: Some(61_000),
+            slot: 0,
             limits: Limits::default(),
             read: vec![],
+            write: Vec::new(),
         },
         runner: "/w/whitted".into(),
         triple: "x86_64-unknown-linux-gnu".into(),
@@ -627,4 +649,109 @@ fn the_user_sandbox_keeps_the_project_closed() {
         .unwrap_err()
         .to_string();
     assert!(why.contains("closed to other users"), "{why}");
+}
+
+/// A chapter that lost points carries its feedback into every report, as `cargo learn` would
+/// say it: the picture's line, the first wrong number of its ray trees under the exercise
+/// they point at (a failed public test's output, Gradescope's Markdown, JUnit's failure, the
+/// terminal table), the picture for PrairieLearn; a hidden test still says only that it
+/// failed.
+#[test]
+fn the_feedback_of_a_chapter_reaches_every_report() {
+    use whitted_course::grade::Against;
+    let m = manifest();
+    let mut g = grade_of(&m);
+    let between = m.by_name("blocks_light").unwrap();
+    let text = "pixel (7, 9), camera ray → hit `floor` → light 0 → feeler: the objects crossed = `ceiling` (reference nothing)";
+    let png = b"\x89PNG\r\n\x1a\n and the rest of it".to_vec();
+    g.feedback = vec![grade::ChapterFeedback {
+        chapter: 4,
+        compare: Some(
+            "compare: 312 of 28800 pixels differ by more than 2/255 (1.08%), by up to 87/255; the first at (17, 40)"
+                .into(),
+        ),
+        against: vec![
+            Against {
+                pixel: (7, 9),
+                differs: true,
+                path: vec!["camera ray".into(), "hit `floor`".into()],
+                nodes: vec!["camera ray".into(), "hit".into(), "light".into(), "feeler".into()],
+                quantity: "crossings".into(),
+                functions: vec![m.entries[between].function.clone()],
+                text: text.into(),
+            },
+            Against {
+                pixel: (1, 1),
+                ..Against::default()
+            },
+        ],
+        picture: Some(png.clone()),
+        trouble: None,
+    }];
+    let explained = g.explained(&m);
+    assert_eq!(explained.len(), 1);
+    let (at, lines) = explained[0].first_wrong.clone().unwrap();
+    assert_eq!(at, Some(between), "{lines}");
+    let x = &m.entries[between].exercise;
+    let computed = format!("computed in exercise {} ({})", x.id, x.name);
+    assert!(lines.contains(text) && lines.contains(&computed), "{lines}");
+
+    let table = whitted_course::report::table(&g, &m);
+    assert!(
+        table.contains("  picture: compare: 312 of 28800"),
+        "{table}"
+    );
+    assert!(
+        table.contains(&format!("first wrong number: {text}")),
+        "{table}"
+    );
+
+    let r = Report::new(&g, &m, &Settings::default());
+    let failed = r
+        .tests
+        .iter()
+        .find(|t| !t.hidden && t.tags.contains(&x.name) && t.status != grade::Status::Passed)
+        .unwrap();
+    assert!(failed.output.contains(&computed), "{}", failed.output);
+    assert_eq!(failed.first_wrong, lines.trim_end());
+    for t in r.tests.iter().filter(|t| t.hidden) {
+        assert!(
+            t.first_wrong.is_empty() && !t.output.contains("first wrong"),
+            "{t:?}"
+        );
+    }
+    assert!(
+        r.output.contains("chapter 4 picture: compare: 312"),
+        "{}",
+        r.output
+    );
+    assert_eq!(r.images.len(), 1);
+    assert_eq!(r.images[0].png, png);
+
+    let gs = gradescope::results(&r);
+    let shown = gs["tests"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .find(|t| {
+            t["number"] == x.id.as_str()
+                && t["status"] == "failed"
+                && !t["name"].as_str().unwrap().contains("hidden")
+        })
+        .unwrap();
+    assert_eq!(shown["output_format"], "md");
+    assert!(
+        shown["output"].as_str().unwrap().contains(&computed),
+        "{shown}"
+    );
+
+    let pl = prairielearn::results(&r);
+    let url = pl["images"][0]["url"].as_str().unwrap();
+    assert!(
+        url.starts_with("data:image/png;base64,iVBORw0KGgo"),
+        "{url}"
+    );
+
+    let junit = codegrade::junit(&r, &[4], Audience::Student);
+    assert!(junit.contains(&computed), "{junit}");
 }

@@ -184,6 +184,7 @@ fn graded(m: &Manifest) -> Grade {
         elapsed: Duration::from_secs(42),
         timings: Default::default(),
         render: None,
+        feedback: Vec::new(),
     }
 }
 
@@ -224,7 +225,10 @@ fn gradescope_results_add_up_and_hide_the_hidden_tests() {
         .find(|t| t["name"].as_str().unwrap().contains("hidden"))
         .unwrap();
     assert_eq!(hidden["name"], "exercise 1.2, hidden test 1");
-    assert_eq!(hidden["output"], "failed");
+    assert_eq!(
+        hidden["output"], "```text\nfailed\n```\n",
+        "a hidden test says only that it failed"
+    );
     let text = json.to_string();
     assert!(
         !text.contains("secret"),

@@ -106,6 +106,7 @@ fn setup(hidden: &Path) -> grade::GradeSetup {
             level: Level::Namespaces,
         }),
         render: false,
+        feedback: true,
     }
 }
 
@@ -636,6 +637,27 @@ fn a_class_is_graded_as_each_submission_deserves() {
         );
         let (s, max) = g.chapter(&m, m.entries[i].chapter);
         assert!(s < max);
+    }
+    // and its report says, as learn does, where the ray trees first go wrong and which
+    // exercise computed it, for each mistake whose trees differ (chapters/mistakes.json)
+    let known: serde_json::Value = json(&root().join("chapters/mistakes.json"));
+    for k in known["mistakes"].as_array().unwrap() {
+        let name = k["name"].as_str().unwrap();
+        let g = find(&entries, &format!("mutant-{name}"));
+        let x = &m.entries[index(&m, k["exercise"].as_str().unwrap())].exercise;
+        let table = whitted_course::report::table(g, &m);
+        assert!(
+            table.contains("first wrong number: pixel (")
+                && table.contains(&format!("computed in exercise {} ({})", x.id, x.name)),
+            "mutant {name}: the report does not point at exercise {} ({}):\n{table}",
+            x.id,
+            x.name
+        );
+        let told: Vec<&str> = table
+            .lines()
+            .filter(|l| l.contains("picture:") || l.contains("first wrong"))
+            .collect();
+        eprintln!("mutant {name}: {}", told.join(" | "));
     }
 }
 

@@ -93,6 +93,7 @@ fn a_class_of_a_hundred_is_graded_and_timed() {
             level: Level::Namespaces,
         }),
         render: false,
+        feedback: true,
     };
     let start = std::time::Instant::now();
     let entries = grade::grade_class(&root(), &m, &class, &options, 1, &|e| {

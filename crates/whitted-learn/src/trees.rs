@@ -106,13 +106,93 @@ fn exercises_of(manifest: &Manifest, functions: &[String]) -> Vec<usize> {
         .collect()
 }
 
-/// The lines on the first pixel whose tree differs from the reference's: where, which
-/// quantity, both values, and the exercise to look at — the first of those that computed it
-/// whose own tests do not pass in `states` (else all of them, whose tests pass), with the
-/// notes' formula. `None` when no tree differs, and when the picture is the book's
-/// (`picture_differs` false) and every exercise that computed the quantity passes its tests:
-/// a difference that changes no pixel and breaks no test is the last bits of another correct
-/// way to compute it.
+/// The first pixel whose tree differs from the reference's, and the exercise to look at: the
+/// first of those whose functions computed the quantity whose own tests do not pass in
+/// `states` (`None` when they all pass, or when no manifest function computed it).
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct FirstWrong<'a> {
+    /// The pixel's comparison.
+    pub at: &'a Against,
+    /// The exercise (manifest index) to look at, when one of those that computed the
+    /// quantity fails its tests.
+    pub exercise: Option<usize>,
+    /// Every exercise whose function computed the quantity, in manifest order.
+    pub computed: Vec<usize>,
+    /// How many of the pixels compared have a tree that differs.
+    pub differing: usize,
+}
+
+/// The first wrong number of `against`, attributed by the manifest ([`FirstWrong`]). `None`
+/// when no tree differs, and when the picture is the book's (`picture_differs` false) and
+/// every exercise that computed the quantity passes its tests: a difference that changes no
+/// pixel and breaks no test is the last bits of another correct way to compute it.
+#[must_use]
+pub fn attribute<'a>(
+    manifest: &Manifest,
+    states: &[State],
+    against: &'a [Against],
+    picture_differs: bool,
+) -> Option<FirstWrong<'a>> {
+    let at = against.iter().find(|a| a.differs)?;
+    let computed = exercises_of(manifest, &at.functions);
+    let exercise = computed
+        .iter()
+        .copied()
+        .find(|&i| states.get(i).is_some_and(|s| *s != State::Done));
+    if exercise.is_none() && !picture_differs {
+        return None;
+    }
+    Some(FirstWrong {
+        at,
+        exercise,
+        computed,
+        differing: against.iter().filter(|a| a.differs).count(),
+    })
+}
+
+impl FirstWrong<'_> {
+    /// The lines learn and the grader print: where, which quantity, both values, and the
+    /// exercise to look at with the notes' formula (or the exercises whose tests pass, when
+    /// none fails).
+    #[must_use]
+    pub fn lines(&self, manifest: &Manifest, total: usize) -> String {
+        let mut out = format!("  first wrong number: {}\n", self.at.text);
+        match (self.exercise, self.computed.is_empty()) {
+            (Some(i), _) => {
+                let e = &manifest.entries[i];
+                out += &format!(
+                    "    computed in exercise {} ({}), the notes: {}\n",
+                    e.exercise.id, e.exercise.name, e.formula
+                );
+            }
+            (None, false) => {
+                let ids: Vec<String> = self
+                    .computed
+                    .iter()
+                    .map(|&i| {
+                        let x = &manifest.entries[i].exercise;
+                        format!("{} ({})", x.id, x.name)
+                    })
+                    .collect();
+                out += &format!(
+                    "    computed by exercises whose tests pass: {}\n",
+                    ids.join(", ")
+                );
+            }
+            (None, true) => {}
+        }
+        if self.differing > 1 {
+            out += &format!(
+                "    (the ray trees differ at {} of the {total} pixels compared)\n",
+                self.differing
+            );
+        }
+        out
+    }
+}
+
+/// The lines on the first pixel whose tree differs from the reference's ([`attribute`], then
+/// [`FirstWrong::lines`]).
 #[must_use]
 pub fn first_wrong(
     manifest: &Manifest,
@@ -120,48 +200,7 @@ pub fn first_wrong(
     against: &[Against],
     picture_differs: bool,
 ) -> Option<String> {
-    let first = against.iter().find(|a| a.differs)?;
-    let computed = exercises_of(manifest, &first.functions);
-    let open: Vec<usize> = computed
-        .iter()
-        .copied()
-        .filter(|&i| states.get(i).is_some_and(|s| *s != State::Done))
-        .collect();
-    if open.is_empty() && !picture_differs {
-        return None;
-    }
-    let mut out = format!("  first wrong number: {}\n", first.text);
-    match (open.first(), computed.is_empty()) {
-        (Some(&i), _) => {
-            let e = &manifest.entries[i];
-            out += &format!(
-                "    computed in exercise {} ({}), the notes: {}\n",
-                e.exercise.id, e.exercise.name, e.formula
-            );
-        }
-        (None, false) => {
-            let ids: Vec<String> = computed
-                .iter()
-                .map(|&i| {
-                    let x = &manifest.entries[i].exercise;
-                    format!("{} ({})", x.id, x.name)
-                })
-                .collect();
-            out += &format!(
-                "    computed by exercises whose tests pass: {}\n",
-                ids.join(", ")
-            );
-        }
-        (None, true) => {}
-    }
-    let more = against.iter().filter(|a| a.differs).count();
-    if more > 1 {
-        out += &format!(
-            "    (the ray trees differ at {more} of the {} pixels compared)\n",
-            against.len()
-        );
-    }
-    Some(out)
+    attribute(manifest, states, against, picture_differs).map(|f| f.lines(manifest, against.len()))
 }
 
 /// What a difference from the reference looks like, coarsely: enough to tell one known mistake

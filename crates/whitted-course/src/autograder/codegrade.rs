@@ -1,6 +1,7 @@
 //! JUnit XML from a [`Report`]: what CodeGrade's JUnit step reads, and the instructor's
 //! `junit.xml` of `whitted grade`. A test suite per chapter, a test case per test with its
-//! `time`, and a `failure` (its status, its message, the formula) for each that did not pass.
+//! `time`, and a `failure` (its status, its message, the first wrong number of the ray trees
+//! where they point at its exercise, the formula) for each that did not pass.
 //! For the student ([`Audience::Student`]) a hidden test is named as in Gradescope and says
 //! only whether it passed; for the instructor it is named and quoted in full.
 //!
@@ -72,9 +73,14 @@ pub fn junit(report: &Report, chapters: &[u8], audience: Audience) -> String {
             let (message, text) = if secret {
                 (t.status.word().to_string(), t.status.word().to_string())
             } else {
+                let wrong = if t.first_wrong.is_empty() {
+                    String::new()
+                } else {
+                    format!("\n{}", t.first_wrong)
+                };
                 (
                     t.message.clone(),
-                    format!("{} — formula: {}", t.message, t.formula),
+                    format!("{}{wrong}\n— formula: {}", t.message, t.formula),
                 )
             };
             out += &format!(

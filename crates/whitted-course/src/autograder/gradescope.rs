@@ -1,5 +1,6 @@
 //! Gradescope's `results.json`, from a [`Report`]: the total `score`, `execution_time`, the
-//! `output` students read (with `output_format`), `visibility` and `stdout_visibility` (the
+//! `output` students read (Markdown, `output_format: "md"`: what the tests and the grader said
+//! stands verbatim in code blocks), `visibility` and `stdout_visibility` (the
 //! grader's own output stays the instructor's), `extra_data`, the opt-in `leaderboard`, and
 //! per test `name`, `number` (the exercise's id), `score`, `max_score`, `status`, `output`,
 //! `tags` (chapter, exercise) and `visibility` (hidden tests: the course's setting, by default
@@ -26,8 +27,8 @@ pub fn results(report: &Report) -> Value {
                 "score": round2(t.score),
                 "max_score": round2(t.max),
                 "status": if t.status == Status::Passed { "passed" } else { "failed" },
-                "output": t.output,
-                "output_format": "text",
+                "output": markdown(&t.output),
+                "output_format": "md",
                 "tags": t.tags,
                 "visibility": if t.hidden {
                     report.settings.hidden_visibility.as_str()
@@ -40,8 +41,8 @@ pub fn results(report: &Report) -> Value {
     let mut out = json!({
         "score": round2(report.score),
         "execution_time": report.execution_time.round() as u64,
-        "output": report.output,
-        "output_format": "text",
+        "output": markdown(&report.output),
+        "output_format": "md",
         "visibility": "visible",
         "stdout_visibility": "hidden",
         "extra_data": {
@@ -59,4 +60,21 @@ pub fn results(report: &Report) -> Value {
             .collect();
     }
     out
+}
+
+/// `text` for Gradescope's Markdown: verbatim, in a fenced code block whose fence no line of
+/// the text can close (empty text stays empty).
+#[must_use]
+pub fn markdown(text: &str) -> String {
+    let text = text.trim_end();
+    if text.is_empty() {
+        return String::new();
+    }
+    let longest = text
+        .lines()
+        .map(|l| l.trim_start().chars().take_while(|&c| c == '`').count())
+        .max()
+        .unwrap_or(0);
+    let fence = "`".repeat(longest.max(2) + 1);
+    format!("{fence}text\n{text}\n{fence}\n")
 }

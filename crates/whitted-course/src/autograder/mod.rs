@@ -100,6 +100,9 @@ pub struct TestLine {
     pub output: String,
     /// Why it failed, as the test said it (the instructor's).
     pub message: String,
+    /// For a failed public test of the exercise a chapter's ray trees point at, the first
+    /// wrong number (learn's lines); empty otherwise.
+    pub first_wrong: String,
     /// Whether it is one of the instructor's hidden tests.
     pub hidden: bool,
     /// The chapter it counts for (0 when its name says no exercise).
@@ -119,8 +122,12 @@ pub struct Board {
     pub order: String,
 }
 
-/// A picture for the student (PrairieLearn's `images`): the difference between the
-/// student's render and the reference, once grading makes one.
+/// The most pictures a report carries (each about 100 kB; PrairieLearn's results file takes
+/// 1 MB at the most).
+pub const MAX_IMAGES: usize = 2;
+
+/// A picture for the student (PrairieLearn's `images`): the student's render beside the
+/// book's figure and their difference.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct Image {
     /// What it shows.
@@ -147,9 +154,9 @@ pub struct Report {
     pub tests: Vec<TestLine>,
     /// The leaderboard's entries (empty unless asked for).
     pub leaderboard: Vec<Board>,
-    /// Pictures for the student. Grading makes none yet; the feedback that draws the
-    /// difference between the student's render and the reference fills this, and every
-    /// adapter that can show pictures (PrairieLearn) shows them.
+    /// Pictures for the student: of the first chapters that lost points (at most
+    /// [`MAX_IMAGES`]), the student's render, the book's figure and their difference side by
+    /// side; every adapter that can show pictures (PrairieLearn) shows them.
     pub images: Vec<Image>,
     /// Why the submission could not be graded (not a copy of the handout …); `None` when
     /// it was.
@@ -168,6 +175,14 @@ impl Report {
     /// The report of a grading.
     #[must_use]
     pub fn new(grade: &Grade, manifest: &Manifest, settings: &Settings) -> Self {
+        let explained = grade.explained(manifest);
+        // the first wrong number of each exercise the ray trees point at
+        let first_wrong = |entry: usize| {
+            explained.iter().find_map(|x| match &x.first_wrong {
+                Some((Some(at), lines)) if *at == entry => Some(lines.as_str()),
+                _ => None,
+            })
+        };
         let mut hidden_seen: std::collections::BTreeMap<usize, usize> = Default::default();
         let mut tests = Vec::new();
         for t in &grade.tests {
@@ -201,6 +216,17 @@ impl Report {
                 };
                 (format!("{title}{}", t.name), output)
             };
+            let wrong = match t.exercise.and_then(first_wrong) {
+                Some(lines) if !t.hidden && t.status != Status::Passed => {
+                    lines.trim_end().to_string()
+                }
+                _ => String::new(),
+            };
+            let output = if wrong.is_empty() {
+                output
+            } else {
+                format!("{output}\n{wrong}")
+            };
             let mut tags = Vec::new();
             if let Some(e) = entry {
                 tags.push(format!("chapter {}", e.chapter));
@@ -217,6 +243,7 @@ impl Report {
                 status: t.status.clone(),
                 output,
                 message: t.message.clone(),
+                first_wrong: wrong,
                 hidden: t.hidden,
                 chapter: entry.map_or(0, |e| e.chapter),
                 time: t.time,
@@ -225,6 +252,23 @@ impl Report {
         let mut output = String::new();
         for note in &grade.notes {
             output += &format!("{note}\n");
+        }
+        let mut images = Vec::new();
+        for x in &explained {
+            output += &format!("chapter {} picture: {}\n", x.chapter, x.picture_line);
+            if let Some((None, lines)) = &x.first_wrong {
+                output += lines;
+            }
+            // two pictures at the most: a platform's results file has a size limit
+            if let Some(png) = x.picture.filter(|_| images.len() < MAX_IMAGES) {
+                images.push(Image {
+                    label: format!(
+                        "chapter {}: your render, the book's figure and their difference",
+                        x.chapter
+                    ),
+                    png: png.to_vec(),
+                });
+            }
         }
         for e in &grade.exercises {
             if let Some(note) = &e.note {
@@ -261,7 +305,7 @@ impl Report {
             output,
             tests,
             leaderboard,
-            images: Vec::new(),
+            images,
             ungradable: None,
             settings: settings.clone(),
         }

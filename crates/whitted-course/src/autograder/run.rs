@@ -211,5 +211,6 @@ pub fn setup(
         keep: false,
         sandbox,
         render,
+        feedback: true,
     }
 }

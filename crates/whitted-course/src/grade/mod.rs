@@ -49,9 +49,10 @@ use super::{ToolError, files, layout};
 pub use class::{ClassEntry, grade_class};
 pub use junit::{MESSAGE_CHARS, panic_message, parse_junit};
 pub use nextest::NEXTEST_PROFILE;
-pub use render::RenderScore;
+pub use render::{ChapterFeedback, PICTURE_BYTES, RenderScore};
 pub(crate) use splice::hidden_files;
 pub use splice::{compile_time_read, student_body};
+pub use whitted_learn::trees::Against;
 
 /// The graded copy's directory, inside the build directory when grading has one.
 const COPY: &str = "graded-copy";
@@ -81,6 +82,9 @@ pub struct GradeSetup {
     /// Render the last graded chapter's figure with the student's code, for the leaderboard
     /// ([`Grade::render`]).
     pub render: bool,
+    /// For each graded chapter that lost points, render its figure with the student's code
+    /// beside the book's and compare its ray trees with the reference's ([`Grade::feedback`]).
+    pub feedback: bool,
 }
 
 /// What a sandboxed grading needs to know.
@@ -105,6 +109,7 @@ impl Default for GradeSetup {
             keep: false,
             sandbox: None,
             render: false,
+            feedback: true,
         }
     }
 }
@@ -192,6 +197,10 @@ pub struct Grade {
     /// The render of the leaderboard when it was asked for ([`GradeSetup::render`]): its
     /// speed and error, or why there is none.
     pub render: Option<Result<RenderScore, String>>,
+    /// What the student's code draws of each graded chapter that lost points, beside the
+    /// reference ([`GradeSetup::feedback`]): the picture, the first wrong number of the ray
+    /// trees, or why the chapter cannot be drawn.
+    pub feedback: Vec<ChapterFeedback>,
 }
 
 /// Where a grading's time went.
@@ -206,7 +215,62 @@ pub struct Timings {
     pub run: Duration,
 }
 
+/// What a report says of one chapter's feedback ([`Grade::explained`]).
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Explained<'g> {
+    /// The chapter.
+    pub chapter: u8,
+    /// How the student's picture compares with the book's (the binary's `compare:` line), or
+    /// why there is no picture.
+    pub picture_line: String,
+    /// The first wrong number of the chapter's ray trees, in learn's words, and the exercise
+    /// (manifest index) it points at, when a tree differs.
+    pub first_wrong: Option<(Option<usize>, String)>,
+    /// The PNG of the student's render, the book's figure and their difference side by side.
+    pub picture: Option<&'g [u8]>,
+}
+
 impl Grade {
+    /// The feedback of each chapter that lost points, worded for a report: the picture's
+    /// line, and the first wrong number of its trees attributed to an exercise as `cargo
+    /// learn` attributes it (the first of those that computed it whose tests did not all
+    /// pass).
+    #[must_use]
+    pub fn explained(&self, manifest: &Manifest) -> Vec<Explained<'_>> {
+        use whitted_learn::learn::State;
+        use whitted_learn::trees as learn_trees;
+        // an exercise not graded here has the reference's body in the graded copy
+        let states: Vec<State> = (0..manifest.entries.len())
+            .map(|i| match self.exercises.iter().find(|e| e.entry == i) {
+                Some(e) if e.score < e.max || e.note.is_some() => State::Failing(Vec::new()),
+                _ => State::Done,
+            })
+            .collect();
+        self.feedback
+            .iter()
+            .map(|f| {
+                let picture_line = match (&f.trouble, &f.compare) {
+                    (Some(why), _) => format!("no picture: {why}"),
+                    (None, Some(compare)) => compare.clone(),
+                    (None, None) => "no picture".into(),
+                };
+                let differs = f
+                    .compare
+                    .as_deref()
+                    .and_then(learn_trees::picture_counts)
+                    .is_some_and(|(n, _)| n > 0);
+                let first_wrong = learn_trees::attribute(manifest, &states, &f.against, differs)
+                    .map(|w| (w.exercise, w.lines(manifest, f.against.len())));
+                Explained {
+                    chapter: f.chapter,
+                    picture_line,
+                    first_wrong,
+                    picture: f.picture.as_deref(),
+                }
+            })
+            .collect()
+    }
+
     /// Points earned.
     #[must_use]
     pub fn score(&self) -> f64 {
@@ -404,6 +468,7 @@ pub fn grade(
         s.reopen(&project)?;
     }
     let tests = tests?;
+    let exercises = scores(manifest, &chapters, &tests, &notes);
     let render = (options.render && whole.is_empty()).then(|| {
         let last = chapters
             .iter()
@@ -419,8 +484,29 @@ pub fn grade(
             options.timeout * 3,
         )
     });
+    // the pictures and trees of the chapters that lost points: what learn would show
+    let lost: Vec<u8> = chapters
+        .iter()
+        .copied()
+        .filter(|&c| {
+            exercises
+                .iter()
+                .any(|e| manifest.entries[e.entry].chapter == c && e.score < e.max)
+        })
+        .collect();
+    let feedback = if options.feedback && whole.is_empty() && !lost.is_empty() {
+        render::feedback(
+            &project,
+            &target_dir,
+            &lost,
+            wrapper.as_ref(),
+            sandbox.as_ref(),
+            options.timeout * 3,
+        )
+    } else {
+        Vec::new()
+    };
     timings.run = ran.elapsed();
-    let exercises = scores(manifest, &chapters, &tests, &notes);
     drop(temp);
     Ok(Grade {
         student,
@@ -431,6 +517,7 @@ pub fn grade(
         elapsed: start.elapsed(),
         timings,
         render,
+        feedback,
     })
 }
 

@@ -1,11 +1,21 @@
-//! The leaderboard's measure of a submission: its code renders the book's figure of the last
-//! graded chapter (the chapter binary built from the graded copy, in the build sandbox) and
-//! the render runs in the run sandbox with `--compare` against the committed figure. Its
-//! speed is the binary's `M rays/s` (stderr), its error the share of pixels the `compare:`
-//! line (stdout) says differ.
+//! The submission's own pictures: its code renders the book's figure of a chapter (the
+//! chapter binary built from the graded copy, in the build sandbox; the render in the run
+//! sandbox) with `--compare` against the committed figure.
+//!
+//! - **Feedback** ([`feedback`]): for each graded chapter that lost points, the render also
+//!   traces the pixels of the chapter's reference ray trees (`--against
+//!   chapters/chNN_name/trees.json`), so that a report can say, as `cargo learn` does, how many
+//!   pixels differ from the book's figure and the first wrong number of the trees with the
+//!   exercise that computed it, and show the three pictures side by side (the student's, the
+//!   book's, their difference). A chapter that cannot render says why (the exercise it waits
+//!   for).
+//! - **The leaderboard** ([`measure`]): the last graded chapter's speed, the binary's
+//!   `M rays/s` (stderr), and its error, the share of pixels the `compare:` line (stdout) says
+//!   differ.
 //!
 //! Course book: [The instructor's guide](../../../../../docs/book/instructor-guide.html) (`docs/src/instructor-guide.md`).
 
+use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
 use std::process::{Command, Stdio};
 use std::time::{Duration, Instant};
@@ -14,6 +24,7 @@ use super::sandbox::Sandbox;
 use crate::cargo::Wrapper;
 use crate::figures;
 use crate::layout;
+use whitted_learn::trees::{self as learn_trees, Against};
 
 /// The figures' manifest, in the project.
 pub(super) const FIGURES: &str = "docs/figures.toml";
@@ -29,45 +40,118 @@ pub struct RenderScore {
     pub differing: f64,
 }
 
-/// The files the render needs in the graded copy: the figures' manifest and the figures.
+/// The files the renders need in the graded copy: the figures' manifest, the figures and the
+/// reference's ray trees (public data: every handout holds them).
 pub(super) fn needs(file: &Path) -> bool {
-    file == Path::new(FIGURES) || file.starts_with("docs/src/figures")
+    file == Path::new(FIGURES)
+        || file.starts_with("docs/src/figures")
+        || (file.starts_with("chapters") && file.file_name().is_some_and(|n| n == "trees.json"))
 }
 
-/// Builds the binary of `chapter`'s figure from the graded copy `project` and renders it;
-/// `Err` says why there is no score (the code panics, the figure is not listed …).
-pub(super) fn measure(
+/// The largest picture a report carries: the three side by side of a chapter's figure take
+/// about 100 kB, and PrairieLearn takes a results file of 1 MB at the most.
+pub const PICTURE_BYTES: u64 = 400_000;
+
+/// What the submission's code shows of one chapter, beside the reference.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct ChapterFeedback {
+    /// The chapter.
+    pub chapter: u8,
+    /// The binary's `compare:` line: how many pixels differ from the book's figure, and the
+    /// first one.
+    pub compare: Option<String>,
+    /// The trees compared with the reference's, one a pixel.
+    pub against: Vec<Against>,
+    /// The PNG of the render, the figure and their difference side by side.
+    pub picture: Option<Vec<u8>>,
+    /// Why the chapter could not be drawn: the binary's one-line error (the exercise it
+    /// waits for, a panic), or what failed around it.
+    pub trouble: Option<String>,
+}
+
+/// A chapter binary's run on its figure's scene.
+struct Ran {
+    figure: String,
+    success: bool,
+    stdout: String,
+    stderr: String,
+    picture: Option<Vec<u8>>,
+}
+
+/// The binaries of `chapters`, built from the graded copy in one build (in the build
+/// sandbox, through `wrapper`).
+fn build_binaries(
     project: &Path,
     target_dir: &Path,
-    chapter: u8,
+    chapters: &[u8],
     wrapper: Option<&Wrapper>,
-    sandbox: Option<&Sandbox>,
-    timeout: Duration,
-) -> Result<RenderScore, String> {
-    let binary = crate::syllabus::chapter(chapter)
-        .map(|c| c.binary)
-        .ok_or_else(|| format!("no chapter {chapter}"))?;
-    let figure = figures::read_figures(&project.join(FIGURES))
-        .map_err(|e| e.to_string())?
-        .into_iter()
-        .find(|f| f.binary == binary)
-        .ok_or_else(|| format!("{FIGURES} lists no figure of {binary}"))?;
+) -> Result<BTreeMap<u8, PathBuf>, String> {
+    let names: Vec<String> = chapters
+        .iter()
+        .filter_map(|&c| crate::syllabus::chapter(c).map(|c| c.binary.to_string()))
+        .collect();
     let built = super::blame::cargo_build(
         project,
         target_dir,
         layout::APP_PACKAGE,
         &[],
-        &[binary.to_string()],
+        &names,
         wrapper,
     )
     .map_err(|e| e.to_string())?;
-    let exe = built
-        .executables
-        .get(binary)
-        .filter(|_| built.success)
-        .ok_or_else(|| format!("{binary} does not build: {}", built.first_error()))?;
+    if !built.success {
+        return Err(format!(
+            "the chapter binaries do not build: {}",
+            built.first_error()
+        ));
+    }
+    Ok(chapters
+        .iter()
+        .filter_map(|&c| {
+            let name = crate::syllabus::chapter(c)?.binary;
+            built.executables.get(name).map(|exe| (c, exe.clone()))
+        })
+        .collect())
+}
+
+/// Reads at most `limit` bytes of the file at `path` as text (empty when it cannot).
+fn read_capped(path: &Path, limit: u64) -> String {
+    let mut text = String::new();
+    if let Ok(f) = std::fs::File::open(path) {
+        let _ = std::io::Read::read_to_string(&mut std::io::Read::take(f, limit), &mut text);
+    }
+    text
+}
+
+/// Runs chapter `chapter`'s binary `exe` on its figure's scene at the figure's settings with
+/// `--compare` (and `--against` its trees when `against`), in the run sandbox when there is
+/// one, under `timeout`. The picture goes to a directory made for this run alone, and is
+/// taken back only when it is a PNG of at most [`PICTURE_BYTES`].
+fn run_figure(
+    project: &Path,
+    target_dir: &Path,
+    (chapter, exe): (u8, &Path),
+    sandbox: Option<&Sandbox>,
+    timeout: Duration,
+    against: bool,
+) -> Result<Ran, String> {
+    let about = crate::syllabus::chapter(chapter).ok_or_else(|| format!("no chapter {chapter}"))?;
+    let binary = about.binary;
+    let figure = figures::read_figures(&project.join(FIGURES))
+        .map_err(|e| e.to_string())?
+        .into_iter()
+        .find(|f| f.binary == binary)
+        .ok_or_else(|| format!("{FIGURES} lists no figure of {binary}"))?;
     let reference = project.join("docs/src/figures").join(&figure.file);
-    let args: Vec<String> = figure
+    let trees = learn_trees::trees_file(chapter)
+        .map(|t| project.join(t))
+        .filter(|t| against && t.is_file());
+    let out_dir = target_dir.join("feedback").join(binary);
+    if out_dir.exists() {
+        std::fs::remove_dir_all(&out_dir).map_err(|e| format!("{}: {e}", out_dir.display()))?;
+    }
+    let out_png = out_dir.join("picture.png");
+    let mut args: Vec<String> = figure
         .args
         .iter()
         .map(|a| {
@@ -78,20 +162,30 @@ pub(super) fn measure(
                 a.clone()
             }
         })
-        .chain([
-            "--compare".into(),
-            reference.display().to_string(),
-            "-o".into(),
-            "/tmp/render.png".into(),
-        ])
         .collect();
+    args.extend([
+        "--compare".into(),
+        reference.display().to_string(),
+        "-o".into(),
+        out_png.display().to_string(),
+    ]);
+    if let Some(t) = &trees {
+        args.extend(["--against".into(), t.display().to_string(), "--json".into()]);
+    }
     let mut command = match sandbox {
         Some(s) => {
             let mut policy = s.policy.clone();
             policy.read.push(reference.clone());
+            policy.read.extend(trees.clone());
+            policy
+                .writable(&out_dir)
+                .map_err(|e| format!("{}: {e}", out_dir.display()))?;
             policy.command(exe, project)
         }
-        None => Command::new(exe),
+        None => {
+            std::fs::create_dir_all(&out_dir).map_err(|e| format!("{}: {e}", out_dir.display()))?;
+            Command::new(exe)
+        }
     };
     let dir = tempfile::tempdir().map_err(|e| e.to_string())?;
     let (out, err) = (dir.path().join("out"), dir.path().join("err"));
@@ -111,20 +205,105 @@ pub(super) fn measure(
             None if started.elapsed() > timeout => {
                 let _ = child.kill();
                 let _ = child.wait();
+                let _ = std::fs::remove_dir_all(&out_dir);
                 return Err(format!("{binary} ran past {} s", timeout.as_secs()));
             }
             None => std::thread::sleep(Duration::from_millis(20)),
         }
     };
-    let read = |p: &PathBuf| std::fs::read_to_string(p).unwrap_or_default();
-    let (stdout, stderr) = (read(&out), read(&err));
-    if !status.success() {
+    let picture = std::fs::symlink_metadata(&out_png)
+        .ok()
+        .filter(|m| m.is_file() && m.len() <= PICTURE_BYTES)
+        .and_then(|_| std::fs::read(&out_png).ok())
+        .filter(|bytes| bytes.starts_with(b"\x89PNG\r\n\x1a\n"));
+    let _ = std::fs::remove_dir_all(&out_dir);
+    Ok(Ran {
+        figure: figure.file,
+        success: status.success(),
+        stdout: read_capped(&out, 1 << 20),
+        stderr: read_capped(&err, 1 << 20),
+        picture,
+    })
+}
+
+/// The one line a chapter binary's failed run says: its `error: …` line (an exercise not
+/// written yet says which), else the panic's message.
+fn one_line_error(stderr: &str) -> String {
+    stderr
+        .lines()
+        .rev()
+        .find_map(|l| l.strip_prefix("error: "))
+        .map_or_else(|| super::junit::panic_message(stderr), str::to_string)
+}
+
+/// The feedback of `chapters` (those that lost points): the chapter binaries built from the
+/// graded copy in one build, each run on its figure with `--compare` and `--against`.
+pub(super) fn feedback(
+    project: &Path,
+    target_dir: &Path,
+    chapters: &[u8],
+    wrapper: Option<&Wrapper>,
+    sandbox: Option<&Sandbox>,
+    timeout: Duration,
+) -> Vec<ChapterFeedback> {
+    let trouble = |chapter: u8, why: String| ChapterFeedback {
+        chapter,
+        compare: None,
+        against: Vec::new(),
+        picture: None,
+        trouble: Some(why),
+    };
+    let exes = match build_binaries(project, target_dir, chapters, wrapper) {
+        Ok(e) => e,
+        Err(why) => return chapters.iter().map(|&c| trouble(c, why.clone())).collect(),
+    };
+    chapters
+        .iter()
+        .map(|&c| {
+            let Some(exe) = exes.get(&c) else {
+                return trouble(c, format!("cargo built no binary for chapter {c}"));
+            };
+            match run_figure(project, target_dir, (c, exe), sandbox, timeout, true) {
+                Ok(ran) if ran.success => {
+                    let (compare, against) = learn_trees::read_output(&ran.stdout);
+                    ChapterFeedback {
+                        chapter: c,
+                        compare,
+                        against,
+                        picture: ran.picture,
+                        trouble: None,
+                    }
+                }
+                Ok(ran) => trouble(c, one_line_error(&ran.stderr)),
+                Err(why) => trouble(c, why),
+            }
+        })
+        .collect()
+}
+
+/// Builds the binary of `chapter`'s figure from the graded copy `project` and renders it for
+/// the leaderboard; `Err` says why there is no score (the code panics, the figure is not
+/// listed …).
+pub(super) fn measure(
+    project: &Path,
+    target_dir: &Path,
+    chapter: u8,
+    wrapper: Option<&Wrapper>,
+    sandbox: Option<&Sandbox>,
+    timeout: Duration,
+) -> Result<RenderScore, String> {
+    let exes = build_binaries(project, target_dir, &[chapter], wrapper)?;
+    let exe = exes
+        .get(&chapter)
+        .ok_or_else(|| format!("cargo built no binary for chapter {chapter}"))?;
+    let ran = run_figure(project, target_dir, (chapter, exe), sandbox, timeout, false)?;
+    if !ran.success {
         return Err(format!(
-            "{binary} failed: {}",
-            super::junit::panic_message(&stderr)
+            "the render failed: {}",
+            one_line_error(&ran.stderr)
         ));
     }
-    parse(&figure.file, &stdout, &stderr)
+    parse(&ran.figure, &ran.stdout, &ran.stderr)
 }
 
 /// The score in a chapter binary's output: `… M rays/s` on stderr, the `compare:` line on

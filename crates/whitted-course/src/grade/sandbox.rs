@@ -44,8 +44,17 @@ pub const POLICY_VAR: &str = "WHITTED_SANDBOX_POLICY";
 /// The hidden subcommand of `whitted` that nextest starts each test binary with.
 pub const RUNNER_COMMAND: &str = "sandbox-run";
 
-/// The first user id the tests run as when the grader is root; worker `N` uses this plus `N`.
+/// The first user id the tests run as when the grader is root; worker `N` owns the
+/// [`SLOTS`] ids from this plus `N × SLOTS`.
 pub const FIRST_UID: u32 = 61_000;
+
+/// User ids each worker owns: one for each test nextest runs at once (its slot, from
+/// `NEXTEST_TEST_GLOBAL_SLOT`), so that a test's limit on processes counts only its own and a
+/// fork bomb cannot starve the test beside it. A render run outside nextest uses the first.
+pub const SLOTS: u32 = 64;
+
+/// The environment variable in which nextest tells a test (and its runner) its slot.
+const SLOT_VAR: &str = "NEXTEST_TEST_GLOBAL_SLOT";
 
 /// What a test may use.
 #[derive(Clone, Debug, PartialEq, Eq, Serialize, Deserialize)]
@@ -97,13 +106,19 @@ pub struct Policy {
     pub level: Level,
     /// The bubblewrap program.
     pub bwrap: PathBuf,
-    /// The user id to drop to inside the sandbox (when the grader is root); `None` runs as
-    /// the grader's own user, in a user namespace.
+    /// The user id to drop to inside the sandbox (when the grader is root), also the group
+    /// of every slot's user; `None` runs as the grader's own user, in a user namespace.
     pub uid: Option<u32>,
+    /// The test's slot: it runs as `uid + slot` (below [`SLOTS`]), in the group `uid`.
+    #[serde(default)]
+    pub slot: u32,
     /// The limits.
     pub limits: Limits,
     /// Directories and files the tests read at run time, shown read-only at their own paths.
     pub read: Vec<PathBuf>,
+    /// Directories the program may write in, shown at their own paths (a render's output:
+    /// the grader makes each one empty, for this run only, and owned by the policy's user).
+    pub write: Vec<PathBuf>,
 }
 
 /// The sandbox of one worker: found and tried by [`Sandbox::probe`].
@@ -198,6 +213,17 @@ fn unshare(args: &mut Vec<OsString>, root: bool) {
 }
 
 impl Policy {
+    /// Makes `dir` a fresh empty directory the sandboxed program may write in: owned by the
+    /// policy's user when it has one (the grader is root), listed in [`Policy::write`].
+    pub fn writable(&mut self, dir: &Path) -> std::io::Result<()> {
+        std::fs::create_dir_all(dir)?;
+        if let Some(uid) = self.uid {
+            std::os::unix::fs::chown(dir, Some(uid), Some(uid))?;
+        }
+        self.write.push(dir.to_path_buf());
+        Ok(())
+    }
+
     /// The command that runs `bin` in `cwd` under this policy, the test's own arguments to
     /// follow: with an empty environment but for what a test needs, reading no input.
     #[must_use]
@@ -247,6 +273,11 @@ impl Policy {
             push_path(&mut args, "--ro-bind", p);
             args.push(p.as_os_str().to_owned());
         }
+        for p in self.write.iter().filter(|p| p.is_dir()) {
+            ancestors(&mut args, &mut made, p);
+            push_path(&mut args, "--bind", p);
+            args.push(p.as_os_str().to_owned());
+        }
         ancestors(&mut args, &mut made, bin);
         push_path(&mut args, "--ro-bind", bin);
         args.push(bin.as_os_str().to_owned());
@@ -263,11 +294,10 @@ impl Policy {
     fn inner(&self, bin: &Path) -> Vec<OsString> {
         let mut args: Vec<OsString> = Vec::new();
         if let Some(uid) = self.uid {
-            let id = uid.to_string();
             args.push("setpriv".into());
             for a in [
-                format!("--reuid={id}"),
-                format!("--regid={id}"),
+                format!("--reuid={}", uid + self.slot % SLOTS),
+                format!("--regid={uid}"),
                 "--clear-groups".into(),
                 "--inh-caps=-all".into(),
                 "--bounding-set=-all".into(),
@@ -339,13 +369,15 @@ impl Sandbox {
                 return Err(format!("{tool} (util-linux) is not installed"));
             }
         }
-        let uid = is_root().then(|| FIRST_UID + u32::try_from(worker).unwrap_or(0));
+        let uid = is_root().then(|| FIRST_UID + SLOTS * u32::try_from(worker).unwrap_or(0));
         let policy = Policy {
             level,
             bwrap,
             uid,
+            slot: 0,
             limits: Limits::default(),
             read,
+            write: Vec::new(),
         };
         let truth = on_path("true").ok_or("no `true` program on the PATH".to_string())?;
         let out = policy
@@ -597,13 +629,17 @@ pub fn run_test(command: &[OsString]) -> ExitCode {
     let Some((bin, args)) = command.split_first() else {
         return fail("no test binary to run".into());
     };
-    let policy: Policy = match std::env::var(POLICY_VAR)
+    let mut policy: Policy = match std::env::var(POLICY_VAR)
         .map_err(|e| e.to_string())
         .and_then(|t| serde_json::from_str(&t).map_err(|e| e.to_string()))
     {
         Ok(p) => p,
         Err(e) => return fail(format!("no sandbox policy in {POLICY_VAR}: {e}")),
     };
+    policy.slot = std::env::var(SLOT_VAR)
+        .ok()
+        .and_then(|s| s.parse().ok())
+        .unwrap_or(0);
     let bin = Path::new(bin);
     let cwd = std::env::current_dir().unwrap_or_else(|_| PathBuf::from("/tmp"));
     let mut child = match policy
