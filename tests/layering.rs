@@ -31,8 +31,9 @@ fn named(manifest: &str, section: &str) -> BTreeSet<String> {
         .unwrap_or_default()
 }
 
-/// The crates depend one way: the renderer on none of the others and on nothing a command line,
-/// a window or a course tool needs; the programs on the renderer only; the course tools on
+/// The crates depend one way: the syllabus on nothing unless a feature asks; the renderer on
+/// none of the others and on nothing a command line, a window or a course tool needs; the
+/// programs on the renderer only; the course tools on
 /// neither (they run cargo on a project, so a student's edit never rebuilds them); and nothing
 /// under `crates/` on the tools, benchmarks or these tests.
 #[test]
@@ -73,6 +74,24 @@ fn the_crates_depend_one_way() {
     assert!(
         !course.contains("whitted") && !course.contains("whitted-app"),
         "the course tools depend on the code they grade: {course:?}"
+    );
+    // the outline every layer reads depends on nothing but what a layer asks of it by a
+    // feature (clap for the command lines, png for the PNG reader)
+    let text = std::fs::read_to_string(root().join("crates/whitted-syllabus/Cargo.toml")).unwrap();
+    let table: toml::Table = text.parse().unwrap();
+    let required: Vec<&String> = table
+        .get("dependencies")
+        .and_then(|v| v.as_table())
+        .map(|t| {
+            t.iter()
+                .filter(|(_, v)| v.get("optional").and_then(toml::Value::as_bool) != Some(true))
+                .map(|(k, _)| k)
+                .collect()
+        })
+        .unwrap_or_default();
+    assert!(
+        required.is_empty(),
+        "whitted-syllabus depends on {required:?} without a feature"
     );
     // the student's tests need no more than the renderer (and its own dependencies)
     let dev = named("crates/whitted/Cargo.toml", "dev-dependencies");

@@ -339,46 +339,10 @@ pub fn main(chapter: Chapter, about: &str) -> ExitCode {
     run(chapter, &parsed_or_exit(parsed))
 }
 
-/// Parses the command line of a program built with clap's derive (the chapter binaries use
-/// [`main`]). `--help`, `--version` and errors as [`parsed_or_exit`] says.
-#[must_use]
-pub fn parse_args<T: clap::Parser>() -> T {
-    parsed_or_exit(T::try_parse())
-}
-
-/// The parsed command line, or the exit: `--help` and `--version` print and exit 0; any other
-/// problem is printed as one line `error: …` (clap's own first line, with the list that
-/// follows it when it ends in a colon, such as the arguments missing) with exit status 2.
-#[must_use]
-pub fn parsed_or_exit<T>(parsed: Result<T, clap::Error>) -> T {
-    match parsed {
-        Ok(args) => args,
-        Err(e) if !e.use_stderr() => {
-            // --help, --version: not errors
-            let _ = e.print();
-            std::process::exit(0);
-        }
-        Err(e) if e.kind() == clap::error::ErrorKind::DisplayHelpOnMissingArgumentOrSubcommand => {
-            // a bare `whitted`: the help says what to ask for
-            let _ = e.print();
-            std::process::exit(2);
-        }
-        Err(e) => {
-            let text = e.render().to_string();
-            let mut lines = text.lines().map(str::trim).filter(|l| !l.is_empty());
-            let mut line = lines
-                .next()
-                .unwrap_or("error: invalid arguments")
-                .to_string();
-            if line.ends_with(':') {
-                let list: Vec<&str> = lines.take_while(|l| !l.starts_with("Usage:")).collect();
-                line = format!("{line} {}", list.join(", "));
-            }
-            eprintln!("{line} (see --help)");
-            std::process::exit(2);
-        }
-    }
-}
+/// The command line of a program built with clap's derive (the chapter binaries use
+/// [`main`]) and a parse's result: `--help` and `--version` print and exit 0, any other problem
+/// is one line `error: …` with exit status 2 (one place for every program: the syllabus's).
+pub use whitted_syllabus::words::{parse_args, parsed_or_exit};
 
 /// Reads the scene named on the command line, or the embedded showcase: the parts the chapter
 /// `chapter` uses ([`Chapter::reads`]).

@@ -211,28 +211,9 @@ pub fn compare(committed: &Path, fresh: &Path, tolerance: u8) -> Result<Differen
 
 /// A PNG's size and its pixels as 8-bit RGBA, row by row from the top.
 fn read_rgba(path: &Path) -> Result<((u32, u32), Vec<u8>), ToolError> {
-    let fail =
-        |e: String| ToolError::Usage(format!("{}: cannot read the PNG: {e}", path.display()));
-    let file = std::fs::File::open(path).map_err(|e| fail(e.to_string()))?;
-    let mut decoder = png::Decoder::new(std::io::BufReader::new(file));
-    decoder.set_transformations(png::Transformations::EXPAND | png::Transformations::STRIP_16);
-    let mut reader = decoder.read_info().map_err(|e| fail(e.to_string()))?;
-    let mut buf = vec![0; reader.output_buffer_size().unwrap_or(0)];
-    let info = reader
-        .next_frame(&mut buf)
-        .map_err(|e| fail(e.to_string()))?;
-    let samples = info.color_type.samples();
-    let rgba = buf[..info.buffer_size()]
-        .chunks_exact(samples)
-        .flat_map(|p| match *p {
-            [g] => [g, g, g, 255],
-            [g, a] => [g, g, g, a],
-            [r, g, b] => [r, g, b, 255],
-            [r, g, b, a, ..] => [r, g, b, a],
-            [] => [0, 0, 0, 0],
-        })
-        .collect();
-    Ok(((info.width, info.height), rgba))
+    let (width, height, rgba) = whitted_syllabus::words::read_rgba(path)
+        .map_err(|e| ToolError::Usage(format!("{}: cannot read the PNG: {e}", path.display())))?;
+    Ok(((width, height), rgba))
 }
 
 /// `whitted figures [--check]`: renders the book's figures with the chapter binaries built

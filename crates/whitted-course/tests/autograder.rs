@@ -4,7 +4,7 @@
 //! holds what its promise rests on. The packages run in their platforms' layouts in
 //! tests/grade_build.rs.
 
-mod class;
+mod common;
 
 use std::collections::BTreeSet;
 use std::io::Read;
@@ -12,7 +12,7 @@ use std::path::Path;
 use std::process::Command;
 use std::time::Duration;
 
-use class::{manifest, root};
+use common::{manifest, root};
 use whitted_course::autograder::codegrade::{self, Audience};
 use whitted_course::autograder::{
     self, Board, Image, Platform, Report, Settings, classroom, gradescope, package, prairielearn,

@@ -2,21 +2,16 @@
 //! to catch what it is for, and the repository's book is held to them where no mdBook is
 //! needed (the figures' manifest against the figures, and every include of the pages).
 
+mod common;
+
+use common::root;
+
 use std::path::{Path, PathBuf};
 
 use whitted_course::book::{
     self, check_html, check_includes, include_links, log_problems, resolve_include,
 };
 use whitted_course::figures::{self, Difference, Figure, compare, parse_figures};
-
-/// The workspace's root: this crate sits in `crates/whitted-course`.
-fn root() -> PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR"))
-        .ancestors()
-        .nth(2)
-        .expect("the crate sits two levels below the workspace's root")
-        .to_path_buf()
-}
 
 fn write(dir: &Path, name: &str, text: &str) -> PathBuf {
     let path = dir.join(name);

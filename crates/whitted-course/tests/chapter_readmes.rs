@@ -4,18 +4,13 @@
 //! manifest writes. (That the pixel each page inspects is what the binary prints is checked
 //! beside the binaries, in `crates/whitted-app/tests/book_pages.rs`.)
 
-use std::path::{Path, PathBuf};
+mod common;
+
+use common::root;
+
+use std::path::Path;
 
 use whitted_course::{manifest, source, syllabus};
-
-/// The workspace's root: this crate sits in `crates/whitted-course`.
-fn root() -> PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR"))
-        .ancestors()
-        .nth(2)
-        .expect("the crate sits two levels below the workspace's root")
-        .to_path_buf()
-}
 
 /// The README of chapter `n`.
 fn readme(n: u8) -> String {

@@ -3,26 +3,17 @@
 //! reports (the table, Gradescope's results.json, JUnit, CSV). The grading of real copies —
 //! the reference, a handout, a broken submission, a class — is in tests/grade_build.rs.
 
-use std::path::{Path, PathBuf};
+mod common;
+
+use common::{manifest, root};
+
+use std::path::Path;
 use std::time::Duration;
 
 use whitted_course::grade::{self, Grade, Status, TestResult};
 use whitted_course::handout::{self, Region};
-use whitted_course::manifest::{self, Manifest};
+use whitted_course::manifest::Manifest;
 use whitted_course::report;
-
-/// The workspace's root: this crate sits in `crates/whitted-course`.
-fn root() -> PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR"))
-        .ancestors()
-        .nth(2)
-        .expect("the crate sits two levels below the workspace's root")
-        .to_path_buf()
-}
-
-fn manifest() -> Manifest {
-    manifest::load(&root().join(manifest::DEFAULT_PATH)).unwrap()
-}
 
 /// The region of exercise `id` (a name or a displayed id) in the reference.
 fn region(m: &Manifest, id: &str) -> Region {

@@ -34,9 +34,9 @@ use std::path::{Path, PathBuf};
 use std::sync::Mutex;
 use std::time::Duration;
 
-mod class;
+mod common;
 
-use class::{copy, index, manifest, mutant_body, mutants, root, set_body};
+use common::{copy, index, manifest, mutant_body, mutants, root, set_body};
 use whitted_course::autograder::{self, Platform, Report, Settings};
 use whitted_course::grade::sandbox::Level;
 use whitted_course::grade::{self, ClassEntry, Grade, Status};

@@ -14,12 +14,12 @@
 //! cargo test -p whitted-course --test grade_scale -- --ignored --nocapture
 //! ```
 
-mod class;
+mod common;
 
 use std::path::PathBuf;
 use std::time::Duration;
 
-use class::{copy, index, manifest, mutant_body, mutants, root, set_body};
+use common::{copy, index, manifest, mutant_body, mutants, root, set_body};
 use whitted_course::grade::sandbox::Level;
 use whitted_course::grade::{self, Grade};
 use whitted_course::handout;

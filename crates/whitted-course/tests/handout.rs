@@ -2,6 +2,10 @@
 //! handout holds and leaves out, and what `whitted learn` makes of a test run. Building a
 //! handout and running its tests is `tests/handout_build.rs` (run by `.ci/run`).
 
+mod common;
+
+use common::{manifest, root};
+
 use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
 
@@ -9,21 +13,8 @@ use whitted_course::cargo::TestOutcome;
 use whitted_course::cargo::{TestRun, test_name};
 use whitted_course::handout::{self, BEGIN, END};
 use whitted_course::learn::{self, State, Style};
-use whitted_course::manifest::{self, Manifest};
+use whitted_course::manifest::Manifest;
 use whitted_course::syllabus::todo;
-
-/// The workspace's root: this crate sits in `crates/whitted-course`.
-fn root() -> PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR"))
-        .ancestors()
-        .nth(2)
-        .expect("the crate sits two levels below the workspace's root")
-        .to_path_buf()
-}
-
-fn manifest() -> Manifest {
-    manifest::load(&root().join(manifest::DEFAULT_PATH)).unwrap()
-}
 
 /// Every file under `dir`, relative, with its text (binary files left out).
 fn texts(dir: &Path) -> BTreeMap<PathBuf, String> {

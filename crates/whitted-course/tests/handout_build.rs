@@ -16,6 +16,10 @@
 //!   known mistake it looks like name it too.
 //! - `whitted learn watch` reruns when a file is saved by renaming, and draws the chapter.
 
+mod common;
+
+use common::{manifest, root};
+
 use std::collections::BTreeSet;
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
@@ -23,20 +27,7 @@ use std::process::{Command, Output};
 use whitted_course::cargo::{TestOutcome, parse_libtest};
 use whitted_course::deps;
 use whitted_course::handout;
-use whitted_course::manifest::{self, Manifest};
-
-/// The workspace's root: this crate sits in `crates/whitted-course`.
-fn root() -> PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR"))
-        .ancestors()
-        .nth(2)
-        .expect("the crate sits two levels below the workspace's root")
-        .to_path_buf()
-}
-
-fn manifest() -> Manifest {
-    manifest::load(&root().join(manifest::DEFAULT_PATH)).unwrap()
-}
+use whitted_course::manifest::Manifest;
 
 /// One target directory for every copy, so the dependencies are built once.
 fn target_dir() -> PathBuf {

@@ -3,21 +3,14 @@
 //! name, solution markers, test prefix, map entries and saved state as they were; only the
 //! displayed ids after it in its chapter shift.
 
-use std::path::{Path, PathBuf};
+mod common;
+
+use common::root;
 
 use whitted_course::learn::{self, State};
 use whitted_course::manifest::{self, Manifest};
 use whitted_course::map;
 use whitted_course::{files, handout};
-
-/// The workspace's root: this crate sits in `crates/whitted-course`.
-fn root() -> PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR"))
-        .ancestors()
-        .nth(2)
-        .expect("the crate sits two levels below the workspace's root")
-        .to_path_buf()
-}
 
 /// The exercise inserted: a function of its own in `ray.rs`, with its solution region.
 const INSERTED_FN: &str = "\n/// An exercise inserted by the test.\npub fn inserted_exercise() -> u8 {\n    // BEGIN SOLUTION inserted_exercise\n    7\n    // END SOLUTION\n}\n";

@@ -3,18 +3,11 @@
 //! tests): a function added to the manifest, moved to another file or renamed fails here, and
 //! the message gives the lines to paste.
 
-use std::path::{Path, PathBuf};
+mod common;
+
+use common::root;
 
 use whitted_course::{manifest, source};
-
-/// The workspace's root: this crate sits in `crates/whitted-course`.
-fn root() -> PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR"))
-        .ancestors()
-        .nth(2)
-        .expect("the crate sits two levels below the workspace's root")
-        .to_path_buf()
-}
 
 /// The regex that picks the mutants of one function out of cargo-mutants' names
 /// (`src/shapes/sphere.rs:30:24: replace - with + in discriminant`, `… replace

@@ -8,6 +8,10 @@
 //! value, no name. So every assertion of these files must carry a message that shows a value,
 //! and the check below finds those that do not, at their file:line:col.
 
+mod common;
+
+use common::root;
+
 use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
 
@@ -15,15 +19,6 @@ use proc_macro2::{Delimiter, Spacing, TokenStream, TokenTree};
 use whitted_course::handout::{self, Part};
 use whitted_course::manifest::{self, Manifest};
 use whitted_learn::layout;
-
-/// The workspace's root: this crate sits in `crates/whitted-course`.
-fn root() -> PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR"))
-        .ancestors()
-        .nth(2)
-        .expect("the crate sits two levels below the workspace's root")
-        .to_path_buf()
-}
 
 fn manifest() -> Manifest {
     manifest::load(&root().join(manifest::DEFAULT_PATH))

@@ -2,19 +2,12 @@
 //! body, both whole, in one region), the shape and the features of a tree that choose the
 //! pixels, and the command's errors.
 
-use std::path::{Path, PathBuf};
+mod common;
+
+use common::root;
 
 use serde_json::json;
 use whitted_course::{handout, manifest, mistakes, trees};
-
-/// The workspace's root: this crate sits in `crates/whitted-course`.
-fn root() -> PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR"))
-        .ancestors()
-        .nth(2)
-        .expect("the crate sits two levels below the workspace's root")
-        .to_path_buf()
-}
 
 /// In the sources with every hand-written mutant behind its switch, each mutated region
 /// holds `if crate::__mutant::on("NAME") {` with the body as the mutant makes it, then the

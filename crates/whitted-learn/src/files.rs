@@ -14,16 +14,7 @@ use std::process::{Command, Stdio};
 
 use crate::ToolError;
 
-/// The 1-based line and column (in characters) of byte `offset` in `text`.
-#[must_use]
-pub fn line_col(text: &str, offset: usize) -> (usize, usize) {
-    let offset = offset.min(text.len());
-    let before = text.get(..offset).unwrap_or(text);
-    let line = before.matches('\n').count() + 1;
-    let line_start = before.rfind('\n').map_or(0, |i| i + 1);
-    let col = before[line_start..].chars().count() + 1;
-    (line, col)
-}
+pub use whitted_syllabus::words::line_col;
 
 /// Writes `bytes` to `path` through a temporary file in the same directory, renamed into
 /// place: a reader sees the old file or the whole new one, and a failure leaves the old one.

@@ -7,9 +7,10 @@
 //! Beside them, the section titles of the notes ([`SECTIONS`]) that the exercises cite, and
 //! the message of an exercise not written yet ([`todo`](mod@todo)): a handout writes it into each
 //! exercise's `todo!()`, and the renderer's error lines, `cargo learn` and the grader read it
-//! back.
+//! back. And how every layer words a problem in one line ([`words`](mod@words): `line:col` in
+//! a file, a command line's error, the PNG reader behind `--compare` and the figure check).
 //!
-//! It depends on nothing, so the renderer and the course tools (which must not depend on the
+//! Without features it depends on nothing (`cli` adds clap, `png` the PNG decoder), so the renderer and the course tools (which must not depend on the
 //! renderer) can both use it, and a student's edit never rebuilds it.
 //!
 //! ```
@@ -23,6 +24,7 @@
 #![deny(missing_docs)]
 
 pub mod todo;
+pub mod words;
 
 /// One chapter of the course.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]

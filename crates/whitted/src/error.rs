@@ -46,16 +46,7 @@ pub enum Error {
     Window(String),
 }
 
-/// The 1-based line and column (in characters) of a byte offset in `text`.
-#[must_use]
-pub fn line_col(text: &str, offset: usize) -> (usize, usize) {
-    let offset = offset.min(text.len());
-    let before = text.get(..offset).unwrap_or(text);
-    let line = before.matches('\n').count() + 1;
-    let line_start = before.rfind('\n').map_or(0, |i| i + 1);
-    let col = before[line_start..].chars().count() + 1;
-    (line, col)
-}
+pub use whitted_syllabus::words::line_col;
 
 /// The prefix of the panic a handout's `todo!("exercise NAME (2.3): …")` raises (its format is
 /// the syllabus's, [`whitted_syllabus::todo`](mod@whitted_syllabus::todo)).

@@ -152,24 +152,12 @@ pub fn read_png(path: &Path) -> Result<(u32, u32, Vec<u8>), Error> {
         path: path.to_path_buf(),
         source: std::io::Error::other(message),
     };
-    let file = std::fs::File::open(path).map_err(|e| fail(e.to_string()))?;
-    let mut decoder = png::Decoder::new(std::io::BufReader::new(file));
-    // palettes and low bit depths become 8-bit channels, 16-bit channels become 8-bit
-    decoder.set_transformations(png::Transformations::EXPAND | png::Transformations::STRIP_16);
-    let mut reader = decoder.read_info().map_err(|e| fail(e.to_string()))?;
-    let mut buf = vec![0; reader.output_buffer_size().unwrap_or(0)];
-    let info = reader
-        .next_frame(&mut buf)
-        .map_err(|e| fail(e.to_string()))?;
-    let channels = info.color_type.samples();
-    let rgb = buf[..info.buffer_size()]
-        .chunks_exact(channels)
-        .flat_map(|p| match channels {
-            1 | 2 => [p[0], p[0], p[0]],
-            _ => [p[0], p[1], p[2]],
-        })
+    let (width, height, rgba) = whitted_syllabus::words::read_rgba(path).map_err(fail)?;
+    let rgb = rgba
+        .chunks_exact(4)
+        .flat_map(|p| [p[0], p[1], p[2]])
         .collect();
-    Ok((info.width, info.height, rgb))
+    Ok((width, height, rgb))
 }
 
 /// Writes `bytes` (a scene file, a report) into `path`, through a temporary file renamed

@@ -1,4 +1,4 @@
-//! What the tests that grade classes share: the project, its manifest, copies of the
+//! What the course tools' tests share: the project, its manifest, copies of the
 //! reference with one body changed, and the hand-written mutants.
 
 #![allow(dead_code)]

@@ -1,0 +1,114 @@
+//! How every part of whitted says what went wrong, in one line: where in a file
+//! ([`line_col`], for `file:line:col`), and, with the `cli` feature, a command line's problem
+//! ([`parse_args`], [`parsed_or_exit`]: clap's error in one line, exit status 2). With the
+//! `png` feature, the one PNG reader the renderer's `--compare` and the course's figure check
+//! share ([`read_rgba`]).
+
+/// The 1-based line and column (in characters) of byte `offset` in `text` (an offset past
+/// the end counts as the end).
+#[must_use]
+pub fn line_col(text: &str, offset: usize) -> (usize, usize) {
+    let offset = offset.min(text.len());
+    let before = text.get(..offset).unwrap_or(text);
+    let line = before.matches('\n').count() + 1;
+    let line_start = before.rfind('\n').map_or(0, |i| i + 1);
+    let col = before[line_start..].chars().count() + 1;
+    (line, col)
+}
+
+/// clap's error text as one line: its first line, and when that ends in a colon, the list
+/// that follows it (up to the usage).
+#[must_use]
+pub fn one_line(text: &str) -> String {
+    let mut lines = text.lines().map(str::trim).filter(|l| !l.is_empty());
+    let mut line = lines
+        .next()
+        .unwrap_or("error: invalid arguments")
+        .to_string();
+    if line.ends_with(':') {
+        let list: Vec<&str> = lines.take_while(|l| !l.starts_with("Usage:")).collect();
+        line = format!("{line} {}", list.join(", "));
+    }
+    line
+}
+
+/// Parses the command line. `--help` and `--version` print and exit 0; any other problem is
+/// printed as one line `error: …` ([`one_line`]) with exit status 2.
+#[cfg(feature = "cli")]
+#[must_use]
+pub fn parse_args<T: clap::Parser>() -> T {
+    parsed_or_exit(T::try_parse())
+}
+
+/// The parsed arguments, or the exit [`parse_args`] makes of clap's error.
+#[cfg(feature = "cli")]
+#[must_use]
+pub fn parsed_or_exit<T>(parsed: Result<T, clap::Error>) -> T {
+    match parsed {
+        Ok(args) => args,
+        Err(e) if !e.use_stderr() => {
+            // --help, --version: not errors
+            let _ = e.print();
+            std::process::exit(0);
+        }
+        Err(e) if e.kind() == clap::error::ErrorKind::DisplayHelpOnMissingArgumentOrSubcommand => {
+            // a bare command: the help says what to ask for
+            let _ = e.print();
+            std::process::exit(2);
+        }
+        Err(e) => {
+            eprintln!("{} (see --help)", one_line(&e.render().to_string()));
+            std::process::exit(2);
+        }
+    }
+}
+
+/// A PNG (any colour type or depth the format allows) as 8-bit RGBA, row by row from the
+/// top: its width, height and bytes; `Err` is the decoder's reason.
+#[cfg(feature = "png")]
+pub fn read_rgba(path: &std::path::Path) -> Result<(u32, u32, Vec<u8>), String> {
+    let file = std::fs::File::open(path).map_err(|e| e.to_string())?;
+    let mut decoder = png::Decoder::new(std::io::BufReader::new(file));
+    // palettes and low bit depths become 8-bit channels, 16-bit channels become 8-bit
+    decoder.set_transformations(png::Transformations::EXPAND | png::Transformations::STRIP_16);
+    let mut reader = decoder.read_info().map_err(|e| e.to_string())?;
+    let mut buf = vec![0; reader.output_buffer_size().unwrap_or(0)];
+    let info = reader.next_frame(&mut buf).map_err(|e| e.to_string())?;
+    let rgba = buf[..info.buffer_size()]
+        .chunks_exact(info.color_type.samples())
+        .flat_map(|p| match *p {
+            [g] => [g, g, g, 255],
+            [g, a] => [g, g, g, a],
+            [r, g, b] => [r, g, b, 255],
+            [r, g, b, a, ..] => [r, g, b, a],
+            [] => [0, 0, 0, 0],
+        })
+        .collect();
+    Ok((info.width, info.height, rgba))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn line_and_column_count_characters_from_one() {
+        let text = "ab\nçd\n";
+        assert_eq!(line_col(text, 0), (1, 1));
+        assert_eq!(line_col(text, 3), (2, 1));
+        // 'ç' is two bytes: the 'd' after it is the second character
+        assert_eq!(line_col(text, 5), (2, 2));
+        assert_eq!(line_col(text, 99), (3, 1));
+    }
+
+    #[test]
+    fn a_list_after_a_colon_joins_the_line() {
+        let text = "error: the following required arguments were not provided:\n  <DIR>\n  --out <OUT>\n\nUsage: x <DIR>\n";
+        assert_eq!(
+            one_line(text),
+            "error: the following required arguments were not provided: <DIR>, --out <OUT>"
+        );
+        assert_eq!(one_line("error: bad\n\nUsage: x\n"), "error: bad");
+        assert_eq!(one_line(""), "error: invalid arguments");
+    }
+}
