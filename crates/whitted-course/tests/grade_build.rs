@@ -38,7 +38,7 @@ mod common;
 
 use common::{copy, index, manifest, mutant_body, mutants, root, set_body};
 use whitted_course::autograder::{self, Platform, Report, Settings};
-use whitted_course::grade::sandbox::Level;
+use whitted_course::grade::sandbox::{self, Level};
 use whitted_course::grade::{self, ClassEntry, Grade, Status};
 use whitted_course::manifest::{self, Manifest};
 use whitted_course::{deps, files, handout};
@@ -875,7 +875,8 @@ fn the_platforms_packages_grade_in_their_layouts() {
         r##"    let read = |p: &str| std::fs::read_to_string(p).map(|s| s.lines().take(3).collect::<Vec<_>>().join(" | ")).unwrap_or_else(|e| e.to_string());
     let bins = std::fs::read_dir("{build}/debug/deps").map(|d| d.filter_map(Result::ok).filter(|e| e.file_name().to_string_lossy().starts_with("hidden_")).map(|e| std::fs::read(e.path()).map(|b| b.len().to_string()).unwrap_or_else(|e| e.to_string())).collect::<Vec<_>>().join(",")).unwrap_or_else(|e| e.to_string());
     let wrote = std::fs::write("{results}/results.json", "{{}}").is_ok();
-    panic!("src: {{}} / copy: {{}} / bins: {{}} / wrote: {{wrote}}", read("{source}/whitted/crates/whitted/src/shading.rs"), read("{build}/graded-copy/crates/whitted/tests/hidden_extra.rs"), bins)"##,
+    let left = std::process::Command::new("sleep").arg("300").spawn().is_ok();
+    panic!("src: {{}} / copy: {{}} / bins: {{}} / wrote: {{wrote}} / left: {{left}}", read("{source}/whitted/crates/whitted/src/shading.rs"), read("{build}/graded-copy/crates/whitted/tests/hidden_extra.rs"), bins)"##,
         build = user_build.display(),
         results = ag.join("results").display(),
         source = source.display(),
@@ -910,6 +911,16 @@ fn the_platforms_packages_grade_in_their_layouts() {
         "the hidden test's binary: {said}"
     );
     assert!(part("wrote").starts_with("false"), "{said}");
+    // the child it left running was ended with the test: no process of a sandbox's user is
+    // left to count against the next test's limit
+    assert!(part("left").starts_with("true"), "{said}");
+    // the users of the first 16 workers: more than these tests start
+    let users = sandbox::FIRST_UID..sandbox::FIRST_UID + 16 * sandbox::SLOTS;
+    let left = sandbox::processes_of(&users);
+    assert!(
+        left.is_empty(),
+        "processes of the sandbox's users left after grading: {left:?}"
+    );
     assert!(!text.contains(HIDDEN_MARKER));
     assert!(
         results["tests"]

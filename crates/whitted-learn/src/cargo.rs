@@ -355,13 +355,19 @@ impl Nextest<'_> {
         if out.status.success() || out.status.code() == Some(100) {
             return Ok(()); // 100: some tests failed, which is what grading measures
         }
+        // its last lines that say something (not the separators of its summary)
+        let mut said: Vec<&str> = stderr
+            .lines()
+            .map(str::trim)
+            .filter(|l| l.chars().any(char::is_alphanumeric))
+            .rev()
+            .take(3)
+            .collect();
+        said.reverse();
         Err(ToolError::Cargo(format!(
-            "cargo nextest failed: {}",
-            stderr
-                .lines()
-                .rev()
-                .find(|l| !l.trim().is_empty())
-                .unwrap_or("")
+            "cargo nextest failed ({}): {}",
+            out.status,
+            said.join(" / ")
         )))
     }
 }

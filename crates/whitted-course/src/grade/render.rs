@@ -20,7 +20,7 @@ use std::path::{Path, PathBuf};
 use std::process::{Command, Stdio};
 use std::time::{Duration, Instant};
 
-use super::sandbox::Sandbox;
+use super::sandbox::{Policy, Sandbox};
 use crate::cargo::Wrapper;
 use crate::figures;
 use crate::layout;
@@ -172,7 +172,7 @@ fn run_figure(
     if let Some(t) = &trees {
         args.extend(["--against".into(), t.display().to_string(), "--json".into()]);
     }
-    let mut command = match sandbox {
+    let policy = match sandbox {
         Some(s) => {
             let mut policy = s.policy.clone();
             policy.read.push(reference.clone());
@@ -180,13 +180,16 @@ fn run_figure(
             policy
                 .writable(&out_dir)
                 .map_err(|e| format!("{}: {e}", out_dir.display()))?;
-            policy.command(exe, project)
+            Some(policy)
         }
         None => {
             std::fs::create_dir_all(&out_dir).map_err(|e| format!("{}: {e}", out_dir.display()))?;
-            Command::new(exe)
+            None
         }
     };
+    let mut command = policy
+        .as_ref()
+        .map_or_else(|| Command::new(exe), |p| p.command(exe, project));
     let dir = tempfile::tempdir().map_err(|e| e.to_string())?;
     let (out, err) = (dir.path().join("out"), dir.path().join("err"));
     let file = |p: &PathBuf| std::fs::File::create(p).map_err(|e| e.to_string());
@@ -205,12 +208,14 @@ fn run_figure(
             None if started.elapsed() > timeout => {
                 let _ = child.kill();
                 let _ = child.wait();
+                policy.iter().for_each(Policy::sweep);
                 let _ = std::fs::remove_dir_all(&out_dir);
                 return Err(format!("{binary} ran past {} s", timeout.as_secs()));
             }
             None => std::thread::sleep(Duration::from_millis(20)),
         }
     };
+    policy.iter().for_each(Policy::sweep);
     let picture = std::fs::symlink_metadata(&out_png)
         .ok()
         .filter(|m| m.is_file() && m.len() <= PICTURE_BYTES)

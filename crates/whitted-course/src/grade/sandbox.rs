@@ -224,6 +224,56 @@ impl Policy {
         Ok(())
     }
 
+    /// The user and group the test runs as (when the grader is root): the slot's user, in
+    /// the worker's group.
+    fn user(&self) -> Option<(u32, u32)> {
+        self.uid.map(|uid| (uid + self.slot % SLOTS, uid))
+    }
+
+    /// Ends every process the test's user (its slot's) still has once the test has ended, at
+    /// the user level (as root): a child left running would count against the next test's limit on
+    /// processes in this slot, and could hold its output open. In namespaces nothing is left:
+    /// the PID namespace ends with the test.
+    pub fn sweep(&self) {
+        if let (Level::User, Some((uid, gid))) = (self.level, self.user()) {
+            // kill(-1) as that user reaches that user's processes and no other's
+            let _ = Command::new("setpriv")
+                .args([
+                    format!("--reuid={uid}"),
+                    format!("--regid={gid}"),
+                    "--clear-groups".into(),
+                    "--".into(),
+                    "kill".into(),
+                    "-KILL".into(),
+                    "-1".into(),
+                ])
+                .stdin(Stdio::null())
+                .stdout(Stdio::null())
+                .stderr(Stdio::null())
+                .status();
+        }
+    }
+
+    /// [`Policy::sweep`] for every slot of this worker that has a process left (read from
+    /// `/proc`): before a submission's tests, what the one before left; after them, what a
+    /// test killed at its time limit left.
+    pub fn sweep_all(&self) {
+        let (Level::User, Some(first)) = (self.level, self.uid) else {
+            return;
+        };
+        let left: std::collections::BTreeSet<u32> = processes_of(&(first..first + SLOTS))
+            .into_iter()
+            .map(|(_, uid)| uid - first)
+            .collect();
+        for slot in left {
+            Self {
+                slot,
+                ..self.clone()
+            }
+            .sweep();
+        }
+    }
+
     /// The command that runs `bin` in `cwd` under this policy, the test's own arguments to
     /// follow: with an empty environment but for what a test needs, reading no input.
     #[must_use]
@@ -293,11 +343,11 @@ impl Policy {
     /// one) without capabilities, `prlimit` with the limits.
     fn inner(&self, bin: &Path) -> Vec<OsString> {
         let mut args: Vec<OsString> = Vec::new();
-        if let Some(uid) = self.uid {
+        if let Some((uid, gid)) = self.user() {
             args.push("setpriv".into());
             for a in [
-                format!("--reuid={}", uid + self.slot % SLOTS),
-                format!("--regid={uid}"),
+                format!("--reuid={uid}"),
+                format!("--regid={gid}"),
                 "--clear-groups".into(),
                 "--inh-caps=-all".into(),
                 "--bounding-set=-all".into(),
@@ -321,6 +371,38 @@ impl Policy {
         args.push(bin.as_os_str().to_owned());
         args
     }
+}
+
+/// The live processes (process id, real user id) whose real user is in `users`, read from
+/// `/proc` (none when it cannot be read). A zombie is not one: it has ended, and waits only
+/// for the machine's first process to collect it.
+#[must_use]
+pub fn processes_of(users: &std::ops::Range<u32>) -> Vec<(u32, u32)> {
+    let Ok(entries) = std::fs::read_dir("/proc") else {
+        return Vec::new();
+    };
+    entries
+        .filter_map(Result::ok)
+        .filter_map(|entry| {
+            let pid = entry.file_name().to_str()?.parse::<u32>().ok()?;
+            let status = std::fs::read_to_string(entry.path().join("status")).ok()?;
+            let zombie = status
+                .lines()
+                .find_map(|l| l.strip_prefix("State:"))
+                .is_some_and(|state| state.trim_start().starts_with('Z'));
+            if zombie {
+                return None;
+            }
+            let uid = status
+                .lines()
+                .find_map(|l| l.strip_prefix("Uid:"))?
+                .split_whitespace()
+                .next()?
+                .parse::<u32>()
+                .ok()?;
+            users.contains(&uid).then_some((pid, uid))
+        })
+        .collect()
 }
 
 /// Whether a user other than the owner can reach `path`: every directory from the root to it
@@ -533,6 +615,8 @@ impl Sandbox {
                 target_dir.display()
             )));
         }
+        // what the submission before left running ends before this one's tests start
+        self.policy.sweep_all();
         std::fs::set_permissions(project, std::fs::Permissions::from_mode(0o700))
             .map_err(|e| ToolError::io(project, e))
     }
@@ -544,6 +628,7 @@ impl Sandbox {
         if self.policy.level != Level::User {
             return Ok(());
         }
+        self.policy.sweep_all();
         std::fs::set_permissions(project, std::fs::Permissions::from_mode(0o755))
             .map_err(|e| ToolError::io(project, e))
     }
@@ -636,10 +721,10 @@ pub fn run_test(command: &[OsString]) -> ExitCode {
         Ok(p) => p,
         Err(e) => return fail(format!("no sandbox policy in {POLICY_VAR}: {e}")),
     };
-    policy.slot = std::env::var(SLOT_VAR)
-        .ok()
-        .and_then(|s| s.parse().ok())
-        .unwrap_or(0);
+    // a test has a slot no other running test has; a listing of the tests (`--list`) has
+    // none, and runs beside the other listings
+    let slot: Option<u32> = std::env::var(SLOT_VAR).ok().and_then(|s| s.parse().ok());
+    policy.slot = slot.unwrap_or(0);
     let bin = Path::new(bin);
     let cwd = std::env::current_dir().unwrap_or_else(|_| PathBuf::from("/tmp"));
     let mut child = match policy
@@ -654,15 +739,22 @@ pub fn run_test(command: &[OsString]) -> ExitCode {
     };
     let cap = policy.limits.output;
     let (out, err) = (child.stdout.take(), child.stderr.take());
-    std::thread::scope(|s| {
+    // the output is read while the test runs; once it ends, what it left behind is ended
+    // too, which closes the output a left-over child may hold open
+    let waited = std::thread::scope(|s| {
         if let Some(err) = err {
             s.spawn(move || capped(err, std::io::stderr(), cap));
         }
         if let Some(out) = out {
-            capped(out, std::io::stdout(), cap);
+            s.spawn(move || capped(out, std::io::stdout(), cap));
         }
+        let waited = child.wait();
+        if slot.is_some() {
+            policy.sweep();
+        }
+        waited
     });
-    let status = match child.wait() {
+    let status = match waited {
         Ok(s) => s,
         Err(e) => return fail(format!("waiting for the sandbox: {e}")),
     };
