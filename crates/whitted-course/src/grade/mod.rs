@@ -494,6 +494,9 @@ pub fn grade(
                 .any(|e| manifest.entries[e.entry].chapter == c && e.score < e.max)
         })
         .collect();
+    if options.feedback && whole.is_empty() && lost.is_empty() {
+        render::warm(&project, &target_dir, wrapper.as_ref());
+    }
     let feedback = if options.feedback && whole.is_empty() && !lost.is_empty() {
         render::feedback(
             &project,
