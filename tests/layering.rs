@@ -76,7 +76,7 @@ fn the_crates_depend_one_way() {
         "the course tools depend on the code they grade: {course:?}"
     );
     // the outline every layer reads depends on nothing but what a layer asks of it by a
-    // feature (clap for the command lines, png for the PNG reader)
+    // feature (png, for the PNG reader)
     let text = std::fs::read_to_string(root().join("crates/whitted-syllabus/Cargo.toml")).unwrap();
     let table: toml::Table = text.parse().unwrap();
     let required: Vec<&String> = table
@@ -92,6 +92,31 @@ fn the_crates_depend_one_way() {
     assert!(
         required.is_empty(),
         "whitted-syllabus depends on {required:?} without a feature"
+    );
+    // the programs ask no feature of it that the renderer does not: a student's tests build
+    // the renderer alone and the picture builds it with the programs, and a feature only
+    // the programs turned on would make that a second build of the renderer at every save
+    let features = |manifest: &str| -> BTreeSet<String> {
+        let text = std::fs::read_to_string(root().join(manifest)).unwrap();
+        let table: toml::Table = text.parse().unwrap();
+        table["dependencies"]
+            .get("whitted-syllabus")
+            .and_then(|d| d.get("features"))
+            .and_then(toml::Value::as_array)
+            .map(|a| {
+                a.iter()
+                    .filter_map(|f| f.as_str().map(String::from))
+                    .collect()
+            })
+            .unwrap_or_default()
+    };
+    let (of_core, of_app) = (
+        features("crates/whitted/Cargo.toml"),
+        features("crates/whitted-app/Cargo.toml"),
+    );
+    assert!(
+        of_app.is_subset(&of_core),
+        "the programs turn on features of whitted-syllabus the renderer does not: {of_app:?} against {of_core:?}"
     );
     // the student's tests need no more than the renderer (and its own dependencies)
     let dev = named("crates/whitted/Cargo.toml", "dev-dependencies");

@@ -339,10 +339,27 @@ pub fn main(chapter: Chapter, about: &str) -> ExitCode {
     run(chapter, &parsed_or_exit(parsed))
 }
 
-/// The command line of a program built with clap's derive (the chapter binaries use
-/// [`main`]) and a parse's result: `--help` and `--version` print and exit 0, any other problem
-/// is one line `error: …` with exit status 2 (one place for every program: the syllabus's).
-pub use whitted_syllabus::words::{parse_args, parsed_or_exit};
+/// Parses the command line of a program built with clap's derive (the chapter binaries use
+/// [`main`]). `--help`, `--version` and errors as [`parsed_or_exit`] says.
+#[must_use]
+pub fn parse_args<T: clap::Parser>() -> T {
+    parsed_or_exit(T::try_parse())
+}
+
+/// The parsed command line, or the exit every whitted program makes
+/// ([`leave_after_args`](whitted_syllabus::words::leave_after_args)): `--help` and
+/// `--version` exit 0, any other problem is one line `error: …` with exit status 2.
+#[must_use]
+pub fn parsed_or_exit<T>(parsed: Result<T, clap::Error>) -> T {
+    parsed.unwrap_or_else(|e| {
+        whitted_syllabus::words::leave_after_args(
+            !e.use_stderr(),
+            e.kind() == clap::error::ErrorKind::DisplayHelpOnMissingArgumentOrSubcommand,
+            || drop(e.print()),
+            || e.render().to_string(),
+        )
+    })
+}
 
 /// Reads the scene named on the command line, or the embedded showcase: the parts the chapter
 /// `chapter` uses ([`Chapter::reads`]).

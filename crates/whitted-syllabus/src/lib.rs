@@ -10,7 +10,7 @@
 //! back. And how every layer words a problem in one line ([`words`](mod@words): `line:col` in
 //! a file, a command line's error, the PNG reader behind `--compare` and the figure check).
 //!
-//! Without features it depends on nothing (`cli` adds clap, `png` the PNG decoder), so the renderer and the course tools (which must not depend on the
+//! Without features it depends on nothing (`png` adds the PNG decoder), so the renderer and the course tools (which must not depend on the
 //! renderer) can both use it, and a student's edit never rebuilds it.
 //!
 //! ```

@@ -1,8 +1,8 @@
 //! How every part of whitted says what went wrong, in one line: where in a file
-//! ([`line_col`], for `file:line:col`), and, with the `cli` feature, a command line's problem
-//! ([`parse_args`], [`parsed_or_exit`]: clap's error in one line, exit status 2). With the
-//! `png` feature, the one PNG reader the renderer's `--compare` and the course's figure check
-//! share ([`read_rgba`]).
+//! ([`line_col`], for `file:line:col`), and a command line's problem ([`one_line`],
+//! [`leave_after_args`]: the parser's error in one line, exit status 2). With the `png`
+//! feature, the one PNG reader the renderer's `--compare` and the course's figure check share
+//! ([`read_rgba`]).
 
 /// The 1-based line and column (in characters) of byte `offset` in `text` (an offset past
 /// the end counts as the end).
@@ -32,35 +32,23 @@ pub fn one_line(text: &str) -> String {
     line
 }
 
-/// Parses the command line. `--help` and `--version` print and exit 0; any other problem is
-/// printed as one line `error: …` ([`one_line`]) with exit status 2.
-#[cfg(feature = "cli")]
-#[must_use]
-pub fn parse_args<T: clap::Parser>() -> T {
-    parsed_or_exit(T::try_parse())
-}
-
-/// The parsed arguments, or the exit [`parse_args`] makes of clap's error.
-#[cfg(feature = "cli")]
-#[must_use]
-pub fn parsed_or_exit<T>(parsed: Result<T, clap::Error>) -> T {
-    match parsed {
-        Ok(args) => args,
-        Err(e) if !e.use_stderr() => {
-            // --help, --version: not errors
-            let _ = e.print();
-            std::process::exit(0);
-        }
-        Err(e) if e.kind() == clap::error::ErrorKind::DisplayHelpOnMissingArgumentOrSubcommand => {
-            // a bare command: the help says what to ask for
-            let _ = e.print();
-            std::process::exit(2);
-        }
-        Err(e) => {
-            eprintln!("{} (see --help)", one_line(&e.render().to_string()));
-            std::process::exit(2);
-        }
+/// How a program ends when its command line could not be taken, the same for every program:
+/// `--help` and `--version` (`info`) print and exit 0; a bare command that needs more
+/// (`bare`) prints its help and exits 2; any other problem is one line `error: …`
+/// ([`one_line`] of the parser's `rendered` text) on stderr, with exit status 2. The parser's
+/// own types stay with the programs (this crate needs no parser): they say which case it is.
+pub fn leave_after_args(
+    info: bool,
+    bare: bool,
+    print: impl FnOnce(),
+    rendered: impl FnOnce() -> String,
+) -> ! {
+    if info || bare {
+        print();
+        std::process::exit(if info { 0 } else { 2 });
     }
+    eprintln!("{} (see --help)", one_line(&rendered()));
+    std::process::exit(2);
 }
 
 /// A PNG (any colour type or depth the format allows) as 8-bit RGBA, row by row from the
