@@ -105,6 +105,8 @@ fn build_binaries(
             built.first_error()
         ));
     }
+    // their dependencies are built for these manifests now
+    let _ = std::fs::write(target_dir.join(BUILT_FOR), manifests(project));
     Ok(chapters
         .iter()
         .filter_map(|&c| {
@@ -114,13 +116,36 @@ fn build_binaries(
         .collect())
 }
 
-/// Builds every chapter binary in a build directory that has none yet, so that the first
-/// grading there, even one that lost no point, pays for what a later one's feedback needs
-/// (the programs' own dependencies) and no later grading does. A failure is not reported
-/// here: the feedback that needs the binaries says why they are missing.
+/// The file in a build directory that records for which manifests (the project's
+/// `Cargo.lock` and `Cargo.toml` files, as text) the chapter binaries' dependencies are built.
+const BUILT_FOR: &str = "feedback-built-for";
+
+/// The project's manifests as one text: what decides which dependencies the chapter binaries
+/// need, and how they are built.
+fn manifests(project: &Path) -> String {
+    let mut files = vec![project.join("Cargo.lock"), project.join("Cargo.toml")];
+    if let Ok(crates) = std::fs::read_dir(project.join("crates")) {
+        let mut each: Vec<PathBuf> = crates
+            .filter_map(Result::ok)
+            .map(|e| e.path().join("Cargo.toml"))
+            .collect();
+        each.sort();
+        files.extend(each);
+    }
+    files
+        .iter()
+        .map(|f| format!("{}\n{}\n", f.display(), read_capped(f, 1 << 20)))
+        .collect()
+}
+
+/// Builds every chapter binary when the build directory's were not built for the project's
+/// manifests as they are, so that the first grading after a change of them, even one that
+/// lost no point, pays for what a later one's feedback needs (the programs' own
+/// dependencies) and no later grading does. A failure is not reported here: the feedback
+/// that needs the binaries says why they are missing.
 pub(super) fn warm(project: &Path, target_dir: &Path, wrapper: Option<&Wrapper>) {
-    let first = crate::syllabus::CHAPTERS[0].binary;
-    if target_dir.join("debug").join(first).is_file() {
+    let now = manifests(project);
+    if std::fs::read_to_string(target_dir.join(BUILT_FOR)).is_ok_and(|was| was == now) {
         return;
     }
     let all: Vec<u8> = crate::syllabus::CHAPTERS.iter().map(|c| c.number).collect();
