@@ -49,49 +49,19 @@ pub fn set_body(dir: &Path, m: &Manifest, id: &str, body: &str) {
     std::fs::write(&path, text.replacen(&r.solution, &format!("{body}\n"), 1)).unwrap();
 }
 
-/// `crates/whitted-course/tests/mutants/hand-written.toml`.
-#[derive(serde::Deserialize)]
-pub struct Mutants {
-    /// Its mutants.
-    pub mutant: Vec<Mutant>,
-}
-
-/// A mistake we expect: in the body of `exercise`, `find` replaced by `replace`.
-#[derive(serde::Deserialize)]
-pub struct Mutant {
-    /// Its name.
-    pub name: String,
-    /// The exercise it is in.
-    pub exercise: String,
-    /// The mistake, in words.
-    pub why: String,
-    /// The text of the reference body it changes.
-    pub find: String,
-    /// What it puts there.
-    pub replace: String,
-}
+/// A mistake we expect (`crates/whitted-course/tests/mutants/hand-written.toml`).
+pub use whitted_course::mistakes::Mutant;
 
 /// The body of the mutant `mu`: its exercise's reference body with the change.
 pub fn mutant_body(m: &Manifest, mu: &Mutant) -> String {
     let r = &handout::regions(&root(), m).unwrap()[index(m, &mu.exercise)];
-    assert!(
-        r.solution.contains(&mu.find),
-        "mutant {}: `{}` is not in exercise {}'s body",
-        mu.name,
-        mu.find,
-        mu.exercise
-    );
-    r.solution
-        .replacen(&mu.find, &mu.replace, 1)
+    whitted_course::mistakes::mutated(r, mu)
+        .unwrap_or_else(|e| panic!("{e}"))
         .trim_end()
         .to_string()
 }
 
 /// The hand-written mutants.
 pub fn mutants() -> Vec<Mutant> {
-    let text = std::fs::read_to_string(
-        root().join("crates/whitted-course/tests/mutants/hand-written.toml"),
-    )
-    .unwrap();
-    toml::from_str::<Mutants>(&text).unwrap().mutant
+    whitted_course::mistakes::load(&root()).unwrap()
 }
