@@ -171,9 +171,7 @@ fn wrong_trees_files_exit_with_status_2() {
         let mut all = vec![scene.as_str()];
         all.extend(args);
         let o = run(&ch4, &all, dir.path());
-        let err = String::from_utf8_lossy(&o.stderr);
-        assert_eq!(o.status.code(), Some(2), "{args:?}: {err}");
-        assert_eq!(err.lines().count(), 1, "{args:?}: {err}");
+        let err = common::one_line_error(&o, &format!("{args:?}"));
         assert!(
             err.starts_with("error: ") && err.contains(needle),
             "{args:?}: {err}"

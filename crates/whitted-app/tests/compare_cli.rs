@@ -219,9 +219,7 @@ fn an_unreadable_reference_is_one_line_of_error() {
         ("missing.png", "cannot read the reference "),
     ] {
         let o = compare(Chapter::Shading, &dir.path().join(name), dir.path(), &[]);
-        let err = text(&o.stderr);
-        assert_eq!(o.status.code(), Some(2), "{name}: {err}");
-        assert_eq!(err.lines().count(), 1, "{name}: {err}");
+        let err = common::one_line_error(&o, name);
         assert!(
             err.starts_with("error: ") && err.contains(needle) && err.contains(name),
             "{err}"

@@ -124,9 +124,7 @@ fn bad_inspect_requests_exit_with_status_2() {
     ];
     for (bin, args, needle) in cases {
         let o = run(bin, args, dir.path());
-        let err = String::from_utf8_lossy(&o.stderr);
-        assert_eq!(o.status.code(), Some(2), "{args:?}: {err}");
-        assert_eq!(err.lines().count(), 1, "{args:?}: {err}");
+        let err = common::one_line_error(&o, &format!("{args:?}"));
         assert!(
             err.starts_with("error: ") && err.contains(needle),
             "{args:?}: {err}"

@@ -335,9 +335,7 @@ fn grading_something_that_cannot_be_graded_is_one_line_of_error() {
         (vec!["grade", "--class", dir], "--out"),
     ] {
         let out = whitted(&args);
-        let err = String::from_utf8_lossy(&out.stderr);
-        assert_eq!(out.status.code(), Some(2), "{args:?}: {err}");
-        assert_eq!(err.lines().count(), 1, "{args:?}: {err}");
+        let err = common::one_line_error(&out, &format!("{args:?}"));
         assert!(
             err.starts_with("error: ") && err.contains(says),
             "{args:?}: {err}"
@@ -363,9 +361,7 @@ fn without_its_sandbox_grading_refuses_in_one_line() {
         .env("PATH", dir.path())
         .output()
         .unwrap();
-    let err = String::from_utf8_lossy(&out.stderr);
-    assert_eq!(out.status.code(), Some(2), "{err}");
-    assert_eq!(err.lines().count(), 1, "{err}");
+    let err = common::one_line_error(&out, "grade without bwrap on the PATH");
     assert!(
         err.starts_with("error: the sandbox cannot be set up: bubblewrap (bwrap) is not installed")
             && err.contains("--unsandboxed"),

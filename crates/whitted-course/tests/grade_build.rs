@@ -661,6 +661,22 @@ fn a_class_is_graded_as_each_submission_deserves() {
     }
 }
 
+/// Gradescope's `autograder.zip` in `package` unpacked where Gradescope puts it, `source/`
+/// under the autograder's root `ag`; that directory.
+fn unpack(package: &Path, ag: &Path) -> PathBuf {
+    let source = ag.join("source");
+    std::fs::create_dir_all(&source).unwrap();
+    let unzip = std::process::Command::new("unzip")
+        .args(["-q", "-o"])
+        .arg(package.join("autograder.zip"))
+        .arg("-d")
+        .arg(&source)
+        .status()
+        .unwrap();
+    assert!(unzip.success(), "unzip {}", package.display());
+    source
+}
+
 /// Runs `script` with `env`, its output kept; panics with it when the script fails.
 fn run_script(script: &Path, env: &[(&str, &Path)]) -> String {
     let out = std::process::Command::new("bash")
@@ -716,16 +732,7 @@ fn the_platforms_packages_grade_in_their_layouts() {
     let ag = work.path().join("autograder");
     let package = work.path().join("gradescope");
     autograder::package::write(&root(), &m, Platform::Gradescope, &options, &package).unwrap();
-    let source = ag.join("source");
-    std::fs::create_dir_all(&source).unwrap();
-    let unzip = std::process::Command::new("unzip")
-        .args(["-q", "-o"])
-        .arg(package.join("autograder.zip"))
-        .arg("-d")
-        .arg(&source)
-        .status()
-        .unwrap();
-    assert!(unzip.success());
+    let source = unpack(&package, &ag);
     let env = [
         ("AUTOGRADER_ROOT", ag.as_path()),
         ("WHITTED_BIN", whitted.as_path()),
@@ -853,16 +860,7 @@ fn the_platforms_packages_grade_in_their_layouts() {
         ..options
     };
     autograder::package::write(&root(), &m, Platform::Gradescope, &user, &package).unwrap();
-    let source = ag.join("source");
-    std::fs::create_dir_all(&source).unwrap();
-    let unzip = std::process::Command::new("unzip")
-        .args(["-q", "-o"])
-        .arg(package.join("autograder.zip"))
-        .arg("-d")
-        .arg(&source)
-        .status()
-        .unwrap();
-    assert!(unzip.success());
+    let source = unpack(&package, &ag);
     let env = [
         ("AUTOGRADER_ROOT", ag.as_path()),
         ("WHITTED_BIN", whitted.as_path()),

@@ -145,9 +145,7 @@ fn without_the_figures_manifest_trees_is_one_line_of_error() {
         .arg(empty.path())
         .output()
         .unwrap();
-    let err = String::from_utf8_lossy(&out.stderr);
-    assert_eq!(out.status.code(), Some(2), "{err}");
-    assert_eq!(err.lines().count(), 1, "{err}");
+    let err = common::one_line_error(&out, "trees --check on an empty project");
     assert!(
         err.starts_with("error: ") && err.contains("figures.toml"),
         "{err}"

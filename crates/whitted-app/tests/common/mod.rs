@@ -53,3 +53,13 @@ pub fn run(exe: &Path, args: &[&str], dir: &Path) -> Output {
         .output()
         .unwrap_or_else(|e| panic!("{} does not run: {e}", exe.display()))
 }
+
+/// The error a refused command printed, once the contract every whitted program keeps is
+/// checked: exit status 2 and exactly one line on stderr (`context` names the case in a
+/// failure's message).
+pub fn one_line_error(o: &std::process::Output, context: &str) -> String {
+    let err = String::from_utf8_lossy(&o.stderr).into_owned();
+    assert_eq!(o.status.code(), Some(2), "{context}: {err}");
+    assert_eq!(err.lines().count(), 1, "{context}: {err}");
+    err
+}
