@@ -80,10 +80,14 @@ enum Command {
     /// Only the student's exercise bodies (between `// BEGIN SOLUTION NAME` and `// END
     /// SOLUTION` in DIR's src/) are taken; they go into a fresh copy of this project, so the
     /// tests, the manifest and the code around the exercises are the instructor's. A body that
-    /// does not compile is graded as not written, and the others still count. Each test runs in
-    /// its own process under --timeout (cargo-nextest), so a panic, a stack overflow or an
-    /// endless loop costs only its own tests. An exercise's points (chapters/formulas.toml) are
-    /// shared by its tests. Exit status 0 once graded, whatever the score; 2 on an error.
+    /// does not compile is graded as not written, and the others still count; so is a body
+    /// that names what a formula never needs (ending or starting a process, files, the network,
+    /// the environment, `unsafe`, `macro_rules!`, the compile-time readers), which is never
+    /// compiled. Each test runs in its own process under --timeout (cargo-nextest), so a panic,
+    /// a stack overflow or an endless loop costs only its own tests, and passes only when
+    /// libtest reported it `ok`: a process that ends early passes nothing. An exercise's points
+    /// (chapters/formulas.toml) are shared by its tests. Exit status 0 once graded, whatever
+    /// the score; 2 on an error.
     Grade(GradeArgs),
     /// Writes what a grading platform takes (Gradescope's zip, PrairieLearn's image and entry
     /// point, CodeGrade's scripts, GitHub Classroom's workflow) into --out; its subcommands are
@@ -444,7 +448,7 @@ fn main() -> ExitCode {
         Command::Learn(l) => whitted_course::cli::learn(&l),
         Command::Grade(g) => run_grade(&g),
         Command::Autograder(a) => run_autograder(a),
-        Command::SandboxRun { command } => return grade::sandbox::run_test(&command),
+        Command::SandboxRun { command } => return grade::runner::run_test(&command),
         Command::Figures(f) => project(f.root.as_ref())
             .and_then(|root| figures::command(&root, f.check, f.only.as_deref())),
         Command::Trees(t) => project(t.root.as_ref()).and_then(|root| {
@@ -546,12 +550,10 @@ fn run_autograder(args: AutograderArgs) -> Result<ExitCode, ToolError> {
     }
 }
 
-/// The sandbox of a grading at `level` (none when `None`): this program runs each test
-/// binary.
+/// The sandbox of a grading at `level` (none when `None`, `--unsandboxed`): this program runs
+/// each test binary, sandboxed or not, and passes a test only when libtest reported it `ok`.
 fn sandbox_setup(level: Option<SandboxLevel>) -> Result<Option<grade::SandboxSetup>, ToolError> {
-    let Some(level) = level else {
-        return Ok(None);
-    };
+    let level = level.unwrap_or(SandboxLevel::Off);
     let runner = std::env::current_exe()
         .map_err(|e| ToolError::Usage(format!("cannot find this program's path: {e}")))?;
     Ok(Some(grade::SandboxSetup {
@@ -604,6 +606,7 @@ fn run_grade(args: &GradeArgs) -> Result<ExitCode, ToolError> {
         sandbox: sandbox_setup(args.sandbox.level())?,
         render: false,
         feedback: !args.no_feedback,
+        screen: true,
     };
     let class = match (&args.class, &args.out) {
         (Some(dir), Some(out)) => Some(Class {

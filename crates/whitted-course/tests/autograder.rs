@@ -527,6 +527,7 @@ fn the_run_sandbox_shares_nothing_but_what_the_tests_read() {
         limits: Limits::default(),
         read: vec!["/nowhere/scenes".into()],
         write: Vec::new(),
+        timeout_ms: None,
     };
     let bin = Path::new("/w/target/debug/deps/ch01-abc");
     let command = policy.command(bin, Path::new("/w/copy/crates/whitted"));
@@ -627,6 +628,7 @@ fn the_user_sandbox_keeps_the_project_closed() {
             limits: Limits::default(),
             read: vec![],
             write: Vec::new(),
+            timeout_ms: None,
         },
         runner: "/w/whitted".into(),
         triple: "x86_64-unknown-linux-gnu".into(),

@@ -373,36 +373,154 @@ fn without_its_sandbox_grading_refuses_in_one_line() {
     );
 }
 
-/// Without the sandbox a body that would read a file or the environment when it compiles is
-/// not compiled: the macros by any path or spacing, `#[path]`, a body that closes its
-/// function; a name, a string or a comment that merely says them is fine.
+/// A body that does more than compute is refused before it compiles, at every sandbox level,
+/// by any spelling: ending or starting a process, files, the environment, `unsafe`, items that
+/// escape (`extern`, `#[no_mangle]`, `#[path]`, `macro_rules!`), the compile-time readers even
+/// as plain identifiers handed to a macro, the renderer's own file and exit functions; a body
+/// that closes its function. A name in a string or a comment is fine.
 #[test]
-fn a_body_that_reads_at_compile_time_is_found() {
+fn a_body_that_does_more_than_compute_is_refused() {
     for (body, found) in [
         ("    near * (fov.to_radians() / 2.0).tan()\n", None),
-        ("include_str!(\"/etc/passwd\")", Some("`include_str!`")),
+        ("std::process::exit(0)", Some("`process`")),
+        ("::std::process::abort()", Some("`process`")),
+        ("use std::process as p; p::exit(0)", Some("`process`")),
+        ("r#process::exit(0)", Some("`process`")),
+        ("{ let _ = [libc::exit(0)]; 0.0 }", Some("`libc`")),
+        ("let exit = t1.max(t0); exit", None),
+        ("std::os::unix::process::CommandExt::exec", Some("`os`")),
+        ("use std::io::Write; 0.0", Some("`io`")),
+        ("std::fs::read_to_string(\"x\")", Some("`fs`")),
+        ("std::env::var(\"HOME\")", Some("`env`")),
+        ("unsafe { 0.0 }", Some("`unsafe`")),
+        ("extern \"C\" { fn exit(c: i32); }", Some("`extern`")),
         (
-            "std::include_bytes /* spaced */ ! (\"x\")",
-            Some("`include_bytes!`"),
+            "macro_rules! m { ($i:ident) => { $i!(\"x\") } }\nm!(include_str)",
+            Some("`macro_rules`"),
         ),
-        ("{ let a = [core::include!(\"x\")]; a }", Some("`include!`")),
-        ("env!(\"HOME\").len() as f64", Some("`env!`")),
-        ("option_env!(\"TOKEN\").is_some()", Some("`option_env!`")),
+        ("m!(include_str, \"x\")", Some("`include_str`")),
+        ("m!(option_env)", Some("`option_env`")),
         (
-            "macro_rules! m { ($e:expr) => { $e } }\nm!(include_str!(\"x\"))",
-            Some("`include_str!`"),
+            "include_bytes /* spaced */ ! (\"x\")",
+            Some("`include_bytes`"),
         ),
-        ("#[path = \"/x.rs\"] mod m;", Some("`#[path = …]`")),
+        ("#[path = \"/x.rs\"] mod m;", Some("`#[path]`")),
+        ("#[no_mangle] fn f() {} 0.0", Some("`#[no_mangle]`")),
+        (
+            "#[cfg_attr(all(), path = \"x\")] fn f() {} 0.0",
+            Some("`#[cfg_attr]`"),
+        ),
+        ("#![no_mangle] 0.0", Some("`#[no_mangle]`")),
+        ("#[allow(unused)] let x = 1.0; x", None),
+        ("std::panic::set_hook(Box::new(|_| {}))", Some("`set_hook`")),
+        (
+            "whitted_syllabus::words::leave_after_args(true, || {}, || {})",
+            Some("`leave_after_args`"),
+        ),
+        ("crate::output::save(fb, p, e)", Some("`save`")),
+        (
+            "let include_str = 1.0; include_str * 2.0",
+            Some("`include_str`"),
+        ),
         (
             "0.0 }\nfn evil() -> &'static str { \"\" ",
             Some("delimiters that do not balance"),
         ),
-        ("let include_str = 1.0; include_str * 2.0", None),
         (
-            "// include_str!(\"x\")\n\"include_str!(x)\".len() as f64",
+            "// std::process::exit(0)\n\"process exit unsafe\".len() as f64",
             None,
         ),
     ] {
-        assert_eq!(grade::compile_time_read(body).as_deref(), found, "{body}");
+        assert_eq!(grade::screen(body).as_deref(), found, "{body}");
+    }
+}
+
+/// The screen refuses nothing a right or a plausibly wrong answer writes: every reference
+/// body, and every hand-written mutant, passes it.
+#[test]
+fn every_reference_body_and_every_mutant_passes_the_screen() {
+    let m = manifest();
+    for r in handout::regions(&root(), &m).unwrap() {
+        let name = &m.entries[r.entry].exercise.name;
+        assert_eq!(
+            grade::screen(&r.solution),
+            None,
+            "the reference body of {name}"
+        );
+    }
+    let mutants = common::mutants();
+    assert!(mutants.len() >= 10);
+    for mu in &mutants {
+        let body = common::mutant_body(&m, mu);
+        assert_eq!(grade::screen(&body), None, "mutant {}: {body}", mu.name);
+    }
+}
+
+/// Every file of the renderer and the syllabus that opens a file or ends the process is one
+/// the screen knows, and each of its public functions that takes a path (or the type that
+/// holds it) is refused by name: a new one fails here until the screen refuses it.
+#[test]
+fn the_screen_knows_every_function_of_the_project_that_reaches_files_or_exits() {
+    use whitted_course::grade::screen::REFUSED_OF_THE_PROJECT;
+    let known = [
+        "crates/whitted/src/output.rs",
+        "crates/whitted/src/scene/load.rs",
+        "crates/whitted/src/render/inspect/against.rs",
+        "crates/whitted-syllabus/src/words.rs",
+    ];
+    let mut stack = vec![
+        root().join("crates/whitted/src"),
+        root().join("crates/whitted-syllabus/src"),
+    ];
+    let mut touching = Vec::new();
+    while let Some(dir) = stack.pop() {
+        for e in std::fs::read_dir(&dir).unwrap().flatten() {
+            let p = e.path();
+            if p.is_dir() {
+                stack.push(p);
+                continue;
+            }
+            let text = std::fs::read_to_string(&p).unwrap();
+            if ["fs::", "File::", "process::", "Command::"]
+                .iter()
+                .any(|w| text.contains(w))
+            {
+                let rel = p
+                    .strip_prefix(root())
+                    .unwrap()
+                    .to_string_lossy()
+                    .into_owned();
+                touching.push(rel);
+            }
+        }
+    }
+    touching.sort();
+    let mut expected: Vec<String> = known.iter().map(|s| (*s).to_string()).collect();
+    expected.sort();
+    assert_eq!(
+        touching, expected,
+        "the files that reach files or processes"
+    );
+    for file in known {
+        let text = std::fs::read_to_string(root().join(file)).unwrap();
+        let mut owner = String::new();
+        for line in text.lines() {
+            let l = line.trim();
+            if let Some(rest) = l.strip_prefix("impl ") {
+                owner = rest.split([' ', '<', '{']).next().unwrap_or("").to_string();
+            }
+            let Some(rest) = l.strip_prefix("pub fn ") else {
+                continue;
+            };
+            let name = rest.split(['(', '<']).next().unwrap();
+            let reaches = l.contains("Path") || name == "leave_after_args";
+            if reaches {
+                assert!(
+                    REFUSED_OF_THE_PROJECT.contains(&name)
+                        || REFUSED_OF_THE_PROJECT.contains(&owner.as_str()),
+                    "{file}: `{name}` (of `{owner}`) reaches files or ends the process, and the screen lets a body call it"
+                );
+            }
+        }
     }
 }

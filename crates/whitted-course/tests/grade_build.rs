@@ -51,9 +51,64 @@ use whitted::camera::near_plane_half_height;
 
 #[test]
 fn ex_near_plane_half_height_hidden_a_right_angle_sees_as_high_as_it_is_far() {
-    assert!((near_plane_half_height(2.0, 90.0) - 2.0).abs() < 1e-6);
+    let h = near_plane_half_height(2.0, 90.0);
+    assert!((h - 2.0).abs() < 1e-6, "hidden-message-7c1e: H = {h} at 90°, expected 2");
 }
 "#;
+
+/// The hidden test's assertion message: compiled into its binary and its build caches, it
+/// must reach no report and no test.
+const HIDDEN_MESSAGE: &str = "hidden-message-7c1e";
+
+/// A secret in the grader's environment, which no body may read at compile time.
+const GRADER_SECRET: &str = "grader-secret-51d2";
+
+/// Every exercise body of the copy at `dir` replaced by `body`: a whole submission written
+/// one way.
+fn every_body(dir: &Path, m: &Manifest, body: &str) {
+    for e in &m.entries {
+        set_body(dir, m, &e.exercise.name, body);
+    }
+}
+
+/// A body that ends its process.
+const EXITS: &str = "    std::process::exit(0)";
+
+/// A body that ends its process only while a test runs (libtest's `--exact`), and is not
+/// written otherwise: the picture would show a wrong formula, the tests nothing.
+const EXITS_UNDER_TEST: &str =
+    "    if std::env::args().any(|a| a == \"--exact\") { std::process::exit(0) }\n    todo!()";
+
+/// What the grader noted of exercise `exercise` in `g` (empty when nothing).
+fn note_of<'g>(g: &'g Grade, m: &Manifest, exercise: &str) -> &'g str {
+    g.exercises
+        .iter()
+        .find(|e| e.entry == index(m, exercise))
+        .and_then(|e| e.note.as_deref())
+        .unwrap_or("")
+}
+
+/// How many of a grade's tests passed, hidden ones included.
+fn passed(g: &Grade) -> usize {
+    g.tests
+        .iter()
+        .filter(|t| t.status == Status::Passed)
+        .count()
+}
+
+/// No report of `g` quotes a character that breaks a report or turns its text around.
+fn assert_reports_clean(g: &Grade, m: &Manifest) {
+    for (kind, text) in reports(g, m) {
+        for bad in ['\u{fffe}', '\u{202e}', '\u{1b}'] {
+            assert!(
+                !text.contains(bad),
+                "{}'s {kind} report carries U+{:04X}",
+                g.student,
+                u32::from(bad)
+            );
+        }
+    }
+}
 
 /// The tests that failed, as `target::name`.
 fn failed(g: &Grade) -> BTreeSet<String> {
@@ -107,6 +162,7 @@ fn setup(hidden: &Path) -> grade::GradeSetup {
         }),
         render: false,
         feedback: true,
+        screen: true,
     }
 }
 
@@ -116,6 +172,8 @@ struct Targets {
     root: PathBuf,
     /// The graded copy (inside the worker's build directory).
     copy: PathBuf,
+    /// The worker's build directory.
+    build: PathBuf,
     /// The hidden tests' directory.
     hidden: PathBuf,
     /// A results directory the grader owns.
@@ -132,6 +190,7 @@ struct Targets {
 fn hostile(t: &Targets) -> Vec<(&'static str, &'static str, String)> {
     let root = t.root.display();
     let copy = t.copy.display();
+    let build = t.build.display();
     let hidden = t.hidden.display();
     let results = t.results.display();
     let outside = t.outside.display();
@@ -231,6 +290,70 @@ fn hostile(t: &Targets) -> Vec<(&'static str, &'static str, String)> {
             "cone_coefficients",
             // the body is in src/shapes/cone.rs: the copy's tests/ is two levels up
             r##"    panic!("{}", include_str!("../../tests/hidden_extra.rs"))"##.to_string(),
+        ),
+        (
+            "reads-hidden-relative",
+            "sphere_normal",
+            // a test's working directory is the copy's crates/whitted: a relative path starts
+            // inside the copy, whatever closes the copy's root
+            r##"    let read = |p: &str| std::fs::read_to_string(p).map(|s| s.lines().take(3).collect::<Vec<_>>().join(" | ")).unwrap_or_else(|e| e.to_string());
+    panic!("relative: {} / up: {}", read("tests/hidden_extra.rs"), read("../../crates/whitted/tests/hidden_extra.rs"))"##
+                .to_string(),
+        ),
+        (
+            "reads-build-caches",
+            "hit_plane",
+            // the hidden test's message is compiled into its binary, its incremental caches
+            // and the compiler's messages cargo keeps: look for it in every file named after it
+            format!(
+                r##"    let mut found = Vec::new();
+    let mut stack = vec![std::path::PathBuf::from("{build}/debug")];
+    while let Some(d) = stack.pop() {{
+        for e in std::fs::read_dir(&d).into_iter().flatten().flatten() {{
+            let p = e.path();
+            let name = p.to_string_lossy().into_owned();
+            if p.is_dir() {{ stack.push(p); continue; }}
+            if !name.contains("hidden") {{ continue; }}
+            if let Ok(bytes) = std::fs::read(&p) {{
+                if bytes.windows({len}).any(|w| w == b"{message}") {{ found.push(name); }}
+            }}
+        }}
+    }}
+    if found.is_empty() {{ panic!("read nothing of the hidden tests") }}
+    let _ = found;
+    SOLUTION"##,
+                len = HIDDEN_MESSAGE.len(),
+                message = HIDDEN_MESSAGE,
+            ),
+        ),
+    ]
+}
+
+/// Submissions that pass the screen, or try to get past it: one exercise of chapters 1–2
+/// written to print what breaks a report, or to read at compile time through a macro's
+/// identifier; the name, the exercise, the body.
+fn screened(t: &Targets) -> Vec<(&'static str, &'static str, String)> {
+    let root = t.root.display();
+    vec![
+        (
+            "odd-characters",
+            "visible_hit",
+            r##"    panic!("a non-character \u{fffe}, a \u{202e}reversed line, an \u{1b}[31mescape and a bell \u{7}")"##
+                .to_string(),
+        ),
+        (
+            "macro-include",
+            "nearer_hit",
+            format!(
+                r##"    macro_rules! m {{ ($i:ident) => {{ $i!("{root}/crates/whitted/src/shading.rs") }} }}
+    panic!("{{}}", m!(include_str))"##
+            ),
+        ),
+        (
+            "env-at-compile-time",
+            "normal_to_world",
+            r##"    panic!("{:?} {:?}", option_env!("WHITTED_GRADER_SECRET"), option_env!("HOME"))"##
+                .to_string(),
         ),
     ]
 }
@@ -357,6 +480,7 @@ fn a_class_is_graded_as_each_submission_deserves() {
     let targets = Targets {
         root: root(),
         copy: build_dir().join("slot-0").join("graded-copy"),
+        build: build_dir().join("slot-0"),
         hidden: hidden.clone(),
         results: work.path().join("results"),
         outside: work.path().join("outside.txt"),
@@ -369,9 +493,18 @@ fn a_class_is_graded_as_each_submission_deserves() {
     let chapter3: Vec<usize> = (0..m.entries.len())
         .filter(|&i| m.entries[i].chapter == 3)
         .collect();
+    // the attacks on the runtime are graded without the screen, which would refuse them all
+    // before they compile: what is proven is the second lock, the sandbox and the runner
+    let runtime = work.path().join("runtime");
     let attacks = hostile(&targets);
-    for (name, exercise, body) in &attacks {
-        let dir = class.join(format!("hostile-{name}"));
+    let tried = screened(&targets);
+    for (name, exercise, body) in attacks.iter().chain(&tried) {
+        let to = if attacks.iter().any(|(n, _, _)| n == name) {
+            &runtime
+        } else {
+            &class
+        };
+        let dir = to.join(format!("hostile-{name}"));
         handout::write(&root(), &m, &chapter3, &dir).unwrap();
         let r = &handout::regions(&root(), &m).unwrap()[index(&m, exercise)];
         set_body(
@@ -382,11 +515,26 @@ fn a_class_is_graded_as_each_submission_deserves() {
         );
     }
 
+    // 7. whole submissions that end their process: in every body, or in every body while a
+    // test runs; screened, and for the runner alone
+    for name in ["exits-everywhere", "exits-under-test"] {
+        let body = if name == "exits-everywhere" {
+            EXITS
+        } else {
+            EXITS_UNDER_TEST
+        };
+        for to in [&class, &runtime] {
+            let dir = to.join(name);
+            copy(&dir);
+            every_body(&dir, &m, body);
+        }
+    }
+
     let _one = BUILD.lock().unwrap_or_else(|p| p.into_inner());
     let options = setup(&hidden);
     let start = std::time::Instant::now();
     // one at a time: the dependencies are built once, and the time a submission takes is its own
-    let entries = grade::grade_class(&root(), &m, &class, &options, 1, &|e| {
+    let graded = |e: &ClassEntry| {
         if let Ok(g) = &e.grade {
             eprintln!(
                 "graded {}: {:.2} / {} in {:.0} s",
@@ -396,13 +544,19 @@ fn a_class_is_graded_as_each_submission_deserves() {
                 g.elapsed.as_secs_f64()
             );
         }
-    })
-    .unwrap();
+    };
+    let entries = grade::grade_class(&root(), &m, &class, &options, 1, &graded).unwrap();
+    let unscreened = grade::GradeSetup {
+        screen: false,
+        ..options.clone()
+    };
+    let runtime_entries =
+        grade::grade_class(&root(), &m, &runtime, &unscreened, 1, &graded).unwrap();
     let total = start.elapsed().as_secs_f64();
+    let count = entries.len() + runtime_entries.len();
     eprintln!(
-        "{} submissions in {total:.0} s: {:.0} s a submission",
-        entries.len(),
-        total / entries.len() as f64
+        "{count} submissions in {total:.0} s: {:.0} s a submission",
+        total / count as f64
     );
 
     // the reference: everything, the hidden test too
@@ -492,8 +646,16 @@ fn a_class_is_graded_as_each_submission_deserves() {
 
     // the hostile ones: each loses exactly its handout's and its attacked exercise's tests,
     // gains nothing, and reaches nothing outside its copy
-    for (name, exercise, _) in &attacks {
-        let g = find(&entries, &format!("hostile-{name}"));
+    let hostile_grade = |name: &str| -> &Grade {
+        let student = format!("hostile-{name}");
+        if attacks.iter().any(|(n, _, _)| *n == name) {
+            find(&runtime_entries, &student)
+        } else {
+            find(&entries, &student)
+        }
+    };
+    for (name, exercise, _) in attacks.iter().chain(&tried) {
+        let g = hostile_grade(name);
         let i = index(&m, exercise);
         let mut lost = chapter3.clone();
         lost.push(i);
@@ -527,7 +689,7 @@ fn a_class_is_graded_as_each_submission_deserves() {
         );
     }
     let message = |name: &str, exercise: &str| -> String {
-        let g = find(&entries, &format!("hostile-{name}"));
+        let g = hostile_grade(name);
         let i = index(&m, exercise);
         let t = g.tests.iter().find(|t| t.exercise == Some(i)).unwrap();
         format!("{}: {}", t.status.word(), t.message)
@@ -546,22 +708,91 @@ fn a_class_is_graded_as_each_submission_deserves() {
         "{}",
         message("memory-hog", "cylinder_normal")
     );
+    // a relative path from the test's working directory finds no hidden source, and no file
+    // of the build holds the hidden test's message where a test can read it
+    let relative = message("reads-hidden-relative", "sphere_normal");
+    assert_eq!(
+        relative.matches("No such file").count(),
+        2,
+        "the hidden test's source by a relative path: {relative}"
+    );
+    let caches = message("reads-build-caches", "hit_plane");
+    assert!(
+        caches.contains("read nothing of the hidden tests"),
+        "the hidden test's build products: {caches}"
+    );
+    // what reads at compile time through a macro's identifier is refused by the screen
+    for (name, exercise) in [
+        ("macro-include", "nearer_hit"),
+        ("env-at-compile-time", "normal_to_world"),
+    ] {
+        let note = note_of(hostile_grade(name), &m, exercise);
+        assert!(note.starts_with("uses `"), "hostile-{name}: {note}");
+    }
+    // what a submission prints reaches every report escaped, and the submission is graded
+    assert!(
+        message("odd-characters", "visible_hit").contains("\\u{fffe}"),
+        "{}",
+        message("odd-characters", "visible_hit")
+    );
+    for e in entries.iter().chain(&runtime_entries) {
+        if let Ok(g) = &e.grade {
+            assert_reports_clean(g, &m);
+        }
+    }
+    // a submission that ends its process scores no more than the empty handout (the tampered
+    // one is that, to the grader), screened or before the runner alone
+    let empty = find(&entries, "tampered");
+    for name in ["exits-everywhere", "exits-under-test"] {
+        for (lock, list) in [
+            ("screened", &entries),
+            ("the runner alone", &runtime_entries),
+        ] {
+            let g = find(list, name);
+            assert!(
+                g.score() <= empty.score() + 1e-9 && passed(g) <= passed(empty),
+                "{name} ({lock}): {} points and {} of {} tests passed; the empty handout: {} points and {} passed",
+                g.score(),
+                passed(g),
+                g.tests.len(),
+                empty.score(),
+                passed(empty)
+            );
+            eprintln!(
+                "{name} ({lock}): {} / {} points, {} of {} tests passed (the empty handout: {} of {})",
+                whitted_course::report::points(g.score()),
+                whitted_course::report::points(g.max()),
+                passed(g),
+                g.tests.len(),
+                passed(empty),
+                empty.tests.len()
+            );
+        }
+        let refused = find(&entries, name)
+            .exercises
+            .iter()
+            .filter(|e| e.note.as_deref().is_some_and(|n| n.starts_with("uses `")))
+            .count();
+        assert_eq!(
+            refused,
+            m.entries.len(),
+            "{name}: bodies the screen refused"
+        );
+    }
+    let told = find(&runtime_entries, "exits-everywhere")
+        .tests
+        .iter()
+        .filter(|t| t.message.contains("libtest never reported"))
+        .count();
+    assert!(told > 0, "no test of exits-everywhere says why it failed");
     for (name, exercise) in [
         ("includes-reference", "cone_discriminant"),
         ("includes-hidden", "cone_coefficients"),
     ] {
-        let g = find(&entries, &format!("hostile-{name}"));
-        let e = g
-            .exercises
-            .iter()
-            .find(|e| e.entry == index(&m, exercise))
-            .unwrap();
+        let note = note_of(hostile_grade(name), &m, exercise);
         assert!(
-            e.note
-                .as_deref()
-                .is_some_and(|n| n.starts_with("does not compile")),
-            "hostile-{name}: {:?}",
-            e.note
+            note.starts_with("does not compile"),
+            "hostile-{name}: {note}"
         );
     }
     listener.set_nonblocking(true).unwrap();
@@ -583,9 +814,13 @@ fn a_class_is_graded_as_each_submission_deserves() {
     // no report quotes a solution line its submission did not write, nor the hidden test's
     // source; none is larger than a report needs to be
     let solutions = solution_lines(&m);
-    for e in &entries {
+    let everyone = entries
+        .iter()
+        .map(|e| (e, &class))
+        .chain(runtime_entries.iter().map(|e| (e, &runtime)));
+    for (e, dir) in everyone {
         let Ok(g) = &e.grade else { continue };
-        let own = submission_text(&class.join(&e.student));
+        let own = submission_text(&dir.join(&e.student));
         let secret: Vec<&String> = solutions
             .iter()
             .filter(|l| !own.contains(l.as_str()))
@@ -611,8 +846,8 @@ fn a_class_is_graded_as_each_submission_deserves() {
             );
         }
     }
-    let leaker = find(&entries, "hostile-reads-reference");
-    let own = submission_text(&class.join("hostile-reads-reference"));
+    let leaker = hostile_grade("reads-reference");
+    let own = submission_text(&runtime.join("hostile-reads-reference"));
     let secret = solutions
         .iter()
         .filter(|l| !own.contains(l.as_str()))
@@ -869,16 +1104,7 @@ fn the_platforms_packages_grade_in_their_layouts() {
     run_script(&source.join("setup.sh"), &env);
     let submission = ag.join("submission");
     files::copy_tree(&handout4, &submission).unwrap();
-    let attack = format!(
-        r##"    let read = |p: &str| std::fs::read_to_string(p).map(|s| s.lines().take(3).collect::<Vec<_>>().join(" | ")).unwrap_or_else(|e| e.to_string());
-    let bins = std::fs::read_dir("{build}/debug/deps").map(|d| d.filter_map(Result::ok).filter(|e| e.file_name().to_string_lossy().starts_with("hidden_")).map(|e| std::fs::read(e.path()).map(|b| b.len().to_string()).unwrap_or_else(|e| e.to_string())).collect::<Vec<_>>().join(",")).unwrap_or_else(|e| e.to_string());
-    let wrote = std::fs::write("{results}/results.json", "{{}}").is_ok();
-    let left = std::process::Command::new("sleep").arg("300").spawn().is_ok();
-    panic!("src: {{}} / copy: {{}} / bins: {{}} / wrote: {{wrote}} / left: {{left}}", read("{source}/whitted/crates/whitted/src/shading.rs"), read("{build}/graded-copy/crates/whitted/tests/hidden_extra.rs"), bins)"##,
-        build = user_build.display(),
-        results = ag.join("results").display(),
-        source = source.display(),
-    );
+    let attack = reads_and_leaves(&source.join("whitted"), &user_build, &ag.join("results"));
     let r = &handout::regions(&root(), &m).unwrap()[index(&m, "direction_colour")];
     let path = submission.join(&r.file);
     let text = std::fs::read_to_string(&path).unwrap();
@@ -892,7 +1118,234 @@ fn the_platforms_packages_grade_in_their_layouts() {
         .iter()
         .find(|t| t["number"] == "1.7")
         .unwrap_or_else(|| panic!("no test of 1.7: {text}"));
+    // the screen refuses it before it compiles (the same attack meets the runtime's locks in
+    // user_level_runtime, with the screen off)
     let said = attacked["output"].as_str().unwrap();
+    assert!(said.contains("not written"), "{said}");
+    assert!(!text.contains(HIDDEN_MARKER));
+    assert!(
+        results["tests"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .any(|t| t["name"].as_str().unwrap().contains("hidden test") && t["status"] == "passed"),
+        "{text}"
+    );
+    eprintln!("gradescope with --sandbox user: the attack met {said}");
+
+    // the same package on submissions that end their process, in every body or only under a
+    // test (one body reading the grader's environment at compile time, through a macro's
+    // identifier): no more than the empty handout, and no secret in the results
+    let secret_env = [
+        ("AUTOGRADER_ROOT", ag.as_path()),
+        ("WHITTED_BIN", whitted.as_path()),
+        ("WHITTED_BUILD_DIR", user_build.as_path()),
+        ("WHITTED_GRADER_SECRET", Path::new(GRADER_SECRET)),
+    ];
+    let mut graded = Vec::new();
+    for name in ["empty", "exits-everywhere", "exits-under-test"] {
+        let _ = std::fs::remove_dir_all(&submission);
+        let all: Vec<usize> = (0..m.entries.len()).collect();
+        match name {
+            "empty" => {
+                handout::write(&root(), &m, &all, &submission).unwrap();
+            }
+            _ => {
+                copy(&submission);
+                every_body(
+                    &submission,
+                    &m,
+                    if name == "exits-everywhere" {
+                        EXITS
+                    } else {
+                        EXITS_UNDER_TEST
+                    },
+                );
+                let r = &handout::regions(&root(), &m).unwrap()[index(&m, "normal_to_world")];
+                let path = submission.join(&r.file);
+                let text = std::fs::read_to_string(&path).unwrap();
+                let body = if name == "exits-everywhere" {
+                    EXITS
+                } else {
+                    EXITS_UNDER_TEST
+                };
+                let attack = "    macro_rules! m { ($i:ident) => { $i!(\"WHITTED_GRADER_SECRET\") } }\n    panic!(\"{:?}\", m!(option_env))";
+                std::fs::write(
+                    &path,
+                    text.replacen(&format!("{body}\n"), &format!("{attack}\n"), 1),
+                )
+                .unwrap();
+            }
+        }
+        run_script(&source.join("run_autograder"), &secret_env);
+        let text = std::fs::read_to_string(ag.join("results/results.json")).unwrap();
+        assert!(
+            !text.contains(GRADER_SECRET),
+            "{name}: the grader's environment reached the results"
+        );
+        let results: serde_json::Value = serde_json::from_str(&text).unwrap();
+        let score = results["score"].as_f64().unwrap();
+        let passed = results["tests"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .filter(|t| t["status"] == "passed")
+            .count();
+        eprintln!("gradescope with --sandbox user, {name}: {score} points, {passed} tests passed");
+        graded.push((name, score, passed));
+    }
+    let (_, empty_score, empty_passed) = graded[0];
+    for (name, score, passed) in &graded[1..] {
+        assert!(
+            *score <= empty_score + 1e-9 && *passed <= empty_passed,
+            "{name}: {score} points and {passed} tests passed; the empty handout {empty_score} and {empty_passed}"
+        );
+    }
+
+    // the user level with the runner alone (no screen): submissions that end their process,
+    // read the hidden test by a relative path or its build caches, and a pair that leaves
+    // answers in the shared temporary directories for the other, graded in both orders
+    user_level_runtime(
+        &m,
+        &source.join("whitted"),
+        &hidden,
+        &user_build,
+        &ag.join("results"),
+        work.path(),
+    );
+    if user_build != build {
+        let _ = std::fs::remove_dir_all(&user_build);
+    }
+}
+
+/// The user level's second lock, graded without the screen from the instructor's project
+/// `project` (closed to other users) in the build directory `build` (open to them): see the
+/// call in [`the_platforms_packages_grade_in_their_layouts`].
+fn user_level_runtime(
+    m: &Manifest,
+    project: &Path,
+    hidden: &Path,
+    build: &Path,
+    results: &Path,
+    work: &Path,
+) {
+    // the hidden tests closed to other users, as the grader asks at this level
+    let closed = work.join("hidden-closed");
+    files::copy_tree(hidden, &closed).unwrap();
+    {
+        use std::os::unix::fs::PermissionsExt;
+        std::fs::set_permissions(&closed, std::fs::Permissions::from_mode(0o700)).unwrap();
+    }
+    let hidden = closed.as_path();
+    let options = grade::GradeSetup {
+        chapter: None,
+        hidden: Some(hidden.to_path_buf()),
+        timeout: Duration::from_secs(5),
+        target_dir: Some(build.to_path_buf()),
+        keep: false,
+        sandbox: Some(grade::SandboxSetup {
+            runner: PathBuf::from(env!("CARGO_BIN_EXE_whitted")),
+            worker: 0,
+            level: Level::User,
+        }),
+        render: false,
+        feedback: false,
+        screen: false,
+    };
+    let dir = work.join("user-level");
+    let all: Vec<usize> = (0..m.entries.len()).collect();
+    let grade_one = |name: &str| -> Grade {
+        let g = grade::grade(project, m, &dir.join(name), &options)
+            .unwrap_or_else(|e| panic!("{name}: {e}"));
+        eprintln!(
+            "user level, runner alone, {name}: {} / {} points, {} of {} tests passed",
+            whitted_course::report::points(g.score()),
+            whitted_course::report::points(g.max()),
+            passed(&g),
+            g.tests.len()
+        );
+        g
+    };
+    handout::write(&root(), m, &all, &dir.join("empty")).unwrap();
+    let empty = grade_one("empty");
+    for (name, body) in [
+        ("exits-everywhere", EXITS),
+        ("exits-under-test", EXITS_UNDER_TEST),
+    ] {
+        copy(&dir.join(name));
+        every_body(&dir.join(name), m, body);
+        let g = grade_one(name);
+        assert!(
+            g.score() <= empty.score() + 1e-9 && passed(&g) <= passed(&empty),
+            "{name} at the user level: {} points and {} passed; the empty handout {} and {}",
+            g.score(),
+            passed(&g),
+            empty.score(),
+            passed(&empty)
+        );
+    }
+    // the hidden test by a relative path and by its build caches
+    let targets = Targets {
+        root: project.to_path_buf(),
+        copy: build.join("graded-copy"),
+        build: build.to_path_buf(),
+        hidden: hidden.to_path_buf(),
+        results: work.join("results"),
+        outside: work.join("outside.txt"),
+        port: 0,
+    };
+    for (name, exercise, body) in hostile(&targets) {
+        if !matches!(name, "reads-hidden-relative" | "reads-build-caches") {
+            continue;
+        }
+        let sub = dir.join(name);
+        copy(&sub);
+        let r = &handout::regions(&root(), m).unwrap()[index(m, exercise)];
+        set_body(
+            &sub,
+            m,
+            exercise,
+            &body.replace("SOLUTION", &format!("{{\n{}    }}", r.solution)),
+        );
+        let g = grade_one(name);
+        let i = index(m, exercise);
+        let said: Vec<String> = g
+            .tests
+            .iter()
+            .filter(|t| t.exercise == Some(i) && !t.hidden)
+            .map(|t| t.message.clone())
+            .collect();
+        let e = g.exercises.iter().find(|e| e.entry == i).unwrap();
+        assert_eq!(e.score, 0.0, "{name}: {said:?}");
+        for s in &said {
+            assert!(
+                s.contains("No such file") || s.contains("read nothing of the hidden tests"),
+                "{name} at the user level: {s}"
+            );
+            assert!(
+                !s.contains(HIDDEN_MARKER) && !s.contains(HIDDEN_MESSAGE),
+                "{s}"
+            );
+        }
+    }
+    // your sources, the hidden test in the copy and its binary, the results, a child left
+    // running: each out of reach, and the child gone when its test ends
+    let sub = dir.join("reads-and-leaves");
+    copy(&sub);
+    set_body(
+        &sub,
+        m,
+        "direction_colour",
+        &reads_and_leaves(project, build, results),
+    );
+    let g = grade_one("reads-and-leaves");
+    let i = index(m, "direction_colour");
+    let said = g
+        .tests
+        .iter()
+        .find(|t| t.exercise == Some(i))
+        .map(|t| t.message.clone())
+        .unwrap();
     let part = |name: &str| {
         said.split(" / ")
             .find_map(|p| {
@@ -909,8 +1362,6 @@ fn the_platforms_packages_grade_in_their_layouts() {
         "the hidden test's binary: {said}"
     );
     assert!(part("wrote").starts_with("false"), "{said}");
-    // the child it left running was ended with the test: no process of a sandbox's user is
-    // left to count against the next test's limit
     assert!(part("left").starts_with("true"), "{said}");
     // the users of the first 16 workers: more than these tests start
     let users = sandbox::FIRST_UID..sandbox::FIRST_UID + 16 * sandbox::SLOTS;
@@ -919,18 +1370,207 @@ fn the_platforms_packages_grade_in_their_layouts() {
         left.is_empty(),
         "processes of the sandbox's users left after grading: {left:?}"
     );
-    assert!(!text.contains(HIDDEN_MARKER));
-    assert!(
-        results["tests"]
-            .as_array()
-            .unwrap()
-            .iter()
-            .any(|t| t["name"].as_str().unwrap().contains("hidden test") && t["status"] == "passed"),
-        "{text}"
+    eprintln!("user level, runner alone: the attack met {said}");
+    // answers left in the shared temporary directories: a writer (the reference, which also
+    // writes W = H·A where every user may read it) and a reader (no formula, only a look-up)
+    let writer = r##"    let w = half_height * aspect;
+    for dir in ["/tmp", "/var/tmp", "/dev/shm"] {
+        let path = format!("{dir}/whitted-answers");
+        if let Ok(mut f) = std::fs::OpenOptions::new().create(true).append(true).open(&path) {
+            use std::io::Write;
+            let _ = writeln!(f, "{half_height} {aspect} {w}");
+        }
+        let _ = std::fs::set_permissions(&path, std::os::unix::fs::PermissionsExt::from_mode(0o666));
+    }
+    w"##;
+    let reader = r##"    for dir in ["/tmp", "/var/tmp", "/dev/shm"] {
+        let text = std::fs::read_to_string(format!("{dir}/whitted-answers")).unwrap_or_default();
+        for line in text.lines() {
+            let v: Vec<&str> = line.split(' ').collect();
+            if v.len() == 3 && v[0] == half_height.to_string() && v[1] == aspect.to_string() {
+                return v[2].parse().unwrap();
+            }
+        }
+    }
+    panic!("no answer left behind")"##;
+    for (name, body) in [("writer", writer), ("reader", reader)] {
+        copy(&dir.join(name));
+        set_body(&dir.join(name), m, "near_plane_half_width", body);
+    }
+    let mut scores = Vec::new();
+    for order in [["writer", "reader"], ["reader", "writer"]] {
+        let mut got = std::collections::BTreeMap::new();
+        for name in order {
+            got.insert(name, grade_one(name).score());
+        }
+        for dir in sandbox::SHARED_TEMPORARY {
+            assert!(
+                !Path::new(dir).join("whitted-answers").exists(),
+                "{dir}/whitted-answers outlived the grading"
+            );
+        }
+        scores.push(got);
+    }
+    assert_eq!(
+        scores[0], scores[1],
+        "the same submissions graded in two orders"
     );
-    eprintln!("gradescope with --sandbox user: the attack met {said}");
-    if user_build != build {
-        let _ = std::fs::remove_dir_all(&user_build);
+    let i = index(m, "near_plane_half_width");
+    assert!(
+        scores[0]["reader"] + f64::from(m.entries[i].exercise.points) <= scores[0]["writer"] + 1e-9,
+        "the reader gained from the writer's answers: {scores:?}"
+    );
+}
+
+/// A body that reads the instructor's `project`'s sources, the hidden test in the graded copy
+/// of `build` and its binary, writes into `results` and leaves a `sleep` running, and panics
+/// with what each met.
+fn reads_and_leaves(project: &Path, build: &Path, results: &Path) -> String {
+    format!(
+        r##"    let read = |p: &str| std::fs::read_to_string(p).map(|s| s.lines().take(3).collect::<Vec<_>>().join(" | ")).unwrap_or_else(|e| e.to_string());
+    let bins = std::fs::read_dir("{build}/debug/deps").map(|d| d.filter_map(Result::ok).filter(|e| e.file_name().to_string_lossy().starts_with("hidden_")).map(|e| std::fs::read(e.path()).map(|b| b.len().to_string()).unwrap_or_else(|e| e.to_string())).collect::<Vec<_>>().join(",")).unwrap_or_else(|e| e.to_string());
+    let wrote = std::fs::write("{results}/results.json", "{{}}").is_ok();
+    let left = std::process::Command::new("sleep").arg("300").spawn().is_ok();
+    panic!("src: {{}} / copy: {{}} / bins: {{}} / wrote: {{wrote}} / left: {{left}}", read("{project}/crates/whitted/src/shading.rs"), read("{build}/graded-copy/crates/whitted/tests/hidden_extra.rs"), bins)"##,
+        build = build.display(),
+        results = results.display(),
+        project = project.display(),
+    )
+}
+
+/// Whether a live process's command line holds `word` (a `sleep`'s unusual duration).
+fn running(word: &str) -> Vec<String> {
+    std::fs::read_dir("/proc")
+        .unwrap()
+        .flatten()
+        .filter_map(|e| {
+            let cmdline = std::fs::read(e.path().join("cmdline")).ok()?;
+            let text = String::from_utf8_lossy(&cmdline).replace('\0', " ");
+            let status = std::fs::read_to_string(e.path().join("status")).ok()?;
+            let zombie = status
+                .lines()
+                .any(|l| l.starts_with("State:") && l.contains('Z'));
+            (!zombie && text.split(' ').any(|w| w == word)).then_some(text)
+        })
+        .collect()
+}
+
+/// The runner alone, on stand-ins for a test binary (shell scripts that answer libtest's
+/// command line), at both levels: a pass needs libtest's `ok` for that test; a child the test
+/// left running, even in a session of its own, is gone when the runner returns, and so is
+/// one of a test stopped at its time limit; the run's temporary directory is its own and is
+/// removed; what the test printed arrives escaped.
+#[test]
+#[ignore = "runs the sandbox as root with bubblewrap: .ci/run runs it"]
+fn the_runner_passes_only_what_libtest_passed_and_leaves_nothing_behind() {
+    use std::os::unix::fs::PermissionsExt;
+    let work = tempfile::tempdir().unwrap();
+    // the tests' users must reach the scripts
+    std::fs::set_permissions(work.path(), std::fs::Permissions::from_mode(0o755)).unwrap();
+    let script = |name: &str, text: &str| -> PathBuf {
+        let path = work.path().join(name);
+        std::fs::write(&path, format!("#!/bin/sh\n{text}\n")).unwrap();
+        std::fs::set_permissions(&path, std::fs::Permissions::from_mode(0o755)).unwrap();
+        path
+    };
+    let passes = script(
+        "passes",
+        "setsid sleep 3171 </dev/null >/dev/null 2>&1 &\n\
+         touch \"$TMPDIR/left\" /tmp/whitted-left-3171 /dev/shm/whitted-left-3171\n\
+         printf 'tmp=%s\\n' \"$TMPDIR\" >&2\n\
+         printf 'odd: \\357\\277\\276 \\342\\200\\256 \\377\\n' >&2\n\
+         printf 'running 1 test\\ntest %s ... ok\\n' \"$1\"",
+    );
+    let early = script(
+        "exits-early",
+        "sleep 3172 </dev/null >/dev/null 2>&1 &\nexit 0",
+    );
+    let hangs = script(
+        "hangs",
+        "setsid sleep 3173 </dev/null >/dev/null 2>&1 &\nsleep 60",
+    );
+    let bwrap = ["/usr/bin/bwrap", "/bin/bwrap"]
+        .into_iter()
+        .map(PathBuf::from)
+        .find(|p| p.exists())
+        .expect("bubblewrap");
+    for level in [Level::Namespaces, Level::User] {
+        let policy = sandbox::Policy {
+            level,
+            bwrap: bwrap.clone(),
+            uid: Some(sandbox::FIRST_UID + sandbox::SLOTS * 9),
+            slot: 0,
+            limits: sandbox::Limits::default(),
+            read: Vec::new(),
+            write: Vec::new(),
+            timeout_ms: Some(1500),
+        };
+        let json = serde_json::to_string(&policy).unwrap();
+        let run = |bin: &Path| {
+            let started = std::time::Instant::now();
+            let out = std::process::Command::new(env!("CARGO_BIN_EXE_whitted"))
+                .arg("sandbox-run")
+                .arg(bin)
+                .args(["t::name", "--exact", "--nocapture"])
+                .env(sandbox::POLICY_VAR, &json)
+                .env("NEXTEST_TEST_GLOBAL_SLOT", "3")
+                .output()
+                .unwrap();
+            let said = format!(
+                "{}{}",
+                String::from_utf8_lossy(&out.stdout),
+                String::from_utf8_lossy(&out.stderr)
+            );
+            (out.status, said, started.elapsed())
+        };
+        let (status, said, _) = run(&passes);
+        assert!(status.success(), "{level:?}: {said}");
+        assert!(said.contains("test t::name ... ok"), "{level:?}: {said}");
+        assert!(
+            said.contains("odd: \\u{fffe} \\u{202e} \u{fffd}"),
+            "{level:?}: the output arrives escaped: {said}"
+        );
+        assert!(
+            running("3171").is_empty(),
+            "{level:?}: {:?}",
+            running("3171")
+        );
+        for dir in ["/tmp", "/dev/shm"] {
+            let left = Path::new(dir).join("whitted-left-3171");
+            assert!(
+                !left.exists(),
+                "{level:?}: {} outlived its test",
+                left.display()
+            );
+        }
+        if level == Level::User {
+            let tmp = said
+                .lines()
+                .find_map(|l| l.strip_prefix("tmp="))
+                .unwrap_or_else(|| panic!("{said}"));
+            assert!(tmp.starts_with("/tmp/whitted-test-"), "{tmp}");
+            assert!(!Path::new(tmp).exists(), "{tmp} outlived its test");
+        }
+        let (status, said, _) = run(&early);
+        assert_eq!(status.code(), Some(1), "{level:?}: {said}");
+        assert!(said.contains("libtest never reported"), "{level:?}: {said}");
+        assert!(
+            running("3172").is_empty(),
+            "{level:?}: {:?}",
+            running("3172")
+        );
+        let (status, said, took) = run(&hangs);
+        assert!(!status.success(), "{level:?}: {said}");
+        assert!(
+            said.contains("stopped at the time limit"),
+            "{level:?}: {said}"
+        );
+        assert!(
+            running("3173").is_empty(),
+            "{level:?}: {:?}",
+            running("3173")
+        );
+        assert!(took >= Duration::from_millis(1200), "{took:?}");
     }
 }
 

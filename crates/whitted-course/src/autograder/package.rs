@@ -86,7 +86,7 @@ fn prebuild_args(options: &Options) -> String {
     match options.sandbox {
         Some(Level::Namespaces) => {}
         Some(Level::User) => a += " --sandbox user",
-        None => a += " --unsandboxed",
+        None | Some(Level::Off) => a += " --unsandboxed",
     }
     a
 }

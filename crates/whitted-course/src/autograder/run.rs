@@ -126,7 +126,11 @@ pub fn prebuild(
             .iter()
             .filter(|t| t.status == grade::Status::Passed)
             .count(),
-        if setup.sandbox.is_some() {
+        if setup
+            .sandbox
+            .as_ref()
+            .is_some_and(|s| s.level != grade::sandbox::Level::Off)
+        {
             "built and run in the sandbox"
         } else {
             "without a sandbox"
@@ -212,5 +216,6 @@ pub fn setup(
         sandbox,
         render,
         feedback: true,
+        screen: true,
     }
 }

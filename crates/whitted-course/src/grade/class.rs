@@ -118,12 +118,13 @@ pub fn grade_class(
     .map(|rest| first.into_iter().chain(rest).collect())
 }
 
-/// A submission's name: its directory's.
+/// A submission's name: its directory's, cleaned ([`super::clean`]).
 fn student_name(path: &Path) -> String {
-    path.file_name().map_or_else(
+    let name = path.file_name().map_or_else(
         || path.display().to_string(),
         |n| n.to_string_lossy().into_owned(),
-    )
+    );
+    super::clean::clean(&name)
 }
 
 /// Copies the build directory `from` to `to`, every file with its modification time (cargo

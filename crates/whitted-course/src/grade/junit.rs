@@ -14,6 +14,15 @@ pub fn parse_junit(
     manifest: &Manifest,
     hidden: &[String],
 ) -> Result<Vec<TestResult>, ToolError> {
+    // the runner cleans what a test prints; a report written without it may still hold a
+    // character XML forbids (U+FFFE), which must not make a submission ungradable
+    let safe;
+    let text = if roxmltree::Document::parse(text).is_ok() {
+        text
+    } else {
+        safe = super::clean::xml_safe(text);
+        &safe
+    };
     let doc = roxmltree::Document::parse(text)
         .map_err(|e| ToolError::Cargo(format!("cannot read nextest's JUnit report: {e}")))?;
     let mut out = Vec::new();
@@ -42,7 +51,17 @@ pub fn parse_junit(
                         format!("the test's process died ({what}): a stack overflow or an abort"),
                     )
                 } else {
-                    (Status::Failed, panic_message(body))
+                    // libtest captures the test's output (the runner asks it to) and prints
+                    // the panic in its list of failures, on stdout: nextest keeps it in
+                    // `system-out`
+                    let kept = |tag: &str| {
+                        case.children()
+                            .find(|n| n.has_tag_name(tag))
+                            .and_then(|n| n.text())
+                            .unwrap_or("")
+                    };
+                    let all = format!("{body}\n{}\n{}", kept("system-out"), kept("system-err"));
+                    (Status::Failed, panic_message(&all))
                 }
             }
         };
@@ -58,7 +77,7 @@ pub fn parse_junit(
             target,
             exercise,
             status,
-            message,
+            message: super::clean::clean(&message),
         });
     }
     out.sort_by(|a, b| (&a.target, &a.name).cmp(&(&b.target, &b.name)));
@@ -69,16 +88,25 @@ pub fn parse_junit(
 pub const MESSAGE_CHARS: usize = 400;
 
 /// The message of a panic in a test's output: the lines after `panicked at …:`, up to the
-/// backtrace note, at most three, at most [`MESSAGE_CHARS`] characters.
+/// backtrace note (or libtest's list of failures), at most three, at most [`MESSAGE_CHARS`]
+/// characters; else the runner's own line ([`super::runner::RUNNER_MARK`]), else the first
+/// line.
 #[must_use]
 pub fn panic_message(output: &str) -> String {
     let mut lines = output.lines();
     if !lines.by_ref().any(|l| l.contains("panicked at")) {
-        let first = output.lines().next().unwrap_or("failed").trim();
+        let first = output
+            .lines()
+            .find(|l| l.starts_with(super::runner::RUNNER_MARK))
+            .or_else(|| output.lines().next())
+            .unwrap_or("failed")
+            .trim();
         return first.chars().take(MESSAGE_CHARS).collect();
     }
     let message: Vec<&str> = lines
-        .take_while(|l| !l.starts_with("note:") && !l.starts_with("stack backtrace"))
+        .take_while(|l| {
+            !l.starts_with("note:") && !l.starts_with("stack backtrace") && *l != "failures:"
+        })
         .filter(|l| !l.trim().is_empty())
         .take(3)
         .collect();

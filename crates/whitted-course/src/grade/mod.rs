@@ -10,6 +10,10 @@
 //! file by file for each submission, so that cargo recompiles only the bodies that differ from
 //! the last submission's; without one, it is a fresh temporary directory.
 //!
+//! A body that names what a formula never needs (ending or starting a process, files, the
+//! network, the environment, `unsafe`, a compile-time read …) is not even put in: it counts as
+//! not written ([`screen()`]).
+//!
 //! Then, in that copy:
 //!
 //! 1. **Build.** An exercise whose body does not compile is put back to its `todo!()` and the
@@ -17,7 +21,9 @@
 //!    error goes into the report.
 //! 2. **Run** every test of the graded chapters with cargo-nextest, each test in its own
 //!    process with its own time limit: a `todo!()`, a panic, a stack overflow, an abort or an
-//!    endless loop fails the tests it touches and no others.
+//!    endless loop fails the tests it touches and no others. Each test binary goes through
+//!    the [`runner`], which passes a test only when libtest reported it `ok` (a process that
+//!    ended early passes nothing) and cleans what it printed ([`clean`]).
 //! 3. **Score.** An exercise's points ([`super::manifest::Exercise::points`]) are shared
 //!    equally by its tests, the ones named after it (`ex_sphere_coefficients_…`), public and
 //!    hidden alike.
@@ -31,11 +37,14 @@
 
 mod blame;
 mod class;
+pub mod clean;
 pub mod command;
 mod junit;
 mod nextest;
 mod render;
+pub mod runner;
 pub mod sandbox;
+pub mod screen;
 mod splice;
 
 use std::collections::{BTreeMap, BTreeSet};
@@ -50,8 +59,9 @@ pub use class::{ClassEntry, grade_class};
 pub use junit::{MESSAGE_CHARS, panic_message, parse_junit};
 pub use nextest::NEXTEST_PROFILE;
 pub use render::{ChapterFeedback, PICTURE_BYTES, RenderScore};
+pub use screen::screen;
 pub(crate) use splice::hidden_files;
-pub use splice::{compile_time_read, student_body};
+pub use splice::student_body;
 pub use whitted_learn::trees::Against;
 
 /// The graded copy's directory, inside the build directory when grading has one.
@@ -85,6 +95,9 @@ pub struct GradeSetup {
     /// For each graded chapter that lost points, render its figure with the student's code
     /// beside the book's and compare its ray trees with the reference's ([`Grade::feedback`]).
     pub feedback: bool,
+    /// Refuse to compile a body that does more than compute ([`screen()`]). Always on from
+    /// the command line; off only where a test proves the second lock, the runner's, alone.
+    pub screen: bool,
 }
 
 /// What a sandboxed grading needs to know.
@@ -110,6 +123,7 @@ impl Default for GradeSetup {
             sandbox: None,
             render: false,
             feedback: true,
+            screen: true,
         }
     }
 }
@@ -322,8 +336,8 @@ pub fn grade(
     let student = submission
         .canonicalize()
         .ok()
-        .and_then(|p| p.file_name().map(|n| n.to_string_lossy().into_owned()))
-        .unwrap_or_else(|| submission.display().to_string());
+        .and_then(|p| p.file_name().map(|n| clean::clean(&n.to_string_lossy())))
+        .unwrap_or_else(|| clean::clean(&submission.display().to_string()));
     // the graded copy: beside the build directory when there is one, kept from one grading to
     // the next and updated file by file, so that cargo recompiles only what differs from the
     // last submission; else a fresh temporary directory
@@ -347,7 +361,7 @@ pub fn grade(
         }
     };
     // before anything is copied or built: without its sandbox, grading does not start
-    let sandbox = match &options.sandbox {
+    let mut sandbox = match &options.sandbox {
         Some(s) => Some(
             sandbox::Sandbox::probe(&s.runner, s.worker, run_reads(&project), s.level).map_err(
                 |why| {
@@ -359,6 +373,9 @@ pub fn grade(
         ),
         None => None,
     };
+    if let Some(s) = &mut sandbox {
+        s.policy.timeout_ms = u64::try_from(options.timeout.as_millis()).ok();
+    }
     let whole = |f: &Path| whole_in_copy(root, manifest, f);
     files::sync_project(root, &project, &[".config", nextest::STORE], &whole)?;
     if options.keep {
@@ -370,9 +387,15 @@ pub fn grade(
         .as_ref()
         .and_then(|s| s.build_wrapper(&project, &target_dir));
     let mut notes: BTreeMap<usize, String> = BTreeMap::new();
-    // without the sandbox, a body that reads files at compile time is not compiled at all
-    let screen = wrapper.is_none();
-    let mut files = splice::splice(root, manifest, submission, &chapters, screen, &mut notes)?;
+    // a body that does more than compute is not compiled at all, at every sandbox level
+    let mut files = splice::splice(
+        root,
+        manifest,
+        submission,
+        &chapters,
+        options.screen,
+        &mut notes,
+    )?;
     // the student's crate compiles while no hidden test is in the copy, so that a body cannot
     // include one; the hidden targets are added and built after it
     splice::remove_hidden(&project, &target_dir)?;
@@ -406,17 +429,19 @@ pub fn grade(
             });
         }
         if broken.is_empty() {
-            whole.push(format!(
+            whole.push(clean::clean(&format!(
                 "the submission does not build, and not because of an exercise's body: {}",
                 errors[0].1
-            ));
+            )));
             break;
         }
         for (entry, message) in broken {
             let e = &manifest.entries[entry];
             notes.insert(
                 entry,
-                format!("does not compile, graded as not written: {message}"),
+                clean::clean(&format!(
+                    "does not compile, graded as not written: {message}"
+                )),
             );
             for f in &mut files {
                 for (r, body) in &mut f.regions {
@@ -457,6 +482,7 @@ pub fn grade(
             &hidden,
             wrapper.as_ref(),
             sandbox.as_ref(),
+            || splice::strip_hidden(&project, &target_dir),
         )
     } else {
         Ok(Vec::new())

@@ -46,8 +46,11 @@ pub(super) fn write_profile(project: &Path, timeout: Duration) -> Result<(), Too
 
 /// Runs the built targets with nextest's grading profile and reads its JUnit report. What
 /// runs is what was built: nextest is given the binaries that `cargo nextest list` finds
-/// (inside `wrapper`, the build sandbox, when there is one) and builds nothing itself; each
-/// test binary goes through the `sandbox`'s runner when there is one.
+/// (inside `wrapper`, the build sandbox, when there is one) and builds nothing itself, so
+/// `listed_then` may take away what the tests must not see (the hidden tests' sources) between
+/// the listing and the run; each test binary goes through the `sandbox`'s runner when there
+/// is one.
+#[allow(clippy::too_many_arguments)]
 pub(super) fn run(
     project: &Path,
     target_dir: &Path,
@@ -56,6 +59,7 @@ pub(super) fn run(
     hidden: &[String],
     wrapper: Option<&cargo::Wrapper>,
     sandbox: Option<&Sandbox>,
+    listed_then: impl FnOnce() -> Result<(), ToolError>,
 ) -> Result<Vec<TestResult>, ToolError> {
     // in the copy, not the (perhaps shared) target directory: one report per copy
     let store = project.join(STORE);
@@ -101,6 +105,7 @@ pub(super) fn run(
         &["metadata", "--format-version", "1", "--no-deps", "--locked"],
         &metadata,
     )?;
+    listed_then()?;
     let env = match sandbox {
         Some(s) => s.runner_env()?,
         None => Vec::new(),

@@ -152,13 +152,14 @@ pub(super) fn warm(project: &Path, target_dir: &Path, wrapper: Option<&Wrapper>)
     let _ = build_binaries(project, target_dir, &all, wrapper);
 }
 
-/// Reads at most `limit` bytes of the file at `path` as text (empty when it cannot).
+/// Reads at most `limit` bytes of the file at `path` as clean text ([`super::clean`]: the
+/// student's code printed it); empty when it cannot.
 fn read_capped(path: &Path, limit: u64) -> String {
-    let mut text = String::new();
+    let mut bytes = Vec::new();
     if let Ok(f) = std::fs::File::open(path) {
-        let _ = std::io::Read::read_to_string(&mut std::io::Read::take(f, limit), &mut text);
+        let _ = std::io::Read::read_to_end(&mut std::io::Read::take(f, limit), &mut bytes);
     }
-    text
+    super::clean::clean(&String::from_utf8_lossy(&bytes))
 }
 
 /// Runs chapter `chapter`'s binary `exe` on its figure's scene at the figure's settings with

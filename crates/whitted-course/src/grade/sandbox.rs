@@ -9,28 +9,29 @@
 //!   holds nothing secret (the graded copy carries no reference body of a graded exercise and
 //!   no hidden test while the student's crate compiles).
 //! - **Run.** nextest stays outside and writes its report; each test binary it starts goes
-//!   through [`run_test`] (nextest's target runner, `CARGO_TARGET_<TRIPLE>_RUNNER`): a new
+//!   through [`super::runner::run_test`] (nextest's target runner, `CARGO_TARGET_<TRIPLE>_RUNNER`): a new
 //!   root that holds only the system's libraries, the test binary read-only, the files the
 //!   tests read and a small private `/tmp`; namespaces of its own (network, processes, IPC,
 //!   host name, and users when the grader is not root); an empty environment; an
 //!   unprivileged user (as root, a user id of its own per worker, so that its limit on
 //!   processes counts only its own); limits on memory,
-//!   processes, file size and open files (`prlimit`); and its output cut at a size, so a test
-//!   that prints megabytes costs the grader nothing. nextest's time limit stops a test and,
-//!   with it, the sandbox (`--die-with-parent`, and the PID namespace ends with its first
+//!   processes, file size and open files (`prlimit`). The runner cuts its output at a size
+//!   (a test that prints megabytes costs the grader nothing), cleans it, passes a test only
+//!   when libtest reported it `ok`, and ends it a moment before nextest's time limit: the
+//!   sandbox ends with it (`--die-with-parent`, and the PID namespace ends with its first
 //!   process).
 //!
 //! When bubblewrap is missing or cannot make namespaces, [`Sandbox::probe`] says why in one
 //! line; the grader then refuses unless told to grade at [`Level::User`] (as root, in a
 //! container that makes no namespace: the same user, limits and environment without the new
-//! root, the secrets closed by their permissions) or unsandboxed.
+//! root, the secrets closed by their permissions, what the test's user leaves swept) or
+//! unsandboxed ([`Level::Off`]: the runner's verdict, limits and cleaning only).
 //!
 //! Course book: [The instructor's guide](../../../../../docs/book/instructor-guide.html) (`docs/src/instructor-guide.md`).
 
-use std::ffi::{OsStr, OsString};
-use std::io::{Read, Write};
+use std::ffi::OsString;
 use std::path::{Path, PathBuf};
-use std::process::{Command, ExitCode, Stdio};
+use std::process::{Command, Stdio};
 
 use serde::{Deserialize, Serialize};
 
@@ -38,7 +39,7 @@ use crate::ToolError;
 use crate::cargo::Wrapper;
 
 /// The environment variable that carries the run sandbox's policy from the grader to
-/// [`run_test`] (through nextest, which passes its environment to the runner).
+/// [`super::runner::run_test`] (through nextest, which passes its environment to the runner).
 pub const POLICY_VAR: &str = "WHITTED_SANDBOX_POLICY";
 
 /// The hidden subcommand of `whitted` that nextest starts each test binary with.
@@ -54,7 +55,7 @@ pub const FIRST_UID: u32 = 61_000;
 pub const SLOTS: u32 = 64;
 
 /// The environment variable in which nextest tells a test (and its runner) its slot.
-const SLOT_VAR: &str = "NEXTEST_TEST_GLOBAL_SLOT";
+pub(super) const SLOT_VAR: &str = "NEXTEST_TEST_GLOBAL_SLOT";
 
 /// What a test may use.
 #[derive(Clone, Debug, PartialEq, Eq, Serialize, Deserialize)]
@@ -95,11 +96,17 @@ pub enum Level {
     /// Where no namespace can be made (a platform's container), as root: the tests run as a
     /// user of their own with the limits, and what they must not read is closed to other
     /// users; the build is not sandboxed, so a body that would read files at compile time
-    /// is not compiled. The tests keep the network and the machine's shared `/tmp`.
+    /// is not compiled. The tests keep the network; each test has a temporary directory of
+    /// its own, and what its user left in the machine's shared ones is removed when it ends.
     User,
+    /// No sandbox (`--unsandboxed`): the tests run with the grader's rights. The runner still
+    /// passes a test only when libtest reported it `ok`, cleans its output and gives it a
+    /// temporary directory of its own.
+    #[value(skip)]
+    Off,
 }
 
-/// How the tests of one grading are sandboxed: what [`run_test`] reads from [`POLICY_VAR`].
+/// How the tests of one grading are sandboxed: what [`super::runner::run_test`] reads from [`POLICY_VAR`].
 #[derive(Clone, Debug, PartialEq, Eq, Serialize, Deserialize)]
 pub struct Policy {
     /// Namespaces, or a user of its own only.
@@ -119,6 +126,11 @@ pub struct Policy {
     /// Directories the program may write in, shown at their own paths (a render's output:
     /// the grader makes each one empty, for this run only, and owned by the policy's user).
     pub write: Vec<PathBuf>,
+    /// The test's time limit, in milliseconds: the runner ends the test and everything it
+    /// started a moment before nextest's limit, so that nothing outlives a test that ran too
+    /// long. `None` for a program run outside nextest.
+    #[serde(default)]
+    pub timeout_ms: Option<u64>,
 }
 
 /// The sandbox of one worker: found and tried by [`Sandbox::probe`].
@@ -230,12 +242,18 @@ impl Policy {
         self.uid.map(|uid| (uid + self.slot % SLOTS, uid))
     }
 
-    /// Ends every process the test's user (its slot's) still has once the test has ended, at
-    /// the user level (as root): a child left running would count against the next test's limit on
-    /// processes in this slot, and could hold its output open. In namespaces nothing is left:
-    /// the PID namespace ends with the test.
+    /// Ends every process the test's user (its slot's) still has once the test has ended, and
+    /// removes what that user left in the machine's shared temporary directories, at the user
+    /// level (as root): a child left running would count against the next test's limit on
+    /// processes in this slot and could hold its output open, and a file left in `/tmp` could
+    /// carry answers to the next submission. `kill -1` is sent again while a process of the
+    /// user is alive (one that forks as it is killed can slip past one round). In namespaces
+    /// nothing is left: the PID namespace ends with the test, and its `/tmp` is its own.
     pub fn sweep(&self) {
-        if let (Level::User, Some((uid, gid))) = (self.level, self.user()) {
+        let (Level::User, Some((uid, gid))) = (self.level, self.user()) else {
+            return;
+        };
+        for round in 0..50 {
             // kill(-1) as that user reaches that user's processes and no other's
             let _ = Command::new("setpriv")
                 .args([
@@ -251,12 +269,16 @@ impl Policy {
                 .stdout(Stdio::null())
                 .stderr(Stdio::null())
                 .status();
+            if processes_of(&(uid..uid + 1)).is_empty() {
+                break;
+            }
+            std::thread::sleep(std::time::Duration::from_millis(5 * (round + 1)));
         }
+        remove_left_files(&(uid..uid + 1));
     }
 
-    /// [`Policy::sweep`] for every slot of this worker that has a process left (read from
-    /// `/proc`): before a submission's tests, what the one before left; after them, what a
-    /// test killed at its time limit left.
+    /// [`Policy::sweep`] for every slot of this worker: before a submission's tests, what the
+    /// one before left; after them, what a test killed at its time limit left.
     pub fn sweep_all(&self) {
         let (Level::User, Some(first)) = (self.level, self.uid) else {
             return;
@@ -272,6 +294,7 @@ impl Policy {
             }
             .sweep();
         }
+        remove_left_files(&(first..first + SLOTS));
     }
 
     /// The command that runs `bin` in `cwd` under this policy, the test's own arguments to
@@ -285,7 +308,7 @@ impl Policy {
                 c.args(self.namespaces(bin, cwd)).args(&inner);
                 c
             }
-            Level::User => {
+            Level::User | Level::Off => {
                 let mut c = Command::new(&inner[0]);
                 c.args(&inner[1..]);
                 c
@@ -405,6 +428,40 @@ pub fn processes_of(users: &std::ops::Range<u32>) -> Vec<(u32, u32)> {
         .collect()
 }
 
+/// The directories every user may write in, where a test at the user level could leave a
+/// file for a later one.
+pub const SHARED_TEMPORARY: [&str; 4] = ["/tmp", "/var/tmp", "/dev/shm", "/run/lock"];
+
+/// Removes every file and directory owned by one of `users` in [`SHARED_TEMPORARY`], and in
+/// the directories there that every user may write in (two levels down): what a test at the
+/// user level left behind.
+pub fn remove_left_files(users: &std::ops::Range<u32>) {
+    use std::os::unix::fs::{MetadataExt, PermissionsExt};
+    fn walk(dir: &Path, users: &std::ops::Range<u32>, depth: u32) {
+        let Ok(entries) = std::fs::read_dir(dir) else {
+            return;
+        };
+        for e in entries.flatten() {
+            let path = e.path();
+            let Ok(meta) = std::fs::symlink_metadata(&path) else {
+                continue;
+            };
+            if users.contains(&meta.uid()) {
+                let _ = if meta.is_dir() {
+                    std::fs::remove_dir_all(&path)
+                } else {
+                    std::fs::remove_file(&path)
+                };
+            } else if meta.is_dir() && meta.permissions().mode() & 0o002 != 0 && depth > 0 {
+                walk(&path, users, depth - 1);
+            }
+        }
+    }
+    for dir in SHARED_TEMPORARY {
+        walk(Path::new(dir), users, 2);
+    }
+}
+
 /// Whether a user other than the owner can reach `path`: every directory from the root to it
 /// searchable by others (and the path itself readable, when it is a file).
 fn open_to_others(path: &Path) -> bool {
@@ -444,14 +501,15 @@ impl Sandbox {
                         .into(),
                 );
             }
-            Level::User => PathBuf::new(),
+            Level::User | Level::Off => PathBuf::new(),
         };
         for tool in ["setpriv", "prlimit"] {
             if on_path(tool).is_none() {
                 return Err(format!("{tool} (util-linux) is not installed"));
             }
         }
-        let uid = is_root().then(|| FIRST_UID + SLOTS * u32::try_from(worker).unwrap_or(0));
+        let uid = (is_root() && level != Level::Off)
+            .then(|| FIRST_UID + SLOTS * u32::try_from(worker).unwrap_or(0));
         let policy = Policy {
             level,
             bwrap,
@@ -460,6 +518,7 @@ impl Sandbox {
             limits: Limits::default(),
             read,
             write: Vec::new(),
+            timeout_ms: None,
         };
         let truth = on_path("true").ok_or("no `true` program on the PATH".to_string())?;
         let out = policy
@@ -494,10 +553,10 @@ impl Sandbox {
     /// The wrapper cargo builds in: the system (`/usr`, of `/etc` what the linker needs), the
     /// toolchain and the registry (never cargo's credentials) read-only, the graded copy `project` read-only, the build directory `target_dir` writable, a private
     /// `/tmp`, no network; its environment only what cargo needs.
-    /// `None` at [`Level::User`], whose build is not sandboxed.
+    /// `None` at [`Level::User`] and [`Level::Off`], whose build is not sandboxed.
     #[must_use]
     pub fn build_wrapper(&self, project: &Path, target_dir: &Path) -> Option<Wrapper> {
-        if self.policy.level == Level::User {
+        if self.policy.level != Level::Namespaces {
             return None;
         }
         let mut args = Vec::new();
@@ -663,119 +722,4 @@ fn host_triple() -> Option<String> {
         .lines()
         .find_map(|l| l.strip_prefix("host: "))
         .map(|t| t.trim().to_string())
-}
-
-/// Copies what `from` gives to `to`, at most `cap` bytes: its first half as it comes, then,
-/// when there was more, a line saying how much was cut and the last half (where a panic's
-/// message is). Reads to the end either way, so the writer is never blocked, and holds at
-/// most `cap / 2` bytes.
-fn capped(mut from: impl Read, mut to: impl Write, cap: u64) {
-    let half = usize::try_from(cap / 2).unwrap_or(usize::MAX);
-    let mut head = 0usize;
-    let mut tail: std::collections::VecDeque<u8> = std::collections::VecDeque::new();
-    let mut dropped = 0u64;
-    let mut buf = [0u8; 16 * 1024];
-    loop {
-        let n = match from.read(&mut buf) {
-            Ok(0) | Err(_) => break,
-            Ok(n) => n,
-        };
-        let take = n.min(half - head);
-        if take > 0 {
-            let _ = to.write_all(&buf[..take]);
-            let _ = to.flush();
-            head += take;
-        }
-        tail.extend(&buf[take..n]);
-        if tail.len() > half {
-            let extra = tail.len() - half;
-            tail.drain(..extra);
-            dropped += extra as u64;
-        }
-    }
-    if dropped > 0 {
-        let _ = writeln!(to, "\n[whitted: {dropped} bytes of output cut here]");
-    }
-    let (a, b) = tail.as_slices();
-    let _ = to.write_all(a);
-    let _ = to.write_all(b);
-    let _ = to.flush();
-}
-
-/// The target runner: runs the test binary `command[0]` with its arguments in the sandbox
-/// that [`POLICY_VAR`] describes, passes its output on (cut at the policy's size) and ends as
-/// it ended (by the same signal when it was killed, so that nextest sees a crash).
-#[must_use]
-pub fn run_test(command: &[OsString]) -> ExitCode {
-    let fail = |why: String| {
-        eprintln!("whitted {RUNNER_COMMAND}: {why}");
-        ExitCode::from(2)
-    };
-    let Some((bin, args)) = command.split_first() else {
-        return fail("no test binary to run".into());
-    };
-    let mut policy: Policy = match std::env::var(POLICY_VAR)
-        .map_err(|e| e.to_string())
-        .and_then(|t| serde_json::from_str(&t).map_err(|e| e.to_string()))
-    {
-        Ok(p) => p,
-        Err(e) => return fail(format!("no sandbox policy in {POLICY_VAR}: {e}")),
-    };
-    // a test has a slot no other running test has; a listing of the tests (`--list`) has
-    // none, and runs beside the other listings
-    let slot: Option<u32> = std::env::var(SLOT_VAR).ok().and_then(|s| s.parse().ok());
-    policy.slot = slot.unwrap_or(0);
-    let bin = Path::new(bin);
-    let cwd = std::env::current_dir().unwrap_or_else(|_| PathBuf::from("/tmp"));
-    let mut child = match policy
-        .command(bin, &cwd)
-        .args(args)
-        .stdout(Stdio::piped())
-        .stderr(Stdio::piped())
-        .spawn()
-    {
-        Ok(c) => c,
-        Err(e) => return fail(format!("cannot start the sandbox: {e}")),
-    };
-    let cap = policy.limits.output;
-    let (out, err) = (child.stdout.take(), child.stderr.take());
-    // the output is read while the test runs; once it ends, what it left behind is ended
-    // too, which closes the output a left-over child may hold open
-    let waited = std::thread::scope(|s| {
-        if let Some(err) = err {
-            s.spawn(move || capped(err, std::io::stderr(), cap));
-        }
-        if let Some(out) = out {
-            s.spawn(move || capped(out, std::io::stdout(), cap));
-        }
-        let waited = child.wait();
-        if slot.is_some() {
-            policy.sweep();
-        }
-        waited
-    });
-    let status = match waited {
-        Ok(s) => s,
-        Err(e) => return fail(format!("waiting for the sandbox: {e}")),
-    };
-    // killed by signal N (bubblewrap ends with 128 + N then): end the same way
-    let signal = {
-        use std::os::unix::process::ExitStatusExt;
-        status.signal().or_else(|| {
-            status
-                .code()
-                .filter(|c| (129..=128 + 31).contains(c))
-                .map(|c| c - 128)
-        })
-    };
-    let code = status.code().unwrap_or(1);
-    if let Some(signal) = signal {
-        let signal = signal.to_string();
-        let _ = Command::new("kill")
-            .args([OsStr::new("-s"), OsStr::new(&signal)])
-            .arg(std::process::id().to_string())
-            .status();
-        std::thread::sleep(std::time::Duration::from_millis(200));
-    }
-    ExitCode::from(u8::try_from(code).unwrap_or(1))
 }

@@ -89,65 +89,11 @@ impl Spliced {
     }
 }
 
-/// The macros that read files or the build's environment at compile time.
-const COMPILE_TIME_READS: [&str; 5] = [
-    "include",
-    "include_str",
-    "include_bytes",
-    "env",
-    "option_env",
-];
-
-/// What in `body` would read a file or the environment when it compiles: `include!`,
-/// `include_str!`, `include_bytes!`, `env!` or `option_env!` (by any path,
-/// `std::include_str!` too) or a `#[path = …]`
-/// attribute, named as the body writes it; or that its delimiters do not balance (a body that
-/// closes its function could add items of its own). `None` when it reads nothing. A
-/// submission cannot make such a macro up otherwise: it has no procedural macro of its own,
-/// and `macro_rules!` pastes only the tokens it is given.
-#[must_use]
-pub fn compile_time_read(body: &str) -> Option<String> {
-    use proc_macro2::{TokenStream, TokenTree};
-    fn walk(tokens: TokenStream) -> Option<String> {
-        let tokens: Vec<TokenTree> = tokens.into_iter().collect();
-        for (i, t) in tokens.iter().enumerate() {
-            match t {
-                TokenTree::Ident(id) => {
-                    let name = id.to_string();
-                    let name = name.trim_start_matches("r#");
-                    let bang = matches!(tokens.get(i + 1), Some(TokenTree::Punct(p)) if p.as_char() == '!');
-                    if bang && COMPILE_TIME_READS.contains(&name) {
-                        return Some(format!("`{name}!`"));
-                    }
-                }
-                TokenTree::Group(g) => {
-                    let after_hash = i > 0
-                        && matches!(&tokens[i - 1], TokenTree::Punct(p) if p.as_char() == '#');
-                    let first = g.stream().into_iter().next();
-                    if after_hash && matches!(first, Some(TokenTree::Ident(ref id)) if id == "path")
-                    {
-                        return Some("`#[path = …]`".into());
-                    }
-                    if let Some(found) = walk(g.stream()) {
-                        return Some(found);
-                    }
-                }
-                _ => {}
-            }
-        }
-        None
-    }
-    match body.parse::<TokenStream>() {
-        Ok(tokens) => walk(tokens),
-        Err(_) => Some("delimiters that do not balance".into()),
-    }
-}
-
 /// The graded copy's source files with the student's bodies in the regions of `chapters`
 /// (the other regions keep the reference code). A body that cannot be found is noted and
-/// replaced by the exercise's `todo!()`; so is, when `screen` (grading without the sandbox,
-/// whose build shows no file worth reading), a body that would read files or the environment
-/// at compile time ([`compile_time_read`]).
+/// replaced by the exercise's `todo!()`; so is, when `screen` (always, but for a test of the
+/// runner's lock alone), a body that does more than compute ([`super::screen::screen`]): it
+/// is never compiled.
 pub(super) fn splice(
     root: &Path,
     manifest: &Manifest,
@@ -161,14 +107,14 @@ pub(super) fn splice(
         let e = &manifest.entries[r.entry];
         let body = if chapters.contains(&e.chapter) {
             student_body(submission, &r, &e.exercise.name)
-                .and_then(|body| match compile_time_read(&body).filter(|_| screen) {
+                .and_then(|body| match super::screen::screen(&body).filter(|_| screen) {
                     Some(what) => Err(format!(
-                        "uses {what}, which reads files or the environment when it compiles; without the sandbox the grader does not compile it: graded as not written"
+                        "uses {what}, which a formula never needs: the grader compiles no body that could end or start a process, reach a file, the network or the environment, or read anything at compile time; graded as not written"
                     )),
                     None => Ok(body),
                 })
                 .unwrap_or_else(|why| {
-                    notes.insert(r.entry, why);
+                    notes.insert(r.entry, super::clean::clean(&why));
                     format!("{}{}\n", r.indent, handout::todo_statement(e))
                 })
         } else {
@@ -243,6 +189,51 @@ pub(super) fn seal_hidden(target_dir: &Path) -> Result<(), ToolError> {
             };
             std::fs::set_permissions(&path, std::fs::Permissions::from_mode(mode))
                 .map_err(|err| ToolError::io(&path, err))?;
+        }
+    }
+    Ok(())
+}
+
+/// Once the hidden tests' binaries are built and listed, removes everything else of them
+/// that a test could read while they run: their sources in the copy (a test's working
+/// directory is inside the copy, so a relative path would reach them however the copy's root
+/// is closed), their incremental caches and the compiler's messages cargo keeps with their
+/// fingerprints (both quote their text). They are built again, from the hidden directory,
+/// for the next submission.
+pub(super) fn strip_hidden(project: &Path, target_dir: &Path) -> Result<(), ToolError> {
+    let is_hidden = |name: &std::ffi::OsStr| name.to_string_lossy().contains("hidden_");
+    let sources = project.join(layout::core_tests());
+    for e in std::fs::read_dir(&sources).into_iter().flatten().flatten() {
+        if e.file_name().to_string_lossy().starts_with("hidden_") {
+            let path = e.path();
+            std::fs::remove_file(&path).map_err(|err| ToolError::io(&path, err))?;
+        }
+    }
+    let debug = target_dir.join("debug");
+    for e in std::fs::read_dir(debug.join("incremental"))
+        .into_iter()
+        .flatten()
+        .flatten()
+    {
+        if is_hidden(&e.file_name()) {
+            let path = e.path();
+            std::fs::remove_dir_all(&path).map_err(|err| ToolError::io(&path, err))?;
+        }
+    }
+    for unit in std::fs::read_dir(debug.join(".fingerprint"))
+        .into_iter()
+        .flatten()
+        .flatten()
+    {
+        for e in std::fs::read_dir(unit.path())
+            .into_iter()
+            .flatten()
+            .flatten()
+        {
+            if is_hidden(&e.file_name()) {
+                let path = e.path();
+                std::fs::remove_file(&path).map_err(|err| ToolError::io(&path, err))?;
+            }
         }
     }
     Ok(())
