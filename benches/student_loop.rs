@@ -11,6 +11,7 @@
 //!     [--runs N]    first verdicts on N fresh handouts (median), default 1
 //!     [--saves N]   put back N exercises spread over the chapters, default all
 //!     [--no-grade]  skip the grading
+//!     [--load N]    keep N threads busy beside it the whole time (a loaded machine: load N)
 //! ```
 //!
 //! The verdict is the first line of `cargo learn`'s report, the picture the `✓ picture:` or
@@ -18,7 +19,9 @@
 //! difference). Every cargo it runs is the course tools' one runner ([`whitted_learn::cargo::command`]),
 //! every exercise is found by its name's markers, and copies are [`whitted_learn::files`]'.
 //! Times are wall-clock, medians and 90th percentiles of the saves; the machine should be
-//! otherwise idle.
+//! otherwise idle, or loaded on purpose with `--load`: N threads of this process that spin at
+//! the normal priority from before the first handout to the end, as a student's browser, editor
+//! and other builds would (`--load 2` on two cores: a load average of 2 besides the loop).
 
 use std::io::{BufRead, BufReader};
 use std::path::{Path, PathBuf};
@@ -48,6 +51,7 @@ struct Args {
     runs: usize,
     saves: Option<usize>,
     grade: bool,
+    load: usize,
 }
 
 fn args() -> Result<Args, String> {
@@ -56,6 +60,7 @@ fn args() -> Result<Args, String> {
         runs: 1,
         saves: None,
         grade: true,
+        load: 0,
     };
     let mut it = std::env::args().skip(1);
     while let Some(a) = it.next() {
@@ -75,6 +80,11 @@ fn args() -> Result<Args, String> {
                 )
             }
             "--no-grade" => out.grade = false,
+            "--load" => {
+                out.load = value("--load")?
+                    .parse()
+                    .map_err(|e| format!("--load: {e}"))?;
+            }
             "--bench" => {} // what `cargo bench` adds
             other => {
                 return Err(format!(
@@ -237,6 +247,7 @@ fn main() {
     let mut warm = TOOL.to_vec();
     warm.push("--version");
     let _ = cargo(&args.project, &warm).output();
+    let _load = Load::start(args.load);
 
     let verdict_marks: &[&str] = &["✗", "✓"];
     // a picture drawn, the same as the book's or not (a chapter that cannot render yet is none)
@@ -320,6 +331,9 @@ fn main() {
         grade = Some(second);
     }
 
+    if args.load > 0 {
+        println!("(with {} busy threads beside the loop)", args.load);
+    }
     println!("| measure | this project |");
     println!("|---|---:|");
     println!(
@@ -345,5 +359,45 @@ fn main() {
     );
     if let Some(g) = grade {
         println!("| grading one submission, after the first | {g:.1} s |");
+    }
+}
+
+/// Threads that keep the cores busy until dropped (`--load`).
+struct Load {
+    stop: std::sync::Arc<std::sync::atomic::AtomicBool>,
+    threads: Vec<std::thread::JoinHandle<()>>,
+}
+
+impl Load {
+    /// Starts `n` spinning threads.
+    fn start(n: usize) -> Self {
+        use std::sync::atomic::{AtomicBool, Ordering};
+        let stop = std::sync::Arc::new(AtomicBool::new(false));
+        let threads = (0..n)
+            .map(|_| {
+                let stop = stop.clone();
+                std::thread::spawn(move || {
+                    let mut x = 0u64;
+                    while !stop.load(Ordering::Relaxed) {
+                        x = std::hint::black_box(
+                            x.wrapping_mul(6364136223846793005).wrapping_add(1),
+                        );
+                    }
+                })
+            })
+            .collect();
+        if n > 0 {
+            eprintln!("{n} busy threads beside the loop");
+        }
+        Self { stop, threads }
+    }
+}
+
+impl Drop for Load {
+    fn drop(&mut self) {
+        self.stop.store(true, std::sync::atomic::Ordering::Relaxed);
+        for t in self.threads.drain(..) {
+            let _ = t.join();
+        }
     }
 }

@@ -169,7 +169,7 @@ fn a_number_moved_is_found_at_its_node_with_both_values() {
     assert_eq!(d.path_text(), "camera ray → hit `floor` → light 1");
     assert_eq!(d.symbol, "ρd·max(n·s, 0)");
     assert_eq!(d.functions, ["shading::lambert", "shading::phong"]);
-    assert!(d.text().contains("(reference ("), "{}", d.text());
+    assert!(d.text().contains("(the reference: ("), "{}", d.text());
 }
 
 /// A tree of another shape differs where the shapes part: another object hit (or none), an

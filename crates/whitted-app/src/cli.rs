@@ -117,6 +117,14 @@ choice!(View {
     View::Depth => "the distance to the nearest hit, near = white, far = grey (scale 1/d)",
     View::Shadows => "which lights reach each point: light 0 red, 1 green, 2 blue",
     View::Rays => "the rays each pixel casts, black (1) to white (the most possible)",
+    View::Ambient => "exercise 3.1: the ambient term I_a = ρa·I_m alone",
+    View::Attenuation => "exercise 3.2: each light's attenuation, in its colour (light 0 red, 1 green, 2 blue)",
+    View::Diffuse => "exercise 3.3: each light's max(n·s, 0), in its colour; magenta: outside [0, 1]",
+    View::Mirror => "exercise 3.4: the first light's mirror direction r, (r + 1)/2",
+    View::Highlight => "exercise 3.5: each light's max(r·v, 0)^f, in its colour; magenta: outside [0, 1]",
+    View::Direct => "exercise 3.6: I_d + I_s of every light, no ambient term, no shadows",
+    View::Refracted => "exercise 5.3: the transmitted direction t of a translucent hit, (t + 1)/2",
+    View::Mirrored => "exercise 5.4: the mirror ray's direction of a reflective hit, (l + 1)/2",
 });
 
 choice!(Accel {

@@ -20,7 +20,7 @@
 //! for people and for `cargo learn`:
 //!
 //! ```text
-//! compare: 312 of 28800 pixels differ by more than 2/255 (1.08%), by up to 87/255; the first at (17, 40)
+//! compare: 312 of 28800 pixels differ by more than 2/255 (1.08%), by up to 87/255; the first at (17, 40), where the render has (255, 0, 255) and the reference (0, 66, 12)
 //! compare: the same as the reference (no pixel differs by more than 2/255)
 //! ```
 //!
@@ -119,6 +119,8 @@ pub struct Comparison {
     pub pixels: usize,
     /// The first differing pixel in row order, (x, y) from the top left.
     pub first: Option<(u32, u32)>,
+    /// The first differing pixel's bytes in the render and in the reference.
+    pub first_bytes: Option<([u8; 3], [u8; 3])>,
     /// The largest difference of a channel over the whole image, in steps of 255.
     pub largest: u8,
     /// The reference in dimmed grey with each differing pixel marked ([`marked`]).
@@ -142,13 +144,23 @@ impl Comparison {
                     "compare: the same as the reference (no pixel differs by more than {tol}/255)"
                 )
             }
-            Some((x, y)) => format!(
-                "compare: {} of {} pixels differ by more than {tol}/255 ({}), by up to {}/255; the first at ({x}, {y})",
-                self.differing,
-                self.pixels,
-                percent(self.differing, self.pixels),
-                self.largest
-            ),
+            Some((x, y)) => {
+                let bytes = |c: [u8; 3]| format!("({}, {}, {})", c[0], c[1], c[2]);
+                let values = self.first_bytes.map_or(String::new(), |(r, e)| {
+                    format!(
+                        ", where the render has {} and the reference {}",
+                        bytes(r),
+                        bytes(e)
+                    )
+                });
+                format!(
+                    "compare: {} of {} pixels differ by more than {tol}/255 ({}), by up to {}/255; the first at ({x}, {y}){values}",
+                    self.differing,
+                    self.pixels,
+                    percent(self.differing, self.pixels),
+                    self.largest
+                )
+            }
         }
     }
 
@@ -199,6 +211,7 @@ pub fn compare(render: &Image, reference: &Image) -> Result<Comparison, SizeMism
     let width = render.width as usize;
     let mut differing = 0;
     let mut first = None;
+    let mut first_bytes = None;
     let mut largest = 0;
     let mut rgb = Vec::with_capacity(reference.rgb.len());
     let pairs = render
@@ -212,7 +225,10 @@ pub fn compare(render: &Image, reference: &Image) -> Result<Comparison, SizeMism
         largest = largest.max(off);
         if off > TOLERANCE {
             differing += 1;
-            first.get_or_insert(((i % width) as u32, (i / width) as u32));
+            if first.is_none() {
+                first = Some(((i % width) as u32, (i / width) as u32));
+                first_bytes = Some((r, e));
+            }
         }
         rgb.extend_from_slice(&marked(r, e));
     }
@@ -220,6 +236,7 @@ pub fn compare(render: &Image, reference: &Image) -> Result<Comparison, SizeMism
         differing,
         pixels: render.rgb.len() / 3,
         first,
+        first_bytes,
         largest,
         difference: Image {
             width: reference.width,
@@ -321,6 +338,7 @@ mod tests {
         let c = compare(&render(), &image(REFERENCE)).unwrap();
         assert_eq!((c.differing, c.pixels), (2, 6));
         assert_eq!(c.first, Some((1, 0)));
+        assert_eq!(c.first_bytes, Some(([100, 100, 103], [100, 100, 100])));
         assert_eq!(c.largest, 200);
         assert!(!c.same());
     }
@@ -435,7 +453,7 @@ mod tests {
         let c = compare(&render(), &image(REFERENCE)).unwrap();
         assert_eq!(
             c.line(),
-            "compare: 2 of 6 pixels differ by more than 2/255 (33.33%), by up to 200/255; the first at (1, 0)"
+            "compare: 2 of 6 pixels differ by more than 2/255 (33.33%), by up to 200/255; the first at (1, 0), where the render has (100, 100, 103) and the reference (100, 100, 100)"
         );
         assert_eq!(c.count(), "2 of 6 pixels differ by more than 2/255");
         let same = compare(&image(REFERENCE), &image(REFERENCE)).unwrap();

@@ -92,8 +92,8 @@ fn a_tree_that_differs_is_one_line_with_the_node_the_quantity_and_the_functions(
     let line = text.lines().next().unwrap();
     assert!(
         line.starts_with(&format!(
-            "against: pixel ({x}, {y}), camera ray → hit `floor`: t = "
-        )) && line.contains("(reference ")
+            "against: pixel ({x}, {y}), camera ray → hit `floor`: t: "
+        )) && line.contains("(the reference: ")
             && line.contains("computed by shapes::plane::intersect"),
         "{text}"
     );

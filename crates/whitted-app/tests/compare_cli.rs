@@ -163,8 +163,21 @@ fn a_changed_reference_is_reported_pixel_by_pixel() {
     let line = text(&o.stdout);
     assert!(
         line.starts_with("compare: 3 of 32400 pixels differ by more than 2/255 (0.01%), by up to ")
-            && line.ends_with("; the first at (17, 40)\n"),
+            && line.contains("; the first at (17, 40), where the render has "),
         "{line}"
+    );
+    // the first pixel's bytes: the render's are the figure's, the reference's moved by 128
+    let rendered = read(&figure(chapter));
+    let i = 3 * (40 * w + 17) as usize;
+    let bytes = |p: &[u8]| format!("({}, {}, {})", p[0], p[1], p[2]);
+    let said = format!(
+        "where the render has {} and the reference {}\n",
+        bytes(&rendered.rgb[i..i + 3]),
+        bytes(&fig.rgb[i..i + 3])
+    );
+    assert!(
+        line.ends_with(&said),
+        "computed {line:?}, expected it to end {said:?}"
     );
     let out = read(&dir.path().join("out.png"));
     assert_eq!(

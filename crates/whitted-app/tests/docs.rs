@@ -106,6 +106,34 @@ fn the_books_legend_is_the_overlays() {
 
 // ---- the command line -------------------------------------------------------------------
 
+/// [`token`], its list of values cut after every [`VALUES_A_LINE`] values so that the usage
+/// wraps a long list (the views) over several lines: `[--view a|b|c`, `|d|e]`.
+fn tokens_of(arg: &clap::Arg) -> Vec<String> {
+    let whole = token(arg);
+    let Some((flag, list)) = whole.split_once(' ') else {
+        return vec![whole];
+    };
+    let values: Vec<&str> = list.split('|').collect();
+    if values.len() <= VALUES_A_LINE {
+        return vec![whole];
+    }
+    values
+        .chunks(VALUES_A_LINE)
+        .enumerate()
+        .map(|(k, chunk)| {
+            let joined = chunk.join("|");
+            if k == 0 {
+                format!("{flag} {joined}")
+            } else {
+                format!("|{joined}")
+            }
+        })
+        .collect()
+}
+
+/// The most values of a choice one line of the usage lists.
+const VALUES_A_LINE: usize = 6;
+
 /// How a usage line writes an argument: `[SCENE]`, `[-o OUT.png]`, `[--width W]`,
 /// `[--view color|flat|…]`, `[--quiet]`.
 fn token(arg: &clap::Arg) -> String {
@@ -179,7 +207,7 @@ fn usage_block() -> String {
     let mut offered: Vec<(Chapter, Vec<String>)> = Vec::new();
     let mut seen: BTreeSet<String> = BTreeSet::new();
     for chapter in Chapter::ALL {
-        let tokens: Vec<String> = arguments(chapter).iter().map(token).collect();
+        let tokens: Vec<String> = arguments(chapter).iter().flat_map(tokens_of).collect();
         for earlier in &seen {
             assert!(
                 tokens.contains(earlier),
@@ -223,7 +251,7 @@ fn chapter_usage(chapter: Chapter) -> String {
         "cargo run --release --bin {} --",
         chapter.about().binary
     )];
-    tokens.extend(arguments(chapter).iter().map(token));
+    tokens.extend(arguments(chapter).iter().flat_map(tokens_of));
     let lines = wrap(&tokens, 96);
     format!("```text\n{}\n```\n", lines.join("\n      "))
 }

@@ -81,5 +81,5 @@ pub mod source;
 pub mod trees;
 
 pub use whitted_learn::{
-    ToolError, args, cargo, cli, files, layout, learn, manifest, map, syllabus,
+    ToolError, args, cargo, cli, files, layout, learn, manifest, map, picture, syllabus,
 };

@@ -68,6 +68,11 @@ pub struct Mutant {
     pub find: String,
     /// What it puts there.
     pub replace: String,
+    /// Why its chapter's scene cannot show it, when it cannot: then no kept number and no
+    /// pixel of the chapter's picture moves, its own tests alone catch it, and `whitted trees
+    /// --check` accepts that it has no fingerprint. Every other mutant must have one.
+    #[serde(default)]
+    pub unseen: Option<String>,
 }
 
 #[derive(Deserialize)]

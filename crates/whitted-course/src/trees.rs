@@ -7,11 +7,11 @@
 //! [`STEP`]-th row (`--inspect-grid`). Of those pixels, a few are kept, chosen greedily so
 //! that together they show every [feature](features) of the scene's trees: each object and
 //! each part of it hit (by any ray), each light lit, in shadow, in a translucent shadow and
-//! behind the surface, each kind of branch and each reason a branch stops (total internal
-//! reflection among them), a miss, and each quarter of the image. Only *steady* pixels are
-//! kept: pixels whose neighbours at [`STEP`] pixels all have trees of the same shape
-//! ([`signature`]), so that a tree traced in f32, or with a formula written in another
-//! correct way, has the reference's shape there too.
+//! behind the surface, each light's highlight, each kind of branch and each reason a branch
+//! stops (total internal reflection among them), a miss, and each quarter of the image. Only
+//! *steady* pixels are kept: pixels whose neighbours at [`STEP`] pixels all have trees of the
+//! same shape ([`signature`]), so that a tree traced in f32, or with a formula written in
+//! another correct way, has the reference's shape there too.
 //!
 //! Then the course's known mistakes ([`crate::mistakes`]) are applied to the reference one
 //! at a time (one build, each behind a switch), and each one's chapter is traced `--against`
@@ -51,6 +51,12 @@ pub use whitted_learn::trees::{MISTAKES, Mistakes, trees_file};
 /// The distance in pixels between the pixels whose trees are traced to choose from: every
 /// pixel, so that a steady pixel's neighbours are the pixels next to it.
 pub const STEP: u32 = 1;
+
+/// The specular factor ρs·max(r·v, 0)^f (its largest channel) from which a light's term at a
+/// hit is a highlight, a feature the pixels kept must show: a mistake in r or in the
+/// highlight then changes a number a kept tree holds, not only numbers of order 10⁻⁵ at the
+/// edge of a highlight.
+pub const HIGHLIGHT: f64 = 0.05;
 
 /// The words the pixels a known mistake adds are kept for.
 const MISTAKE_SHOWS: &str = "a known mistake of exercise";
@@ -225,8 +231,9 @@ pub fn signature(tree: &Value) -> String {
 }
 
 /// What a tree shows, for the choice of pixels: each object and part its rays hit (and leave),
-/// each light's fate at a hit, each kind of branch and stop, a camera ray's miss, and the
-/// quarter of the image (of `size`) its pixel lies in.
+/// each light's fate at a hit, each light's highlight (a specular factor of at least
+/// [`HIGHLIGHT`] reaching the point), each kind of branch and stop, a camera ray's miss, and
+/// the quarter of the image (of `size`) its pixel lies in.
 #[must_use]
 pub fn features(tree: &Value, size: (u32, u32)) -> BTreeSet<String> {
     fn ray(r: &Value, out: &mut BTreeSet<String>) {
@@ -259,6 +266,16 @@ pub fn features(tree: &Value, size: (u32, u32)) -> BTreeSet<String> {
                 "in a translucent shadow"
             };
             out.insert(format!("light {}: {fate}", l["index"]));
+            // ρs·max(r·v, 0)^f, the largest of its channels: a highlight that reaches the point
+            let specular = l["specular"]
+                .as_array()
+                .into_iter()
+                .flatten()
+                .filter_map(Value::as_f64)
+                .fold(0.0, f64::max);
+            if specular >= HIGHLIGHT && share > 0.0 {
+                out.insert(format!("light {}: a highlight", l["index"]));
+            }
         }
         for s in h["stopped"].as_array().into_iter().flatten() {
             let why = s["why"].as_str().unwrap_or("?").replace('_', " ");
@@ -754,13 +771,60 @@ fn check_all(root: &Path, figures: &[Figure]) -> Result<ExitCode, ToolError> {
             }
         }
     }
-    if differ > 0 {
+    let unseen = mistakes_unseen(
+        &mistakes::load(root)?,
+        &whitted_learn::trees::load_mistakes(root),
+    );
+    for problem in &unseen {
+        println!("{problem}");
+    }
+    if differ > 0 || !unseen.is_empty() {
         println!(
-            "{differ} of {n} trees files differ from the reference: if the change is meant, run `whitted trees` and commit them (and chapters/mistakes.json)"
+            "{differ} of {n} trees files differ from the reference, {} mistakes are not told: if the change is meant, run `whitted trees` and commit them (and chapters/mistakes.json)",
+            unseen.len()
         );
         return Ok(ExitCode::from(1));
     }
+    println!(
+        "each of the {} hand-written mistakes moves a kept number or a pixel of its chapter, or says why its scene cannot show it",
+        mistakes::load(root)?.len()
+    );
     Ok(ExitCode::SUCCESS)
+}
+
+/// What is wrong with the known mistakes' fingerprints `known` (`chapters/mistakes.json`) for
+/// the hand-written mutants `mutants`: each mutant must move some kept number or some pixel of
+/// its chapter's picture (a fingerprint with a differing tree or pixel), unless it says why its
+/// chapter's scene cannot show it (`unseen`), and then it must have none; every fingerprint
+/// must be a mutant's. One line a problem; none when all is well.
+#[must_use]
+pub fn mistakes_unseen(mutants: &[Mutant], known: &[Mistake]) -> Vec<String> {
+    let mut out = Vec::new();
+    for m in mutants {
+        let found = known.iter().find(|k| k.name == m.name);
+        let moves =
+            found.is_some_and(|k| !k.fingerprint.pixels.is_empty() || k.fingerprint.picture.0 > 0);
+        match (&m.unseen, moves) {
+            (None, false) => out.push(format!(
+                "mistake {} ({}): no kept number and no pixel of its chapter moves",
+                m.name, m.exercise
+            )),
+            (Some(why), true) => out.push(format!(
+                "mistake {} ({}): its chapter shows it now, though `unseen` says \"{why}\"",
+                m.name, m.exercise
+            )),
+            _ => {}
+        }
+    }
+    for k in known {
+        if !mutants.iter().any(|m| m.name == k.name) {
+            out.push(format!(
+                "mistake {} in chapters/mistakes.json is no hand-written mutant",
+                k.name
+            ));
+        }
+    }
+    out
 }
 
 /// Pixels as `(x, y) (x, y) …`.

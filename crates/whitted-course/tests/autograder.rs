@@ -664,7 +664,7 @@ fn the_feedback_of_a_chapter_reaches_every_report() {
     let m = manifest();
     let mut g = grade_of(&m);
     let between = m.by_name("blocks_light").unwrap();
-    let text = "pixel (7, 9), camera ray → hit `floor` → light 0 → feeler: the objects crossed = `ceiling` (reference nothing)";
+    let text = "pixel (7, 9), camera ray → hit `floor` → light 0 → feeler: the objects crossed: `ceiling` (the reference: nothing)";
     let png = b"\x89PNG\r\n\x1a\n and the rest of it".to_vec();
     g.feedback = vec![grade::ChapterFeedback {
         chapter: 4,

@@ -39,6 +39,7 @@ task = "Return ρ_a·I_m."
 hints = ["Per channel.", "A product of two vectors."]
 points = 1
 first_check = "is_per_channel"
+picture = "ch03-ambient.png"
 
 [handout]
 tests = ["ch03_shading", "render_paths"]
@@ -91,6 +92,7 @@ fn a_good_manifest_reads_every_entry_in_order() {
                     hints: vec!["Half the angle.".into(), "Degrees to radians.".into()],
                     points: 2,
                     first_check: None,
+                    picture: None,
                 },
             },
             Entry {
@@ -107,6 +109,7 @@ fn a_good_manifest_reads_every_entry_in_order() {
                     hints: vec!["Per channel.".into(), "A product of two vectors.".into()],
                     points: 1,
                     first_check: Some("is_per_channel".into()),
+                    picture: Some("ch03-ambient.png".into()),
                 },
             },
         ]
@@ -126,6 +129,23 @@ fn a_first_check_that_is_no_test_name_is_an_error_at_its_value() {
         message.starts_with("first_check: expected the rest of a test's name after `ex_ambient_`"),
         "{message}"
     );
+}
+
+/// A picture that is not a figure's plain file name is refused at its value.
+#[test]
+fn a_picture_that_is_no_figure_file_is_an_error_at_its_value() {
+    for wrong in ["figures/ch03-ambient.png", "ch03-ambient", ".png"] {
+        let bad = GOOD.replace(
+            "picture = \"ch03-ambient.png\"",
+            &format!("picture = \"{wrong}\""),
+        );
+        let (line, col, message) = manifest_error(&bad);
+        assert_eq!((line, col), (27, 11), "{wrong}: {message}");
+        assert!(
+            message.starts_with("picture: expected a figure's file name ending in .png"),
+            "{wrong}: {message}"
+        );
+    }
 }
 
 /// A key the format does not have is refused where it stands, in an entry or in [prove].

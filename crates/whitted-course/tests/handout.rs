@@ -14,6 +14,7 @@ use whitted_course::cargo::{TestRun, test_name};
 use whitted_course::handout::{self, BEGIN, END};
 use whitted_course::learn::{self, State, Style};
 use whitted_course::manifest::Manifest;
+use whitted_course::picture;
 use whitted_course::syllabus::todo;
 
 /// Every file under `dir`, relative, with its text (binary files left out).
@@ -442,7 +443,7 @@ fn learn_gives_the_verdict_and_the_progress() {
         progress.contains(&format!("0 of {n} exercises done")),
         "{progress}"
     );
-    assert_eq!(learn::drawable_chapter(&m, &states), None);
+    assert_eq!(picture::drawable_chapter(&m, &states), None);
 
     // half-way: the chapters before are full, the next exercise is the first not done
     let half = n / 2;
@@ -454,7 +455,7 @@ fn learn_gives_the_verdict_and_the_progress() {
         "{progress}"
     );
     let chapter = m.entries[half].chapter;
-    assert_eq!(learn::drawable_chapter(&m, &states), Some(chapter - 1));
+    assert_eq!(picture::drawable_chapter(&m, &states), Some(chapter - 1));
 
     let states = learn::states(&m, &run_with_done(&m, n));
     let progress = learn::progress(&m, &states, Style::plain());
@@ -462,13 +463,13 @@ fn learn_gives_the_verdict_and_the_progress() {
         progress.contains(&format!("{n} of {n} exercises done")),
         "{progress}"
     );
-    assert_eq!(learn::drawable_chapter(&m, &states), Some(5));
+    assert_eq!(picture::drawable_chapter(&m, &states), Some(5));
     // the picture: the chapter that turned green, else the next exercise's, else the last
     let i31 = m.find("3.1").unwrap();
     let mut before = states.clone();
     before[i31] = State::ToDo;
-    assert_eq!(learn::picture_chapter(&m, &before, &states), 3);
-    assert_eq!(learn::picture_chapter(&m, &states, &states), 5);
+    assert_eq!(picture::picture_chapter(&m, &before, &states), 3);
+    assert_eq!(picture::picture_chapter(&m, &states, &states), 5);
     // the first exercise of chapter 3 turns chapters 3 to 5 green at once (their road's tests
     // waited for it): the picture is chapter 3's, where the student was working
     let mut waiting = states.clone();
@@ -478,20 +479,168 @@ fn learn_gives_the_verdict_and_the_progress() {
         }
     }
     waiting[i31] = State::ToDo;
-    assert_eq!(learn::picture_chapter(&m, &waiting, &states), 3);
+    assert_eq!(picture::picture_chapter(&m, &waiting, &states), 3);
     // with nothing turning green, the chapter of the next exercise: 2.2 after eight
     let eight = learn::states(&m, &run_with_done(&m, 8));
     assert_eq!(m.entries[8].chapter, 2);
-    assert_eq!(learn::picture_chapter(&m, &eight, &eight), 2);
+    assert_eq!(picture::picture_chapter(&m, &eight, &eight), 2);
     // chapter 1 turning green shows chapter 1, though the next exercise is chapter 2's
     let seven = learn::states(&m, &run_with_done(&m, 7));
     let six = learn::states(&m, &run_with_done(&m, 6));
     assert_eq!(m.entries[7].chapter, 2);
-    assert_eq!(learn::picture_chapter(&m, &six, &seven), 1);
+    assert_eq!(picture::picture_chapter(&m, &six, &seven), 1);
     assert_eq!(
         learn::newly_done(&learn::states(&m, &run_with_done(&m, 3)), &states).len(),
         n - 3
     );
+}
+
+/// The pictures of a check while a chapter is written: a fresh handout draws chapter 1 (which
+/// cannot render yet); three exercises of chapter 3 written draw the last one's quantity; a
+/// written exercise that fails draws its own quantity, and its chapter too once all of the
+/// chapter is written; a chapter none of whose pictured exercises is written draws its scene
+/// through the chapter before; a chapter turning green draws its own picture. Each stage is a
+/// figure of the book's list, of the chapter's scene.
+#[test]
+fn each_check_draws_the_stage_of_the_chapter_being_written() {
+    use picture::Stage;
+    let m = manifest();
+    let figures = whitted_course::figures::read_figures(&root().join("docs/figures.toml")).unwrap();
+    let n = m.entries.len();
+    let at = |name: &str| common::index(&m, name);
+    let chapter_of =
+        |c: u8| -> Vec<usize> { (0..n).filter(|&i| m.entries[i].chapter == c).collect() };
+    let file = |stage: Stage| picture::figure_of(&m, &figures, stage).map(|f| f.file.clone());
+
+    let fresh = vec![State::ToDo; n];
+    assert_eq!(
+        picture::choose(&m, &fresh, &fresh, None),
+        vec![Stage::Chapter(1)]
+    );
+    // a first check knows nothing of before: chapters 1 and 2 done turn nothing green
+    let unknown = vec![State::Unknown; n];
+
+    // chapters 1 and 2 done, 3.1 to 3.3 written: the cosine law's picture
+    let mut three = vec![State::ToDo; n];
+    for (state, e) in three.iter_mut().zip(&m.entries) {
+        if e.chapter < 3 {
+            *state = State::Done;
+        }
+    }
+    for name in ["ambient", "attenuation", "lambert"] {
+        three[at(name)] = State::Done;
+    }
+    let chosen = picture::choose(&m, &three, &three, None);
+    assert_eq!(chosen, vec![Stage::Exercise(at("lambert"))]);
+    assert_eq!(picture::choose(&m, &unknown, &three, None), chosen);
+    assert_eq!(file(chosen[0]).as_deref(), Some("ch03-diffuse.png"));
+
+    // the cosine law written wrong, and the rest of the chapter written: both pictures
+    let mut wrong = vec![State::Done; n];
+    wrong[at("lambert")] = State::Failing(vec!["ex_lambert_x".into()]);
+    assert_eq!(
+        picture::choose(&m, &wrong, &wrong, None),
+        vec![Stage::Exercise(at("lambert")), Stage::Chapter(3)]
+    );
+    // a cone's normal written wrong: the normals, then chapter 2's picture
+    let mut cone = vec![State::Done; n];
+    cone[at("cone_normal")] = State::Failing(vec!["ex_cone_normal_x".into()]);
+    let chosen = picture::choose(&m, &cone, &cone, None);
+    assert_eq!(
+        chosen,
+        vec![Stage::Exercise(at("cone_normal")), Stage::Chapter(2)]
+    );
+    assert_eq!(file(chosen[0]).as_deref(), Some("ch02-normals.png"));
+
+    // nothing of chapter 4 written: its scene through chapter 3's road, and so on
+    let mut four = vec![State::ToDo; n];
+    for i in (0..n).filter(|&i| m.entries[i].chapter < 4) {
+        four[i] = State::Done;
+    }
+    assert_eq!(
+        picture::choose(&m, &four, &four, None),
+        vec![Stage::Before(4)]
+    );
+    for (c, expected) in [
+        (3, "ch03-flat.png"),
+        (4, "ch04-no-shadows.png"),
+        (5, "ch05-depth-0.png"),
+    ] {
+        assert_eq!(
+            file(Stage::Before(c)).as_deref(),
+            Some(expected),
+            "chapter {c}"
+        );
+    }
+    assert_eq!(
+        file(Stage::Before(2)).as_deref(),
+        Some("ch02-camera-rays.png")
+    );
+    assert_eq!(
+        file(Stage::Before(1)),
+        None,
+        "no chapter comes before the first"
+    );
+
+    // chapter 3 turning green: its own picture
+    let mut green = four.clone();
+    for i in chapter_of(3) {
+        four[i] = State::Failing(vec![]);
+        green[i] = State::Done;
+    }
+    assert_eq!(
+        picture::choose(&m, &four, &green, None),
+        vec![Stage::Chapter(3)]
+    );
+    assert_eq!(file(Stage::Chapter(3)).as_deref(), Some("ch03_shading.png"));
+    let all = vec![State::Done; n];
+    assert_eq!(
+        picture::choose(&m, &all, &all, None),
+        vec![Stage::Chapter(5)]
+    );
+}
+
+/// Every exercise's picture is a figure of the book's list, drawn from its chapter's scene by
+/// its chapter's binary, and every chapter after the first has its scene drawn by the chapter
+/// before (the picture before the chapter's first exercise).
+#[test]
+fn every_picture_of_the_manifest_is_a_figure_of_its_chapters_scene() {
+    use picture::Stage;
+    let m = manifest();
+    let figures = whitted_course::figures::read_figures(&root().join("docs/figures.toml")).unwrap();
+    let mut pictured = 0;
+    for (i, e) in m.entries.iter().enumerate() {
+        let Some(file) = &e.exercise.picture else {
+            continue;
+        };
+        pictured += 1;
+        let about = whitted_course::syllabus::chapter(e.chapter).unwrap();
+        let figure = picture::figure_of(&m, &figures, Stage::Exercise(i));
+        let figure = figure.unwrap_or_else(|| {
+            panic!(
+                "{}: picture {file} is no figure of docs/figures.toml",
+                e.exercise.name
+            )
+        });
+        assert_eq!(
+            (figure.binary.as_str(), figure.scene()),
+            (about.binary, Some(about.scene().as_str())),
+            "{}: {file}",
+            e.exercise.name
+        );
+        assert!(
+            root().join(figure.path()).is_file(),
+            "{} is not committed",
+            figure.file
+        );
+    }
+    assert!(pictured >= 12, "{pictured} exercises have a picture");
+    for c in 2..=5 {
+        assert!(
+            picture::figure_of(&m, &figures, Stage::Before(c)).is_some(),
+            "chapter {c}"
+        );
+    }
 }
 
 /// A failure that is not the todo!() is "failing", a failure at another exercise's todo!()

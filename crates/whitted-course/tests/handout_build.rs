@@ -226,54 +226,129 @@ fn a_full_handout_fails_exactly_the_tests_of_its_exercises() {
     assert!(!dir.path().join("x.png").exists());
 }
 
+/// A handout of chapters 3 and 4 fails exactly the tests of its exercises. As the reference
+/// bodies come back one at a time, `learn` turns them green in order and, from the first
+/// exercise on, draws what is written beside the book's picture of the same stage: chapter 3's
+/// scene through chapter 2's road before anything is written, then the quantity of the newest
+/// exercise written (each the same as the book's), chapter 3's picture once the chapter is
+/// green, chapter 4's scene through chapter 3's road until its feelers are sent. A deliberate
+/// mistake (max(n·s, 0) unclamped) is checked first, at once, and its picture differs.
 #[test]
 #[ignore = "builds a handout (minutes); .ci/run runs it"]
 fn a_chapter_handout_fails_its_tests_and_turns_green_as_the_bodies_come_back() {
     let m = manifest();
     let n = m.entries.len();
-    let chapter4 = handout::select(&m, Some((4, 4)), &[]).unwrap();
+    let chapters = handout::select(&m, Some((3, 4)), &[]).unwrap();
     let dir = tempfile::tempdir().unwrap();
-    let student = dir.path().join("ch4");
-    handout::write(&root(), &m, &chapter4, &student).unwrap();
+    let student = dir.path().join("ch3-4");
+    handout::write(&root(), &m, &chapters, &student).unwrap();
     let (failed, passed) = run_tests(&student, &m);
     let every: BTreeSet<String> = failed.union(&passed).cloned().collect();
-    assert_same(&failed, &expected(&m, &every, &chapter4));
+    assert_same(&failed, &expected(&m, &every, &chapters));
 
     // the reference bodies back, one at a time, in order; an exercise is done once none of the
     // exercises its own tests need is missing (by the map: 5.5 waits for chapter 4 too)
     let map = deps::load_map(&root(), &m).unwrap();
-    let done_with = |missing: &[usize]| {
-        m.entries
+    let is_done = |e: &whitted_course::manifest::Entry, missing: &[usize]| {
+        every
             .iter()
-            .filter(|e| {
-                every
-                    .iter()
-                    .filter(|t| learn_name(t).starts_with(&e.exercise.test_prefix()))
-                    .all(|t| deps::needs_of(&map, t).iter().all(|i| !missing.contains(i)))
-            })
-            .count()
+            .filter(|t| learn_name(t).starts_with(&e.exercise.test_prefix()))
+            .all(|t| deps::needs_of(&map, t).iter().all(|i| !missing.contains(i)))
     };
+    let done_with = |missing: &[usize]| m.entries.iter().filter(|e| is_done(e, missing)).count();
     let report = learn(&student, None);
     assert!(
-        report.contains(&format!("{} of {n} exercises done", done_with(&chapter4))),
+        report.contains(&format!("{} of {n} exercises done", done_with(&chapters))),
         "{report}"
     );
-    let regions = handout::regions(&root(), &m).unwrap();
-    for (j, &i) in chapter4.iter().enumerate() {
-        let (path, now, back) = reference_body_back(&student, &m, &regions[i], i);
-        assert_ne!(
-            back, now,
-            "exercise {}'s todo!() not found",
-            m.entries[i].exercise.id
+    let same = "  compare: the same as the reference";
+    let picture = |report: &str, what: &str, file: &str| {
+        let line = format!(
+            "✓ picture: {what} as your code draws it, beside the book's and their difference: .whitted/{file}\n{same}"
         );
+        assert!(report.contains(&line), "no {line:?} in:\n{report}");
+        assert!(student.join(".whitted").join(file).is_file(), "{file}");
+    };
+    picture(
+        &report,
+        "chapter 3's scene through chapter 2's road (before chapter 3's exercises)",
+        "ch03-flat.png",
+    );
+    let regions = handout::regions(&root(), &m).unwrap();
+    for (j, &i) in chapters.iter().enumerate() {
+        let x = &m.entries[i].exercise;
+        let (path, now, back) = reference_body_back(&student, &m, &regions[i], i);
+        assert_ne!(back, now, "exercise {}'s todo!() not found", x.id);
+        if x.name == "lambert" {
+            // the cosine law written without its clamp: its verdict first, its picture differs
+            let wrong = back.replacen("n.dot(s).max(0.0)", "n.dot(s)", 1);
+            assert_ne!(wrong, back, "the cosine law's reference body has changed");
+            std::fs::write(&path, &wrong).unwrap();
+            let report = learn(&student, None);
+            let first = report.lines().find(|l| l.starts_with("✗ exercise"));
+            assert_eq!(
+                first,
+                Some(
+                    format!(
+                        "✗ exercise {} — {} (shading::lambert, 1 point): 1 of its 1 tests fail",
+                        x.id, x.title
+                    )
+                    .as_str()
+                ),
+                "{report}"
+            );
+            let differs = format!(
+                "✗ picture: exercise {}'s quantity ({}) over its chapter's scene as your code draws it, beside the book's and their difference: .whitted/ch03-diffuse.png\n  compare: ",
+                x.id, x.title
+            );
+            assert!(report.contains(&differs), "{report}");
+            assert!(!report.contains(&format!("{differs}the same")), "{report}");
+        }
         std::fs::write(&path, back).unwrap();
         let report = learn(&student, None);
         assert_progress(
             &report,
             &m,
-            done_with(&chapter4[j + 1..]),
-            chapter4.get(j + 1).copied(),
+            done_with(&chapters[j + 1..]),
+            chapters.get(j + 1).copied(),
         );
+        let passes = format!(
+            "✓ exercise {} — {} ({}) passes",
+            x.id, x.title, m.entries[i].function
+        );
+        assert_eq!(
+            report.contains(&passes),
+            is_done(&m.entries[i], &chapters[j + 1..]),
+            "{passes:?} in:\n{report}"
+        );
+        let next = chapters.get(j + 1).map(|&k| &m.entries[k]);
+        match (&x.picture, next) {
+            // chapter 3 is green: its own picture
+            _ if next.is_none_or(|e| e.chapter != m.entries[i].chapter) => picture(
+                &report,
+                &format!("chapter {}'s scene", m.entries[i].chapter),
+                &format!(
+                    "{}.png",
+                    whitted_course::syllabus::chapter(m.entries[i].chapter)
+                        .unwrap()
+                        .binary
+                ),
+            ),
+            (Some(file), _) => picture(
+                &report,
+                &format!(
+                    "exercise {}'s quantity ({}) over its chapter's scene",
+                    x.id, x.title
+                ),
+                file,
+            ),
+            // chapter 4 before its feelers are sent
+            (None, _) => picture(
+                &report,
+                "chapter 4's scene through chapter 3's road (before chapter 4's exercises)",
+                "ch04-no-shadows.png",
+            ),
+        }
     }
 }
 
@@ -297,14 +372,26 @@ fn exercise_by_exercise_learn_counts_up_to_all_of_them_and_tells_each_known_mist
         let poison = (k < n).then(|| format!("{k}-{}", n - 1));
         let report = learn(copy, Some(poison.unwrap_or_default()));
         assert_progress(&report, &m, k, (k < n).then_some(k));
+        // from chapter 2 on, every verdict comes with a picture of what is written, the
+        // book's (chapter 1's picture needs all of chapter 1: its exercises are the road)
+        if m.entries.get(k).is_none_or(|e| e.chapter > 1) {
+            let said = report
+                .lines()
+                .filter(|l| l.starts_with("✓ picture: ") || l.starts_with("✗ picture: "))
+                .collect::<Vec<_>>();
+            assert!(
+                said.first().is_some_and(|l| l.starts_with("✓ picture: ")),
+                "{k} exercises written: no picture, or one unlike the book's:\n{report}"
+            );
+        }
     }
     each_known_mistake_is_told_as_itself(copy, &m, &mutants);
 }
 
 /// Each hand-written mutant applied to the copy (all the other exercises written), as a
 /// student who made that mistake and asked for the exercise's first hint runs `learn`: the
-/// verdict names the mutant's exercise; the chapter's picture is drawn beside the book's; the
-/// first wrong number of its ray trees is computed in that exercise; and the mistake is told
+/// verdict names the mutant's exercise; the exercise's own picture, when it has one, differs
+/// from the book's; the chapter's picture is drawn beside the book's; the first wrong number of its ray trees is computed in that exercise; and the mistake is told
 /// by its words (`chapters/mistakes.json`). A mutant the chapter's scene cannot show (its
 /// picture and trees are the reference's, so `whitted trees` kept no fingerprint of it) is
 /// said to be so.
@@ -366,6 +453,13 @@ fn each_known_mistake_is_told_as_itself(
             "picture: chapter {}'s scene as your code draws it, beside the book's",
             m.entries[i].chapter
         ));
+        // an exercise with a picture of its own: its quantity drawn, and differing
+        if let Some(file) = &x.picture {
+            said(&format!(
+                "✗ picture: exercise {}'s quantity ({}) over its chapter's scene as your code draws it, beside the book's and their difference: .whitted/{file}",
+                x.id, x.title
+            ));
+        }
         let fingerprinted = known["mistakes"]
             .as_array()
             .unwrap()

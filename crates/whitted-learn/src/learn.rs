@@ -7,23 +7,26 @@
 //! all pass. A check goes in two steps, so
 //! that the answer a student waits for comes first:
 //!
+//! 0. **What changed.** The exercises whose body changed since the last complete check
+//!    ([`crate::changes`]) are checked first: one that now passes says so at once, and one
+//!    that fails gets its verdict before anything else, though it was finished before.
 //! 1. **The verdict.** The exercise to look at is the first one that was not done at the last
 //!    check (`.whitted/progress.json`, by exercise name), or the first. Only the test target that holds its
 //!    tests (by the measured map, `chapters/exercise-tests.toml`) is built and run; if all of
 //!    that target's exercises pass, the next target is, until one is not done. That verdict is
 //!    printed: the exercise, the notes' formula, every failing test of it with its message,
 //!    where to write it.
-//! 2. **The progress.** The other targets are built and run at once, and each chapter's count
-//!    is printed; should an exercise that passed before fail now, that is said, and it is the
-//!    next one.
+//! 2. **The picture.** What the student's code draws of the chapter being written, beside the
+//!    book's picture of the same stage ([`crate::picture`]).
+//! 3. **The progress.** The other targets are built and run at once, and each chapter's count
+//!    is printed; should the first exercise not done be another than the verdict's, its
+//!    verdict follows.
 //!
 //! When the code does not compile, the first compiler error is shown at the student's
 //! file:line:col, and nothing runs; `learn hint` and `learn list` answer all the same, since
 //! this tool does not depend on the student's code. A build that lasts more than a moment (the
 //! first one compiles the renderer's dependencies) shows cargo's lines as it goes.
 //!
-//! After each check the newest chapter whose exercises (and all earlier chapters') are done is
-//! rendered by its own chapter binary, at the dev profile, into `.whitted/chNN_name.png`.
 //! Every build selects both the renderer's and the binaries' packages, so cargo resolves their
 //! dependencies alike and the renderer is compiled once per save for the tests and the picture.
 //!
@@ -55,10 +58,6 @@ const QUIET_BUILD: Duration = Duration::from_millis(1500);
 
 /// The time limit of one test target's run: a loop that never ends stops there.
 pub const TEST_TIME_LIMIT: Duration = Duration::from_secs(60);
-
-/// The width of the picture rendered after a check when the chapter has no figure to compare
-/// with (the height follows the scene); with one, the figure's own width.
-pub const PICTURE_WIDTH: u32 = 240;
 
 /// Where an exercise stands.
 #[derive(Clone, Debug, PartialEq, Eq)]
@@ -581,51 +580,13 @@ pub fn newly_done(before: &[State], now: &[State]) -> BTreeSet<usize> {
         .collect()
 }
 
-/// The newest chapter whose exercises, and all earlier chapters', are done: the one whose
-/// picture the student's code can draw.
-#[must_use]
-pub fn drawable_chapter(manifest: &Manifest, states: &[State]) -> Option<u8> {
-    let mut out = None;
-    for chapter in whitted_syllabus::CHAPTERS.iter().map(|c| c.number) {
-        let mut own = manifest
-            .entries
-            .iter()
-            .zip(states)
-            .filter(|(e, _)| e.chapter == chapter);
-        if own.all(|(_, s)| *s == State::Done) {
-            out = Some(chapter);
-        } else {
-            break;
-        }
-    }
-    out
-}
-
-/// The chapter whose picture a check draws: a chapter that turned green at this check (the
-/// first of them: when one exercise turns several green, as the first of chapter 3 may turn
-/// chapters 3 to 5, the one the student was working in), else the chapter of the next exercise
-/// (the one the student works on, whose picture shows what is still wrong), else the last.
-#[must_use]
-pub fn picture_chapter(manifest: &Manifest, before: &[State], now: &[State]) -> u8 {
-    let green = |states: &[State], chapter: u8| {
-        manifest
-            .entries
-            .iter()
-            .zip(states)
-            .filter(|(e, _)| e.chapter == chapter)
-            .all(|(_, s)| *s == State::Done)
-    };
-    let turned = drawable_chapter(manifest, now)
-        .and_then(|drawable| (1..=drawable).find(|&c| !green(before, c)));
-    let next = now
-        .iter()
-        .position(|s| *s != State::Done)
-        .map(|i| manifest.entries[i].chapter);
-    turned.or(next).unwrap_or(whitted_syllabus::LAST)
-}
-
 /// A build of the loop: the packages of [`PACKAGES`], cargo's lines shown once it is slow.
-fn build(root: &Path, tests: &[String], bins: &[String], say: &Say) -> Result<Built, ToolError> {
+pub(crate) fn build(
+    root: &Path,
+    tests: &[String],
+    bins: &[String],
+    say: &Say,
+) -> Result<Built, ToolError> {
     let started = Instant::now();
     let held: std::sync::Mutex<Vec<String>> = std::sync::Mutex::new(Vec::new());
     let showing = AtomicBool::new(false);
@@ -680,8 +641,9 @@ fn build(root: &Path, tests: &[String], bins: &[String], say: &Say) -> Result<Bu
 
 /// Where `learn` writes what it is doing: the report on stdout (when it is wanted), progress
 /// lines on stderr.
-struct Say {
-    report: bool,
+pub(crate) struct Say {
+    /// Whether the report is printed.
+    pub(crate) report: bool,
 }
 
 impl Say {
@@ -787,9 +749,53 @@ pub fn check(
             s => s.clone(),
         }
     };
-    // 1. the verdict: the targets of the first exercises not done, one at a time
+    // 0. what was saved since the last check comes first: its targets, then its verdict
+    let regions = crate::changes::regions(root);
+    let touched = crate::changes::touched(manifest, &crate::changes::saved(root), &regions);
+    let mut first_targets: Vec<String> = touched
+        .iter()
+        .filter_map(|&i| target_of[i].clone())
+        .collect();
+    first_targets.dedup();
+    first_targets.retain(|t| manifest.handout.tests.contains(t));
+    if !first_targets.is_empty() {
+        let ids: Vec<&str> = touched
+            .iter()
+            .map(|&i| manifest.entries[i].exercise.id.as_str())
+            .collect();
+        say.status(&format!(
+            "checking what you changed: exercise {} …",
+            ids.join(", ")
+        ));
+        if !check_targets(root, &first_targets, &mut run, &say)? {
+            say.report(&build_failure(&run, style));
+            return Ok(Checked {
+                states: states(manifest, &run),
+                run,
+            });
+        }
+    }
     let mut shown: Option<usize> = None;
-    loop {
+    let fresh = states(manifest, &run);
+    for &i in &touched {
+        let x = &manifest.entries[i].exercise;
+        if fresh[i] == State::Done && known.get(i) != Some(&State::Done) {
+            say.report(&style.good(&format!(
+                "✓ exercise {} — {} ({}) passes: all its tests pass\n",
+                x.id, x.title, manifest.entries[i].function
+            )));
+        }
+    }
+    // a changed exercise that fails: its verdict now, whatever comes before it
+    if let Some(&i) = touched
+        .iter()
+        .find(|&&i| matches!(fresh[i], State::Failing(_)))
+    {
+        say.report(&verdict(manifest, &run, &fresh, i, style, Some(root)));
+        shown = Some(i);
+    }
+    // 1. the verdict: the targets of the first exercises not done, one at a time
+    while shown.is_none() {
         let next = (0..manifest.entries.len()).find(|&i| state_now(&run, i) != State::Done);
         let Some(next) = next else { break };
         let target = target_of[next].clone();
@@ -821,7 +827,9 @@ pub fn check(
         let now: Vec<State> = (0..manifest.entries.len())
             .map(|i| state_now(&run, i))
             .collect();
-        say.report(&picture(root, manifest, known, &now, style));
+        say.report(&crate::picture::report(
+            root, manifest, known, &now, shown, style,
+        ));
     }
     // 2. the progress: every target not run yet
     let rest: Vec<String> = manifest
@@ -854,8 +862,13 @@ pub fn check(
         (Some(n), Some(s)) if n == s => {}
         (Some(n), _) => {
             if shown.is_some() {
+                let why = if known.get(n) == Some(&State::Done) {
+                    "passed at the last check and fails now, so it comes first"
+                } else {
+                    "is the first exercise not done"
+                };
                 out += &format!(
-                    "\nnote: exercise {} passed at the last check and fails now, so it comes first:\n",
+                    "\nnote: exercise {} {why}:\n",
                     manifest.entries[n].exercise.id
                 );
             }
@@ -866,6 +879,7 @@ pub fn check(
     out += &progress(manifest, &all, style);
     say.report(&out);
     save_states(root, manifest, &all)?;
+    crate::changes::save(root, &regions)?;
     Ok(Checked { run, states: all })
 }
 
@@ -879,155 +893,6 @@ fn build_failure(run: &TestRun, style: Style) -> String {
         style.bad("✗"),
         rendered.trim_end()
     )
-}
-
-/// The width of a PNG file, from its header (`None` when it is not a PNG).
-fn png_width(path: &Path) -> Option<u32> {
-    let mut head = [0u8; 24];
-    let mut file = std::fs::File::open(path).ok()?;
-    std::io::Read::read_exact(&mut file, &mut head).ok()?;
-    let signature = head.starts_with(b"\x89PNG\r\n\x1a\n") && &head[12..16] == b"IHDR";
-    signature.then(|| u32::from_be_bytes([head[16], head[17], head[18], head[19]]))
-}
-
-/// A chapter's picture, drawn by the student's code.
-#[derive(Clone, Debug, PartialEq, Eq)]
-pub struct Picture {
-    /// The PNG written: with a figure to compare with, the student's render, the figure and
-    /// their difference side by side; else the render alone.
-    pub path: PathBuf,
-    /// The chapter binary's `compare:` line (how many pixels differ from the figure, and
-    /// where the first one is), when there was a figure.
-    pub compare: Option<String>,
-    /// The student's ray trees compared with the reference's at the pixels of the chapter's
-    /// trees file, when the handout has one ([`crate::trees`]).
-    pub against: Vec<crate::trees::Against>,
-}
-
-/// Why a chapter's picture could not be drawn.
-#[derive(Debug)]
-pub enum NoPicture {
-    /// The render stopped: the chapter binary's one-line error (an exercise it needs is not
-    /// written yet, or panics).
-    Render(String),
-    /// The chapter binary could not be built or run.
-    Tool(ToolError),
-}
-
-/// Renders chapter `chapter`'s scene with the project's own chapter binary (dev profile) into
-/// `.whitted/chNN_name.png`: beside the chapter's figure in the course book and their
-/// difference (`--compare`, at the figure's width) when the handout has the figure, else alone,
-/// [`PICTURE_WIDTH`] pixels wide.
-pub fn render_chapter(root: &Path, chapter: u8) -> Result<Picture, NoPicture> {
-    let about = whitted_syllabus::chapter(chapter).ok_or_else(|| {
-        NoPicture::Tool(ToolError::Usage(format!("there is no chapter {chapter}")))
-    })?;
-    let name = about.binary.to_string();
-    let say = Say { report: false };
-    let built = build(root, &[], std::slice::from_ref(&name), &say).map_err(NoPicture::Tool)?;
-    if !built.success {
-        return Err(NoPicture::Tool(ToolError::Cargo(format!(
-            "chapter {chapter}'s binary does not build: {}",
-            built.first_error()
-        ))));
-    }
-    let exe = built.executables.get(&name).ok_or_else(|| {
-        NoPicture::Tool(ToolError::Cargo(format!("cargo built no binary {name}")))
-    })?;
-    let dir = root.join(STATE_DIR);
-    std::fs::create_dir_all(&dir).map_err(|e| NoPicture::Tool(ToolError::io(&dir, e)))?;
-    let png = dir.join(format!("{name}.png"));
-    let scene = root.join(about.scene());
-    let figure = root.join(about.figure());
-    let mut command = std::process::Command::new(exe);
-    if scene.is_file() {
-        command.arg(&scene);
-    }
-    match png_width(&figure) {
-        Some(width) => {
-            command.args(["--width", &width.to_string(), "--compare"]);
-            command.arg(&figure);
-        }
-        None => {
-            command.args(["--width", &PICTURE_WIDTH.to_string()]);
-        }
-    }
-    // the first wrong number: the same pixels' trees, traced and compared
-    if let Some(trees) = crate::trees::trees_file(chapter).filter(|t| root.join(t).is_file()) {
-        command.arg("--against").arg(root.join(trees)).arg("--json");
-    }
-    let out = command
-        .arg("--quiet")
-        .arg("-o")
-        .arg(&png)
-        .current_dir(root)
-        .stdin(std::process::Stdio::null())
-        .output()
-        .map_err(|e| {
-            NoPicture::Tool(ToolError::Cargo(format!(
-                "cannot run {}: {e}",
-                exe.display()
-            )))
-        })?;
-    if !out.status.success() {
-        let err = String::from_utf8_lossy(&out.stderr);
-        let line = err
-            .lines()
-            .rev()
-            .find_map(|l| l.strip_prefix("error: "))
-            .unwrap_or("the render failed");
-        return Err(NoPicture::Render(line.to_string()));
-    }
-    let (compare, against) = crate::trees::read_output(&String::from_utf8_lossy(&out.stdout));
-    Ok(Picture {
-        path: png,
-        compare,
-        against,
-    })
-}
-
-/// After a check: the picture of the chapter [`picture_chapter`] picks, and what it shows.
-pub fn picture(
-    root: &Path,
-    manifest: &Manifest,
-    before: &[State],
-    states: &[State],
-    style: Style,
-) -> String {
-    let chapter = picture_chapter(manifest, before, states);
-    match render_chapter(root, chapter) {
-        Ok(Picture {
-            path,
-            compare: Some(compare),
-            against,
-        }) => {
-            let same = compare.contains("the same as the reference");
-            format!(
-                "{} picture: chapter {chapter}'s scene as your code draws it, beside the book's and their difference: {}\n  {compare}\n{}",
-                if same {
-                    style.good("✓")
-                } else {
-                    style.bad("✗")
-                },
-                path.strip_prefix(root).unwrap_or(&path).display(),
-                crate::trees::feedback(root, manifest, states, &against, Some(&compare))
-            )
-        }
-        Ok(Picture {
-            path,
-            compare: None,
-            against,
-        }) => format!(
-            "{} picture: chapter {chapter}'s scene as your code draws it: {}\n{}",
-            style.good("✓"),
-            path.strip_prefix(root).unwrap_or(&path).display(),
-            crate::trees::feedback(root, manifest, states, &against, None)
-        ),
-        Err(NoPicture::Render(why)) => {
-            format!("picture: chapter {chapter} cannot render yet: {why}\n")
-        }
-        Err(NoPicture::Tool(e)) => format!("picture: none yet ({e})\n"),
-    }
 }
 
 /// Whether a changed file matters to the tests: not an editor's backup or swap file.

@@ -16,12 +16,15 @@
 
 pub mod args;
 pub mod cargo;
+pub mod changes;
 pub mod cli;
+pub mod figures;
 pub mod files;
 pub mod layout;
 pub mod learn;
 pub mod manifest;
 pub mod map;
+pub mod picture;
 pub mod trees;
 
 /// The course's outline: the chapters (and the notes' sections, the todo!() message), read from

@@ -105,6 +105,10 @@ pub struct Exercise {
     /// The test that tells most about a wrong body, shown first when several fail: the rest of
     /// its name after [`Exercise::test_prefix`] (`viewing_angle_is_converted_from_degrees`).
     pub first_check: Option<String>,
+    /// The course book's figure (a file of `docs/figures.toml`) that shows what this exercise
+    /// adds, drawn while its chapter is written (`ch03-diffuse.png`); `None` for the chapter's
+    /// own figure. `cargo learn` draws it with the student's code beside the book's.
+    pub picture: Option<String>,
 }
 
 /// What the names of an exercise's own tests begin with, before its name.
@@ -190,6 +194,7 @@ struct RawEntry {
     hints: Option<Spanned<Vec<String>>>,
     points: Option<Spanned<i64>>,
     first_check: Option<Spanned<String>>,
+    picture: Option<Spanned<String>>,
 }
 
 /// Reads and checks the manifest at `path`; messages name the path as given.
@@ -503,6 +508,24 @@ fn exercise(
             Some(rest.to_string())
         }
     };
+    let picture = match &raw.picture {
+        None => None,
+        Some(file) => {
+            let file_name = file.get_ref().trim();
+            let plain = file_name.len() > 4
+                && file_name.ends_with(".png")
+                && !file_name.contains(['/', '\\']);
+            if !plain {
+                return Err(err(
+                    file.span(),
+                    format!(
+                        "picture: expected a figure's file name ending in .png, without a directory, found {file_name:?}"
+                    ),
+                ));
+            }
+            Some(file_name.to_string())
+        }
+    };
     Ok(Exercise {
         name: name.to_string(),
         id,
@@ -511,6 +534,7 @@ fn exercise(
         hints: list,
         points: value,
         first_check,
+        picture,
     })
 }
 

@@ -10,7 +10,7 @@
 //! notes' formula:
 //!
 //! ```text
-//!   first wrong number: pixel (98, 75), camera ray → hit `cone`: t = 4.0213 (reference 3.8702)
+//!   first wrong number: pixel (98, 75), camera ray → hit `cone`: t: 4.0213 (the reference: 3.8702)
 //!     computed in exercise 2.17 (cone_coefficients), the notes: a = …, b = …, c = …
 //! ```
 //!
@@ -62,7 +62,7 @@ pub struct Against {
     /// The functions that computed it, as the manifest spells them.
     #[serde(default)]
     pub functions: Vec<String>,
-    /// "pixel (x, y), camera ray → hit `cone`: t = 4.02 (reference 3.87)".
+    /// "pixel (x, y), camera ray → hit `cone`: t: 4.02 (the reference: 3.87)".
     #[serde(default)]
     pub text: String,
 }
@@ -396,7 +396,8 @@ mod tests {
         let t = Against {
             pixel: (128, 67),
             differs: true,
-            text: "pixel (128, 67), camera ray → hit `cone`: t = 9.4089 (reference 9.4929)".into(),
+            text: "pixel (128, 67), camera ray → hit `cone`: t: 9.4089 (the reference: 9.4929)"
+                .into(),
             functions: vec![
                 "shapes::cone::coefficients".into(),
                 "shapes::cone::intersect".into(),

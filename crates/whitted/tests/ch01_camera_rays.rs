@@ -46,7 +46,7 @@ fn ex_near_plane_half_height_half_height_is_near_times_tangent_of_half_the_angle
     }
     // H grows with N: the near plane twice as far is twice as tall
     assert_near(
-        "H for N = 2, θ = 73° (twice H for N = 1)",
+        "H for N = 2, θ = 73°; expected twice H for N = 1",
         near_plane_half_height(2.0, 73.0),
         2.0 * near_plane_half_height(1.0, 73.0),
         TOL,
@@ -64,7 +64,7 @@ fn ex_near_plane_half_height_viewing_angle_is_converted_from_degrees() {
          (H = N·tan(π/180·θ/2) = tan 30° ≈ 0.57735)"
     );
     assert_near(
-        "H for N = 1, θ = 60° (tan 30°)",
+        "H for N = 1, θ = 60°; expected tan 30°",
         h,
         real(0.577_350_269_189_625_8),
         TOL,
@@ -172,7 +172,7 @@ fn ex_viewing_basis_is_orthonormal_and_n_points_back_to_the_eye() {
         assert_near(&format!("{name} {tilted}"), x.length(), 1.0, TOL);
     }
     assert_near(
-        &format!("(u × v)·n {tilted} (right-handed: 1)"),
+        &format!("(u × v)·n {tilted}; expected right-handed"),
         u.cross(v).dot(n),
         1.0,
         TOL,
@@ -185,13 +185,13 @@ fn ex_viewing_basis_up_parallel_to_the_view_direction_has_no_basis() {
     let along = viewing_basis(vec3(0.0, 5.0, 0.0), Vec3::ZERO, Vec3::Y);
     assert!(
         along.is_none(),
-        "looking from (0, 5, 0) at the origin with up = y, along the view: (u, v, n) = \
+        "looking from (0, 5, 0) at the origin with up = y, along the view: (u, v, n) computed \
          {along:?}, expected None (up × n = 0 cannot be made unit)"
     );
     let nowhere = viewing_basis(Vec3::ZERO, Vec3::ZERO, Vec3::Y);
     assert!(
         nowhere.is_none(),
-        "the eye on look_at, both at the origin: (u, v, n) = {nowhere:?}, expected None \
+        "the eye on look_at, both at the origin: (u, v, n) computed {nowhere:?}, expected None \
          (e − look_at = 0 cannot be made unit)"
     );
 }
@@ -286,7 +286,7 @@ fn ex_ray_direction_every_direction_reaches_the_near_plane() {
         );
     }
     assert_vec_eq(
-        "d for the middle of 320 × 200 pixels, (c, r) = (160, 100): −N·n",
+        "d for the middle of 320 × 200 pixels, (c, r) = (160, 100); expected −N·n",
         cam.direction(160.0, 100.0),
         -2.5 * cam.n(),
         10.0 * TOL,
@@ -303,14 +303,14 @@ fn ex_ray_direction_ray_reaches_the_near_plane_pixel_at_t_equal_one() {
     let world = u_c * cam.u() + v_r * cam.v() - cam.near() * cam.n() + cam.eye();
     let ray = cam.ray(c, r);
     assert_vec_eq(
-        "r(1) = e + d for (c, r) = (37, 150): the pixel's point on the near plane",
+        "r(1) = e + d for (c, r) = (37, 150); expected the pixel's point on the near plane",
         ray.origin + ray.dir,
         world,
         1e3 * TOL,
     );
     // and that point lies at distance N in front of the eye
     assert_near(
-        "(u_c·u + v_r·v − N·n)·(−n) for (c, r) = (37, 150): N",
+        "(u_c·u + v_r·v − N·n)·(−n) for (c, r) = (37, 150); expected N",
         (world - cam.eye()).dot(-cam.n()),
         2.5,
         1e3 * TOL,
@@ -408,18 +408,23 @@ fn ex_pixel_ray_dx_runs_right_and_dy_runs_down_from_the_pixels_top_left_corner()
             );
             assert!(
                 (r - r_expected).abs() <= 10.0 * TOL,
-                "{at} goes through the notes' row r = {r}, expected r = m − y − dy = \
+                "the notes' row r that {at} goes through: computed {r}, expected m − y − dy = \
                  {r_expected}: dy runs down from the pixel's top, r up from the image's bottom \
                  (tolerance {:e})",
                 10.0 * TOL
             );
             assert!(
                 (c - c_expected).abs() <= 10.0 * TOL,
-                "{at} goes through the notes' column c = {c}, expected c = x + dx = \
+                "the notes' column c that {at} goes through: computed {c}, expected x + dx = \
                  {c_expected} (tolerance {:e})",
                 10.0 * TOL
             );
-            assert_near(&format!("d·(−n) of {at}: N"), d.dot(-cam.n()), 1.0, TOL);
+            assert_near(
+                &format!("d·(−n) of {at}; expected N"),
+                d.dot(-cam.n()),
+                1.0,
+                TOL,
+            );
         }
     }
     // the image's top-left corner, the first pixel's (0, 0): (c, r) = (0, m), d = (−W, H, −N)
@@ -439,7 +444,7 @@ fn ex_pixel_ray_dx_runs_right_and_dy_runs_down_from_the_pixels_top_left_corner()
 fn ex_direction_colour_ray_colour_is_unit_direction_plus_one_over_two() {
     let k = (1.0 / (3.0 as Real).sqrt() + 1.0) / 2.0;
     assert_near(
-        "(1/√3 + 1)/2 (the hand value)",
+        "(1/√3 + 1)/2, the hand value",
         k,
         real(0.788_675_134_594_812_9),
         TOL,

@@ -8,7 +8,7 @@
 
 mod common;
 
-use common::{TOL, assert_near, assert_vec_eq, centre, render_at, scene};
+use common::{TOL, assert_exact, assert_near, assert_vec_eq, centre, render_at, scene};
 use whitted::light::Light;
 use whitted::material::Material;
 use whitted::real::{Real, Vec3, vec3};
@@ -34,7 +34,7 @@ fn ex_local_light_light_behind_the_eye_gives_ambient_plus_full_diffuse_and_specu
     let expected = vec3(0.1 * 0.5, 0.2 * 0.4, 0.3 * 0.3)
         + vec3(0.9, 0.8, 0.7) * vec3(0.5 + 0.2, 0.4 + 0.3, 0.3 + 0.4);
     assert_vec_eq(
-        "I at the sphere's nearest point, the light behind the eye: ρa·I_m + I_p·(ρd + ρs)",
+        "I at the sphere's nearest point, the light behind the eye; expected ρa·I_m + I_p·(ρd + ρs)",
         c,
         expected,
         10.0 * TOL,
@@ -47,7 +47,7 @@ fn ex_local_light_light_behind_the_surface_gives_ambient_only() {
     let s = scene(&sphere_scene("[0.0, 0.0, -10.0]", ""));
     let (c, stats) = centre(&s, Chapter::Shading);
     assert_vec_eq(
-        "I at the sphere's nearest point, the light behind the sphere: I_a = ρa·I_m only",
+        "I at the sphere's nearest point, the light behind the sphere; expected I_a = ρa·I_m only",
         c,
         vec3(0.05, 0.08, 0.09),
         10.0 * TOL,
@@ -69,16 +69,17 @@ fn ex_lambert_negative_dot_products_are_clamped() {
         0.5,
         TOL,
     );
-    assert_eq!(
+    assert_exact(
+        "max(n·s, 0) for n = z, s = x (90°)",
         lambert(n, Vec3::X),
         0.0,
-        "max(n·s, 0) for n = z, s = x (90°)"
     );
     let s = Vec3::NEG_Z; // light exactly behind
-    assert_eq!(
+    assert_exact(
+        "max(n·s, 0) for n = z, s = −z (the light straight behind); expected max(−1, 0), n·s \
+         being −1",
         lambert(n, s),
         0.0,
-        "max(n·s, 0) for n = z, s = −z (behind): clamped, not n·s = −1"
     );
 }
 
@@ -97,11 +98,11 @@ fn ex_highlight_negative_dot_products_are_clamped() {
         1.0,
         TOL,
     );
-    assert_eq!(
+    assert_exact(
+        "the highlight max(r·v, 0)^f for n = z, s = v = −z (light and viewer behind), f = 2; \
+         expected none for n·s = −1 ≤ 0, where the notes' unclamped (r·v)^f is 1",
         highlight(n, s, v, 2.0),
         0.0,
-        "the highlight for n = z, s = v = −z (light and viewer behind), f = 2: 0, though the \
-         notes' (r·v)^f = 1 there"
     );
     // a light in front, a viewer more than 90° from r: r·v < 0, and f = 2 must not square it
     let k = 1.0 / (2.0 as Real).sqrt();
@@ -112,17 +113,18 @@ fn ex_highlight_negative_dot_products_are_clamped() {
         0.5,
         TOL,
     );
-    assert_eq!(
+    assert_exact(
+        "the highlight max(r·v, 0)^f for n = z, s = (1, 0, 1)/√2, v = x, f = 2; expected \
+         max(−1/√2, 0)² with r = (−1, 0, 1)/√2, r·v = −1/√2",
         highlight(n, s, Vec3::X, 2.0),
         0.0,
-        "the highlight for n = z, s = (1, 0, 1)/√2, v = x (r·v = −1/√2 < 0), f = 2: \
-         max(r·v, 0)^f, not (r·v)^f = ½"
     );
     // a light grazing the surface (n·s = 0) gives no highlight even to a viewer along r
-    assert_eq!(
+    assert_exact(
+        "the highlight max(r·v, 0)^f for n = z, s = x (grazing), v = −x, f = 5; expected none for \
+         n·s = 0, though v lies along r = −x",
         highlight(n, Vec3::X, Vec3::NEG_X, 5.0),
         0.0,
-        "the highlight for n = z, s = x (grazing, n·s = 0), v = r = −x, f = 5"
     );
 }
 
@@ -143,9 +145,9 @@ fn ex_mirror_direction_of_the_light() {
     let r = mirror(s, n);
     let of = format!("for s = (0.6, 0, 0.8), n = (1, 2, 2)/3 (r = {r})");
     assert_near(&format!("‖r‖ {of}"), r.length(), 1.0, TOL);
-    assert_near(&format!("n·r {of}: n·s"), n.dot(r), n.dot(s), TOL);
+    assert_near(&format!("n·r {of}; expected n·s"), n.dot(r), n.dot(s), TOL);
     assert_vec_eq(
-        &format!("(r + s) × n {of}: 0, r + s along n"),
+        &format!("(r + s) × n {of}; expected r + s along n"),
         (r + s).cross(n),
         Vec3::ZERO,
         TOL,
@@ -168,7 +170,8 @@ fn ex_highlight_is_one_along_r_and_falls_with_the_angle() {
     let s = vec3(1.0, 0.0, 1.0) * k;
     let r = vec3(-1.0, 0.0, 1.0) * k;
     assert_near(
-        "the highlight for n = z, s = (1, 0, 1)/√2, v = r = (−1, 0, 1)/√2, f = 50: 1",
+        "the highlight max(r·v, 0)^f for n = z, s = (1, 0, 1)/√2, v = r = (−1, 0, 1)/√2, f = 50; \
+         expected v along r",
         highlight(Vec3::Z, s, r, 50.0),
         1.0,
         TOL,
@@ -182,21 +185,21 @@ fn ex_highlight_is_one_along_r_and_falls_with_the_angle() {
     );
     let at_60 = "for n = z, s = (1, 0, 1)/√2 and v 60° from r";
     assert_near(
-        &format!("the highlight (r·v)^f {at_60}, f = 3: ½³"),
+        &format!("the highlight max(r·v, 0)^f {at_60}, f = 3; expected cos³ 60° = ½³"),
         h3,
         (0.5 as Real).powi(3),
         10.0 * TOL,
     );
     assert_near(
-        &format!("the highlight (r·v)^f {at_60}, f = 10: ½¹⁰"),
+        &format!("the highlight max(r·v, 0)^f {at_60}, f = 10; expected cos¹⁰ 60° = ½¹⁰"),
         h10,
         (0.5 as Real).powi(10),
         10.0 * TOL,
     );
     assert!(
         h10 < h3,
-        "the highlight {at_60} is {h10} for f = 10 and {h3} for f = 3: a larger f should give \
-         less"
+        "the highlight max(r·v, 0)^f {at_60}: computed {h10} for f = 10 and {h3} for f = 3, \
+         expected less for the larger f"
     );
 }
 
@@ -216,7 +219,7 @@ fn ex_direct_light_diffuse_follows_the_cosine_law() {
     let light = Light::white(Vec3::new(2.0 * a.sin(), 2.0 * a.cos(), 0.0));
     let i = direct(&m, &light, p, n, Vec3::Y);
     assert_vec_eq(
-        "I_d + I_s for ρd = 0.8, ρs = 0, a white light at 60° from n: ρd·I_p·(n·s) = 0.8·½",
+        "I_d + I_s for ρd = 0.8, ρs = 0, a white light at 60° from n; expected ρd·I_p·(n·s) = 0.8·½",
         i,
         Vec3::splat(0.8 * 0.5),
         10.0 * TOL,
@@ -243,10 +246,11 @@ fn ex_ambient_is_rho_a_times_i_m_per_channel() {
         Vec3::splat(0.05),
         TOL,
     );
-    assert_eq!(
+    assert_vec_eq(
+        "I_a for ρa = (0.1, 0.2, 0.3), I_m = 0",
         ambient(&m, Vec3::ZERO),
         Vec3::ZERO,
-        "I_a for ρa = (0.1, 0.2, 0.3), I_m = 0"
+        0.0,
     );
 }
 
@@ -271,7 +275,7 @@ fn ex_direct_light_one_light_three_channels() {
         shadows: true,
     };
     assert_vec_eq(
-        "I_d + I_s for I_p = (0.9, 0.8, 0.7) straight above, v = n: I_p·(ρd + ρs)",
+        "I_d + I_s for I_p = (0.9, 0.8, 0.7) straight above, v = n; expected I_p·(ρd + ρs)",
         direct(&m, &light, p, n, n),
         vec3(0.9 * 0.7, 0.8 * 0.7, 0.7 * 0.7),
         10.0 * TOL,
@@ -284,16 +288,18 @@ fn ex_direct_light_one_light_three_channels() {
         10.0 * TOL,
     );
     light.position = vec3(1.0, -3.0, -2.0);
-    assert_eq!(
+    assert_vec_eq(
+        "I_d + I_s for a light below the surface",
         direct(&m, &light, p, n, n),
         Vec3::ZERO,
-        "I_d + I_s for a light below the surface"
+        0.0,
     );
     light.position = p;
-    assert_eq!(
+    assert_vec_eq(
+        "I_d + I_s for a light at the point itself (d = 0, no s)",
         direct(&m, &light, p, n, n),
         Vec3::ZERO,
-        "I_d + I_s for a light at the point itself (d = 0, no s)"
+        0.0,
     );
 }
 
@@ -306,16 +312,19 @@ fn ex_direct_light_skipping_the_highlight_changes_no_number() {
     let s = vec3(1.0, 0.0, 1.0) * k; // r = (−1, 0, 1)/√2
     let beyond = vec3(1.0, 0.0, 0.0); // r·v = −1/√2 < 0
     let at_90 = vec3(1.0, 0.0, 1.0) * k; // r·v = 0
-    for (v, f, expected, what) in [
-        (beyond, 3.0, 0.0, "r·v < 0, f = 3: 0^f"),
-        (at_90, 30.0, 0.0, "r·v = 0, f = 30: 0^f"),
-        (at_90, 0.0, 1.0, "r·v = 0, f = 0: 0⁰ = 1"),
-        (beyond, 0.0, 1.0, "r·v < 0, f = 0: 0⁰ = 1"),
+    for (v, f, expected, from) in [
+        (beyond, 3.0, 0.0, "0³, r·v = −1/√2 < 0"),
+        (at_90, 30.0, 0.0, "0³⁰, r·v = 0"),
+        (at_90, 0.0, 1.0, "0⁰, r·v = 0"),
+        (beyond, 0.0, 1.0, "0⁰, r·v = −1/√2 < 0"),
     ] {
-        assert_eq!(
+        assert_exact(
+            &format!(
+                "the highlight max(r·v, 0)^f for n = z, s = (1, 0, 1)/√2 (r = (−1, 0, 1)/√2), \
+                 v = {v}, f = {f}; expected {from}"
+            ),
             highlight(Vec3::Z, s, v, f),
             expected,
-            "the highlight for n = z, s = (1, 0, 1)/√2, v = {v}, {what}"
         );
     }
     let matte = Material {
@@ -333,10 +342,12 @@ fn ex_direct_light_skipping_the_highlight_changes_no_number() {
     let d = to_light.length();
     let expected =
         light.intensity * light.attenuation_at(d) * (matte.diffuse * lambert(n, to_light / d));
-    assert_eq!(
+    assert_vec_eq(
+        "I_d + I_s of a matte material (ρs = 0) seen along r; expected I_p·att·ρd·(n·s) bit \
+         for bit",
         direct(&matte, &light, p, n, v),
         expected,
-        "I_d + I_s of a matte material (ρs = 0) seen along r: I_p·att·ρd·(n·s) bit for bit"
+        0.0,
     );
 }
 
@@ -370,8 +381,8 @@ fn ex_attenuation_divides_by_a0_plus_a1_d_plus_a2_d_squared() {
     let at_zero = light.attenuation_at(0.0);
     assert!(
         at_zero.is_finite(),
-        "1/(a0 + a1·d + a2·d²) for (0, 1, 0) at d = 0 is {at_zero}: the denominator must be \
-         kept at least Real::EPSILON"
+        "1/(a0 + a1·d + a2·d²) for (a0, a1, a2) = (0, 1, 0), d = 0: computed {at_zero}, \
+         expected a finite value, the denominator kept at least Real::EPSILON"
     );
 }
 
@@ -389,7 +400,7 @@ fn ex_direct_light_is_divided_by_the_attenuation() {
     light.attenuation = [1.0, 0.5, 0.25];
     let i = direct(&m, &light, Vec3::ZERO, Vec3::Y, Vec3::Y);
     assert_vec_eq(
-        "I_d + I_s for a white light 2 above, (a0, a1, a2) = (1, 0.5, 0.25): ρd·I_p/3",
+        "I_d + I_s for a white light 2 above, (a0, a1, a2) = (1, 0.5, 0.25); expected ρd·I_p/3",
         i,
         Vec3::splat(1.0 / 3.0),
         10.0 * TOL,
@@ -409,7 +420,7 @@ fn ex_local_light_attenuated_light_through_the_renderer() {
     let k = 1.0 / (1.0 + 0.5 * d + 0.25 * d * d);
     let expected = vec3(0.05, 0.08, 0.09) + vec3(0.9, 0.8, 0.7) * vec3(0.7, 0.7, 0.7) * k;
     assert_vec_eq(
-        "I at the sphere's nearest point, the light 9 away, (1, 0.5, 0.25): I_a + I_p·(ρd + ρs)/25.75",
+        "I at the sphere's nearest point, the light 9 away, (1, 0.5, 0.25); expected I_a + I_p·(ρd + ρs)/25.75",
         c,
         expected,
         10.0 * TOL,
@@ -427,7 +438,7 @@ fn ex_local_light_several_lights_add_up() {
     let (c1, _) = centre(&one, Chapter::Shading);
     let (c2, _) = centre(&two, Chapter::Shading);
     assert_vec_eq(
-        "I with a second light of 0.5 behind the first, less I with one light: 0.5·(ρd + ρs)",
+        "I with a second light of 0.5 behind the first, less I with one light; expected 0.5·(ρd + ρs)",
         c2 - c1,
         Vec3::splat(0.5) * vec3(0.7, 0.7, 0.7),
         10.0 * TOL,
@@ -462,7 +473,7 @@ fn open_plane_is_shaded_on_the_side_the_viewer_sees() {
         TOL,
     );
     assert_vec_eq(
-        "I of the plane seen from below, lit from above: dark",
+        "I of the plane seen from below, lit from above; expected dark",
         across,
         Vec3::ZERO,
         TOL,
@@ -517,15 +528,20 @@ fn phong_with_both_cosines_between_zero_and_one() {
     let a = (15.0 as Real).to_radians();
     let v = Vec3::new(-a.sin(), a.cos(), 0.0);
     let s = (light.position - p).normalize();
-    assert_near("max(n·s, 0) for s 60° from n", lambert(n, s), 0.5, TOL);
     assert_near(
-        "r·v for r 60° on the other side of n, v 15° from n",
+        "max(n·s, 0) for s 60° from n; expected cos 60°",
+        lambert(n, s),
+        0.5,
+        TOL,
+    );
+    assert_near(
+        "r·v for r 60° on the other side of n, v 15° from n; expected cos 45°",
         mirror(s, n).dot(v),
         (2.0 as Real).sqrt() / 2.0,
         10.0 * TOL,
     );
     assert_near(
-        "the highlight (r·v)³ for r·v = √2/2",
+        "the highlight max(r·v, 0)^f for n = y, s 60° from n, v 15° from n, f = 3; expected (√2/2)³, r·v = cos 45°",
         highlight(n, s, v, 3.0),
         h,
         10.0 * TOL,
@@ -643,7 +659,7 @@ fn ex_local_light_the_recorder_hears_the_ambient_term_each_light_and_the_local_l
         .local
         .expect("the recorder hears the local light I (rec.local): it heard nothing");
     assert_vec_eq(
-        "I told to rec.local: I_a + Σ arriving",
+        "I told to rec.local; expected I_a + Σ arriving",
         local,
         i_a + lit,
         10.0 * TOL,

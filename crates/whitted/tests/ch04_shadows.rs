@@ -188,7 +188,7 @@ fn ex_transmittance_translucent_occluders_let_their_transmission_through() {
     );
     let two = [ball(vec3(0.0, 3.0, 0.0), 1), ball(vec3(0.0, 7.0, 0.0), 1)];
     assert_near(
-        "the share reaching P past two glass balls of k_t = 0.6: 0.6²",
+        "the share reaching P past two glass balls of k_t = 0.6; expected 0.6²",
         share(&two, L),
         0.36,
         TOL,
@@ -215,7 +215,7 @@ fn ex_send_feeler_point_under_a_sphere_is_lit_at_stage_3_and_shadowed_at_stage_4
     // the eye looks straight down at the origin; the sphere is off to the side, not in view
     let (lit, s3) = centre(&s, Chapter::Shading);
     assert_vec_eq(
-        "I of the floor point, the sphere off to the side, chapter 3: ρa + ρd",
+        "I of the floor point, the sphere off to the side, chapter 3; expected ρa + ρd",
         lit,
         Vec3::splat(0.1 + 0.6),
         TOL,
@@ -223,7 +223,7 @@ fn ex_send_feeler_point_under_a_sphere_is_lit_at_stage_3_and_shadowed_at_stage_4
     assert_eq!(s3.shadow, 0, "the feelers cast at chapter 3");
     let (also_lit, s4) = centre(&s, Chapter::Shadows);
     assert_vec_eq(
-        "I of the floor point, the sphere off to the side, chapter 4: ρa + ρd, lit",
+        "I of the floor point, the sphere off to the side, chapter 4; expected ρa + ρd, lit",
         also_lit,
         Vec3::splat(0.7),
         TOL,
@@ -242,7 +242,7 @@ fn ex_send_feeler_point_under_a_sphere_is_lit_at_stage_3_and_shadowed_at_stage_4
     );
     let (dark, _) = centre(&shadowed, Chapter::Shadows);
     assert_vec_eq(
-        "I of the floor point under the sphere, chapter 4: ρa only, in shadow",
+        "I of the floor point under the sphere, chapter 4; expected ρa only, in shadow",
         dark,
         Vec3::splat(0.1),
         TOL,
@@ -264,7 +264,7 @@ fn ex_send_feeler_the_light_is_in_front_by_l_minus_p_wherever_the_scene_sits() {
     );
     let (dark, stats) = centre(&shadowed, Chapter::Shadows);
     assert_vec_eq(
-        "I of the floor point at y = −100 under the sphere: ρa only, in shadow",
+        "I of the floor point at y = −100 under the sphere; expected ρa only, in shadow",
         dark,
         Vec3::splat(0.1),
         TOL,
@@ -377,15 +377,20 @@ fn ex_feeler_ray_feeler_starts_at_the_point_and_reaches_the_light_at_u_one() {
         vec3(-5.0, 4.0, -2.5),
         TOL,
     );
-    assert_vec_eq(&format!("S(0) {of}: P"), s.at(0.0), p, TOL);
-    assert_vec_eq(&format!("S(1) {of}: L"), s.at(1.0), l, TOL);
+    assert_vec_eq(&format!("S(0) {of}; expected P"), s.at(0.0), p, TOL);
+    assert_vec_eq(&format!("S(1) {of}; expected L"), s.at(1.0), l, TOL);
     assert_vec_eq(
-        &format!("S(½) {of}: the midpoint"),
+        &format!("S(½) {of}; expected the midpoint"),
         s.at(0.5),
         vec3(-1.5, 4.0, 1.75),
         TOL,
     );
-    assert_vec_eq(&format!("the origin {of}: P exactly"), s.origin, p, 0.0);
+    assert_vec_eq(
+        &format!("the origin {of}; expected P exactly"),
+        s.origin,
+        p,
+        0.0,
+    );
 }
 
 /// A hit at u alone, for `shadow::blocks`.
@@ -410,7 +415,7 @@ fn ex_blocks_light_occluder_at_u_zero_does_not_shadow() {
     let u: Vec<Real> = hits.as_slice().iter().map(|h| h.t).collect();
     assert!(
         u.len() == 2 && (u[0] + 0.2).abs() <= TOL && u[1].abs() <= TOL,
-        "the feeler from P = 0 to L = (0, 10, 0) meets the unit ball at (0, −1, 0) at u = \
+        "the feeler from P = 0 to L = (0, 10, 0) meets the unit ball at (0, −1, 0): u computed \
          {u:?}, expected [−0.2, 0] (tolerance {TOL:e})"
     );
     assert!(
@@ -618,7 +623,7 @@ fn ex_send_feeler_the_feeler_leaves_from_the_offset_start_towards_the_light() {
             "the share of the light reaching the floor past the opaque sphere, {offset:?}"
         );
         assert_vec_eq(
-            &format!("the pixel's colour with {offset:?}: ρa only"),
+            &format!("the pixel's colour with {offset:?}; expected ρa only"),
             tree.colour,
             Vec3::splat(0.1),
             TOL,

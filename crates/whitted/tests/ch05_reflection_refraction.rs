@@ -88,7 +88,7 @@ fn ex_mirror_ray_reflection_of_a_45_degree_ray() {
         let of = format!("for d {a}° from −n, n = y (l = {l})");
         assert_near(&format!("‖l‖ {of}"), l.length(), 1.0, TOL);
         assert_near(
-            &format!("l·n {of}: cos {a}°"),
+            &format!("l·n {of}; expected cos {a}°"),
             l.dot(Vec3::Y),
             deg(a).cos(),
             TOL,
@@ -100,19 +100,19 @@ fn ex_mirror_ray_reflection_of_a_45_degree_ray() {
     let l = reflect(d, n);
     let of = format!("for d = (0.3, −4, 1.2), n = (2, −1, 2)/3 (l = {l})");
     assert_near(
-        &format!("‖l‖ {of}: ‖d‖"),
+        &format!("‖l‖ {of}; expected ‖d‖"),
         l.length(),
         d.length(),
         10.0 * TOL,
     );
     assert_near(
-        &format!("l·n {of}: −(d·n)"),
+        &format!("l·n {of}; expected −(d·n)"),
         l.dot(n),
         -d.dot(n),
         10.0 * TOL,
     );
     assert_vec_eq(
-        &format!("l for −n {of}: the same l"),
+        &format!("l for −n {of}; expected the same l as for n"),
         reflect(d, -n),
         l,
         10.0 * TOL,
@@ -137,20 +137,20 @@ fn ex_refract_snell_air_to_glass_at_30_degrees() {
     assert_near(&format!("‖t‖ {of}"), t.length(), 1.0, TOL);
     let sin2 = t.x; // the tangential component of a unit vector is sin θ₂
     assert_near(
-        &format!("sin θ₂ = t_x {of}: sin 30°/1.5"),
+        &format!("sin θ₂, t_x, {of}; expected sin 30°/1.5"),
         sin2,
         1.0 / 3.0,
         TOL,
     );
     // cos θ₂ = √(1 − 1/9)
     assert_near(
-        &format!("cos θ₂ = −t_y {of}: √(1 − 1/9)"),
+        &format!("cos θ₂, −t_y, {of}; expected √(1 − 1/9)"),
         -t.y,
         (8.0 as Real).sqrt() / 3.0,
         TOL,
     );
     assert_near(
-        &format!("t_z {of}: in the plane of incidence"),
+        &format!("t_z {of}; expected in the plane of incidence"),
         t.z,
         0.0,
         TOL,
@@ -171,7 +171,7 @@ fn ex_critical_angle_from_glass_to_air() {
     let theta_c = critical_angle(1.5, 1.0)
         .expect("glass (1.5) to air (1) has a critical angle: critical_angle_sine gave none");
     assert_near(
-        "sin θc from glass to air: 1/1.5",
+        "sin θc from glass to air; expected 1/1.5",
         theta_c.sin(),
         1.0 / 1.5,
         TOL,
@@ -185,7 +185,7 @@ fn ex_critical_angle_from_glass_to_air() {
     // speeds: c = c₀/n, medium 1 glass, medium 2 air
     let (c1, c2): (Real, Real) = (1.0 / 1.5, 1.0);
     assert_near(
-        "(c₂/c₁)·sin θc from glass to air: 1",
+        "(c₂/c₁)·sin θc from glass to air",
         (c2 / c1) * theta_c.sin(),
         1.0,
         TOL,
@@ -220,7 +220,7 @@ fn ex_refract_glass_to_air_just_below_and_just_above_the_critical_angle() {
     assert_near(&format!("‖t‖ {of}"), below.length(), 1.0, 10.0 * TOL);
     assert!(
         below.x > 0.99 && below.x < 1.0,
-        "sin θ₂ = t_x {of} is {}, expected just under 1 (grazing out)",
+        "sin θ₂, t_x, {of}: computed {}, expected just under 1 (grazing out)",
         below.x
     );
     for a in [theta_c + 0.1, 89.0] {
@@ -259,7 +259,7 @@ fn ex_reflect_and_refract_ray_along_the_axis_of_a_glass_sphere_leaves_undeflecte
     let s = scene(&glass_sphere_scene(5));
     let (c, stats) = centre(&s, Chapter::ReflectionRefraction);
     assert_vec_eq(
-        "I through the glass sphere's axis: k_t·k_t·red = 0.9·0.9·(1, 0, 0)",
+        "I through the glass sphere's axis; expected k_t·k_t·red = 0.9·0.9·(1, 0, 0)",
         c,
         vec3(0.81, 0.0, 0.0),
         10.0 * TOL,
@@ -284,8 +284,8 @@ fn ex_reflect_and_refract_recursion_depth_limits_the_refracted_path() {
         "the transmitted rays with max_depth = 1"
     );
     assert_vec_eq(
-        "I through the glass sphere with max_depth = 1: the inner hit has no local light and may \
-         recurse no more",
+        "I through the glass sphere with max_depth = 1; expected black: the inner hit has no local \
+         light and may recurse no more",
         c,
         Vec3::ZERO,
         TOL,
@@ -327,7 +327,9 @@ fn ex_reflect_and_refract_two_facing_mirrors_stop_at_max_depth() {
             .map(|i| 0.1 * (0.5 as Real).powi(i as i32))
             .sum();
         assert_near(
-            &format!("I (red) between two mirrors of k_r = 0.5, max_depth = {depth}: ρa·Σ k_r^i"),
+            &format!(
+                "I (red) between two mirrors of k_r = 0.5, max_depth = {depth}; expected ρa·Σ k_r^i"
+            ),
             c.x,
             expected,
             10.0 * TOL,
@@ -368,7 +370,7 @@ fn ex_reflect_and_refract_total_internal_reflection_sends_the_transmitted_share_
     // each bounce adds ρa·I_m = 0.1, weighted by the whole transmitted share 0.5 per level
     let expected: Real = (0..=4).map(|i| 0.1 * (0.5 as Real).powi(i)).sum();
     assert_near(
-        "I (red) inside the glass ball: ρa·Σ (k_r + k_t)^i, the transmitted share reflected",
+        "I (red) inside the glass ball; expected ρa·Σ (k_r + k_t)^i, the transmitted share reflected",
         c.x,
         expected,
         10.0 * TOL,
@@ -456,10 +458,11 @@ fn ex_refractive_indices_indices_go_from_air_into_the_material_and_back() {
         (true, 1.33, (1.0, 1.33)),
         (false, 2.42, (2.42, 1.0)),
     ] {
-        assert_eq!(
-            indices(entering, ior),
-            expected,
-            "(n₁, n₂) for entering = {entering}, ior = {ior}"
+        let got = indices(entering, ior);
+        assert!(
+            got == expected,
+            "(n₁, n₂) for entering = {entering}, ior = {ior}: computed {got:?}, expected \
+             {expected:?} (n₁ the side the ray comes from)"
         );
     }
     let speed = |n: Real| 1.0 / n; // c = c₀/n with c₀ = 1
@@ -472,14 +475,14 @@ fn ex_refractive_indices_indices_go_from_air_into_the_material_and_back() {
         TOL,
     );
     assert_near(
-        &format!("c₁/c₂ from air into water: n₂/n₁, (n₁, n₂) = ({n1}, {n2})"),
+        &format!("c₁/c₂ from air into water, (n₁, n₂) = ({n1}, {n2}); expected n₂/n₁"),
         speed(n1) / speed(n2),
         n2 / n1,
         TOL,
     );
     let (n1, n2) = indices(false, 1.33);
     assert_near(
-        &format!("n₂₁ = c₁/c₂ from water into air: 1/1.33, (n₁, n₂) = ({n1}, {n2})"),
+        &format!("n₂₁ = c₁/c₂ from water into air, (n₁, n₂) = ({n1}, {n2}); expected 1/1.33"),
         speed(n1) / speed(n2),
         real(0.751_879_699_248_120_3),
         TOL,
@@ -499,7 +502,7 @@ fn ex_critical_angle_sine_is_n2_over_n1() {
             panic!("sin θc from n₁ = {n1} to n₂ = {n2}: none, expected n₂/n₁ = {expected}")
         });
         assert_near(
-            &format!("sin θc from n₁ = {n1} to n₂ = {n2}: n₂/n₁"),
+            &format!("sin θc from n₁ = {n1} to n₂ = {n2}; expected n₂/n₁"),
             sine,
             expected,
             TOL,
@@ -521,7 +524,7 @@ fn ex_critical_angle_sine_is_n2_over_n1() {
 fn ex_refract_refraction_bends_only_between_different_indices() {
     for (n1, n2) in [(1.0, 1.5), (1.5, 1.0), (1.33, 2.42)] {
         assert_vec_eq(
-            &format!("t for d = −y at normal incidence, n₁ = {n1} → n₂ = {n2}: unbent"),
+            &format!("t for d = −y at normal incidence, n₁ = {n1} → n₂ = {n2}; expected d, unbent"),
             refracted(Vec3::NEG_Y, n1, n2),
             Vec3::NEG_Y,
             TOL,
@@ -530,7 +533,7 @@ fn ex_refract_refraction_bends_only_between_different_indices() {
     for a in [10.0, 45.0, 80.0] {
         let d = incoming(a);
         assert_vec_eq(
-            &format!("t for d {a}° from −n, n₁ = n₂ = 1.5: unbent"),
+            &format!("t for d {a}° from −n, n₁ = n₂ = 1.5; expected d, unbent"),
             refracted(d, 1.5, 1.5),
             d,
             10.0 * TOL,
@@ -566,7 +569,7 @@ fn ex_refract_a_slab_with_parallel_faces_lets_the_ray_out_parallel() {
         let (n1, n2) = indices(false, 1.5);
         let out = refracted(inside, n1, n2);
         assert_vec_eq(
-            &format!("t out of a slab of glass for d {a}° from −n (inside: {inside}): d"),
+            &format!("t out of a slab of glass for d {a}° from −n (inside: {inside}); expected d"),
             out,
             d,
             10.0 * TOL,
@@ -591,13 +594,13 @@ fn ex_refract_refracted_ray_obeys_n1_sin_theta1_equals_n2_sin_theta2() {
         let of = format!("for θ₁ = {angle}°, n₁ = {n1} → n₂ = {n2} (t = {t})");
         assert_near(&format!("‖t‖ {of}"), t.length(), 1.0, 10.0 * TOL);
         assert_near(
-            &format!("sin θ₂ = t_x {of}: n₁·sin θ₁/n₂"),
+            &format!("sin θ₂, t_x, {of}; expected n₁·sin θ₁/n₂"),
             t.x,
             real(sin2),
             10.0 * TOL,
         );
         assert_near(
-            &format!("t_z {of}: in the plane of incidence"),
+            &format!("t_z {of}; expected in the plane of incidence"),
             t.z,
             0.0,
             TOL,
@@ -608,7 +611,7 @@ fn ex_refract_refracted_ray_obeys_n1_sin_theta1_equals_n2_sin_theta2() {
             t.y
         );
         assert_near(
-            &format!("n₁·sin θ₁ − n₂·sin θ₂ {of}: Snell's law"),
+            &format!("n₁·sin θ₁ − n₂·sin θ₂ {of}; expected by Snell's law"),
             n1 * deg(angle).sin() - n2 * t.x,
             0.0,
             10.0 * TOL,
@@ -633,7 +636,7 @@ fn ex_refract_critical_angles_of_the_notes_table() {
         let sine = critical_angle_sine(n, 1.0)
             .unwrap_or_else(|| panic!("sin θc from n = {n} into air: none, expected 1/n"));
         assert_near(
-            &format!("sin θc from n = {n} into air: 1/n"),
+            &format!("sin θc from n = {n} into air; expected 1/n"),
             sine,
             real(sin_c),
             TOL,
@@ -657,11 +660,11 @@ fn ex_refract_critical_angles_of_the_notes_table() {
         });
         assert!(
             below.x < 1.0 && below.x > 0.99,
-            "sin θ₂ = t_x from n = {n} into air at θc − 0.01° is {}, expected just under 1",
+            "sin θ₂, t_x, from n = {n} into air at θc − 0.01°: computed {}, expected just under 1",
             below.x
         );
         assert_near(
-            &format!("sin θ₂ = t_x from n = {n} into air at θc − 0.01°: n·sin θ₁"),
+            &format!("sin θ₂, t_x, from n = {n} into air at θc − 0.01°; expected n·sin θ₁"),
             below.x,
             n * deg(a).sin(),
             10.0 * TOL,
@@ -707,7 +710,7 @@ fn ex_reflect_and_refract_five_terms_of_the_lighting_equation_add_up() {
     let s = scene(FIVE_TERMS);
     let (c, stats) = centre(&s, Chapter::ReflectionRefraction);
     assert_vec_eq(
-        "I = I_a + I_d + I_s + k_r·I_l + k_t·I_r at the floor (k_r and k_t exchanged would give \
+        "I_a + I_d + I_s + k_r·I_l + k_t·I_r at the floor (k_r and k_t exchanged would give \
          (0.585, 0.51, 0.455))",
         c,
         vec3(0.545, 0.53, 0.555),
@@ -810,7 +813,7 @@ fn ex_reflect_and_refract_a_transmitted_ray_too_faint_to_matter_is_not_traced() 
             "the kind of branch {through} down the panes (k_r = 0)"
         );
         assert_near(
-            &format!("the weight of transmitted ray {through}: 0.5^{through}"),
+            &format!("the weight of transmitted ray {through}; expected 0.5^{through}"),
             branch.weight,
             0.5_f64.powi(through) as Real,
             TOL,
@@ -829,7 +832,7 @@ fn ex_reflect_and_refract_a_transmitted_ray_too_faint_to_matter_is_not_traced() 
     let (c, stats) = centre(&s, Chapter::ReflectionRefraction);
     let expected: f64 = (0..10).map(|k| 0.1 * 0.5_f64.powi(k)).sum();
     assert_vec_eq(
-        "I through the panes: ρa·Σ 0.5^k for k = 0…9",
+        "I through the panes; expected ρa·Σ 0.5^k for k = 0…9",
         c,
         Vec3::splat(expected as Real),
         1e-5,
@@ -911,13 +914,13 @@ fn ex_reflect_and_refract_the_recorder_hears_each_branch_and_why_one_stopped() {
         through.hit.as_ref().map(|h| (h.object, h.t))
     );
     assert_vec_eq(
-        "the colour the transmitted ray brings back: the background",
+        "the colour the transmitted ray brings back; expected the background",
         through.colour,
         vec3(0.2, 0.4, 0.6),
         TOL,
     );
     assert_vec_eq(
-        "the colour the mirror ray brings back: the ceiling's ρa·I_m",
+        "the colour the mirror ray brings back; expected the ceiling's ρa·I_m",
         mirror.colour,
         vec3(0.4, 0.3, 0.1),
         10.0 * TOL,
@@ -940,7 +943,7 @@ fn ex_reflect_and_refract_the_recorder_hears_each_branch_and_why_one_stopped() {
         "the wall's branches under total internal reflection"
     );
     assert_near(
-        "the k of the mirror ray under total internal reflection: k_r + k_t = 0 + 0.5",
+        "the k of the mirror ray under total internal reflection; expected k_r + k_t = 0 + 0.5",
         wall.branches[0].k,
         0.5,
         TOL,

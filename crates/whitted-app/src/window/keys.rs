@@ -141,7 +141,7 @@ pub fn keymap() -> Vec<Row> {
         .zip(DIGITS)
         .flat_map(|(&c, keys)| keys.map(|k| (k, Action::Chapter(c))))
         .collect();
-    let views: Vec<&str> = View::ALL.iter().map(|v| v.name()).collect();
+    let views: Vec<&str> = View::WINDOW.iter().map(|v| v.name()).collect();
     let (more, less) = (Action::Depth(1), Action::Depth(-1));
     let one =
         |key, action, short, description: &str| Row::keys(vec![(key, action)], short, description);

@@ -356,11 +356,11 @@ impl State {
                 self.options.chapter.number()
             ))];
         }
-        let i = View::ALL
+        let i = View::WINDOW
             .iter()
             .position(|&v| v == self.options.view)
             .unwrap_or(0);
-        self.options.view = View::ALL[(i + 1) % View::ALL.len()];
+        self.options.view = View::WINDOW[(i + 1) % View::WINDOW.len()];
         vec![Command::Render]
     }
 

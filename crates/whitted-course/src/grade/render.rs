@@ -27,7 +27,7 @@ use crate::layout;
 use whitted_learn::trees::{self as learn_trees, Against};
 
 /// The figures' manifest, in the project.
-pub(super) const FIGURES: &str = "docs/figures.toml";
+pub(super) use whitted_learn::figures::FIGURES;
 
 /// How a submission's code renders.
 #[derive(Clone, Debug, PartialEq)]

@@ -13,6 +13,7 @@
 //! | [`recorder`] | what the road tells as it goes ([`Recorder`]): [`Stats`] counts, the inspector keeps the tree |
 //! | [`inspect`] | the ray tree of one pixel (`--inspect X,Y`): its types, the recorder that builds it, its text; JSON via serde |
 //! | [`views`] | the shadow mask, and the scales and palettes of the depth, shadow-mask and rays-per-pixel views |
+//! | [`stages`] | the pictures of single exercises of chapters 3 and 5 (`--view diffuse` …), drawn while a chapter is written |
 //!
 //! The road calls one small function per formula of the notes, and the speed machinery
 //! (tiles, packets, the acceleration structures of [`crate::accel`]) answers the road's
@@ -27,6 +28,7 @@ pub mod options;
 pub mod packets;
 pub mod recorder;
 pub mod sampling;
+pub mod stages;
 pub mod stats;
 pub mod tiles;
 pub mod tracer;

@@ -67,6 +67,7 @@ impl Chapter {
 }
 
 const _: () = assert!(Chapter::ALL.len() == whitted_syllabus::CHAPTERS.len());
+const _: () = assert!(View::ALL.len() == View::WINDOW.len() + View::STAGES.len());
 
 /// What a chapter-2 (or later) render shows at each pixel.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
@@ -87,11 +88,27 @@ pub enum View {
     /// The rays each pixel casts, on a heat scale from 1 (black) to the most possible
     /// (white) (see [`super::views`]).
     Rays,
+    /// Exercise 3.1's picture: the ambient term I_a = ρa·I_m alone (see [`super::stages`]).
+    Ambient,
+    /// Exercise 3.2's picture: each light's attenuation at the hit, in the light's colour.
+    Attenuation,
+    /// Exercise 3.3's picture: each light's max(n·s, 0), in the light's colour.
+    Diffuse,
+    /// Exercise 3.4's picture: the first light's mirror direction r as a colour, (r + 1)/2.
+    Mirror,
+    /// Exercise 3.5's picture: each light's max(r·v, 0)^f, in the light's colour.
+    Highlight,
+    /// Exercise 3.6's picture: Σ I_d + I_s of every light, without the ambient term.
+    Direct,
+    /// Exercise 5.3's picture: the transmitted direction of a translucent hit as a colour.
+    Refracted,
+    /// Exercise 5.4's picture: the mirror ray's direction of a reflective hit as a colour.
+    Mirrored,
 }
 
 impl View {
-    /// Every view, in the order the live window cycles through them.
-    pub const ALL: [View; 6] = [
+    /// The views of a whole road, in the order the live window cycles through them.
+    pub const WINDOW: [View; 6] = [
         View::Color,
         View::Flat,
         View::Normals,
@@ -99,6 +116,33 @@ impl View {
         View::Shadows,
         View::Rays,
     ];
+
+    /// The pictures of single exercises ([`super::stages`]), in the chapters' order.
+    pub const STAGES: [View; 8] = [
+        View::Ambient,
+        View::Attenuation,
+        View::Diffuse,
+        View::Mirror,
+        View::Highlight,
+        View::Direct,
+        View::Refracted,
+        View::Mirrored,
+    ];
+
+    /// Every view: [`View::WINDOW`]'s, then [`View::STAGES`].
+    pub const ALL: [View; 14] = {
+        let mut all = [View::Color; 14];
+        let mut i = 0;
+        while i < all.len() {
+            all[i] = if i < Self::WINDOW.len() {
+                Self::WINDOW[i]
+            } else {
+                Self::STAGES[i - Self::WINDOW.len()]
+            };
+            i += 1;
+        }
+        all
+    };
 
     /// The view's name on the command line and in reports.
     #[must_use]
@@ -110,6 +154,14 @@ impl View {
             View::Depth => "depth",
             View::Shadows => "shadows",
             View::Rays => "rays",
+            View::Ambient => "ambient",
+            View::Attenuation => "attenuation",
+            View::Diffuse => "diffuse",
+            View::Mirror => "mirror",
+            View::Highlight => "highlight",
+            View::Direct => "direct",
+            View::Refracted => "refracted",
+            View::Mirrored => "mirrored",
         }
     }
 }

@@ -35,7 +35,7 @@ use std::borrow::Cow;
 use super::accelerated::Accelerated;
 use super::inspect::{self, RayTree};
 use super::recorder::{RayKind, Recorder, Stop};
-use super::{Chapter, Options, Stats, View, build_accel, sampling, views};
+use super::{Chapter, Options, Stats, View, build_accel, sampling, stages, views};
 use crate::accel::Accelerator;
 use crate::camera::{Camera, direction_colour};
 use crate::light::Light;
@@ -331,26 +331,26 @@ impl<'a, Q: Query> Tracer<'a, Q> {
             View::Color | View::Rays if o.chapter == Chapter::GenericObjects => self.flat(nearest),
             View::Color | View::Rays => self.shade(ray, nearest, 0, 1.0, rec),
             View::Flat => self.flat(nearest),
-            View::Normals => match nearest {
-                Some(n) => direction_colour(shading::facing(n.hit.normal, ray.dir)),
-                None => self.scene.background,
-            },
+            View::Normals => nearest.map_or(self.scene.background, |n| {
+                direction_colour(shading::facing(n.hit.normal, ray.dir))
+            }),
             View::Depth => self
                 .scales
                 .depth(nearest.map(|n| n.hit.t * ray.dir.length())),
-            View::Shadows => match nearest {
-                Some(n) => views::shadow_mask_at(self, &self.query.shading_point(ray, &n), rec),
-                None => Vec3::ZERO,
-            },
+            View::Shadows => nearest.map_or(Vec3::ZERO, |n| {
+                views::shadow_mask_at(self, &self.query.shading_point(ray, &n), rec)
+            }),
+            stage => nearest.map_or(self.scene.background, |n| {
+                stages::colour(stage, &self.query.shading_point(ray, &n), self.scene)
+            }),
         }
     }
 
     /// Chapter 2's colour: the diffuse colour ρd of the material hit, unlit.
     fn flat(&self, nearest: Option<Nearest>) -> Vec3 {
-        match nearest {
-            Some(n) => self.scene.materials[self.scene.objects[n.object].material].diffuse,
-            None => self.scene.background,
-        }
+        nearest.map_or(self.scene.background, |n| {
+            self.scene.materials[self.scene.objects[n.object].material].diffuse
+        })
     }
     // ANCHOR_END: ch2_view_colour
 

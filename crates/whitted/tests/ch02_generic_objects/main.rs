@@ -37,12 +37,12 @@ fn assert_hits(what: &str, hits: &Hits, expected: &[(Real, Part)]) {
     assert_eq!(
         got.len(),
         expected.len(),
-        "the number of hits of the ray {what}: (t, part) = {got:?}, expected {expected:?}"
+        "the hits (t, part) of the ray {what}: computed {got:?}, expected {expected:?}"
     );
     for (i, ((t, part), (te, pe))) in got.iter().zip(expected).enumerate() {
         assert!(
             (t - te).abs() <= 10.0 * TOL,
-            "hit {i} of the ray {what}: t = {t}, expected {te} (tolerance {:e}; all hits: \
+            "t of hit {i} of the ray {what}: computed {t}, expected {te} (tolerance {:e}; all hits: \
              {got:?})",
             10.0 * TOL
         );

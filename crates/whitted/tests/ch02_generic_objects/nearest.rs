@@ -53,7 +53,7 @@ fn nearest_hit_has_the_smallest_positive_t() {
     // the chapter-2 image shows the near sphere's flat colour ρd
     let (c, _) = centre(&s, Chapter::GenericObjects);
     assert_vec_eq(
-        "the colour of a 1 × 1 image: the near sphere's ρd",
+        "the colour of a 1 × 1 image; expected the near sphere's ρd",
         c,
         vec3(1.0, 0.0, 0.0),
         0.0,

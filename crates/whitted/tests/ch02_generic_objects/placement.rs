@@ -15,7 +15,7 @@ fn placed(steps: &[Step], what: &str) -> Placement {
 fn assert_identity(what: &str, m: Mat4, tol: Real) {
     assert!(
         m.abs_diff_eq(Mat4::IDENTITY, tol),
-        "{what} = {m}, expected the identity (tolerance {tol:e} per entry)"
+        "{what}: computed {m}, expected the identity (tolerance {tol:e} per entry)"
     );
 }
 
@@ -91,7 +91,7 @@ fn ex_step_matrix_each_step_has_the_matrix_of_its_transformation() {
         TOL,
     );
     assert_vec_eq(
-        "S·x as a direction, for a translation by (1, −2, 3): unmoved",
+        "S·x as a direction, for a translation by (1, −2, 3); expected x, unmoved",
         shift.transform_vector3(Vec3::X),
         Vec3::X,
         TOL,
@@ -150,7 +150,7 @@ fn ex_ray_in_object_space_a_ray_moves_its_origin_as_a_point_and_its_direction_as
     for t in [-1.0, 0.5, 2.0] {
         let on_world = world.origin + world.dir * t;
         assert_vec_eq(
-            &format!("M⁻¹e + M⁻¹d·t at t = {t}: M⁻¹ of the world ray's point"),
+            &format!("M⁻¹e + M⁻¹d·t at t = {t}; expected M⁻¹ of the world ray's point"),
             local.origin + local.dir * t,
             m.transform_point3(on_world),
             10.0 * TOL,
@@ -238,7 +238,7 @@ fn ex_hit_placed_shape_t_is_the_same_in_world_and_object_space() {
         let p_object = local.at(h.t);
         assert_near(
             &format!(
-                "‖M⁻¹e + M⁻¹d·t‖ at the hit's t = {} {what}: on the unit sphere",
+                "‖M⁻¹e + M⁻¹d·t‖ at the hit's t = {} {what}; expected on the unit sphere",
                 h.t
             ),
             p_object.length(),
@@ -246,7 +246,10 @@ fn ex_hit_placed_shape_t_is_the_same_in_world_and_object_space() {
             100.0 * TOL,
         );
         assert_vec_eq(
-            &format!("M·(M⁻¹e + M⁻¹d·t) at the hit's t = {}: e + d·t", h.t),
+            &format!(
+                "M·(M⁻¹e + M⁻¹d·t) at the hit's t = {}; expected e + d·t",
+                h.t
+            ),
             o.placement.m().transform_point3(p_object),
             p_world,
             100.0 * TOL,
@@ -363,7 +366,7 @@ fn ex_normal_to_world_normals_come_back_unit() {
         assert_near(&format!("‖n‖ for {what} (n = {n})"), n.length(), 1.0, TOL);
     }
     assert_vec_eq(
-        "n for the cone's n′ = (0, −1, 1) under the identity: (0, −1, 1)/√2",
+        "n for the cone's n′ = (0, −1, 1) under the identity; expected (0, −1, 1)/√2",
         Placement::identity().normal_to_world(vec3(0.0, -1.0, 1.0)),
         vec3(0.0, -1.0, 1.0) / s,
         TOL,
@@ -390,7 +393,7 @@ fn ex_normal_to_world_under_a_non_uniform_scale_the_normal_of_a_hit_is_perpendic
     let right = vec3(1.0, 2.0, 0.0) / (5.0 as Real).sqrt();
     assert_vec_eq(
         &format!(
-            "n/‖n‖ at P {what} (n = {}): (M⁻¹)ᵀ·n′ made unit; M·n′ would give (2, 1, 0)/√5",
+            "n/‖n‖ at P {what} (n = {}); expected (M⁻¹)ᵀ·n′ made unit, where M·n′ would give (2, 1, 0)/√5",
             hit.normal
         ),
         unit(hit.normal),

@@ -14,7 +14,7 @@ fn ex_facet_crossing_facet_t_is_d_minus_n_dot_e_all_over_n_dot_d() {
     let of = "of the ray from (0, 0, 5) along (0, 0, −2) with the facet z = 1 (n = z, d = 1)";
     assert_near(&format!("t = (d − n·e)/(n·d) {of}"), right, 2.0, TOL);
     assert_near(
-        &format!("n·r(t) at that t {of}: d, on the facet"),
+        &format!("n·r(t) at that t {of}; expected d, on the facet"),
         facet.normal().dot(r.at(right)),
         facet.d(),
         TOL,
@@ -115,7 +115,7 @@ fn ex_hit_polyhedron_octahedron_hits_through_its_facets() {
     let t: Vec<Real> = hits.as_slice().iter().map(|h| h.t).collect();
     assert!(
         t.len() == 2 && (t[0] - 4.35).abs() <= 10.0 * TOL && (t[1] - 5.65).abs() <= 10.0 * TOL,
-        "the hits' t of the ray {what}: {t:?}, expected [4.35, 5.65] (tolerance {:e})",
+        "the hits' t of the ray {what}: computed {t:?}, expected [4.35, 5.65] (tolerance {:e})",
         10.0 * TOL
     );
     let k = 1.0 / (3.0 as Real).sqrt();

@@ -1,6 +1,8 @@
 //! Shared test helpers: tolerances per precision and small builders.
 #![allow(dead_code)]
 
+use std::fmt::Display;
+
 use whitted::real::{Real, Vec3};
 
 /// Absolute tolerance for values of order 1 computed in a handful of operations.
@@ -10,27 +12,58 @@ pub const TOL: Real = 1e-12;
 #[cfg(feature = "f32")]
 pub const TOL: Real = 1e-5;
 
+/// What a failure message says of a quantity: `what` names it in the notes' symbols, with
+/// what it was computed from ("H for N = 1, θ = 60°"); an optional tail after `"; expected "`
+/// says where the expected value comes from ("r·v for …; expected cos 45°"). The message reads
+/// "WHAT: computed A, expected B (WHERE FROM)": never "WHAT = A", which would read as an
+/// equation that the failure disproves.
+fn computed_expected(what: &str, actual: impl Display, expected: impl Display) -> String {
+    match what.split_once("; expected ") {
+        Some((quantity, from)) => {
+            format!("{quantity}: computed {actual}, expected {expected} ({from})")
+        }
+        None => format!("{what}: computed {actual}, expected {expected}"),
+    }
+}
+
 /// Asserts that the real `actual` lies within `tol` of `expected`; `what` names it in the notes'
-/// symbols, with what it was computed from ("H for N = 1, θ = 60°"). The message gives the
-/// value computed, the value expected, the tolerance and the difference. A NaN never passes.
+/// symbols, with what it was computed from ("H for N = 1, θ = 60°"), and may say where the
+/// expected value comes from after `"; expected "` ("…; expected tan 30°"). The message gives
+/// the quantity, the value computed, the value expected, the tolerance and the difference:
+/// "H for N = 1, θ = 60°: computed 0.5, expected 0.5773502691896257 (tan 30°) (tolerance 1e-12,
+/// off by 7.7e-2)". A NaN never passes.
 #[track_caller]
 pub fn assert_near(what: &str, actual: Real, expected: Real, tol: Real) {
     let off = (actual - expected).abs();
     assert!(
         off <= tol,
-        "{what} = {actual}, expected {expected} (tolerance {tol:e}, off by {off:e})"
+        "{} (tolerance {tol:e}, off by {off:e})",
+        computed_expected(what, actual, expected)
+    );
+}
+
+/// Asserts that the real `actual` is exactly `expected` (a constant, or a value a clamp or a
+/// shortcut must give bit for bit); `what` as for [`assert_near`]. A NaN never passes.
+#[track_caller]
+pub fn assert_exact(what: &str, actual: Real, expected: Real) {
+    assert!(
+        actual == expected,
+        "{} (exactly)",
+        computed_expected(what, actual, expected)
     );
 }
 
 /// Asserts two vectors agree component by component within `tol`; `what` names the vector in
-/// the notes' symbols ("u", "d for (c, r) = (0, 0)"). The message gives the vector computed,
-/// the one expected, the tolerance and each component's difference. A NaN never passes.
+/// the notes' symbols ("u", "d for (c, r) = (0, 0)"), as for [`assert_near`]. The message gives
+/// the vector computed, the one expected, the tolerance and each component's difference. A NaN
+/// never passes.
 #[track_caller]
 pub fn assert_vec_eq(what: &str, actual: Vec3, expected: Vec3, tol: Real) {
     let off = (actual - expected).abs();
     assert!(
         off.cmple(Vec3::splat(tol)).all(),
-        "{what} = {actual}, expected {expected} (tolerance {tol:e} per component, off by {off})"
+        "{} (tolerance {tol:e} per component, off by {off})",
+        computed_expected(what, actual, expected)
     );
 }
 

@@ -312,11 +312,11 @@ impl Difference {
             .join(" → ")
     }
 
-    /// "camera ray → hit `cone`: t = 4.02 (reference 3.87)".
+    /// "camera ray → hit `cone`: t: 4.02 (the reference: 3.87)".
     #[must_use]
     pub fn text(&self) -> String {
         format!(
-            "{}: {} = {} (reference {})",
+            "{}: {}: {} (the reference: {})",
             self.path_text(),
             self.symbol,
             self.computed,

@@ -88,6 +88,9 @@ impl fmt::Display for RayTree {
                 Some("which lights reach the hit: light 0 red, 1 green, 2 blue, × share")
             }
             (_, View::Rays) => Some("the number of rays the pixel cast, on the heat scale"),
+            (_, view) if crate::render::stages::is_stage(view) => {
+                Some("one exercise's quantity at the hit (see `--help`'s list of views)")
+            }
             _ => None,
         };
         if let Some(what) = shows {

@@ -1,0 +1,115 @@
+//! What the student changed since the last check: the exercises whose text between
+//! `// BEGIN SOLUTION NAME` and `// END SOLUTION` differs from the text the last complete check
+//! saw (`.whitted/regions.json`). `cargo learn` checks those exercises first, so that the
+//! verdict on what was just saved comes at once: a finished exercise that breaks, or one that
+//! now passes.
+//!
+//! Course book: [The student's guide](../../../../docs/book/student-guide.html) (`docs/src/student-guide.md`).
+
+use std::collections::BTreeMap;
+use std::path::{Path, PathBuf};
+
+use crate::learn::STATE_DIR;
+use crate::manifest::Manifest;
+use crate::{ToolError, layout};
+
+/// The file, under [`STATE_DIR`], that keeps the regions of the last complete check.
+pub const REGIONS: &str = "regions.json";
+
+/// The text of every exercise's region in the renderer's sources, by exercise name (the lines
+/// between its markers, as they stand).
+#[must_use]
+pub fn regions(root: &Path) -> BTreeMap<String, String> {
+    let mut out = BTreeMap::new();
+    let mut stack: Vec<PathBuf> = vec![root.join(layout::core_src())];
+    while let Some(dir) = stack.pop() {
+        let Ok(entries) = std::fs::read_dir(&dir) else {
+            continue;
+        };
+        for path in entries.flatten().map(|e| e.path()) {
+            if path.is_dir() {
+                stack.push(path);
+            } else if path.extension().is_some_and(|x| x == "rs")
+                && let Ok(text) = std::fs::read_to_string(&path)
+            {
+                read_regions(&text, &mut out);
+            }
+        }
+    }
+    out
+}
+
+/// Adds the regions of the source `text` to `out`.
+fn read_regions(text: &str, out: &mut BTreeMap<String, String>) {
+    let mut open: Option<(String, Vec<&str>)> = None;
+    for line in text.lines() {
+        let trimmed = line.trim();
+        if let Some(name) = trimmed.strip_prefix(layout::BEGIN) {
+            open = Some((name.trim().to_string(), Vec::new()));
+        } else if trimmed == layout::END {
+            if let Some((name, lines)) = open.take() {
+                out.insert(name, lines.join("\n"));
+            }
+        } else if let Some((_, lines)) = &mut open {
+            lines.push(line);
+        }
+    }
+}
+
+/// The regions the last complete check saw (empty before the first).
+#[must_use]
+pub fn saved(root: &Path) -> BTreeMap<String, String> {
+    std::fs::read_to_string(root.join(STATE_DIR).join(REGIONS))
+        .ok()
+        .and_then(|t| serde_json::from_str(&t).ok())
+        .unwrap_or_default()
+}
+
+/// Keeps `regions` for the next check.
+pub fn save(root: &Path, regions: &BTreeMap<String, String>) -> Result<(), ToolError> {
+    let dir = root.join(STATE_DIR);
+    std::fs::create_dir_all(&dir).map_err(|e| ToolError::io(&dir, e))?;
+    let text = serde_json::to_string(regions)
+        .map_err(|e| ToolError::Cargo(format!("cannot write the regions: {e}")))?;
+    crate::files::write_file(&dir.join(REGIONS), text.as_bytes())
+}
+
+/// The exercises (manifest indices, in order) whose region in `now` differs from `before`;
+/// none when nothing was saved before (a first check has nothing to compare with).
+#[must_use]
+pub fn touched(
+    manifest: &Manifest,
+    before: &BTreeMap<String, String>,
+    now: &BTreeMap<String, String>,
+) -> Vec<usize> {
+    if before.is_empty() {
+        return Vec::new();
+    }
+    (0..manifest.entries.len())
+        .filter(|&i| {
+            let name = &manifest.entries[i].exercise.name;
+            before.get(name) != now.get(name)
+        })
+        .collect()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A region is the text between its markers; text outside any region is no exercise's.
+    #[test]
+    fn a_region_is_the_text_between_its_markers() {
+        let text = "fn a() {\n    // BEGIN SOLUTION first\n    1 + 1\n    // END SOLUTION\n}\n\
+                    fn b() {\n    let x = 2;\n    // BEGIN SOLUTION second\n    x\n    // END SOLUTION\n}\n";
+        let mut out = BTreeMap::new();
+        read_regions(text, &mut out);
+        assert_eq!(
+            out.into_iter().collect::<Vec<_>>(),
+            vec![
+                ("first".to_string(), "    1 + 1".to_string()),
+                ("second".to_string(), "    x".to_string())
+            ]
+        );
+    }
+}
