@@ -23,7 +23,7 @@
 //! name = "half_height"      # the exercise's name; its displayed id (1.2) is its place
 //! title = "Half the near plane's height"
 //! task = "Return H = N·tan(θ/2) …"
-//! hints = ["a nudge", "nearly the answer"]
+//! hints = ["the idea", "the formula"]
 //! points = 1
 //! ```
 //!

@@ -97,6 +97,45 @@ pub fn touched(
 mod tests {
     use super::*;
 
+    /// A manifest of two exercises, `first` and `second`.
+    fn two() -> Manifest {
+        let entry = |function: &str, name: &str| {
+            format!(
+                "[[formula]]\nfunction = \"{function}\"\nname = \"{name}\"\nchapter = 3\n\
+                 section = \"Shading\"\nformula = \"x\"\ntitle = \"T\"\ntask = \"Do it.\"\n\
+                 hints = [\"One.\", \"Two.\"]\npoints = 1\n"
+            )
+        };
+        let text = format!(
+            "[prove]\ntest = \"render_paths\"\nfilter = \"ch{{chapter}}_\"\n{}{}\
+             [handout]\ntests = [\"ch03_shading\", \"render_paths\"]\n",
+            entry("shading::a", "first"),
+            entry("shading::b", "second")
+        );
+        crate::manifest::parse(&text, "m.toml").unwrap()
+    }
+
+    /// The exercises whose region differs from the last check's are touched, in the manifest's
+    /// order; a first check (nothing saved) touches none, and an exercise whose region went
+    /// missing is touched.
+    #[test]
+    fn the_exercises_whose_region_changed_are_touched() {
+        let m = two();
+        let map = |a: &str, b: &str| -> BTreeMap<String, String> {
+            [("first", a), ("second", b)]
+                .into_iter()
+                .filter(|(_, v)| !v.is_empty())
+                .map(|(k, v)| (k.to_string(), v.to_string()))
+                .collect()
+        };
+        let before = map("todo!()", "todo!()");
+        assert_eq!(touched(&m, &BTreeMap::new(), &before), Vec::<usize>::new());
+        assert_eq!(touched(&m, &before, &before), Vec::<usize>::new());
+        assert_eq!(touched(&m, &before, &map("todo!()", "x + 1")), vec![1]);
+        assert_eq!(touched(&m, &before, &map("1.0", "x + 1")), vec![0, 1]);
+        assert_eq!(touched(&m, &before, &map("todo!()", "")), vec![1]);
+    }
+
     /// A region is the text between its markers; text outside any region is no exercise's.
     #[test]
     fn a_region_is_the_text_between_its_markers() {

@@ -756,6 +756,7 @@ pub fn check(
         .iter()
         .filter_map(|&i| target_of[i].clone())
         .collect();
+    first_targets.sort();
     first_targets.dedup();
     first_targets.retain(|t| manifest.handout.tests.contains(t));
     if !first_targets.is_empty() {

@@ -98,7 +98,7 @@ pub struct Exercise {
     pub title: String,
     /// What to write: the contract the function must keep (its signature is in the source).
     pub task: String,
-    /// Two or three hints, from a nudge to nearly the answer.
+    /// Two or three hints, from the idea to the formula (never the code).
     pub hints: Vec<String>,
     /// What the exercise is worth.
     pub points: u32,
@@ -474,7 +474,7 @@ fn exercise(
         return Err(err(
             hints.span(),
             format!(
-                "hints: expected two or three hints (a nudge first, nearly the answer last), found {} ({} empty)",
+                "hints: expected two or three hints (the idea first, the formula last), found {} ({} empty)",
                 list.len(),
                 list.iter().filter(|h| h.is_empty()).count()
             ),
