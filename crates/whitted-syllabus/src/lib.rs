@@ -10,7 +10,8 @@
 //! back. And how every layer words a problem in one line ([`words`](mod@words): `line:col` in
 //! a file, a command line's error, the PNG reader behind `--compare` and the figure check).
 //!
-//! Without features it depends on nothing (`png` adds the PNG decoder), so the renderer and the course tools (which must not depend on the
+//! Without features it depends on nothing (`png` adds the PNG decoder, `tree` the ray tree's
+//! types and their JSON: [`tree`](mod@tree)), so the renderer and the course tools (which must not depend on the
 //! renderer) can both use it, and a student's edit never rebuilds it.
 //!
 //! ```
@@ -24,6 +25,8 @@
 #![deny(missing_docs)]
 
 pub mod todo;
+#[cfg(feature = "tree")]
+pub mod tree;
 pub mod words;
 
 /// One chapter of the course.
