@@ -8,11 +8,13 @@
 use std::collections::BTreeSet;
 use std::path::{Path, PathBuf};
 
-use serde_json::Value;
-use whitted::render::inspect::against::{Settings, TreeFile, first_difference};
+use whitted::render::inspect::against::{TreeFile, apply, first_difference, settings_of};
 use whitted::render::inspect::provenance::{Place, Quantity};
+use whitted::render::inspect::tree::Settings;
+use whitted::render::inspect::walk::PlainTree;
 use whitted::render::{Chapter, Options, RayKind, Tracer, View};
 use whitted::scene::{Scene, load_parts};
+use whitted_syllabus::tree::{Crossing, HitNode, Number, Plain, Stop};
 
 fn root() -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR")).join("..")
@@ -58,11 +60,21 @@ fn every_named_function() -> BTreeSet<&'static str> {
     out
 }
 
-/// The table of where each number comes from cannot rot: every function it names is a
-/// function of the manifest, and every exercise of the manifest computes some number of the
-/// tree (so `cargo learn` can point at any of them).
+/// Where each number comes from is the manifest's to say, and it cannot rot: every entry of
+/// every formula's `computes` list names a quantity of the tree and places it can sit, every
+/// exercise computes some number of the tree (so `cargo learn` can point at any of them), and
+/// every function a quantity names is a function of the manifest.
 #[test]
-fn every_function_a_quantity_names_is_an_exercise_and_every_exercise_computes_one() {
+fn every_exercise_computes_a_quantity_of_the_tree_and_says_which() {
+    let entries = whitted::render::inspect::provenance::manifest_entries();
+    let unread: Vec<String> = entries
+        .iter()
+        .filter_map(|(f, c, read)| read.as_ref().err().map(|why| format!("{f}: {c:?}: {why}")))
+        .collect();
+    assert!(
+        unread.is_empty(),
+        "computes entries of chapters/formulas.toml that do not read: {unread:?}"
+    );
     let manifest = manifest_functions();
     let named = every_named_function();
     let unknown: Vec<&&str> = named.iter().filter(|f| !manifest.contains(**f)).collect();
@@ -76,7 +88,34 @@ fn every_function_a_quantity_names_is_an_exercise_and_every_exercise_computes_on
         .collect();
     assert!(
         unnamed.is_empty(),
-        "exercises no quantity of the tree names: {unnamed:?}"
+        "exercises whose `computes` names no quantity of the tree anywhere: {unnamed:?}"
+    );
+}
+
+/// A `computes` entry reads as its quantity and places, and one that names no quantity or no
+/// place is refused with the word it does not know.
+#[test]
+fn a_computes_entry_reads_as_its_quantity_and_places() {
+    use whitted::render::inspect::provenance::{Computes, Where};
+    let c = Computes::parse("t/sphere|cone").unwrap();
+    assert_eq!(c.quantity, Quantity::T);
+    assert_eq!(c.places, [Where::Shape("sphere"), Where::Shape("cone")]);
+    let at = |shapes: &'static [&'static str]| Place {
+        chapter: Chapter::Shadows,
+        view: View::Color,
+        ray: RayKind::Camera,
+        shapes,
+    };
+    assert!(c.covers(Quantity::T, &at(&["cone"])));
+    assert!(!c.covers(Quantity::T, &at(&["plane"])), "a plane's t");
+    assert!(!c.covers(Quantity::Point, &at(&["cone"])), "a cone's P");
+    assert_eq!(
+        Computes::parse("tee/sphere").unwrap_err(),
+        "`tee` is no quantity of the ray tree"
+    );
+    assert_eq!(
+        Computes::parse("t/torus").unwrap_err(),
+        "`torus` is no place of `t/torus`"
     );
 }
 
@@ -109,21 +148,21 @@ fn each_chapters_trees_are_the_renderers_in_either_precision() {
     }
 }
 
-/// A tree of pixel (x, y) of `chapter`'s scene at 240 pixels wide, as JSON, with the names of
-/// its objects' shapes.
-fn tree(chapter: Chapter, x: u32, y: u32) -> (Value, Scene) {
+/// A tree of pixel (x, y) of `chapter`'s scene at 240 pixels wide, as plain types (as
+/// `--against` reads it), with the scene.
+fn tree(chapter: Chapter, x: u32, y: u32) -> (PlainTree, Scene) {
     let s = scene(chapter);
     let mut o = Options::for_scene(&s, chapter);
     o.height = o.height * 240 / o.width;
     o.width = 240;
-    let t = Tracer::new(&s, &o).inspect(x, y).to_json();
-    (t, s)
+    let t = Tracer::new(&s, &o).inspect(x, y).plain().unwrap();
+    (t.tree, s)
 }
 
 /// The first difference of `mine` from `reference`, as `--against` reports it.
 fn first(
-    mine: &Value,
-    reference: &Value,
+    mine: &PlainTree,
+    reference: &PlainTree,
     s: &Scene,
 ) -> Option<whitted::render::inspect::against::Difference> {
     let objects: Vec<&'static str> = s.objects.iter().map(|o| o.shape.name()).collect();
@@ -131,8 +170,8 @@ fn first(
 }
 
 /// The hit of the camera ray of a tree's first sample.
-fn hit(t: &mut Value) -> &mut Value {
-    &mut t["samples"][0]["ray"]["hit"]
+fn hit(t: &mut PlainTree) -> &mut HitNode<Plain> {
+    t.samples[0].ray.hit.as_mut().expect("the camera ray hits")
 }
 
 /// A number of the tree moved beyond its tolerance is the first difference, named by its
@@ -142,14 +181,14 @@ fn hit(t: &mut Value) -> &mut Value {
 fn a_number_moved_is_found_at_its_node_with_both_values() {
     // a point of the floor, lit by lights 0 and 1 through their feelers
     let (reference, s) = tree(Chapter::Shadows, 20, 140);
-    assert_eq!(hit(&mut reference.clone())["name"], "floor");
+    assert_eq!(hit(&mut reference.clone()).name.as_deref(), Some("floor"));
     assert_eq!(first(&reference, &reference, &s), None);
 
     let mut mine = reference.clone();
-    let t = hit(&mut mine)["t"].as_f64().unwrap();
-    hit(&mut mine)["t"] = (t * (1.0 + 1e-7)).into();
+    let t = hit(&mut mine).t.0;
+    hit(&mut mine).t = Number(t * (1.0 + 1e-7));
     assert_eq!(first(&mine, &reference, &s), None, "within the tolerance");
-    hit(&mut mine)["t"] = (t * 1.01).into();
+    hit(&mut mine).t = Number(t * 1.01);
     let d = first(&mine, &reference, &s).unwrap();
     assert_eq!(d.quantity, Quantity::T);
     assert_eq!(d.path_text(), "camera ray → hit `floor`");
@@ -163,7 +202,7 @@ fn a_number_moved_is_found_at_its_node_with_both_values() {
 
     // light 1's diffuse factor
     let mut mine = reference.clone();
-    hit(&mut mine)["lights"][1]["diffuse"][0] = 0.5.into();
+    hit(&mut mine).lights[1].diffuse[0] = Number(0.5);
     let d = first(&mine, &reference, &s).unwrap();
     assert_eq!(d.quantity, Quantity::Diffuse);
     assert_eq!(d.path_text(), "camera ray → hit `floor` → light 1");
@@ -180,7 +219,7 @@ fn a_tree_of_another_shape_differs_where_the_shapes_part() {
     let (reference, s) = tree(Chapter::Shadows, 20, 140);
     // nothing hit
     let mut mine = reference.clone();
-    *hit(&mut mine) = Value::Null;
+    mine.samples[0].ray.hit = None;
     let d = first(&mine, &reference, &s).unwrap();
     assert_eq!(d.quantity, Quantity::Object);
     assert_eq!(
@@ -190,10 +229,16 @@ fn a_tree_of_another_shape_differs_where_the_shapes_part() {
     assert!(d.functions.contains(&"shapes::nearer"), "{d:?}");
     // the box (object 3) more along light 0's feeler: the box's intersection is named
     let mut mine = reference.clone();
-    let crossings = &mut hit(&mut mine)["lights"][0]["feeler"]["crossings"];
-    let mut crossed = crossings.as_array().cloned().unwrap_or_default();
-    crossed.push(serde_json::json!({"object": 3, "name": "box", "u": [0.5], "transmission": 0.0}));
-    *crossings = Value::Array(crossed);
+    let feeler = hit(&mut mine).lights[0]
+        .feeler
+        .as_mut()
+        .expect("light 0's feeler");
+    feeler.crossings.push(Crossing {
+        object: 3,
+        name: Some("box".into()),
+        u: vec![Number(0.5)],
+        transmission: Number(0.0),
+    });
     let d = first(&mine, &reference, &s).unwrap();
     assert_eq!(d.quantity, Quantity::Crossed);
     assert_eq!(d.path_text(), "camera ray → hit `floor` → light 0 → feeler");
@@ -209,16 +254,10 @@ fn a_tree_of_another_shape_differs_where_the_shapes_part() {
     let (reference, s) = tree(Chapter::ReflectionRefraction, 139, 65);
     let mut mine = reference.clone();
     let h = hit(&mut mine);
-    let kept: Vec<Value> = h["branches"]
-        .as_array()
-        .unwrap()
-        .iter()
-        .filter(|b| b["kind"] != "transmitted")
-        .cloned()
-        .collect();
-    assert!(kept.len() < h["branches"].as_array().unwrap().len(), "{h}");
-    h["branches"] = Value::Array(kept);
-    h["stopped"] = serde_json::json!([{"kind": "transmitted", "why": "total_internal_reflection"}]);
+    let before = h.branches.len();
+    h.branches.retain(|b| b.kind != RayKind::Transmitted);
+    assert!(h.branches.len() < before, "{h:?}");
+    h.stopped = vec![(RayKind::Transmitted, Stop::TotalInternalReflection)];
     let d = first(&mine, &reference, &s).unwrap();
     assert_eq!(d.quantity, Quantity::Branches);
     assert_eq!(d.symbol, "its transmitted ray");
@@ -240,25 +279,37 @@ fn settings_are_read_back_as_written_and_a_wrong_one_is_named() {
     o.width = 240;
     o.height = 160;
     o.max_depth = 3;
-    let settings = Settings::of(&o);
-    let json = settings.to_json();
-    assert_eq!(Settings::from_json(&json), Ok(settings.clone()));
+    let settings = settings_of(&o);
+    let json = serde_json::to_value(&settings).unwrap();
     assert_eq!(
-        settings.apply(&Options::for_scene(&s, Chapter::ReflectionRefraction)),
+        serde_json::from_value::<Settings>(json.clone()).unwrap(),
+        settings,
+        "the settings read back"
+    );
+    assert_eq!(
+        apply(
+            &settings,
+            &Options::for_scene(&s, Chapter::ReflectionRefraction)
+        ),
         o
     );
-    let mut bad = json.clone();
-    bad["view"] = "x-ray".into();
-    let why = Settings::from_json(&bad).unwrap_err();
-    assert!(why.contains("`view`") && why.contains("x-ray"), "{why}");
-    let doc = |version: u64, x: u32| {
-        serde_json::json!({"version": version, "settings": json,
-            "pixels": [{"pixel": [x, 0], "tree": {"pixel": [x, 0]}}]})
+    // a trees file of one pixel's tree, its version and its pixel as given
+    let tree = Tracer::new(&s, &o).inspect(3, 0).to_json();
+    let doc = |version: u64, x: u32, settings: &serde_json::Value| {
+        let mut tree = tree.clone();
+        tree["pixel"] = serde_json::json!([x, 0]);
+        serde_json::json!({"version": version, "about": "", "settings": settings,
+            "pixels": [{"pixel": [x, 0], "covers": [], "tree": tree}]})
         .to_string()
     };
-    assert!(TreeFile::parse(&doc(1, 3)).is_ok());
-    let why = TreeFile::parse(&doc(2, 3)).unwrap_err();
+    let file = TreeFile::parse(&doc(1, 3, &json)).unwrap();
+    assert_eq!((file.settings, file.trees.len()), (settings, 1));
+    let why = TreeFile::parse(&doc(2, 3, &json)).unwrap_err();
     assert!(why.contains("version 1"), "{why}");
-    let why = TreeFile::parse(&doc(1, 240)).unwrap_err();
+    let why = TreeFile::parse(&doc(1, 240, &json)).unwrap_err();
     assert!(why.contains("(240, 0) is outside the image"), "{why}");
+    let mut bad = json.clone();
+    bad["view"] = "x-ray".into();
+    let why = TreeFile::parse(&doc(1, 3, &bad)).unwrap_err();
+    assert!(why.contains("view") && why.contains("x-ray"), "{why}");
 }

@@ -43,6 +43,7 @@ use whitted::offset::OffsetKind;
 use whitted::output::{self, Encoding};
 use whitted::real::Real;
 use whitted::render::inspect::against::{self, TreeFile};
+use whitted::render::inspect::tree::GridHeader;
 use whitted::render::{self, Chapter, Options, View};
 use whitted::scene::load::{MAX_DEPTH, MAX_SAMPLES, MAX_SIDE};
 use whitted::scene::scatter::Layout;
@@ -671,10 +672,12 @@ fn print_tree(
 /// pixel of every STEP-th row (from STEP/2), one JSON line each.
 fn print_grid(scene: &Scene, options: &Options, step: u32) -> Result<(), Error> {
     let tracer = render::Tracer::new(scene, options);
-    let header = serde_json::json!({
-        "version": against::FILE_VERSION,
-        "settings": against::Settings::of(options).to_json(),
-    });
+    let header = GridHeader {
+        version: against::FILE_VERSION,
+        settings: against::settings_of(options),
+    };
+    let header = serde_json::to_string(&header)
+        .map_err(|e| Error::Usage(format!("cannot write the settings as JSON: {e}")))?;
     let mut text = format!("{header}\n");
     for y in (step / 2..options.height).step_by(step as usize) {
         for x in (step / 2..options.width).step_by(step as usize) {

@@ -195,6 +195,11 @@ struct RawEntry {
     points: Option<Spanned<i64>>,
     first_check: Option<Spanned<String>>,
     picture: Option<Spanned<String>>,
+    /// The quantities of the ray tree the function computes: the renderer reads them to say
+    /// which functions computed a number (`render::inspect::provenance`) and checks them;
+    /// the loop only lets them through.
+    #[serde(rename = "computes")]
+    _computes: Option<Vec<String>>,
 }
 
 /// Reads and checks the manifest at `path`; messages name the path as given.

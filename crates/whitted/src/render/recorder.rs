@@ -26,53 +26,9 @@ use crate::shading::Phong;
 use crate::shapes::{Hits, Nearest};
 
 /// The kinds of ray the road sends from the camera and from surfaces (feelers are reported
-/// with their light, [`Recorder::light`]).
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
-pub enum RayKind {
-    /// The camera ray r(t) = e + d·t of a sample of the pixel (chapter 1).
-    Camera,
-    /// The mirror ray l = d − 2(d·n)n, whose light I_l counts k_r times (chapter 5).
-    Mirror,
-    /// The transmitted ray of Snell's law, whose light I_r counts k_t times (chapter 5).
-    Transmitted,
-}
-
-impl RayKind {
-    /// The name used in the inspector's text and JSON: `camera`, `mirror`, `transmitted`.
-    #[must_use]
-    pub fn name(self) -> &'static str {
-        match self {
-            Self::Camera => "camera",
-            Self::Mirror => "mirror",
-            Self::Transmitted => "transmitted",
-        }
-    }
-}
-
-/// Why a mirror or transmitted ray was not traced although its material asks for it.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
-pub enum Stop {
-    /// The ray would go past the maximum recursion depth (`--max-depth`).
-    MaxDepth,
-    /// Its weight, the product of the k_r and k_t that lead to it, would fall below the
-    /// minimum weight: it could not change the pixel.
-    Weight,
-    /// Total internal reflection: no transmitted ray exists; its share k_t goes to the mirror
-    /// ray.
-    TotalInternalReflection,
-}
-
-impl Stop {
-    /// The name used in the inspector's JSON: `max_depth`, `weight`, `total_internal_reflection`.
-    #[must_use]
-    pub fn name(self) -> &'static str {
-        match self {
-            Self::MaxDepth => "max_depth",
-            Self::Weight => "weight",
-            Self::TotalInternalReflection => "total_internal_reflection",
-        }
-    }
-}
+/// with their light, [`Recorder::light`]), and why a branch was not traced: words of the ray
+/// tree, typed once in `whitted_syllabus::tree`.
+pub use whitted_syllabus::tree::{RayKind, Stop};
 
 /// Listens to the road of one pixel. Every method has an empty default: a recorder takes
 /// the events it wants. Events come in the order of the road, one ray at a time: a ray's

@@ -24,7 +24,8 @@
 //! same answers). So the tree's colour is the pixel's colour bit for bit, and its sums hold in
 //! its own numbers.
 //!
-//! Three files, one job each: [`tree`] holds the tree's types (and their JSON, via serde),
+//! Three files, one job each: [`tree`] fills the tree's types (`whitted_syllabus::tree`, with
+//! their JSON both ways) with the renderer's kinds,
 //! [`record`] the recorder that builds it, [`text`] its indented text (`Display`). Two more
 //! compare trees: [`provenance`] says which functions of the road computed each quantity of a
 //! tree, and [`against`] walks a tree beside the reference's and finds the first quantity
@@ -33,12 +34,15 @@
 //! Course book: [The ray tree of one pixel](../../../../../docs/book/inspect.html) (`docs/src/inspect.md`).
 
 pub mod against;
+pub mod difference;
 pub mod provenance;
 pub mod record;
 pub mod text;
 pub mod tree;
+pub mod walk;
 
 pub use record::{TreeRecorder, ray_tree};
 pub use tree::{
-    Crossing, FeelerNode, HitNode, JSON_VERSION, LightNode, RayNode, RayTree, Sample, part_name,
+    Crossing, FeelerNode, HitNode, JSON_VERSION, LightNode, RayNode, RayTree, Sample, Traced,
+    part_name,
 };

@@ -1,17 +1,22 @@
 //! Where each number of the ray tree comes from: for every quantity the tree holds, what the
 //! notes call it, how near another computation of it must come to count as the same, and the
-//! functions of the road that computed it, spelled as `chapters/formulas.toml` spells them
-//! (`shapes::cone::coefficients`). This table is the one place that knows it;
-//! [`super::against`] reads it to say which exercise computed the first number that differs
-//! from the reference's. A test (`tests/trees.rs`) checks that every path here is a function of
-//! the manifest and that every exercise of the manifest computes some quantity of the tree.
+//! functions of the road that computed it. Which function computes which quantity is written
+//! once, in the manifest (`chapters/formulas.toml`, each formula's `computes` list), and read
+//! here ([`Quantity::computed_by`]); [`super::walk`] asks it to say which exercise computed the
+//! first number that differs from the reference's. A test (`tests/trees.rs`) checks that every
+//! entry of every `computes` list names a quantity and a place this module knows, and that
+//! every exercise computes some quantity of the tree.
 //!
-//! A quantity lists every function whose result it depends on directly, not only the last
-//! one: a hit's t is the shape's roots of the ray carried by M⁻¹, so a wrong t may come from
-//! the ray's transform as well as from the quadratic. `cargo learn` narrows the list to the
-//! exercises whose own tests fail.
+//! A formula lists every quantity whose value depends on it directly, not only the last one:
+//! a hit's t is the shape's roots of the ray carried by M⁻¹, so the ray's transform computes t
+//! as well as the quadratic does. `cargo learn` narrows the functions to the exercises whose
+//! own tests fail.
 //!
 //! Course book: [The ray tree of one pixel](../../../../../../docs/book/inspect.html) (`docs/src/inspect.md`).
+
+use std::sync::OnceLock;
+
+use serde::Deserialize;
 
 use super::super::recorder::RayKind;
 use super::super::{Chapter, View};
@@ -153,84 +158,6 @@ impl Tolerance {
     }
 }
 
-/// The functions of chapter 1 that make a camera ray.
-const CAMERA: &[&str] = &[
-    "camera::viewing_basis",
-    "camera::near_plane_half_height",
-    "camera::near_plane_half_width",
-    "camera::pixel_on_near_plane",
-    "camera::Camera::direction",
-    "camera::Camera::pixel_ray",
-];
-
-/// The functions that place an object: M from the steps, M⁻¹ from their inverses.
-const PLACEMENT: &[&str] = &[
-    "transform::Step::matrix",
-    "transform::Step::inverse",
-    "transform::Placement::from_steps",
-];
-
-/// The functions every ray–object test goes through: the ray carried into object space, and
-/// the visible hit among the shape's.
-const PLACED: &[&str] = &[
-    "ray::Ray::transformed",
-    "shapes::Shape::intersect_placed",
-    "shapes::Hits::first_after",
-];
-
-/// The roots of a quadratic (the robust and the notes' forms).
-const QUADRATIC: &[&str] = &[
-    "shapes::quadratic::stable_roots",
-    "shapes::quadratic::solve_with_discriminant",
-];
-
-/// The functions that intersect the generic shape named `shape` (as the tree names it).
-fn intersect(shape: &str) -> Vec<&'static str> {
-    let own: &[&str] = match shape {
-        "sphere" => &[
-            "shapes::sphere::coefficients",
-            "shapes::sphere::discriminant",
-            "shapes::sphere::intersect",
-        ],
-        "plane" => &["shapes::plane::intersect"],
-        "cylinder" => &[
-            "shapes::cylinder::coefficients",
-            "shapes::cylinder::discriminant",
-            "shapes::cylinder::intersect",
-        ],
-        "cone" => &[
-            "shapes::cone::coefficients",
-            "shapes::cone::discriminant",
-            "shapes::cone::intersect",
-        ],
-        "polyhedron" => &[
-            "shapes::polyhedron::facet_t",
-            "shapes::Polyhedron::intersect",
-        ],
-        _ => &[],
-    };
-    let quadratic = matches!(shape, "sphere" | "cylinder" | "cone");
-    let mut out: Vec<&'static str> = own.to_vec();
-    if quadratic {
-        out.extend(QUADRATIC);
-    }
-    out.extend(PLACED);
-    out.extend(PLACEMENT);
-    out
-}
-
-/// The function that gives the generic shape's normal (the plane's and a polyhedron's come
-/// with the hit).
-fn shape_normal(shape: &str) -> &'static str {
-    match shape {
-        "sphere" => "shapes::sphere::normal",
-        "cylinder" => "shapes::cylinder::normal",
-        "cone" => "shapes::cone::normal",
-        "plane" => "shapes::plane::intersect",
-        _ => "shapes::Polyhedron::intersect",
-    }
-}
-
 /// Where a quantity sits, as much as its provenance depends on it.
 #[derive(Clone, Copy, Debug)]
 pub struct Place<'a> {
@@ -330,82 +257,32 @@ impl Quantity {
 
     /// The functions of the road that computed it at `place`, as the manifest spells them
     /// (empty when no exercise computes it: the sample positions, a colour the view picks).
+    /// Those whose entry names the place (a cone's t: the cone's own formulas) come first,
+    /// then those that compute it wherever it sits (the ray's transform), each group in the
+    /// manifest's order.
     #[must_use]
     pub fn computed_by(self, place: &Place) -> Vec<&'static str> {
-        const TRACER: &str = "render::tracer::Tracer::reflect_and_refract";
-        const LOCAL: &str = "render::tracer::Tracer::local_light";
-        const FEELER: &str = "render::tracer::Tracer::feeler";
-        let shapes = || {
-            let mut out = Vec::new();
-            for s in place.shapes {
-                for f in intersect(s) {
-                    if !out.contains(&f) {
-                        out.push(f);
-                    }
-                }
-            }
-            out
-        };
+        let mut found: Vec<(bool, &'static str)> = manifest()
+            .iter()
+            .filter_map(|f| {
+                let entries = f.computes.iter().filter(|c| c.covers(self, place));
+                let general = entries.map(Computes::general).reduce(|a, b| a && b)?;
+                Some((general, f.function.as_str()))
+            })
+            .collect();
+        found.sort_by_key(|(general, _)| *general);
+        found.into_iter().map(|(_, f)| f).collect()
+    }
+
+    /// Its word in the manifest's `computes` lists: its [`key`](Quantity::key), except for a
+    /// feeler's start (`start`, where the key is `origin`, as for a ray) and the objects it
+    /// crosses (`crossed`).
+    #[must_use]
+    pub fn word(self) -> &'static str {
         match self {
-            Quantity::Samples | Quantity::SamplePosition => Vec::new(),
-            Quantity::Origin | Quantity::Direction if place.ray == RayKind::Camera => {
-                CAMERA.to_vec()
-            }
-            Quantity::Direction if place.ray == RayKind::Mirror => vec!["optics::reflect", TRACER],
-            Quantity::Direction => vec!["optics::refract", "optics::indices", TRACER],
-            Quantity::Origin
-            | Quantity::TMin
-            | Quantity::Depth
-            | Quantity::Weight
-            | Quantity::K => {
-                vec![TRACER]
-            }
-            Quantity::Colour => match (place.chapter, place.view) {
-                (Chapter::CameraRays, _) => vec!["camera::direction_colour"],
-                (Chapter::GenericObjects, _) | (_, View::Flat) => Vec::new(),
-                (Chapter::ReflectionRefraction, View::Color) => vec![TRACER, LOCAL],
-                (_, View::Color) => vec![LOCAL],
-                _ => Vec::new(), // the other views' colours are the views' scales
-            },
-            Quantity::Object => {
-                let mut out = vec!["shapes::nearer"];
-                out.extend(shapes());
-                out
-            }
-            Quantity::Part | Quantity::T | Quantity::Entering => shapes(),
-            Quantity::Point => vec!["ray::Ray::at"],
-            Quantity::Normal => {
-                let mut out = Vec::new();
-                for s in place.shapes {
-                    out.push(shape_normal(s));
-                }
-                out.push("transform::Placement::normal_to_world");
-                out.extend(PLACEMENT);
-                out
-            }
-            Quantity::Ambient => vec!["shading::ambient"],
-            Quantity::Lights | Quantity::Arriving | Quantity::Local => vec![LOCAL],
-            Quantity::Attenuation | Quantity::Intensity => {
-                vec!["light::Light::attenuation_at", "shading::phong"]
-            }
-            Quantity::Diffuse => vec!["shading::lambert", "shading::phong"],
-            Quantity::Specular => vec!["shading::highlight", "shading::mirror", "shading::phong"],
-            Quantity::Unshadowed => vec!["shading::phong"],
-            Quantity::Feeler => vec![FEELER, LOCAL],
-            Quantity::Start => vec![FEELER, "shadow::feeler"],
-            Quantity::UMin => vec![FEELER],
-            Quantity::Crossed | Quantity::U => {
-                let mut out = vec!["shadow::between", "shadow::feeler", FEELER];
-                out.extend(shapes());
-                out
-            }
-            Quantity::Share => vec!["shadow::transmittance"],
-            Quantity::Branches => vec![
-                TRACER,
-                "optics::refract",
-                "optics::critical_angle_sine",
-                "optics::indices",
-            ],
+            Quantity::Start => "start",
+            Quantity::Crossed => "crossed",
+            other => other.key(),
         }
     }
 
@@ -501,5 +378,166 @@ pub fn number(x: f64) -> String {
     } else {
         let text = format!("{x:.4}");
         text.trim_end_matches('0').trim_end_matches('.').to_string()
+    }
+}
+
+/// The manifest's text, as the renderer was built with it.
+const MANIFEST: &str = include_str!("../../../../../chapters/formulas.toml");
+
+/// One formula of the manifest, as far as provenance reads it.
+#[derive(Debug, Deserialize)]
+struct Formula {
+    function: String,
+    #[serde(default)]
+    computes: Vec<Computes>,
+}
+
+/// The manifest, as far as provenance reads it.
+#[derive(Deserialize)]
+struct Manifest {
+    formula: Vec<Formula>,
+}
+
+/// The manifest's formulas, read once (a manifest that does not read gives no provenance;
+/// `tests/trees.rs` proves the committed one reads).
+fn manifest() -> &'static [Formula] {
+    static FORMULAS: OnceLock<Vec<Formula>> = OnceLock::new();
+    FORMULAS.get_or_init(|| {
+        toml::from_str::<Manifest>(MANIFEST)
+            .map(|m| m.formula)
+            .unwrap_or_default()
+    })
+}
+
+/// Every entry of every formula's `computes` list in the manifest, as written, with what it
+/// means: the quantity and where it holds, or why this module cannot read it.
+#[must_use]
+pub fn manifest_entries() -> Vec<(String, String, Result<Computes, String>)> {
+    #[derive(Deserialize)]
+    struct Raw {
+        function: String,
+        #[serde(default)]
+        computes: Vec<String>,
+    }
+    #[derive(Deserialize)]
+    struct RawManifest {
+        formula: Vec<Raw>,
+    }
+    let Ok(raw) = toml::from_str::<RawManifest>(MANIFEST) else {
+        return Vec::new();
+    };
+    raw.formula
+        .into_iter()
+        .flat_map(|f| {
+            f.computes
+                .into_iter()
+                .map(move |c| (f.function.clone(), c.clone(), Computes::parse(&c)))
+        })
+        .collect()
+}
+
+/// One entry of a formula's `computes` list: `QUANTITY` (the quantity's [`word`](Quantity::word))
+/// wherever it sits, or `QUANTITY/WHERE` with one or more places `|`-separated — a generic shape
+/// involved (`sphere`, `plane`, `cylinder`, `cone`, `polyhedron`, or `shape` for any), the kind
+/// of ray it belongs to (`camera`, `mirror`, `transmitted`), or for a colour the road that
+/// shades it (`ch1`: chapter 1's, whatever the view; `lit`: the colour view from chapter 3;
+/// `ch5-lit`: the colour view of chapter 5).
+#[derive(Clone, Debug, PartialEq, Deserialize)]
+#[serde(try_from = "String")]
+pub struct Computes {
+    /// The quantity.
+    pub quantity: Quantity,
+    /// Where it holds: any of these (none: everywhere).
+    pub places: Vec<Where>,
+}
+
+/// A place a `computes` entry holds at.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Where {
+    /// The generic shape of that name is involved.
+    Shape(&'static str),
+    /// Some shape is involved.
+    AnyShape,
+    /// The quantity belongs to a ray of this kind.
+    Ray(RayKind),
+    /// Chapter 1's colour, whatever the view.
+    ChapterOne,
+    /// The colour view from chapter 3 on, lit by the local light.
+    Lit,
+    /// The colour view of chapter 5, with mirror and transmitted light.
+    LitChapterFive,
+}
+
+/// The generic shapes, as the tree names them.
+const SHAPES: [&str; 5] = ["sphere", "plane", "cylinder", "cone", "polyhedron"];
+
+impl Where {
+    /// The place a word names.
+    fn named(word: &str) -> Option<Where> {
+        Some(match word {
+            "shape" => Where::AnyShape,
+            "camera" => Where::Ray(RayKind::Camera),
+            "mirror" => Where::Ray(RayKind::Mirror),
+            "transmitted" => Where::Ray(RayKind::Transmitted),
+            "ch1" => Where::ChapterOne,
+            "lit" => Where::Lit,
+            "ch5-lit" => Where::LitChapterFive,
+            shape => Where::Shape(SHAPES.into_iter().find(|s| *s == shape)?),
+        })
+    }
+
+    /// Whether `place` is here.
+    fn holds(self, place: &Place) -> bool {
+        let lit = place.view == View::Color && place.chapter >= Chapter::Shading;
+        match self {
+            Where::Shape(s) => place.shapes.contains(&s),
+            Where::AnyShape => !place.shapes.is_empty(),
+            Where::Ray(kind) => place.ray == kind,
+            Where::ChapterOne => place.chapter == Chapter::CameraRays,
+            Where::Lit => lit,
+            Where::LitChapterFive => lit && place.chapter == Chapter::ReflectionRefraction,
+        }
+    }
+}
+
+impl Computes {
+    /// Reads an entry; the error says what is wrong with it.
+    pub fn parse(text: &str) -> Result<Self, String> {
+        let (word, places) = match text.split_once('/') {
+            Some((w, p)) => (w, Some(p)),
+            None => (text, None),
+        };
+        let quantity = Quantity::ALL
+            .into_iter()
+            .find(|q| q.word() == word)
+            .ok_or_else(|| format!("`{word}` is no quantity of the ray tree"))?;
+        let places = match places {
+            None => Vec::new(),
+            Some(p) => p
+                .split('|')
+                .map(|w| Where::named(w).ok_or_else(|| format!("`{w}` is no place of `{text}`")))
+                .collect::<Result<_, _>>()?,
+        };
+        Ok(Self { quantity, places })
+    }
+
+    /// Whether the entry holds wherever its quantity sits, or wherever some shape is involved:
+    /// it names no place in particular.
+    fn general(&self) -> bool {
+        self.places.iter().all(|w| *w == Where::AnyShape)
+    }
+
+    /// Whether the entry says its formula computes `quantity` at `place`.
+    #[must_use]
+    pub fn covers(&self, quantity: Quantity, place: &Place) -> bool {
+        self.quantity == quantity
+            && (self.places.is_empty() || self.places.iter().any(|w| w.holds(place)))
+    }
+}
+
+impl TryFrom<String> for Computes {
+    type Error = String;
+    fn try_from(text: String) -> Result<Self, String> {
+        Self::parse(&text)
     }
 }

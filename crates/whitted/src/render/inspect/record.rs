@@ -74,7 +74,7 @@ impl<'s> TreeRecorder<'s> {
         colour: Vec3,
         rays: u64,
     ) -> RayTree {
-        RayTree {
+        RayTree(whitted_syllabus::tree::RayTree {
             pixel,
             chapter: options.chapter,
             view: options.view,
@@ -82,7 +82,7 @@ impl<'s> TreeRecorder<'s> {
             encoding: Encoding::default(),
             rays,
             samples: self.samples,
-        }
+        })
     }
 
     fn top_hit(&mut self) -> Option<&mut HitNode> {
@@ -126,7 +126,7 @@ impl Recorder for TreeRecorder<'_> {
         top.hit = Some(HitNode {
             object: n.object,
             name,
-            shape: object.shape.name(),
+            shape: object.shape.name().to_string(),
             material: scene
                 .material_names
                 .get(object.material)

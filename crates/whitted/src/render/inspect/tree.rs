@@ -1,197 +1,111 @@
-//! The ray tree's types, and their JSON.
+//! The ray tree as the road records it: the tree's types of `whitted_syllabus::tree`, filled
+//! with the renderer's own numbers, vectors and names ([`Traced`]).
 //!
-//! Every type derives `Serialize`, so the JSON of `--inspect X,Y --json` is serde's view of
-//! the same tree the text view prints, in the shape `docs/src/inspect.md` documents (version
-//! [`JSON_VERSION`]): vectors as `[x, y, z]`, a number that is not finite as `null`, keys in
-//! the order of the fields.
+//! The types are defined once, in `whitted_syllabus::tree`, with serde both ways, so that the
+//! course tools (which never link the renderer) read the same tree the road records. Here
+//! they get the renderer's kinds: `Real` and `Vec3` as the road computed them (no
+//! conversion), and the renderer's [`Chapter`], [`View`], [`Encoding`], [`Part`], [`Numerics`]
+//! and [`OffsetKind`], each written by its name (a chapter by its number). The JSON of
+//! `--inspect X,Y --json` is serde's view of the [`RayTree`] the text view prints, in the
+//! shape `docs/src/inspect.md` documents (version [`JSON_VERSION`]): vectors as `[x, y, z]`,
+//! a number that is not finite as `null`, keys in the order of the fields.
 //!
 //! Course book: [The ray tree of one pixel](../../../../../../docs/book/inspect.html) (`docs/src/inspect.md`).
 
-use serde::{Serialize, Serializer};
+use std::ops::{Deref, DerefMut};
+
+use serde::de::Error as _;
+use serde::{Deserialize, Deserializer, Serialize, Serializer};
 use serde_json::Value;
+pub use whitted_syllabus::tree::{Document, FILE_VERSION, JSON_VERSION, Kinds, Plain};
 
 use super::super::framebuffer::Encoding;
-use super::super::recorder::{RayKind, Stop};
 use super::super::{Chapter, View};
+use crate::offset::OffsetKind;
 use crate::real::{Real, Vec3};
-use crate::shapes::Part;
+use crate::shapes::{Numerics, Part};
 
-/// The version of the JSON shape [`RayTree::to_json`] writes (`docs/src/inspect.md`).
-pub const JSON_VERSION: u32 = 2;
+/// The renderer's kinds of the tree: what the road computed, as it computed it.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Traced;
 
-/// The ray tree of one pixel: every sample's camera ray and all that followed from it.
-#[derive(Clone, Debug, PartialEq, Serialize)]
-pub struct RayTree {
-    /// The pixel (x, y), row y from the top.
-    pub pixel: (u32, u32),
-    /// The chapter whose road was followed.
-    #[serde(serialize_with = "chapter_number")]
-    pub chapter: Chapter,
-    /// The view the colour is for.
-    #[serde(serialize_with = "view_name")]
-    pub view: View,
-    /// The pixel's colour: exactly what the render writes in the framebuffer (linear RGB).
-    pub colour: Vec3,
-    /// The encoding of the PNG the tree's bytes are shown for ([`RayTree::bytes`]); sRGB
-    /// unless set otherwise (`--inspect` sets it from `--encoding`).
-    #[serde(serialize_with = "encoding_name")]
-    pub encoding: Encoding,
-    /// Every ray the pixel cast: camera, feeler, mirror and transmitted.
-    pub rays: u64,
-    /// The samples, in order.
-    pub samples: Vec<Sample>,
+impl Kinds for Traced {
+    type Number = Real;
+    type Vector = Vec3;
+    type Chapter = Chapter;
+    type View = View;
+    type Encoding = Encoding;
+    type Part = Part;
+    type Numerics = Numerics;
+    type Offset = OffsetKind;
 }
 
-/// One sample of the pixel.
-#[derive(Clone, Debug, PartialEq, Serialize)]
-pub struct Sample {
-    /// Its number among the pixel's samples.
-    pub index: u32,
-    /// Where in the pixel its camera ray passes: (0.5, 0.5) is the centre.
-    pub position: (Real, Real),
-    /// Its camera ray.
-    pub ray: RayNode,
-}
-
+/// One sample of the pixel ([`whitted_syllabus::tree::Sample`]).
+pub type Sample = whitted_syllabus::tree::Sample<Traced>;
 /// A camera, mirror or transmitted ray and what it brought back.
-#[derive(Clone, Debug, PartialEq, Serialize)]
-pub struct RayNode {
-    /// Camera, mirror or transmitted.
-    pub kind: RayKind,
-    /// Its origin (the eye e, or the offset start on a surface).
-    pub origin: Vec3,
-    /// Its direction d (not unit length for a camera ray).
-    pub direction: Vec3,
-    /// The smallest t that counts as a hit.
-    pub t_min: Real,
-    /// Bounces that led to it (0 for a camera ray).
-    pub depth: u32,
-    /// The product of the k_r and k_t along the way (1 for a camera ray).
-    pub weight: Real,
-    /// The share of its colour that counts at its parent's hit, as the road passed it: k_r
-    /// for a mirror ray (plus k_t under total internal reflection), k_t for a transmitted ray,
-    /// 1 for a camera ray.
-    pub k: Real,
-    /// The colour it brings back: I_l for a mirror ray, I_r for a transmitted one.
-    pub colour: Vec3,
-    /// Its nearest hit; `None` when it hits nothing (its colour is then the background).
-    pub hit: Option<HitNode>,
-}
-
+pub type RayNode = whitted_syllabus::tree::RayNode<Traced>;
 /// The nearest hit of a ray, and how it was shaded.
-#[derive(Clone, Debug, PartialEq, Serialize)]
-pub struct HitNode {
-    /// The object's index in the scene.
-    pub object: usize,
-    /// The object's `name` in the scene file, if it has one.
-    pub name: Option<String>,
-    /// The generic shape: sphere, plane, cylinder, cone, polyhedron.
-    pub shape: &'static str,
-    /// The material's name in the scene file.
-    pub material: String,
-    /// The part of the shape hit.
-    #[serde(serialize_with = "part")]
-    pub part: Part,
-    /// The ray parameter of the hit.
-    pub t: Real,
-    /// The hit point P = r(t) ([`crate::ray::Ray::at`], as the road computes it).
-    pub point: Vec3,
-    /// The unit normal at P, pointing out of the object (world space).
-    pub normal: Vec3,
-    /// Whether the ray goes from outside to inside there.
-    pub entering: bool,
-    /// I_a = ρa·I_m (from chapter 3, for the colour view).
-    pub ambient: Option<Vec3>,
-    /// Each light, in scene order (from chapter 3).
-    pub lights: Vec<LightNode>,
-    /// The local light I_a + Σ (I_d + I_s)·share (from chapter 3, for the colour view).
-    pub local: Option<Vec3>,
-    /// The mirror and transmitted rays traced from here, in the order they were traced.
-    pub branches: Vec<RayNode>,
-    /// The branches the material asks for but that were not traced, and why.
-    #[serde(serialize_with = "stops")]
-    pub stopped: Vec<(RayKind, Stop)>,
-}
-
+pub type HitNode = whitted_syllabus::tree::HitNode<Traced>;
 /// One light seen from a hit: the terms [`crate::shading::phong`] returned for it, and its
 /// feeler.
-#[derive(Clone, Debug, PartialEq, Serialize)]
-pub struct LightNode {
-    /// The light's index in the scene.
-    pub index: usize,
-    /// Its position L.
-    pub position: Vec3,
-    /// att = 1/(a0 + a1·d + a2·d²) at the light's distance d.
-    pub attenuation: Real,
-    /// I_p·att: the light's intensity arriving at P.
-    pub intensity: Vec3,
-    /// ρd·max(n·s, 0): the diffuse factor, so that I_d = I_p·att·ρd·max(n·s, 0).
-    pub diffuse: Vec3,
-    /// ρs·max(r·v, 0)^f: the specular factor, so that I_s = I_p·att·ρs·max(r·v, 0)^f.
-    pub specular: Vec3,
-    /// I_d + I_s = `intensity` × (`diffuse` + `specular`), before shadowing.
-    pub unshadowed: Vec3,
-    /// Whether the light lies in front of the surface, n·(L − P) > 0
-    /// ([`crate::shadow::in_front`]); a light behind adds nothing.
-    pub in_front: bool,
-    /// The feeler sent towards the light, if any.
-    pub feeler: Option<FeelerNode>,
-    /// The share of the light that arrives (1 without a feeler).
-    pub share: Real,
-    /// (I_d + I_s)·share: what the light adds to the local light.
-    pub arriving: Vec3,
-}
-
+pub type LightNode = whitted_syllabus::tree::LightNode<Traced>;
 /// A feeler S(u) = P′ + (L − P′)·u and what it crosses.
-#[derive(Clone, Debug, PartialEq, Serialize)]
-pub struct FeelerNode {
-    /// Its start P′ (the hit point moved off the surface).
-    pub origin: Vec3,
-    /// Hits count for u ∈ ]u_min, 1].
-    pub u_min: Real,
-    /// Every object with a hit in ]u_min, 1], in scene order.
-    pub crossings: Vec<Crossing>,
-}
-
+pub type FeelerNode = whitted_syllabus::tree::FeelerNode<Traced>;
 /// An object a feeler crosses between its start and the light.
-#[derive(Clone, Debug, PartialEq, Serialize)]
-pub struct Crossing {
-    /// The object's index in the scene.
-    pub object: usize,
-    /// Its `name` in the scene file, if any.
-    pub name: Option<String>,
-    /// The u of its hits in ]u_min, 1] ([`crate::shadow::between`]).
-    pub u: Vec<Real>,
-    /// Its material's transmission k_t (0: opaque).
-    pub transmission: Real,
+pub type Crossing = whitted_syllabus::tree::Crossing<Traced>;
+/// The options a tree was traced with, as a trees file records them.
+pub type Settings = whitted_syllabus::tree::Settings<Traced>;
+/// The first line `--inspect-grid STEP` prints: the trees file's version and the settings.
+pub type GridHeader = whitted_syllabus::tree::GridHeader<Traced>;
+
+/// The ray tree of one pixel: every sample's camera ray and all that followed from it
+/// ([`whitted_syllabus::tree::RayTree`], whose fields it shows through `Deref`), with the
+/// renderer's text view (`Display`, in [`super::text`]), its bytes and its JSON.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(transparent)]
+pub struct RayTree(pub whitted_syllabus::tree::RayTree<Traced>);
+
+impl Deref for RayTree {
+    type Target = whitted_syllabus::tree::RayTree<Traced>;
+    fn deref(&self) -> &Self::Target {
+        &self.0
+    }
 }
 
-/// The whole JSON document: the version of its shape, the tree, and the pixel's bytes.
-#[derive(Serialize)]
-struct Document<'t> {
-    version: u32,
-    #[serde(flatten)]
-    tree: &'t RayTree,
-    bytes: [u8; 3],
+impl DerefMut for RayTree {
+    fn deref_mut(&mut self) -> &mut Self::Target {
+        &mut self.0
+    }
 }
 
 impl RayTree {
-    /// The pixel's bytes as the PNG holds them in the tree's [`encoding`](RayTree::encoding).
+    /// The pixel's bytes as the PNG holds them in the tree's [`encoding`](whitted_syllabus::tree::RayTree::encoding).
     #[must_use]
     pub fn bytes(&self) -> [u8; 3] {
         self.colour.to_array().map(|x| self.encoding.byte(x))
     }
 
+    /// The tree as `--inspect X,Y --json` writes it: its version, the tree, its bytes.
+    #[must_use]
+    pub fn document(&self) -> Document<Traced> {
+        Document {
+            version: JSON_VERSION,
+            tree: self.0.clone(),
+            bytes: self.bytes(),
+        }
+    }
+
     /// The tree as JSON (the shape is documented in `docs/src/inspect.md`).
     #[must_use]
     pub fn to_json(&self) -> Value {
-        let document = Document {
-            version: JSON_VERSION,
-            tree: self,
-            bytes: self.bytes(),
-        };
         // every key is a string and every value serialisable: this cannot fail
-        serde_json::to_value(document).unwrap_or(Value::Null)
+        serde_json::to_value(self.document()).unwrap_or(Value::Null)
+    }
+
+    /// The tree read as [`Plain`] types, as a reader that does not link the renderer (or a
+    /// build of the other precision) reads its JSON.
+    pub fn plain(&self) -> Result<Document<Plain>, serde_json::Error> {
+        serde_json::from_value(self.to_json())
     }
 }
 
@@ -209,40 +123,125 @@ pub fn part_name(part: Part) -> String {
     }
 }
 
-impl Serialize for RayKind {
+/// The part [`part_name`] words so.
+fn part_named(name: &str) -> Option<Part> {
+    if let Some(i) = name.strip_prefix("facet ") {
+        return i.parse().ok().map(Part::Facet);
+    }
+    [
+        Part::Surface,
+        Part::Wall,
+        Part::TopCap,
+        Part::BottomCap,
+        Part::Base,
+        Part::Apex,
+    ]
+    .into_iter()
+    .find(|p| part_name(*p) == name)
+}
+
+/// Serde for a type written by its name: the one among `ALL` whose `name()` it is.
+macro_rules! by_name {
+    ($type:ty, $what:literal) => {
+        impl Serialize for $type {
+            fn serialize<S: Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+                s.serialize_str(self.name())
+            }
+        }
+
+        impl<'de> Deserialize<'de> for $type {
+            fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
+                let given = String::deserialize(d)?;
+                <$type>::ALL
+                    .into_iter()
+                    .find(|x| x.name() == given)
+                    .ok_or_else(|| {
+                        let names: Vec<&str> = <$type>::ALL.iter().map(|x| x.name()).collect();
+                        D::Error::custom(format!(
+                            "{}: `{given}` is none of {}",
+                            $what,
+                            names.join(", ")
+                        ))
+                    })
+            }
+        }
+    };
+}
+
+by_name!(View, "view");
+by_name!(Encoding, "encoding");
+by_name!(Numerics, "numerics");
+by_name!(OffsetKind, "offset");
+
+impl Serialize for Chapter {
     fn serialize<S: Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
-        s.serialize_str(self.name())
+        s.serialize_u8(self.number())
     }
 }
 
-impl Serialize for Stop {
+impl<'de> Deserialize<'de> for Chapter {
+    fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
+        let n = u8::deserialize(d)?;
+        Chapter::from_number(n)
+            .ok_or_else(|| D::Error::custom(format!("chapter: {n} is not 1 to 5")))
+    }
+}
+
+impl Serialize for Part {
     fn serialize<S: Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
-        s.serialize_str(self.name())
+        s.serialize_str(&part_name(*self))
     }
 }
 
-fn chapter_number<S: Serializer>(chapter: &Chapter, s: S) -> Result<S::Ok, S::Error> {
-    s.serialize_u8(chapter.number())
-}
-
-fn view_name<S: Serializer>(view: &View, s: S) -> Result<S::Ok, S::Error> {
-    s.serialize_str(view.name())
-}
-
-fn encoding_name<S: Serializer>(encoding: &Encoding, s: S) -> Result<S::Ok, S::Error> {
-    s.serialize_str(encoding.name())
-}
-
-fn part<S: Serializer>(part: &Part, s: S) -> Result<S::Ok, S::Error> {
-    s.serialize_str(&part_name(*part))
-}
-
-/// The stopped branches as `{ "kind": …, "why": … }` objects.
-fn stops<S: Serializer>(stopped: &[(RayKind, Stop)], s: S) -> Result<S::Ok, S::Error> {
-    #[derive(Serialize)]
-    struct Stopped {
-        kind: RayKind,
-        why: Stop,
+impl<'de> Deserialize<'de> for Part {
+    fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
+        let given = String::deserialize(d)?;
+        part_named(&given).ok_or_else(|| D::Error::custom(format!("part: `{given}` is no part")))
     }
-    s.collect_seq(stopped.iter().map(|&(kind, why)| Stopped { kind, why }))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Every part reads back from the name it is written by.
+    #[test]
+    fn a_part_reads_back_from_its_name() {
+        for part in [
+            Part::Surface,
+            Part::Wall,
+            Part::TopCap,
+            Part::BottomCap,
+            Part::Base,
+            Part::Apex,
+            Part::Facet(0),
+            Part::Facet(17),
+        ] {
+            let json = serde_json::to_string(&part).unwrap();
+            let back: Part = serde_json::from_str(&json).unwrap();
+            assert_eq!(
+                back, part,
+                "{json} read back as {back:?}, expected {part:?}"
+            );
+        }
+        assert!(serde_json::from_str::<Part>("\"facet x\"").is_err());
+    }
+
+    /// A view, an encoding, the numerics and the offset read back from their names, and a
+    /// name that is none of them says which it could have been.
+    #[test]
+    fn names_read_back_and_a_wrong_name_lists_the_right_ones() {
+        for view in View::ALL {
+            let back: View = serde_json::from_value(serde_json::to_value(view).unwrap()).unwrap();
+            assert_eq!(back, view);
+        }
+        let e = serde_json::from_str::<Numerics>("\"fast\"").unwrap_err();
+        assert_eq!(
+            e.to_string(),
+            "numerics: `fast` is none of textbook, robust",
+            "the error for an unknown numerics"
+        );
+        let e = serde_json::from_str::<Chapter>("9").unwrap_err();
+        assert_eq!(e.to_string(), "chapter: 9 is not 1 to 5");
+    }
 }
