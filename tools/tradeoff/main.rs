@@ -36,12 +36,14 @@
 //! | [`metrics`] | error against the reference; the rows of results |
 //! | [`planet`] | a huge sphere seen from close by: errors, acne, fixes, and its section of the report |
 //! | [`results`] | the raw results as JSON: docs/src/tradeoff.json |
+//! | [`finite`] | serde for numbers that may be NaN or ∞ (written as `null`) |
 //! | [`front`] | the faster-and-more-accurate (Pareto) front of time against error |
 //! | [`report`] | docs/src/tradeoff.md |
 //! | [`plot`] | docs/src/tradeoff.svg |
 
 #![deny(missing_docs)]
 
+mod finite;
 mod front;
 mod measure;
 mod metrics;
@@ -92,13 +94,24 @@ struct Args {
     worker: Option<PathBuf>,
 }
 
+impl Args {
+    /// What each worker renders.
+    fn run(&self) -> worker::Run {
+        worker::Run {
+            width: self.width,
+            height: self.height,
+            runs: self.runs,
+        }
+    }
+}
+
 fn main() -> ExitCode {
     let mut args = Args::parse();
     if args.quick {
         (args.width, args.height, args.runs, args.reference_samples) = (80, 60, 3, 16);
     }
     if let Some(dir) = &args.worker {
-        return match worker::worker(dir, &args) {
+        return match worker::worker(dir, &args.run()) {
             Ok(()) => ExitCode::SUCCESS,
             Err(e) => {
                 eprintln!("error: {e}");
@@ -136,8 +149,8 @@ fn coordinate(args: &Args) -> Result<(), String> {
         ("f32", work.path().join("f32")),
     ];
     let this = std::env::current_exe().map_err(|e| e.to_string())?;
-    worker::run_worker(&this, &dirs[0].1, args)?;
-    worker::run_worker(&f32_exe, &dirs[1].1, args)?;
+    worker::run_worker(&this, &dirs[0].1, &args.run())?;
+    worker::run_worker(&f32_exe, &dirs[1].1, &args.run())?;
 
     eprintln!("rendering the references …");
     let n = (args.width * args.height) as usize;

@@ -14,13 +14,13 @@ use crate::worker::{read_image, read_times};
 #[derive(Clone, Copy, Debug, Default, Serialize, Deserialize)]
 pub struct Error {
     /// Root-mean-square error over all channels, in 8-bit levels.
-    #[serde(with = "crate::results::finite")]
+    #[serde(with = "crate::finite")]
     pub rmse: f64,
     /// The largest error of a channel, in 8-bit levels.
-    #[serde(with = "crate::results::finite")]
+    #[serde(with = "crate::finite")]
     pub max: f64,
     /// Share of pixels with a channel off by more than 1/255.
-    #[serde(with = "crate::results::finite")]
+    #[serde(with = "crate::finite")]
     pub off: f64,
     /// Pixels whose centre ray hits nothing in one image and something in the other, or
     /// another object.
@@ -29,7 +29,7 @@ pub struct Error {
     pub non_finite: usize,
     /// Share of pixels off by more than 1/255 against the f64 robust error-bound render with
     /// the same samples and depth: the numerical error alone, without the sampling error.
-    #[serde(with = "crate::results::finite")]
+    #[serde(with = "crate::finite")]
     pub numeric: f64,
 }
 

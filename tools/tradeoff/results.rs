@@ -14,6 +14,7 @@ use whitted::shapes::Numerics;
 
 use crate::metrics::{Error, Row};
 use crate::settings::{SCENES, Setting, formula_name};
+use crate::shapes::ShapeTiming;
 
 /// What the JSON file is, written at its top.
 const ABOUT: &str = "Raw results of `cargo run --release --bin tradeoff`, from which it writes \
@@ -56,20 +57,6 @@ pub struct Machine {
     pub load_before: Option<f64>,
     /// Load average when the run ended.
     pub load_after: Option<f64>,
-}
-
-/// One shape's ns per ray–shape test at one precision and with one formula.
-#[derive(Debug, Serialize, Deserialize)]
-pub struct ShapeTiming {
-    /// "f32" or "f64".
-    pub precision: String,
-    /// The shape's name.
-    pub shape: String,
-    /// "Textbook" or "Robust".
-    pub formula: String,
-    /// Nanoseconds per test (not a number where it could not be read).
-    #[serde(with = "finite")]
-    pub ns: f64,
 }
 
 /// Each worker's `planet.tsv`, line by line (see [`crate::planet::measure_all`]).
@@ -135,7 +122,7 @@ struct RowRecord {
     offset: String,
     samples: u32,
     depth: u32,
-    #[serde(with = "finite")]
+    #[serde(with = "crate::finite")]
     seconds: f64,
     error: Error,
 }
@@ -190,26 +177,6 @@ impl<'de> Deserialize<'de> for Row {
             seconds: r.seconds,
             error: r.error,
         })
-    }
-}
-
-/// Serde for an f64 that may not be finite: JSON has no NaN or ∞, so those are written as
-/// `null` and read back as NaN.
-pub mod finite {
-    use serde::{Deserialize, Deserializer, Serializer};
-
-    /// Writes `x`, or `null` if it is not finite.
-    pub fn serialize<S: Serializer>(x: &f64, serializer: S) -> Result<S::Ok, S::Error> {
-        if x.is_finite() {
-            serializer.serialize_f64(*x)
-        } else {
-            serializer.serialize_none()
-        }
-    }
-
-    /// Reads a number, or NaN for `null`.
-    pub fn deserialize<'de, D: Deserializer<'de>>(deserializer: D) -> Result<f64, D::Error> {
-        Ok(Option::<f64>::deserialize(deserializer)?.unwrap_or(f64::NAN))
     }
 }
 

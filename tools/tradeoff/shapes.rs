@@ -1,12 +1,27 @@
 //! Shape timings: nanoseconds per ray–shape test, textbook against robust, at the build's
-//! precision.
+//! precision, and [`ShapeTiming`], one of them as the results keep it.
 
 use std::time::Instant;
 
+use serde::{Deserialize, Serialize};
 use whitted::ray::Ray;
 use whitted::real::{Real, Vec3};
 use whitted::shapes::{Numerics, Object, Polyhedron, Shape};
 use whitted::transform::Placement;
+
+/// One shape's ns per ray–shape test at one precision and with one formula.
+#[derive(Debug, Serialize, Deserialize)]
+pub struct ShapeTiming {
+    /// "f32" or "f64".
+    pub precision: String,
+    /// The shape's name.
+    pub shape: String,
+    /// "Textbook" or "Robust".
+    pub formula: String,
+    /// Nanoseconds per test (not a number where it could not be read).
+    #[serde(with = "crate::finite")]
+    pub ns: f64,
+}
 
 /// Nanoseconds per ray–shape test for each shape and formula, at this build's precision:
 /// 4096 fixed rays through the generic shapes, the fastest of 15 timed passes (the least

@@ -10,19 +10,29 @@ use std::fs;
 use std::path::{Path, PathBuf};
 use std::process::Command;
 
-use crate::Args;
 use crate::measure::{self, Image};
 use crate::planet;
-use crate::results::ShapeTiming;
 use crate::settings::settings;
-use crate::shapes::shape_timings;
+use crate::shapes::{ShapeTiming, shape_timings};
+
+/// What a worker renders: the size of every image and the timed runs per setting (the
+/// command line's `--width`, `--height` and `--runs`).
+#[derive(Clone, Copy, Debug)]
+pub struct Run {
+    /// Image width of every render.
+    pub width: u32,
+    /// Image height of every render.
+    pub height: u32,
+    /// Timed runs per setting (the median is kept).
+    pub runs: usize,
+}
 
 /// Worker mode: renders every setting at this build's precision into `dir`.
-pub fn worker(dir: &Path, args: &Args) -> std::io::Result<()> {
+pub fn worker(dir: &Path, run: &Run) -> std::io::Result<()> {
     fs::create_dir_all(dir)?;
     let mut index = String::new();
     for s in settings() {
-        let (seconds, image) = measure::measure(&s, args.width, args.height, args.runs);
+        let (seconds, image) = measure::measure(&s, run.width, run.height, run.runs);
         let mut raw = Vec::with_capacity(image.pixels.len() * 12 + image.mask.len());
         for p in &image.pixels {
             for c in p {
@@ -76,14 +86,14 @@ pub fn build_f32() -> Result<PathBuf, String> {
 }
 
 /// Runs the worker `exe` (this command or its f32 variant) into `dir`.
-pub fn run_worker(exe: &Path, dir: &Path, args: &Args) -> Result<(), String> {
+pub fn run_worker(exe: &Path, dir: &Path, run: &Run) -> Result<(), String> {
     eprintln!("rendering with {} …", exe.display());
     let status = Command::new(exe)
         .arg("--worker")
         .arg(dir)
-        .args(["--width", &args.width.to_string()])
-        .args(["--height", &args.height.to_string()])
-        .args(["--runs", &args.runs.to_string()])
+        .args(["--width", &run.width.to_string()])
+        .args(["--height", &run.height.to_string()])
+        .args(["--runs", &run.runs.to_string()])
         .status()
         .map_err(|e| format!("cannot run {}: {e}", exe.display()))?;
     if status.success() {

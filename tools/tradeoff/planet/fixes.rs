@@ -8,7 +8,7 @@ use whitted::real::{Real, Vec3, real};
 use whitted::shapes::quadratic::stable_roots;
 use whitted::shapes::{Numerics, Shape};
 
-use super::{Planet, wide3};
+use super::setup::{Planet, wide3};
 
 /// A way of finding the nearest hit.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]

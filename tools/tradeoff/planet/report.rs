@@ -1,8 +1,10 @@
 //! The report's section on a huge object seen from close by, written from both workers'
 //! measurements so that the text and the numbers cannot drift apart.
 
+use super::errors::HitError;
 use super::fixes::Method;
-use super::{ANGLES, LIGHT, Measured, RADII, RAYS};
+use super::setup::{ANGLES, LIGHT, RADII, RAYS};
+use super::tsv::Measured;
 
 /// A length or an error with two significant digits: plain between 0.001 and 10 000,
 /// scientific outside.
@@ -31,7 +33,7 @@ fn percent(x: f64) -> String {
 
 /// An error cell: the largest distance from the surface, and the rays that hit where the
 /// reference misses or the other way round, if any.
-fn cell(e: &super::HitError) -> String {
+fn cell(e: &HitError) -> String {
     if e.disagree > 0 {
         format!("{} ({} wrong hit/miss)", num(e.surface), e.disagree)
     } else {

@@ -18,7 +18,7 @@ use std::time::Duration;
 
 use super::progressive::{Job, Task, Worker};
 use super::state::Picture;
-use crate::cli::Reference;
+use crate::cli::reference::Reference;
 use crate::compare::{self, Comparison, Image};
 use whitted::error::Error;
 use whitted::output::Encoding;

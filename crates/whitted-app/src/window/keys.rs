@@ -12,8 +12,9 @@ use minifb::Key;
 use whitted::real::Real;
 use whitted::render::{Chapter, View};
 
+use super::action::{Action, Move, Turn};
+use super::camera::{FAST, MOVE_SHARE, TURN_DEGREES};
 use super::overlay::{Mark, Stroke};
-use super::state::{Action, FAST, MOVE_SHARE, Move, TURN_DEGREES, Turn};
 
 /// A key and what it asks for.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -183,7 +184,7 @@ pub fn keymap() -> Vec<Row> {
             "depth",
             format!(
                 "one more, one less level of mirror and transmitted rays (`max_depth`, chapter {})",
-                crate::cli::TRACING_FROM.number()
+                crate::cli::offers::TRACING_FROM.number()
             ),
         ),
         Row::keys(

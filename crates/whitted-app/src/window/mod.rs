@@ -9,6 +9,8 @@
 //! | [`progressive`] | the render thread, its rayon pool, and cancelling by generation |
 //! | [`canvas`] | the image as the passes fill it in, and the screen's pixels |
 //! | [`comparison`] | `--compare`: the render at the reference's size, compared on its own thread |
+//! | [`action`] | what a key asks for: move, turn, depth, chapter, view … |
+//! | [`camera`] | the camera as the keys move and turn it, and as `C` prints it |
 //! | [`keys`] | the keymap: every key, what it asks for, and the help written from it |
 //! | [`state`] | what the keys change: input → state → commands, no display needed |
 //! | [`overlay`] | the ray tree of a clicked pixel, projected into the view and drawn |
@@ -19,6 +21,8 @@
 //!
 //! Course book: [The live window](../../../../docs/book/window.html) (`docs/src/window.md`).
 
+pub mod action;
+pub mod camera;
 pub mod canvas;
 pub mod comparison;
 pub mod keys;

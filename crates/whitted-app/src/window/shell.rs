@@ -20,7 +20,7 @@ use super::overlay::Overlay;
 use super::progressive::{Update, Worker};
 use super::schedule::PASSES;
 use super::state::{Command, Input, Picture, State};
-use crate::cli::Reference;
+use crate::cli::reference::Reference;
 use whitted::accel::Accelerator;
 use whitted::error::Error;
 use whitted::output::{self, Encoding};

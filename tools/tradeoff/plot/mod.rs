@@ -5,6 +5,12 @@
 //! fewer where those would crowd), the same ranges in every panel so that panels compare. The
 //! legend has a panel of its own, so it hides no point. The drawing depends on the results
 //! alone (no date, no machine name), so the same JSON always gives the same bytes.
+//!
+//! This file draws the panels and the legend; [`ticks`] says where the axes' ticks go and how
+//! they read, [`labels`] where the labels of the front's points go.
+
+pub mod labels;
+pub mod ticks;
 
 use plotters::coord::Shift;
 use plotters::prelude::*;
@@ -14,6 +20,8 @@ use crate::metrics::Row;
 use crate::report::scene_front;
 use crate::results::Results;
 use crate::settings::{SCENES, formula_name};
+use labels::{place_labels, text_size};
+use ticks::{log_ticks, tick_label};
 use whitted::offset::OffsetKind;
 
 /// The picture's size in pixels.
@@ -53,51 +61,6 @@ const TITLES: [&str; 3] = [
     "grazing: eye 4 cm above a mirror floor",
 ];
 
-/// The ticks of a logarithmic axis from `lo` to `hi` (both > 0): the values 1, 2 and 5 × a
-/// power of ten inside the range, or, where more than `max` of those fall inside, 1 and 3 ×,
-/// then powers of ten, then every second, third, … power of ten, whichever first gives at most
-/// `max` ticks. Increasing; each value is the double nearest its decimal form.
-pub fn log_ticks(lo: f64, hi: f64, max: usize) -> Vec<f64> {
-    let with = |mantissas: &[u32], every: i32| -> Vec<f64> {
-        let (first, last) = (lo.log10().floor() as i32, hi.log10().ceil() as i32);
-        let mut ticks = Vec::new();
-        for k in (first..=last).filter(|k| k.rem_euclid(every) == 0) {
-            for m in mantissas {
-                // parsed from its decimal form: 3e-1 is the double nearest 0.3, not 3 × 0.1
-                let v: f64 = format!("{m}e{k}").parse().expect("a number");
-                if (lo..=hi).contains(&v) {
-                    ticks.push(v);
-                }
-            }
-        }
-        ticks
-    };
-    for mantissas in [&[1, 2, 5][..], &[1, 3], &[1]] {
-        let ticks = with(mantissas, 1);
-        if ticks.len() <= max {
-            return ticks;
-        }
-    }
-    let mut every = 2;
-    loop {
-        let ticks = with(&[1], every);
-        if ticks.len() <= max.max(1) {
-            return ticks;
-        }
-        every += 1;
-    }
-}
-
-/// A tick's label: as few decimals as the value needs ("0.5", "2", "100").
-pub fn tick_label(v: f64) -> String {
-    let decimals = if v >= 1.0 || v <= 0.0 {
-        0
-    } else {
-        (-v.log10().floor()) as usize
-    };
-    format!("{v:.decimals$}")
-}
-
 /// The label of a front point: what sets its place on the time axis and the error axis, the
 /// samples per pixel or the recursion depth (the others are at depth 5).
 fn front_label(r: &Row) -> String {
@@ -130,144 +93,6 @@ fn clamp(e: f64, floor: f64) -> f64 {
 
 /// The nominal size of the front's labels (plotters draws a nominal size s as 0.806·s px).
 const LABEL_FONT: u32 = 16;
-
-/// A point, or a size, in pixels.
-pub type Pixel = (i32, i32);
-/// A box in pixels: left, top, right, bottom.
-pub type PixelBox = (i32, i32, i32, i32);
-
-/// The estimated size in pixels of `text` at nominal font size `size`: plotters writes
-/// 0.806·size px into the SVG, and a sans-serif character is about 0.55 em wide on average.
-fn text_size(text: &str, size: u32) -> Pixel {
-    let px = f64::from(size) * 0.806;
-    (
-        (text.chars().count() as f64 * px * 0.55).ceil() as i32,
-        px.ceil() as i32,
-    )
-}
-
-/// Where a label stands beside its point.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Side {
-    /// Below and to the left: the first choice for a point of the front, since a point there
-    /// would be faster and more accurate, so there is none.
-    LeftBelow,
-    /// To the left, centred on the point's height.
-    Left,
-    /// Below, centred.
-    Below,
-    /// Below and to the right.
-    RightBelow,
-    /// Above and to the left.
-    LeftAbove,
-    /// To the right.
-    Right,
-    /// Above, centred.
-    Above,
-}
-
-impl Side {
-    /// Every side, in the order they are tried.
-    pub const ALL: [Side; 7] = [
-        Side::LeftBelow,
-        Side::Left,
-        Side::Below,
-        Side::RightBelow,
-        Side::LeftAbove,
-        Side::Right,
-        Side::Above,
-    ];
-    /// The gap between a point and its label, in pixels.
-    const GAP: i32 = 8;
-
-    /// The text's anchor relative to the point, and how the text sits on it.
-    pub fn anchor(self) -> (Pixel, HPos, VPos) {
-        let g = Self::GAP;
-        match self {
-            Side::LeftBelow => ((-g, g / 2), HPos::Right, VPos::Top),
-            Side::Left => ((-g - 2, 0), HPos::Right, VPos::Center),
-            Side::Below => ((0, g + 2), HPos::Center, VPos::Top),
-            Side::RightBelow => ((g, g / 2), HPos::Left, VPos::Top),
-            Side::LeftAbove => ((-g, -g / 2), HPos::Right, VPos::Bottom),
-            Side::Right => ((g + 2, 0), HPos::Left, VPos::Center),
-            Side::Above => ((0, -g - 2), HPos::Center, VPos::Bottom),
-        }
-    }
-
-    /// The box of a label of size `(w, h)` on this side of the point `at`.
-    pub fn bounds(self, at: Pixel, (w, h): Pixel) -> PixelBox {
-        let ((dx, dy), hpos, vpos) = self.anchor();
-        let (x, y) = (at.0 + dx, at.1 + dy);
-        let left = match hpos {
-            HPos::Left => x,
-            HPos::Center => x - w / 2,
-            HPos::Right => x - w,
-        };
-        let top = match vpos {
-            VPos::Top => y,
-            VPos::Center => y - h / 2,
-            VPos::Bottom => y - h,
-        };
-        (left, top, left + w, top + h)
-    }
-}
-
-/// Whether two boxes overlap.
-fn overlaps(a: PixelBox, b: PixelBox) -> bool {
-    a.0 < b.2 && b.0 < a.2 && a.1 < b.3 && b.1 < a.3
-}
-
-/// Whether the segment from `p` to `q` passes through the box.
-fn crosses(p: Pixel, q: Pixel, b: PixelBox) -> bool {
-    let steps = (p.0 - q.0).abs().max((p.1 - q.1).abs()).max(1);
-    (0..=steps).any(|i| {
-        let t = f64::from(i) / f64::from(steps);
-        let x = f64::from(p.0) + t * f64::from(q.0 - p.0);
-        let y = f64::from(p.1) + t * f64::from(q.1 - p.1);
-        (f64::from(b.0)..=f64::from(b.2)).contains(&x)
-            && (f64::from(b.1)..=f64::from(b.3)).contains(&y)
-    })
-}
-
-/// The side of each label (its point and its size in pixels, in the order given): of the
-/// sides where the label stays inside `area` and clear of the labels placed before it, the one
-/// that covers the fewest markers (at `markers`, 6 px around each) and segments of the line
-/// through `line`, the first of [`Side::ALL`] among equals; `None` where no side is inside and
-/// clear.
-pub fn place_labels(
-    labels: &[(Pixel, Pixel)],
-    markers: &[Pixel],
-    line: &[Pixel],
-    area: PixelBox,
-) -> Vec<Option<Side>> {
-    const PAD: i32 = 3;
-    let mut placed: Vec<PixelBox> = Vec::new();
-    labels
-        .iter()
-        .map(|&(at, size)| {
-            let best = Side::ALL
-                .into_iter()
-                .map(|side| (side, side.bounds(at, size)))
-                .filter(|(_, b)| b.0 >= area.0 && b.1 >= area.1 && b.2 <= area.2 && b.3 <= area.3)
-                .filter(|(_, b)| {
-                    let grown = (b.0 - PAD, b.1 - PAD, b.2 + PAD, b.3 + PAD);
-                    placed.iter().all(|p| !overlaps(grown, *p))
-                })
-                .min_by_key(|(_, b)| {
-                    let covered = markers
-                        .iter()
-                        .filter(|m| overlaps(*b, (m.0 - 6, m.1 - 6, m.0 + 6, m.1 + 6)))
-                        .count();
-                    let crossed = line.windows(2).filter(|s| crosses(s[0], s[1], *b)).count();
-                    covered + crossed
-                });
-            best.map(|(side, b)| {
-                placed.push(b);
-                side
-            })
-        })
-        .collect()
-}
 
 /// The SVG text of the plot.
 pub fn svg(results: &Results) -> Result<String, String> {
@@ -500,106 +325,4 @@ fn legend<DB: DrawingBackend>(
         area.draw(&text(&line, (x0, y), LEGEND_FONT, &GREY))?;
     }
     Ok(())
-}
-
-#[cfg(test)]
-mod tests {
-    use super::{Side, log_ticks, overlaps, place_labels, tick_label};
-
-    const AREA: super::PixelBox = (0, 0, 400, 300);
-
-    #[test]
-    fn a_lone_label_goes_below_left_of_its_point() {
-        assert_eq!(
-            place_labels(&[((200, 100), (40, 12))], &[], &[], AREA),
-            vec![Some(Side::LeftBelow)]
-        );
-        assert_eq!(
-            Side::LeftBelow.bounds((200, 100), (40, 12)),
-            (152, 104, 192, 116)
-        );
-    }
-
-    #[test]
-    fn labels_stay_inside_the_area() {
-        // at the left edge the left sides (and the centred one) would leave it; at the
-        // bottom, the lower ones
-        let sides = place_labels(
-            &[((5, 100), (40, 12)), ((200, 295), (40, 12))],
-            &[],
-            &[],
-            AREA,
-        );
-        assert_eq!(sides, vec![Some(Side::RightBelow), Some(Side::LeftAbove)]);
-    }
-
-    #[test]
-    fn labels_do_not_overlap_and_one_that_cannot_fit_is_left_out() {
-        let labels = [((200, 100), (40, 12)), ((202, 101), (40, 12))];
-        let sides = place_labels(&labels, &[], &[], AREA);
-        let (a, b) = (sides[0].unwrap(), sides[1].unwrap());
-        assert!(!overlaps(
-            a.bounds(labels[0].0, labels[0].1),
-            b.bounds(labels[1].0, labels[1].1)
-        ));
-        // a tiny area: the second label has nowhere to go
-        let tiny = (150, 95, 230, 130);
-        let sides = place_labels(&labels, &[], &[], tiny);
-        assert_eq!(sides[0], Some(Side::LeftBelow));
-        assert_eq!(sides[1], None);
-    }
-
-    #[test]
-    fn labels_avoid_markers_and_the_line() {
-        // a marker where the first choice would go: the next side free of it is taken
-        let sides = place_labels(&[((200, 100), (40, 12))], &[(165, 114)], &[], AREA);
-        assert_eq!(sides, vec![Some(Side::Left)]);
-        // and a line through the left side too
-        let sides = place_labels(
-            &[((200, 100), (40, 12))],
-            &[(165, 114)],
-            &[(100, 100), (200, 100)],
-            AREA,
-        );
-        assert_eq!(sides, vec![Some(Side::Below)]);
-    }
-
-    #[test]
-    fn ticks_at_one_two_five_when_they_fit() {
-        assert_eq!(log_ticks(3.0, 150.0, 8), vec![5.0, 10.0, 20.0, 50.0, 100.0]);
-        assert_eq!(
-            log_ticks(0.35, 40.0, 8),
-            vec![0.5, 1.0, 2.0, 5.0, 10.0, 20.0]
-        );
-    }
-
-    #[test]
-    fn fewer_ticks_when_one_two_five_would_crowd() {
-        // 1-2-5 over 1 … 1000 gives 10 ticks: 1 and 3 gives 7
-        assert_eq!(
-            log_ticks(1.0, 1000.0, 8),
-            vec![1.0, 3.0, 10.0, 30.0, 100.0, 300.0, 1000.0]
-        );
-        assert_eq!(log_ticks(1.0, 1000.0, 4), vec![1.0, 10.0, 100.0, 1000.0]);
-        assert_eq!(log_ticks(1e-3, 1e6, 5), vec![1e-2, 1.0, 1e2, 1e4, 1e6]);
-    }
-
-    #[test]
-    fn ticks_are_the_doubles_of_their_decimal_form() {
-        assert_eq!(log_ticks(0.1, 1.0, 3), vec![0.1, 0.3, 1.0]);
-        assert_eq!(
-            log_ticks(0.25, 0.35, 8),
-            Vec::<f64>::new(),
-            "no 1, 2 or 5 × 10ᵏ inside"
-        );
-    }
-
-    #[test]
-    fn labels_have_the_decimals_they_need() {
-        assert_eq!(tick_label(0.5), "0.5");
-        assert_eq!(tick_label(0.05), "0.05");
-        assert_eq!(tick_label(0.3), "0.3");
-        assert_eq!(tick_label(2.0), "2");
-        assert_eq!(tick_label(100.0), "100");
-    }
 }
