@@ -6,8 +6,9 @@
 //!
 //! The files of a crate are read with `syn` (the modules from the crate's root by its `mod`
 //! declarations, the paths each file writes, where each path leads): `syntax`, `modules`,
-//! `paths`, `resolve` and `circles` hold that reader, bottom floor first; `examples` proves it
-//! on small crates written in memory.
+//! `paths`, `resolve` and `circles` hold that reader, bottom floor first; `workspace` finds
+//! every crate's root file and every source file; `examples` proves the reader on small crates
+//! written in memory.
 
 mod circles;
 mod examples;
