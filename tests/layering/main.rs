@@ -1,18 +1,33 @@
 //! The layers a newcomer reads: the workspace's crates depend on one another one way (course
 //! tools → (cargo) → the programs → the renderer), the renderer's modules depend on one another
-//! without cycles, the renderer carries no command-line code, and the road of one pixel holds no
-//! speed machinery. These read the manifests and source files themselves.
+//! without cycles, no file of any crate names a file that names it back, no source file outside
+//! the tests is over 600 lines, the renderer carries no command-line code, and the road of one
+//! pixel holds no speed machinery. These read the manifests and source files themselves.
+//!
+//! The files of a crate are read with `syn` (the modules from the crate's root by its `mod`
+//! declarations, the paths each file writes, where each path leads): `syntax`, `modules`,
+//! `paths`, `resolve` and `circles` hold that reader, bottom floor first; `workspace` finds
+//! every crate's root file and every source file; `examples` proves the reader on small crates
+//! written in memory.
+
+mod circles;
+mod examples;
+mod modules;
+mod paths;
+mod resolve;
+mod syntax;
+mod workspace;
 
 use std::collections::{BTreeMap, BTreeSet};
 use std::path::{Path, PathBuf};
 
-/// The workspace's root: this package is its `tests/`.
-fn root() -> PathBuf {
-    PathBuf::from(env!("CARGO_MANIFEST_DIR"))
-        .parent()
-        .expect("tests/ sits in the workspace's root")
-        .to_path_buf()
-}
+use circles::{circles, tell};
+use modules::read_crate;
+use resolve::file_graph;
+use workspace::{crate_roots, disk, only_test_code, root, rust_sources, under_tests};
+
+/// The longest a source file outside the tests may be, in lines.
+const LONGEST: usize = 600;
 
 /// The renderer's sources.
 fn src() -> PathBuf {
@@ -126,21 +141,6 @@ fn the_crates_depend_one_way() {
     );
 }
 
-/// Every `.rs` file under `dir`, recursively.
-fn rust_files(dir: &Path) -> Vec<PathBuf> {
-    let mut out = Vec::new();
-    for entry in std::fs::read_dir(dir).unwrap() {
-        let path = entry.unwrap().path();
-        if path.is_dir() {
-            out.extend(rust_files(&path));
-        } else if path.extension().is_some_and(|e| e == "rs") {
-            out.push(path);
-        }
-    }
-    out.sort();
-    out
-}
-
 /// The file's code without its comments (line comments, doc comments included).
 fn code(text: &str) -> String {
     text.lines()
@@ -167,7 +167,7 @@ fn top_module(path: &Path) -> String {
 /// Which top-level modules each top-level module names (`crate::x`).
 fn dependencies() -> BTreeMap<String, BTreeSet<String>> {
     let mut deps: BTreeMap<String, BTreeSet<String>> = BTreeMap::new();
-    for file in rust_files(&src()) {
+    for file in rust_sources(&src()) {
         let me = top_module(&file);
         if me == "lib" {
             continue;
@@ -227,7 +227,7 @@ fn the_modules_form_no_cycle() {
 #[test]
 fn the_renderer_knows_no_command_line() {
     let mut found = Vec::new();
-    for file in rust_files(&src()) {
+    for file in rust_sources(&src()) {
         let text = code(&std::fs::read_to_string(&file).unwrap());
         if text.contains("clap") {
             found.push(file.display().to_string());
@@ -267,4 +267,122 @@ fn the_road_of_one_pixel_holds_no_speed_machinery() {
         })
         .count();
     assert!(lines <= 520, "the road is {lines} lines long");
+}
+
+/// The files of every crate the workspace builds depend on one another without a circle: in
+/// each crate (a library, a binary, a test, a benchmark) the files can be read in an order
+/// where each names only files before it. A file names another when its code (comments and
+/// `#[cfg(test)]` code aside) writes a path that leads into it: `crate::…`, `super::…`,
+/// `self::…` or a path from a child module or a `use`d name, in a `use`, an expression, a type,
+/// a pattern, an attribute or a macro's arguments. A path through a re-export of a crate root or
+/// a `mod.rs` (`pub use options::Options`) leads to the file that defines the item; a
+/// `use super::*` names the parent's file. A circle is told as its chain of files and, for
+/// each, the line where it names the next: break one of those namings (move the item both
+/// files need to a file of its own, below both).
+#[test]
+fn no_file_of_any_crate_names_a_file_that_names_it_back() {
+    let root = root();
+    let roots = crate_roots(&root);
+    for expected in [
+        "crates/whitted/src/lib.rs",
+        "crates/whitted-course/src/main.rs",
+        "crates/whitted-app/src/bin/ch05_reflection_refraction.rs",
+        "tools/tradeoff/main.rs",
+        "benches/shapes.rs",
+        "tests/extremes/main.rs",
+        "crates/whitted/tests/ch02_generic_objects/main.rs",
+    ] {
+        assert!(
+            roots.contains(&root.join(expected)),
+            "{expected} is not among the crates read: {roots:?}"
+        );
+    }
+    let mut problems = Vec::new();
+    // each circle, told, with the crates (by root file) it is in: a file several crates
+    // share (a test's `common/`) is told once
+    let mut found: BTreeMap<String, Vec<String>> = BTreeMap::new();
+    let mut namings = 0;
+    for crate_root in &roots {
+        let krate = read_crate(crate_root, &disk);
+        problems.extend(krate.problems.iter().cloned());
+        let graph = file_graph(&krate);
+        namings += graph.values().map(BTreeMap::len).sum::<usize>();
+        for circle in circles(&graph) {
+            found
+                .entry(tell(&circle, &graph, &root))
+                .or_default()
+                .push(shown(crate_root, &root));
+        }
+    }
+    assert!(
+        problems.is_empty(),
+        "files the layering check could not read:\n{}",
+        problems.join("\n")
+    );
+    // the reader sees the namings there are: the renderer's files alone name one another
+    // hundreds of times
+    assert!(namings > 300, "only {namings} namings between files seen");
+    let mut by_crates: BTreeMap<String, Vec<&String>> = BTreeMap::new();
+    for (told, crates) in &found {
+        by_crates.entry(crates.join(", ")).or_default().push(told);
+    }
+    let mut message = String::new();
+    for (crates, told) in by_crates {
+        message += &format!("in the crate of {crates}:\n");
+        for t in told {
+            message += t;
+        }
+    }
+    assert!(
+        found.is_empty(),
+        "{} circle(s) among the files of a crate (each file names the next, the last names the \
+         first; break one naming of each circle):\n{message}",
+        found.len()
+    );
+}
+
+/// No source file outside the tests is over 600 lines: a file that long usually does two jobs.
+/// Test files are those under a `tests/` directory, those holding only `#[cfg(test)]` code, and
+/// those only a `#[cfg(test)] mod` declaration leads to.
+#[test]
+fn no_source_file_outside_the_tests_is_over_600_lines() {
+    let root = root();
+    let mut reached = BTreeSet::new();
+    let mut reached_by_tests = BTreeSet::new();
+    for crate_root in crate_roots(&root) {
+        let krate = read_crate(&crate_root, &disk);
+        reached.extend(krate.files.into_iter().map(|(file, _, _)| file));
+        reached_by_tests.extend(krate.test_files);
+    }
+    let mut long = Vec::new();
+    for file in rust_sources(&root) {
+        let relative = file.strip_prefix(&root).expect("a file of the workspace");
+        if under_tests(relative) || (reached_by_tests.contains(&file) && !reached.contains(&file)) {
+            continue;
+        }
+        let text = std::fs::read_to_string(&file).expect("a readable file");
+        let lines = text.lines().count();
+        if lines > LONGEST && !only_test_code(&text) {
+            long.push((lines, relative.display().to_string()));
+        }
+    }
+    long.sort_by(|a, b| b.cmp(a));
+    let list: Vec<String> = long
+        .iter()
+        .map(|(lines, file)| format!("  {file}: {lines} lines"))
+        .collect();
+    assert!(
+        long.is_empty(),
+        "{} source file(s) over {LONGEST} lines (split each by its jobs):\n{}",
+        long.len(),
+        list.join("\n")
+    );
+}
+
+/// A path shown relative to the workspace's root.
+fn shown(path: &Path, root: &Path) -> String {
+    path.strip_prefix(root)
+        .unwrap_or(path)
+        .display()
+        .to_string()
 }
