@@ -19,6 +19,7 @@ use std::path::Path;
 use std::process::ExitCode;
 
 use crate::ToolError;
+use whitted_learn::chapter_binary::Render;
 pub use whitted_learn::figures::{FIGURES, Figure, parse_figures, read_figures};
 
 /// The largest difference, in 8-bit levels, between a committed figure and a fresh render of
@@ -36,23 +37,22 @@ pub fn render(figure: &Figure, bin_dir: &Path, root: &Path, out: &Path) -> Resul
             binary.display()
         )));
     }
-    let result = std::process::Command::new(&binary)
-        .args(&figure.args)
-        .arg("-o")
-        .arg(out)
-        .arg("--quiet")
-        .current_dir(root)
-        .output()
-        .map_err(|e| ToolError::io(&binary, e))?;
-    if result.status.success() {
+    let rendered = Render {
+        args: &figure.args,
+        quiet: true,
+        out: Some(out),
+        ..Render::new(&binary, root)
+    }
+    .run()
+    .map_err(|e| ToolError::io(&binary, e.into_io()))?;
+    if rendered.success() {
         Ok(())
     } else {
-        let stderr = String::from_utf8_lossy(&result.stderr);
         Err(ToolError::Figure(format!(
             "{} {}: {}",
             figure.binary,
             figure.args.join(" "),
-            stderr.trim()
+            rendered.stderr.trim()
         )))
     }
 }

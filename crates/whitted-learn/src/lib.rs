@@ -3,9 +3,10 @@
 //! What a student's handout needs to run `cargo learn`, and nothing more: the manifest of the
 //! exercises (`chapters/formulas.toml`, read by [`manifest`]) and the measured map of which
 //! tests need which exercise ([`map`]), one runner for cargo and the test executables it
-//! builds ([`cargo`]), where things are in a project ([`layout`]), and the loop itself
-//! ([`learn`]): the verdict on the next exercise, the progress, hints and the chapter's picture,
-//! after every save with `watch`.
+//! builds ([`cargo`]), one for the chapter binaries that draw a figure ([`chapter_binary`]),
+//! where things are in a project ([`layout`]), and the loop itself ([`learn`]): the verdict on
+//! the next exercise, the progress, hints and the chapter's picture ([`picture`]), after every
+//! save with `watch`.
 //!
 //! It does not depend on the renderer: it runs cargo on the student's project, so an edit of
 //! the renderer never rebuilds it and a compile error never stops it. The instructor's tools
@@ -17,6 +18,7 @@
 pub mod args;
 pub mod cargo;
 pub mod changes;
+pub mod chapter_binary;
 pub mod cli;
 pub mod figures;
 pub mod files;

@@ -1,6 +1,7 @@
 //! The submission's own pictures: its code renders the book's figure of a chapter (the
 //! chapter binary built from the graded copy, in the build sandbox; the render in the run
-//! sandbox) with `--compare` against the committed figure.
+//! sandbox) with `--compare` against the committed figure, run as `cargo learn` runs it
+//! ([`whitted_learn::chapter_binary`]).
 //!
 //! - **Feedback** ([`feedback`]): for each graded chapter that lost points, the render also
 //!   traces the pixels of the chapter's reference ray trees (`--against
@@ -17,13 +18,14 @@
 
 use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
-use std::process::{Command, Stdio};
-use std::time::{Duration, Instant};
+use std::process::Command;
+use std::time::Duration;
 
 use super::sandbox::{Policy, Sandbox};
 use crate::cargo::Wrapper;
 use crate::figures;
 use crate::layout;
+use whitted_learn::chapter_binary::{self, Render, RunError};
 use whitted_learn::trees::{self as learn_trees, Against};
 
 /// The figures' manifest, in the project.
@@ -51,6 +53,9 @@ pub(super) fn needs(file: &Path) -> bool {
 /// The largest picture a report carries: the three side by side of a chapter's figure take
 /// about 100 kB, and PrairieLearn takes a results file of 1 MB at the most.
 pub const PICTURE_BYTES: u64 = 400_000;
+
+/// The most of a render's stdout, and of its stderr, that is read back.
+const OUTPUT_BYTES: u64 = 1 << 20;
 
 /// What the submission's code shows of one chapter, beside the reference.
 #[derive(Clone, Debug, PartialEq, Eq)]
@@ -97,21 +102,15 @@ fn build_binaries(
         &[],
         &names,
         wrapper,
-    )
-    .map_err(|e| e.to_string())?;
-    if !built.success {
-        return Err(format!(
-            "the chapter binaries do not build: {}",
-            built.first_error()
-        ));
-    }
+    );
+    let executables = chapter_binary::executables(built).map_err(|e| e.to_string())?;
     // their dependencies are built for these manifests now
     let _ = std::fs::write(target_dir.join(BUILT_FOR), manifests(project));
     Ok(chapters
         .iter()
         .filter_map(|&c| {
             let name = crate::syllabus::chapter(c)?.binary;
-            built.executables.get(name).map(|exe| (c, exe.clone()))
+            executables.get(name).map(|exe| (c, exe.clone()))
         })
         .collect())
 }
@@ -176,21 +175,17 @@ fn run_figure(
 ) -> Result<Ran, String> {
     let about = crate::syllabus::chapter(chapter).ok_or_else(|| format!("no chapter {chapter}"))?;
     let binary = about.binary;
-    let figure = figures::read_figures(&project.join(FIGURES))
-        .map_err(|e| e.to_string())?
-        .into_iter()
-        .find(|f| f.binary == binary)
+    let figures = figures::read_figures(&project.join(FIGURES)).map_err(|e| e.to_string())?;
+    let figure = chapter_binary::chapter_figure(&figures, chapter)
         .ok_or_else(|| format!("{FIGURES} lists no figure of {binary}"))?;
-    let reference = project.join("docs/src/figures").join(&figure.file);
-    let trees = learn_trees::trees_file(chapter)
-        .map(|t| project.join(t))
-        .filter(|t| against && t.is_file());
+    let reference = project.join(figure.path());
+    let trees = chapter_binary::chapter_trees(project, chapter).filter(|_| against);
     let out_dir = target_dir.join("feedback").join(binary);
     if out_dir.exists() {
         std::fs::remove_dir_all(&out_dir).map_err(|e| format!("{}: {e}", out_dir.display()))?;
     }
     let out_png = out_dir.join("picture.png");
-    let mut args: Vec<String> = figure
+    let args: Vec<String> = figure
         .args
         .iter()
         .map(|a| {
@@ -202,15 +197,6 @@ fn run_figure(
             }
         })
         .collect();
-    args.extend([
-        "--compare".into(),
-        reference.display().to_string(),
-        "-o".into(),
-        out_png.display().to_string(),
-    ]);
-    if let Some(t) = &trees {
-        args.extend(["--against".into(), t.display().to_string(), "--json".into()]);
-    }
     let policy = match sandbox {
         Some(s) => {
             let mut policy = s.policy.clone();
@@ -226,46 +212,35 @@ fn run_figure(
             None
         }
     };
-    let mut command = policy
+    let command = policy
         .as_ref()
         .map_or_else(|| Command::new(exe), |p| p.command(exe, project));
-    let dir = tempfile::tempdir().map_err(|e| e.to_string())?;
-    let (out, err) = (dir.path().join("out"), dir.path().join("err"));
-    let file = |p: &PathBuf| std::fs::File::create(p).map_err(|e| e.to_string());
-    let mut child = command
-        .args(&args)
-        .current_dir(project)
-        .stdin(Stdio::null())
-        .stdout(file(&out)?)
-        .stderr(file(&err)?)
-        .spawn()
-        .map_err(|e| format!("cannot run {binary}: {e}"))?;
-    let started = Instant::now();
-    let status = loop {
-        match child.try_wait().map_err(|e| e.to_string())? {
-            Some(s) => break s,
-            None if started.elapsed() > timeout => {
-                let _ = child.kill();
-                let _ = child.wait();
-                policy.iter().for_each(Policy::sweep);
-                let _ = std::fs::remove_dir_all(&out_dir);
-                return Err(format!("{binary} ran past {} s", timeout.as_secs()));
-            }
-            None => std::thread::sleep(Duration::from_millis(20)),
-        }
-    };
+    let rendered = Render {
+        args: &args,
+        compare: Some(&reference),
+        against: trees.as_deref(),
+        out: Some(&out_png),
+        timeout: Some(timeout),
+        output_limit: Some(OUTPUT_BYTES),
+        ..Render::new(exe, project)
+    }
+    .run_in(command)
+    .map_err(|e| match e {
+        RunError::Start(e) => format!("cannot run {binary}: {e}"),
+        RunError::Output(e) => e.to_string(),
+    })?;
     policy.iter().for_each(Policy::sweep);
-    let picture = std::fs::symlink_metadata(&out_png)
-        .ok()
-        .filter(|m| m.is_file() && m.len() <= PICTURE_BYTES)
-        .and_then(|_| std::fs::read(&out_png).ok())
-        .filter(|bytes| bytes.starts_with(b"\x89PNG\r\n\x1a\n"));
+    if rendered.status.is_none() {
+        let _ = std::fs::remove_dir_all(&out_dir);
+        return Err(format!("{binary} ran past {} s", timeout.as_secs()));
+    }
+    let picture = chapter_binary::read_picture(&out_png, PICTURE_BYTES);
     let _ = std::fs::remove_dir_all(&out_dir);
     Ok(Ran {
-        figure: figure.file,
-        success: status.success(),
-        stdout: read_capped(&out, 1 << 20),
-        stderr: read_capped(&err, 1 << 20),
+        figure: figure.file.clone(),
+        success: rendered.success(),
+        stdout: super::clean::clean(&rendered.stdout),
+        stderr: super::clean::clean(&rendered.stderr),
         picture,
     })
 }
@@ -273,10 +248,7 @@ fn run_figure(
 /// The one line a chapter binary's failed run says: its `error: …` line (an exercise not
 /// written yet says which), else the panic's message.
 fn one_line_error(stderr: &str) -> String {
-    stderr
-        .lines()
-        .rev()
-        .find_map(|l| l.strip_prefix("error: "))
+    chapter_binary::error_line(stderr)
         .map_or_else(|| super::junit::panic_message(stderr), str::to_string)
 }
 

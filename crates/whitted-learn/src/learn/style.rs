@@ -1,0 +1,62 @@
+//! The loop's colours on a terminal ([`Style`]), and none elsewhere.
+//!
+//! Course book: [The student's guide](../../../../../docs/book/student-guide.html) (`docs/src/student-guide.md`).
+
+use std::io::IsTerminal;
+
+/// Colours for a terminal: none when stdout is not one, or `NO_COLOR` is set.
+#[derive(Clone, Copy, Debug)]
+pub struct Style {
+    on: bool,
+}
+
+impl Style {
+    /// Colour when stdout is a terminal and `NO_COLOR` is unset or empty.
+    #[must_use]
+    pub fn detect() -> Self {
+        Self::choose(
+            std::io::stdout().is_terminal(),
+            std::env::var_os("NO_COLOR").as_deref(),
+        )
+    }
+
+    /// Colour on a terminal, unless `NO_COLOR` holds something (<https://no-color.org>).
+    #[must_use]
+    pub fn choose(terminal: bool, no_color: Option<&std::ffi::OsStr>) -> Self {
+        Self {
+            on: terminal && no_color.is_none_or(|v| v.is_empty()),
+        }
+    }
+
+    /// No colour at all.
+    #[must_use]
+    pub fn plain() -> Self {
+        Self { on: false }
+    }
+
+    fn paint(self, code: &str, text: &str) -> String {
+        if self.on {
+            format!("\x1b[{code}m{text}\x1b[0m")
+        } else {
+            text.to_string()
+        }
+    }
+
+    /// Green.
+    #[must_use]
+    pub fn good(self, text: &str) -> String {
+        self.paint("32", text)
+    }
+
+    /// Red.
+    #[must_use]
+    pub fn bad(self, text: &str) -> String {
+        self.paint("31", text)
+    }
+
+    /// Bold.
+    #[must_use]
+    pub fn strong(self, text: &str) -> String {
+        self.paint("1", text)
+    }
+}
