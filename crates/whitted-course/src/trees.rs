@@ -654,8 +654,7 @@ pub fn command(root: &Path, manifest: &Manifest, check: bool) -> Result<ExitCode
         };
         let first = compared
             .iter()
-            .find(|a| a.differs)
-            .cloned()
+            .find_map(|a| a.first.clone())
             .unwrap_or_default();
         let own = &manifest.entries[manifest.by_name(&m.exercise).unwrap_or(0)].function;
         println!(
@@ -753,8 +752,8 @@ fn check_all(root: &Path, figures: &[Figure]) -> Result<ExitCode, ToolError> {
         problems.extend(
             compared
                 .iter()
-                .filter(|a| a.differs)
-                .map(|a| a.text.clone()),
+                .filter_map(|a| a.first.as_ref())
+                .map(|p| p.text.clone()),
         );
         let ms = started.elapsed().as_millis();
         if problems.is_empty() {

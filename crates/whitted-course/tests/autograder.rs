@@ -660,7 +660,7 @@ fn the_user_sandbox_keeps_the_project_closed() {
 /// failed.
 #[test]
 fn the_feedback_of_a_chapter_reaches_every_report() {
-    use whitted_course::grade::Against;
+    use whitted_course::grade::{Against, Parting};
     let m = manifest();
     let mut g = grade_of(&m);
     let between = m.by_name("blocks_light").unwrap();
@@ -676,11 +676,19 @@ fn the_feedback_of_a_chapter_reaches_every_report() {
             Against {
                 pixel: (7, 9),
                 differs: true,
-                path: vec!["camera ray".into(), "hit `floor`".into()],
-                nodes: vec!["camera ray".into(), "hit".into(), "light".into(), "feeler".into()],
-                quantity: "crossings".into(),
-                functions: vec![m.entries[between].function.clone()],
-                text: text.into(),
+                first: Some(Parting {
+                    path: vec!["camera ray".into(), "hit `floor`".into()],
+                    nodes: vec![
+                        "camera ray".into(),
+                        "hit".into(),
+                        "light".into(),
+                        "feeler".into(),
+                    ],
+                    quantity: "crossings".into(),
+                    functions: vec![m.entries[between].function.clone()],
+                    text: text.into(),
+                    ..Parting::default()
+                }),
             },
             Against {
                 pixel: (1, 1),

@@ -42,30 +42,9 @@ pub fn trees_file(chapter: u8) -> Option<PathBuf> {
     Some(Path::new("chapters").join(about.binary).join("trees.json"))
 }
 
-/// One pixel of a trees file as the chapter binary compared it (`--against … --json`).
-#[derive(Clone, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
-pub struct Against {
-    /// The pixel (x, y), row y from the top.
-    pub pixel: (u32, u32),
-    /// Whether its tree differs from the reference's; the rest is empty when not.
-    pub differs: bool,
-    /// The path to the node that holds the first quantity that differs ("camera ray",
-    /// "hit `cone`").
-    #[serde(default)]
-    pub path: Vec<String>,
-    /// The kinds of the path's nodes ("camera ray", "hit").
-    #[serde(default)]
-    pub nodes: Vec<String>,
-    /// The quantity's key in the tree (`t`, `normal`, `crossings` …).
-    #[serde(default)]
-    pub quantity: String,
-    /// The functions that computed it, as the manifest spells them.
-    #[serde(default)]
-    pub functions: Vec<String>,
-    /// "pixel (x, y), camera ray → hit `cone`: t: 4.02 (the reference: 3.87)".
-    #[serde(default)]
-    pub text: String,
-}
+/// One pixel of a trees file as the chapter binary compared it (`--against … --json`), and
+/// where its tree first parts from the reference's.
+pub use whitted_syllabus::tree::{Against, Parting};
 
 /// The chapter binary's output with `--compare` and `--against … --json`: its `compare:` line
 /// and the trees' lines, in order.
@@ -111,8 +90,8 @@ fn exercises_of(manifest: &Manifest, functions: &[String]) -> Vec<usize> {
 /// `states` (`None` when they all pass, or when no manifest function computed it).
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct FirstWrong<'a> {
-    /// The pixel's comparison.
-    pub at: &'a Against,
+    /// Where the first differing pixel's tree parts from the reference's.
+    pub at: &'a Parting,
     /// The exercise (manifest index) to look at, when one of those that computed the
     /// quantity fails its tests.
     pub exercise: Option<usize>,
@@ -133,7 +112,7 @@ pub fn attribute<'a>(
     against: &'a [Against],
     picture_differs: bool,
 ) -> Option<FirstWrong<'a>> {
-    let at = against.iter().find(|a| a.differs)?;
+    let at = against.iter().find_map(|a| a.first.as_ref())?;
     let computed = exercises_of(manifest, &at.functions);
     let exercise = computed
         .iter()
@@ -221,7 +200,7 @@ impl Fingerprint {
     /// The fingerprint of a comparison: `None` when no tree differs.
     #[must_use]
     pub fn of(against: &[Against], compare: Option<&str>) -> Option<Self> {
-        let first = against.iter().find(|a| a.differs)?;
+        let first = against.iter().find_map(|a| a.first.as_ref())?;
         Some(Self {
             quantity: first.quantity.clone(),
             nodes: first.nodes.clone(),
@@ -357,9 +336,11 @@ mod tests {
         Against {
             pixel,
             differs: !quantity.is_empty(),
-            nodes: vec!["camera ray".into(), "hit".into()],
-            quantity: quantity.into(),
-            ..Against::default()
+            first: (!quantity.is_empty()).then(|| Parting {
+                nodes: vec!["camera ray".into(), "hit".into()],
+                quantity: quantity.into(),
+                ..Parting::default()
+            }),
         }
     }
 
@@ -393,23 +374,22 @@ mod tests {
         let i = m.by_name("cone_coefficients").unwrap();
         let mut states = vec![State::Done; m.entries.len()];
         states[i] = State::Failing(vec!["x".into()]);
-        let t = Against {
-            pixel: (128, 67),
-            differs: true,
-            text: "pixel (128, 67), camera ray → hit `cone`: t: 9.4089 (the reference: 9.4929)"
-                .into(),
+        let text = "pixel (128, 67), camera ray → hit `cone`: t: 9.4089 (the reference: 9.4929)";
+        let mut t = against((128, 67), "t");
+        t.first = t.first.map(|p| Parting {
+            text: text.into(),
             functions: vec![
                 "shapes::cone::coefficients".into(),
                 "shapes::cone::intersect".into(),
                 "ray::Ray::transformed".into(),
             ],
-            ..against((128, 67), "t")
-        };
+            ..p
+        });
         let same = [t.clone(), against((3, 3), "")];
         let said = first_wrong(&m, &states, &same, false).unwrap();
         let x = &m.entries[i];
         assert!(
-            said.contains(&format!("first wrong number: {}", t.text)),
+            said.contains(&format!("first wrong number: {text}")),
             "{said}"
         );
         assert!(

@@ -393,6 +393,46 @@ pub struct Kept<K: Kinds> {
     pub tree: Document<K>,
 }
 
+/// One pixel of a trees file as `--against … --json` prints it: the pixel, and where its tree
+/// first parts from the reference's, if it does.
+///
+/// ```text
+/// { "pixel": [x, y], "differs": false }
+/// { "pixel": [x, y], "differs": true, "path": […], "nodes": […], "quantity": "t", … }
+/// ```
+#[derive(Clone, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
+pub struct Against {
+    /// The pixel (x, y), row y from the top.
+    pub pixel: (u32, u32),
+    /// Whether its tree differs from the reference's: exactly when [`Against::first`] is
+    /// `Some`.
+    pub differs: bool,
+    /// Where it first differs.
+    #[serde(flatten)]
+    pub first: Option<Parting>,
+}
+
+/// Where a tree first parts from the reference's, as `--against … --json` says it.
+#[derive(Clone, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
+pub struct Parting {
+    /// The path to the node that holds the quantity ("camera ray", "hit `cone`").
+    pub path: Vec<String>,
+    /// The kinds of the path's nodes ("camera ray", "hit").
+    pub nodes: Vec<String>,
+    /// The quantity's key in the tree (`t`, `normal`, `crossings` …).
+    pub quantity: String,
+    /// How the notes write it (`t`, `n`, `ρd·max(n·s, 0)` …).
+    pub symbol: String,
+    /// Its value in the tree compared, as shown.
+    pub computed: String,
+    /// The reference's value, as shown.
+    pub reference: String,
+    /// The functions that computed it, as the manifest spells them.
+    pub functions: Vec<String>,
+    /// "pixel (x, y), camera ray → hit `cone`: t: 4.02 (the reference: 3.87)".
+    pub text: String,
+}
+
 /// The file's version, read first, so that a file of another version is named as such
 /// rather than as a file whose keys are wrong.
 #[derive(Deserialize)]
@@ -502,6 +542,31 @@ mod tests {
         assert_eq!(serde_json::to_string(&Number(0.25)).unwrap(), "0.25");
         let n: Number = serde_json::from_str("3").unwrap();
         assert_eq!(n, Number(3.0));
+    }
+
+    /// A pixel that agrees is two keys; one that differs reads back with where it differs.
+    #[test]
+    fn an_against_line_reads_back_as_written() {
+        let same = Against {
+            pixel: (3, 4),
+            differs: false,
+            first: None,
+        };
+        let text = serde_json::to_string(&same).unwrap();
+        assert_eq!(text, r#"{"pixel":[3,4],"differs":false}"#);
+        assert_eq!(serde_json::from_str::<Against>(&text).unwrap(), same);
+        let differs = Against {
+            pixel: (3, 4),
+            differs: true,
+            first: Some(Parting {
+                quantity: "t".into(),
+                functions: Vec::new(),
+                ..Parting::default()
+            }),
+        };
+        let text = serde_json::to_string(&differs).unwrap();
+        assert!(text.contains(r#""functions":[]"#), "{text}");
+        assert_eq!(serde_json::from_str::<Against>(&text).unwrap(), differs);
     }
 
     /// A file of another version is named as such, before its keys are looked at.

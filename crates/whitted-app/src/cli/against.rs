@@ -29,7 +29,8 @@ pub fn print_against(
     let mut text = String::new();
     for c in &compared {
         if common.json {
-            text += &c.to_json().to_string();
+            text += &serde_json::to_string(&c.to_line())
+                .map_err(|e| Error::Usage(format!("cannot write the comparison as JSON: {e}")))?;
             text.push('\n');
         } else if c.difference.is_some() {
             text += &c.line();

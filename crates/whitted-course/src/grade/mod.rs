@@ -62,7 +62,7 @@ pub use render::{ChapterFeedback, PICTURE_BYTES, RenderScore};
 pub use screen::screen;
 pub(crate) use splice::hidden_files;
 pub use splice::student_body;
-pub use whitted_learn::trees::Against;
+pub use whitted_learn::trees::{Against, Parting};
 
 /// The graded copy's directory, inside the build directory when grading has one.
 const COPY: &str = "graded-copy";

@@ -14,8 +14,7 @@
 
 use std::path::Path;
 
-use serde_json::{Value, json};
-use whitted_syllabus::tree::{Document, Plain};
+use whitted_syllabus::tree::{Against, Document, Parting, Plain};
 
 use super::super::Options;
 use super::super::tracer::{EveryObject, Tracer};
@@ -166,25 +165,24 @@ impl Compared {
         }
     }
 
-    /// The same as JSON (`docs/src/inspect.md`): `{ "pixel": [x, y], "differs": false }`, or
-    /// with `"differs": true` the path (`path`, and its node kinds `nodes`), the quantity (its
-    /// key and symbol), both values as shown, the functions and the line of text.
+    /// The same as `--against … --json` prints it (`docs/src/inspect.md`): the pixel, whether
+    /// it differs, and where (the path and its node kinds, the quantity's key and symbol, both
+    /// values as shown, the functions, and the line of text).
     #[must_use]
-    pub fn to_json(&self) -> Value {
+    pub fn to_line(&self) -> Against {
         let (x, y) = self.pixel;
-        match &self.difference {
-            None => json!({ "pixel": [x, y], "differs": false }),
-            Some(d) => json!({
-                "pixel": [x, y],
-                "differs": true,
-                "path": d.path.iter().map(|s| s.label.clone()).collect::<Vec<_>>(),
-                "nodes": d.path.iter().map(|s| s.kind).collect::<Vec<_>>(),
-                "quantity": d.quantity.key(),
-                "symbol": d.symbol,
-                "computed": d.computed,
-                "reference": d.reference,
-                "functions": d.functions,
-                "text": format!("pixel ({x}, {y}), {}", d.text()),
+        Against {
+            pixel: self.pixel,
+            differs: self.difference.is_some(),
+            first: self.difference.as_ref().map(|d| Parting {
+                path: d.path.iter().map(|s| s.label.clone()).collect(),
+                nodes: d.path.iter().map(|s| s.kind.to_string()).collect(),
+                quantity: d.quantity.key().to_string(),
+                symbol: d.symbol.to_string(),
+                computed: d.computed.clone(),
+                reference: d.reference.clone(),
+                functions: d.functions.iter().map(|f| f.to_string()).collect(),
+                text: format!("pixel ({x}, {y}), {}", d.text()),
             }),
         }
     }
