@@ -270,8 +270,8 @@ impl<Q: Query + Shortcuts> Tracer<'_, Q> {
         rec.ambient(i_a);
         let mut color = i_a;
         for (l, light) in self.scene.lights.iter().enumerate() {
-            let phong = shading::phong(s.material, light, s.p, s.n, -s.d); // I_d + I_s
             let in_front = shadow::in_front(s.n, s.p, light.position); // n·(L − P) > 0
+            let phong = shading::phong(s.material, light, s.p, s.n, -s.d); // I_d + I_s
             // a light behind the surface, or one that adds nothing, has nothing to shadow
             let feeler = if in_front && phong.sum != Vec3::ZERO {
                 self.feeler(s, light)
