@@ -11,8 +11,8 @@ use whitted::ray::Ray;
 use whitted::real::{Real, Vec3};
 use whitted::render::inspect::{HitNode, RayNode, RayTree};
 use whitted::render::{
-    Chapter, EveryObject, Feeler, Framebuffer, Options, RayKind, Recorder, ShadingPoint, Stats,
-    Stop, Tracer, View, render,
+    Chapter, EveryObject, Feeler, Framebuffer, Options, RayKind, Recorder, Stats, Stop, Tracer,
+    View, render,
 };
 use whitted::scene::{Scene, load_parts};
 use whitted::shading::Phong;
@@ -401,6 +401,8 @@ fn the_json_parses_and_carries_the_colour() {
 #[derive(Default)]
 struct Log {
     values: Vec<u64>,
+    /// The rays under way, the camera ray first.
+    rays: Vec<Ray>,
     /// The objects the feeler under way crosses, until its light's event.
     crossed: Vec<(usize, Hits, Real)>,
 }
@@ -428,6 +430,7 @@ impl Recorder for Log {
     }
 
     fn ray(&mut self, _: RayKind, ray: &Ray, t_min: Real, depth: u32, weight: Real, k: Real) {
+        self.rays.push(*ray);
         self.vector(ray.origin);
         self.vector(ray.dir);
         self.number(t_min);
@@ -441,6 +444,9 @@ impl Recorder for Log {
             self.count(n.object);
             self.number(n.hit.t);
             self.vector(n.hit.normal);
+            // the shading point's P = r(t), as the road makes it (`ShadingPoint::new`)
+            let ray = *self.rays.last().expect("a hit of the ray under way");
+            self.vector(ray.at(n.hit.t));
         }
     }
 
@@ -455,14 +461,14 @@ impl Recorder for Log {
     fn light(
         &mut self,
         light: usize,
-        s: &ShadingPoint,
+        in_front: bool,
         phong: &Phong,
         feeler: Option<&Feeler>,
         share: Real,
         arriving: Vec3,
     ) {
         self.count(light);
-        self.vector(s.p);
+        self.count(usize::from(in_front));
         self.number(phong.attenuation);
         for v in [phong.intensity, phong.diffuse, phong.specular, phong.sum] {
             self.vector(v);
@@ -490,6 +496,7 @@ impl Recorder for Log {
     }
 
     fn done(&mut self, colour: Vec3) {
+        self.rays.pop();
         self.vector(colour);
     }
 }
@@ -507,12 +514,13 @@ fn numbers(tree: &RayTree) -> Vec<u64> {
             log.count(h.object);
             log.number(h.t);
             log.vector(h.normal);
+            log.vector(h.point);
             if let Some(i_a) = h.ambient {
                 log.vector(i_a);
             }
             for l in &h.lights {
                 log.count(l.index);
-                log.vector(h.point);
+                log.count(usize::from(l.in_front));
                 log.number(l.attenuation);
                 for v in [l.intensity, l.diffuse, l.specular, l.unshadowed] {
                     log.vector(v);
@@ -549,13 +557,14 @@ fn numbers(tree: &RayTree) -> Vec<u64> {
 }
 
 /// Record, never recompute: every number of a pixel's ray tree — each ray's origin, direction,
-/// t_min, depth, weight and k, each hit's t, normal and point, I_a, each light's attenuation,
-/// I_p·att, diffuse and specular factors, I_d + I_s, feeler, crossings, share and (I_d +
-/// I_s)·share, the local light, each colour brought back — is, bit for bit and in the same
-/// order, a value the road of that pixel handed its recorder (logged here by a recorder of
-/// this test's own, through the plain road, [`EveryObject`]); and the road's colour is the
-/// pixel of the rendered image (BVH and packets). For every pixel of each chapter's scene at
-/// its chapter, and of the showcase.
+/// t_min, depth, weight and k, each hit's t, normal and point (r(t) of the ray handed), I_a,
+/// each light's side (in front or not, as the road decided it), attenuation, I_p·att, diffuse
+/// and specular factors, I_d + I_s, feeler, crossings, share and (I_d + I_s)·share, the local
+/// light, each colour brought back — is, bit for bit and in the same order, a value the road
+/// of that pixel handed its recorder (logged here by a recorder of this test's own, through
+/// the plain road, [`EveryObject`]); and the road's colour is the pixel of the rendered image
+/// (BVH and packets). For every pixel of each chapter's scene at its chapter, and of the
+/// showcase.
 #[test]
 fn every_number_in_the_tree_is_the_roads() {
     let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("..");

@@ -12,7 +12,8 @@ use std::sync::atomic::{AtomicUsize, Ordering};
 use whitted::error::Error;
 use whitted::real::Vec3;
 use whitted::render::{
-    Chapter, Finished, Framebuffer, Options, Rect, Stats, TILE, Tracer, render, render_rect,
+    Accelerated, Chapter, Finished, Framebuffer, Options, Rect, Stats, TILE, Tracer, render,
+    render_rect,
 };
 use whitted::scene::Scene;
 
@@ -50,7 +51,11 @@ fn bits(fb: &Framebuffer) -> impl PartialEq {
 }
 
 /// Renders `rect` never cancelled, returning the tiles reported and the rays cast.
-fn render_part(tracer: &Tracer, rect: Rect, fb: &mut Framebuffer) -> (Vec<Rect>, Stats) {
+fn render_part(
+    tracer: &Tracer<'_, Accelerated<'_>>,
+    rect: Rect,
+    fb: &mut Framebuffer,
+) -> (Vec<Rect>, Stats) {
     let tiles = Mutex::new(Vec::new());
     let finished = render_rect(tracer, rect, fb, &|| false, &|t| {
         tiles.lock().unwrap().push(t);
@@ -218,7 +223,7 @@ fn progress_reports_every_tile_once_and_they_cover_the_rectangle() {
 /// A render in a pool of `threads` threads whose `cancel()`, asked for the n-th time (from 0),
 /// says `stop(n)`: returns how it ended, the tiles finished, and the framebuffer.
 fn cancel_when(
-    tracer: &Tracer,
+    tracer: &Tracer<'_, Accelerated<'_>>,
     rect: Rect,
     threads: usize,
     stop: &(dyn Fn(usize) -> bool + Sync),
@@ -246,7 +251,7 @@ fn cancel_when(
 /// A render whose `cancel()` says stop from its (k+1)-th question on, in a pool of `threads`
 /// threads.
 fn cancel_after(
-    tracer: &Tracer,
+    tracer: &Tracer<'_, Accelerated<'_>>,
     rect: Rect,
     k: usize,
     threads: usize,

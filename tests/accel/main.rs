@@ -12,6 +12,7 @@ mod bvh;
 mod counters;
 mod extents;
 mod images;
+mod none;
 mod octree;
 mod packets;
 mod scatter;

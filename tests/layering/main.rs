@@ -386,3 +386,96 @@ fn shown(path: &Path, root: &Path) -> String {
         .display()
         .to_string()
 }
+
+/// The first names a file's code reaches through `prefix` (`super::`, `crate::render::`): for
+/// `use super::{a, b::c};` the names `a` and `b`, for `super::x::y` the name `x`.
+fn names_after(code: &str, prefix: &str) -> BTreeSet<String> {
+    let ident = |s: &str| -> String {
+        s.trim_start()
+            .chars()
+            .take_while(|c| c.is_alphanumeric() || *c == '_')
+            .collect()
+    };
+    let mut out = BTreeSet::new();
+    for (i, _) in code.match_indices(prefix) {
+        let rest = &code[i + prefix.len()..];
+        if let Some(group) = rest.strip_prefix('{') {
+            // the group's top-level elements, each by its first name
+            let (mut depth, mut start) = (0, 0);
+            for (k, c) in group.char_indices() {
+                match c {
+                    '{' => depth += 1,
+                    '}' if depth == 0 => {
+                        out.insert(ident(&group[start..k]));
+                        break;
+                    }
+                    '}' => depth -= 1,
+                    ',' if depth == 0 => {
+                        out.insert(ident(&group[start..k]));
+                        start = k + 1;
+                    }
+                    _ => {}
+                }
+            }
+        } else {
+            out.insert(ident(rest));
+        }
+    }
+    out.remove("");
+    out
+}
+
+/// The road of one pixel reads top to bottom: what it asks and tells (the query trait, its
+/// shortcuts, the recorder) sit beneath it and name nothing of it, and the road
+/// (`render/tracer.rs`) names nothing of what sits beside it and calls it — the pixel and its
+/// samples, the views and stages, the inspector, the acceleration structure as a query, the
+/// packets and the tiles — neither a module nor an item `render/mod.rs` re-exports from one.
+#[test]
+fn the_road_calls_nothing_beside_it_and_its_floor_nothing_above() {
+    let render = src().join("render");
+    // the items render/mod.rs re-exports, by the module that defines them
+    let mut items: BTreeMap<String, String> = BTreeMap::new();
+    let mod_rs = code(&std::fs::read_to_string(render.join("mod.rs")).unwrap());
+    for line in mod_rs.lines().filter(|l| l.starts_with("pub use ")) {
+        let path = line["pub use ".len()..].trim_end_matches(';');
+        if let Some((module, rest)) = path.split_once("::") {
+            let names = rest.trim_start_matches('{').trim_end_matches('}');
+            for name in names.split(',').map(str::trim).filter(|n| !n.is_empty()) {
+                items.insert(name.to_string(), module.to_string());
+            }
+        }
+    }
+    let beside = [
+        "accelerated",
+        "views",
+        "stages",
+        "pixel",
+        "inspect",
+        "tiles",
+        "packets",
+    ];
+    let above: Vec<&str> = beside.iter().copied().chain(["tracer"]).collect();
+    let files: [(&str, &[&str]); 4] = [
+        ("tracer.rs", &beside),
+        ("query.rs", &above),
+        ("shortcuts.rs", &above),
+        ("recorder.rs", &above),
+    ];
+    for (file, forbidden) in files {
+        let text = code(&std::fs::read_to_string(render.join(file)).unwrap());
+        let mut named = names_after(&text, "super::");
+        named.extend(names_after(&text, "crate::render::"));
+        let reached: Vec<String> = named
+            .iter()
+            .filter(|n| {
+                let module = items.get(*n).unwrap_or(n);
+                forbidden.contains(&module.as_str())
+            })
+            .cloned()
+            .collect();
+        assert!(
+            reached.is_empty(),
+            "render/{file} names {reached:?}, of the modules above or beside it ({forbidden:?})"
+        );
+    }
+}

@@ -14,12 +14,12 @@
 //! not meet the surface it leaves (see [`crate::offset`]).
 //!
 //! Small functions make the chapter: [`in_front`] says whether a light can reach P at all,
-//! [`feeler`] builds S(u), [`between`] says whether a hit's u lies in ]u_min, 1] (and
-//! [`blocks`] whether one of an object's hits does), and [`transmittance`] multiplies the
-//! transmissions of the objects that block. Which objects to test is the road's
-//! [`Query`](crate::render::tracer::Query): every object in turn
-//! ([`EveryObject`](crate::render::tracer::EveryObject)), or only those whose boxes the feeler
-//! meets ([`crate::accel`]), with the same answer.
+//! [`feeler`] builds S(u) (a [`Feeler`] keeps it with the smallest u that counts), [`between`]
+//! says whether a hit's u lies in ]u_min, 1] (and [`blocks`] whether one of an object's hits
+//! does), and [`transmittance`] multiplies the transmissions of the objects that block. Which
+//! objects to test is the road's [`Query`](crate::render::Query): every object in turn
+//! ([`EveryObject`](crate::render::EveryObject)), or only those whose boxes the feeler meets
+//! ([`crate::accel`]), with the same answer.
 //!
 //! ```toml
 //! [[lights]]
@@ -50,6 +50,17 @@ pub fn feeler(p: Vec3, light: Vec3) -> Ray {
     Ray::new(p, light - p)
     // END SOLUTION
 }
+
+// ANCHOR: ch4_feeler_type
+/// A feeler towards a light, and the smallest u that counts.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Feeler {
+    /// S(u) = P′ + (L − P′)·u from the offset start P′: u = 0 at P′, u = 1 at the light.
+    pub ray: Ray,
+    /// Hits count for u ∈ ]u_min, 1].
+    pub u_min: Real,
+}
+// ANCHOR_END: ch4_feeler_type
 
 /// True when a hit at u along a feeler lies between its start and the light: u ∈ ]u_min, 1]
 /// (u_min = 0 unless the start is left on the surface, see [`crate::offset`]). A hit behind the

@@ -593,9 +593,10 @@ fn phong_with_both_cosines_between_zero_and_one() {
 
 /// "Shading", as the inspector sees it: the local light tells the recorder each term it adds.
 /// The sphere scene with a second light behind the sphere, at (0, 0, −10): at the nearest point
-/// the recorder hears I_a = ρa·I_m = (0.05, 0.08, 0.09), the first light's unshadowed
-/// I_p·(ρd + ρs) = (0.9, 0.8, 0.7)·0.7 arriving whole (no feeler before chapter 4), the second
-/// light's zero, and the local light, their sum, which is the pixel's colour at chapter 3.
+/// the recorder hears I_a = ρa·I_m = (0.05, 0.08, 0.09), the first light in front and its
+/// unshadowed I_p·(ρd + ρs) = (0.9, 0.8, 0.7)·0.7 arriving whole (no feeler before chapter 4),
+/// the second light behind and its zero, and the local light, their sum, which is the pixel's
+/// colour at chapter 3.
 #[test]
 fn ex_local_light_the_recorder_hears_the_ambient_term_each_light_and_the_local_light() {
     let s = scene(&sphere_scene(
@@ -627,6 +628,11 @@ fn ex_local_light_the_recorder_hears_the_ambient_term_each_light_and_the_local_l
         (front.index, back.index),
         (0, 1),
         "the light numbers told to rec.light, in scene order"
+    );
+    assert_eq!(
+        (front.in_front, back.in_front),
+        (true, false),
+        "whether light 0 and light 1 lie in front of the surface, n·(L − P) > 0, told to rec.light"
     );
     assert_vec_eq(
         "I_d + I_s of light 0 told to rec.light (unshadowed)",

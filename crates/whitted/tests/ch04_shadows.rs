@@ -250,9 +250,10 @@ fn ex_send_feeler_point_under_a_sphere_is_lit_at_stage_3_and_shadowed_at_stage_4
 }
 
 /// The same floor, light and occluder as above, moved 100 units down: whether the light is in
-/// front of the point depends on L − P alone (n·(L − P) > 0), not on where the scene sits, so
-/// the point is still shadowed and its one feeler is still cast. (A test of n·(L + P), or of
-/// n·L, passes at the origin and fails here.)
+/// front of the point depends on L − P alone (n·(L − P) > 0, as the local light decides it),
+/// not on where the scene sits, and so does the feeler, from P towards L: the point is still
+/// shadowed and its one feeler is still cast. (A test of n·(L + P), or of n·L, or a feeler
+/// along L, passes at the origin and fails here.)
 #[test]
 fn ex_send_feeler_the_light_is_in_front_by_l_minus_p_wherever_the_scene_sits() {
     let shadowed = scene(
@@ -338,7 +339,8 @@ fn ex_send_feeler_lit_sphere_and_plane_show_no_shadow_acne() {
 }
 
 /// "Shadowing": feelers are cast only where needed — one per light facing the point, none for
-/// a light with `shadows = false`, none in a scene without lights.
+/// a light with `shadows = false`, none in a scene without lights, none towards a light whose
+/// terms add nothing (a black material).
 #[test]
 fn ex_send_feeler_feelers_only_where_a_scene_needs_them() {
     let base = "[camera]\neye = [0.0, 0.0, 5.0]\n[[objects]]\nsphere = {}\n";
@@ -360,6 +362,16 @@ fn ex_send_feeler_feelers_only_where_a_scene_needs_them() {
     assert_eq!(
         on.shadow, hits,
         "the feelers cast: one per visible lit point ({hits} pixels)"
+    );
+    // the same light in front of a black sphere: its terms add nothing, so nothing to shadow
+    let black = format!(
+        "{base}material = \"black\"\n[[lights]]\nposition = [0.0, 0.0, 10.0]\n\
+         [materials.black]\nambient = 0.2\ndiffuse = 0.0\nspecular = 0.0\n"
+    );
+    let (_, black) = render_at(&scene(&black), Chapter::Shadows, 16, 16);
+    assert_eq!(
+        black.shadow, 0,
+        "the feelers cast to a light in front of a black sphere (I_d + I_s = 0)"
     );
 }
 

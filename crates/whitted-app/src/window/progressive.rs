@@ -28,7 +28,7 @@ use whitted::accel::Accelerator;
 use whitted::error::Error;
 use whitted::real::Vec3;
 use whitted::render::views::Scales;
-use whitted::render::{Finished, Options, Rect, Stats, Tracer, build_accel};
+use whitted::render::{Accelerated, Finished, Options, Rect, Stats, Tracer, build_accel};
 use whitted::scene::Scene;
 
 /// A render the window asks for.
@@ -105,7 +105,7 @@ impl Update {
 /// tile; once it says `true` no thread starts another tile and the result is
 /// [`Finished::Cancelled`] with the rays of the tiles traced.
 pub fn render_pass(
-    tracer: &Tracer,
+    tracer: &Tracer<'_, Accelerated<'_>>,
     pass: usize,
     cancel: &(dyn Fn() -> bool + Sync),
     sink: &(dyn Fn(Rect, Vec<Vec3>) + Sync),

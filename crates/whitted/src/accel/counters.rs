@@ -49,7 +49,7 @@ thread_local! {
 
 /// Adds to this thread's counts (nothing without the feature).
 #[inline(always)]
-fn bump(_which: fn(&mut Counts)) {
+fn bump(_which: impl FnOnce(&mut Counts)) {
     #[cfg(feature = "counters")]
     HERE.with(|c| {
         let mut k = c.get();
@@ -80,6 +80,16 @@ pub(crate) fn box_test() {
 #[inline(always)]
 pub(crate) fn object() {
     bump(|k| k.objects += 1);
+}
+
+/// One query answered by the notes' loop over every object (`--accel none`), which tests all
+/// `objects` of the scene.
+#[inline(always)]
+pub(crate) fn every_object(objects: usize) {
+    bump(|k| {
+        k.queries += 1;
+        k.objects += objects as u64;
+    });
 }
 
 /// This thread's counts since the last call, which starts them again from zero (all zero

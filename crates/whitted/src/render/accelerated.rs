@@ -1,19 +1,25 @@
 //! The acceleration structure as the road's [`Query`]: [`Accelerated`], the structure of
 //! [`crate::accel`] with the scene it was built for, asks it the road's questions one ray at a
 //! time ([`crate::accel::query`]) or, for the packets of [`super::packets`], a packet at a time
-//! ([`crate::accel::packet`]). It answers exactly what [`EveryObject`](super::EveryObject),
-//! the notes' loop over every object, answers.
+//! ([`crate::accel::packet`]). It answers exactly what [`EveryObject`], the notes' loop over
+//! every object, answers; and for `--accel none`, which asks for no structure at all, it is
+//! that loop: every ray goes to [`EveryObject`].
+//!
+//! Every render asks it ([`Tracer::new`](super::Tracer::new)).
 //!
 //! Course book: [Performance](../../../../../docs/book/performance.html) (`docs/src/performance.md`).
 
 use std::borrow::Cow;
 
-use super::Recorder;
-use super::tracer::{Feeler, Query, ShadingPoint};
-use crate::accel::Accelerator;
+use super::query::Query;
+use super::recorder::Recorder;
+use super::shortcuts::Shortcuts;
+use super::tracer::EveryObject;
+use crate::accel::{Accel, Accelerator, counters};
 use crate::ray::Ray;
 use crate::real::{Real, Vec3};
 use crate::scene::Scene;
+use crate::shadow::Feeler;
 use crate::shapes::{Nearest, Numerics};
 
 /// An acceleration structure with the scene it was built for: the road's [`Query`] in every
@@ -40,6 +46,16 @@ impl<'a> Accelerated<'a> {
     #[must_use]
     pub fn accel(&self) -> &Accelerator {
         &self.accel
+    }
+
+    /// The notes' own loop over the scene's objects, when the structure is none at all
+    /// (`--accel none`).
+    #[inline]
+    fn every_object(&self) -> Option<EveryObject<'a>> {
+        (self.accel.kind() == Accel::None).then_some(EveryObject {
+            scene: self.scene,
+            numerics: self.numerics,
+        })
     }
 
     /// [`Accelerator::nearest_packet`] for camera rays (t > 0) of this scene.
@@ -74,25 +90,46 @@ impl<'a> Accelerated<'a> {
 impl Query for Accelerated<'_> {
     #[inline]
     fn nearest(&self, ray: &Ray, t_min: Real) -> Option<Nearest> {
-        self.accel
-            .nearest(&self.scene.objects, ray, t_min, self.numerics)
+        match self.every_object() {
+            Some(every) => {
+                counters::every_object(self.scene.objects.len());
+                every.nearest(ray, t_min)
+            }
+            None => self
+                .accel
+                .nearest(&self.scene.objects, ray, t_min, self.numerics),
+        }
     }
 
+    #[inline]
+    fn share(&self, feeler: &Feeler, rec: &mut impl Recorder) -> Real {
+        match self.every_object() {
+            Some(every) => {
+                counters::every_object(self.scene.objects.len());
+                every.share(feeler, rec)
+            }
+            None => {
+                let (objects, materials) = (&self.scene.objects, &self.scene.materials);
+                self.accel.transmittance(
+                    objects,
+                    materials,
+                    &feeler.ray,
+                    feeler.u_min,
+                    self.numerics,
+                )
+            }
+        }
+    }
+}
+
+impl Shortcuts for Accelerated<'_> {
     #[inline]
     fn nearest_camera(&self, ray: &Ray) -> Option<Nearest> {
-        self.accel
-            .nearest_camera(&self.scene.objects, ray, self.numerics)
-    }
-
-    #[inline]
-    fn shading_point(&self, ray: &Ray, nearest: &Nearest) -> Cow<'_, ShadingPoint<'_>> {
-        Cow::Owned(ShadingPoint::new(self.scene, ray, nearest))
-    }
-
-    #[inline]
-    fn share(&self, feeler: &Feeler, _: &mut impl Recorder) -> Real {
-        let (objects, materials) = (&self.scene.objects, &self.scene.materials);
-        self.accel
-            .transmittance(objects, materials, &feeler.ray, feeler.u_min, self.numerics)
+        match self.every_object() {
+            Some(_) => self.nearest(ray, 0.0),
+            None => self
+                .accel
+                .nearest_camera(&self.scene.objects, ray, self.numerics),
+        }
     }
 }

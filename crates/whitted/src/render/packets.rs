@@ -4,12 +4,13 @@
 //! [`super::BLOCK`] block of pixels go through the structure as one packet
 //! ([`crate::accel::Accelerator::nearest_packet`]), and so do their feelers towards each light
 //! ([`crate::accel::Accelerator::transmittance_packet`]): the camera rays are the road's own
-//! (`Tracer::sample_ray`), the feelers too ([`ShadingPoint::new`], `Tracer::feeler`). Then each
-//! pixel's camera ray goes down the road of one pixel itself (`Tracer::camera_ray`, a sample
-//! of [`Tracer::pixel`]), asking a `Packed` query: it answers from what the packets found
-//! the rays they traced — only a ray equal to the one traced, bit for bit — and lends the
-//! shading point it made of a camera ray's hit; any other ray (mirror and transmitted rays,
-//! their feelers) it asks of the acceleration structure. So the packets own no step of the
+//! (`Tracer::sample_ray`), the feelers too ([`ShadingPoint::new`], `Tracer::feeler` towards
+//! each light in front of the surface). Then each pixel's camera ray goes down the road of one
+//! pixel itself (`Tracer::sample_colour`, a sample of [`Tracer::pixel`]), asking a `Packed`
+//! query: it answers from what the packets found the rays they traced — only a ray equal to
+//! the one traced, bit for bit — and lends the shading point it made of a camera ray's hit
+//! ([`Shortcuts`]); any other ray (mirror and transmitted rays, their feelers) it asks of the
+//! acceleration structure. So the packets own no step of the
 //! road: no view, no background, no count of rays. They change the time, never a bit of the
 //! image: [`Options::packets`] turns them off, and the tests render both ways and compare.
 //!
@@ -24,12 +25,17 @@ use std::cell::Cell;
 use arrayvec::ArrayVec;
 
 use super::accelerated::Accelerated;
+use super::options::{Chapter, Options, View};
+use super::query::{Query, ShadingPoint};
 use super::recorder::Recorder;
-use super::tracer::{Feeler, Query, ShadingPoint};
-use super::{Chapter, Options, Stats, Tracer, View};
+use super::shortcuts::Shortcuts;
+use super::stats::Stats;
+use super::tracer::Tracer;
 use crate::accel::{Accel, PACKET};
 use crate::ray::Ray;
 use crate::real::{Real, Vec3};
+use crate::scene::Scene;
+use crate::shadow::{self, Feeler};
 use crate::shapes::Nearest;
 
 /// Up to one value per pixel of a block.
@@ -89,25 +95,6 @@ impl Query for Packed<'_, '_> {
     }
 
     #[inline]
-    fn nearest_camera(&self, ray: &Ray) -> Option<Nearest> {
-        let i = self.pixel.get();
-        if self.traced(ray) {
-            self.nearest[i]
-        } else {
-            self.structure.nearest_camera(ray)
-        }
-    }
-
-    #[inline]
-    fn shading_point(&self, ray: &Ray, nearest: &Nearest) -> Cow<'_, ShadingPoint<'_>> {
-        let i = self.pixel.get();
-        match self.points.get(i) {
-            Some(Some(s)) if self.traced(ray) => Cow::Borrowed(s),
-            _ => self.structure.shading_point(ray, nearest),
-        }
-    }
-
-    #[inline]
     fn share(&self, feeler: &Feeler, rec: &mut impl Recorder) -> Real {
         let i = self.pixel.get();
         for l in self.light.get()..self.feelers.len() {
@@ -123,10 +110,36 @@ impl Query for Packed<'_, '_> {
     }
 }
 
+impl Shortcuts for Packed<'_, '_> {
+    #[inline]
+    fn nearest_camera(&self, ray: &Ray) -> Option<Nearest> {
+        let i = self.pixel.get();
+        if self.traced(ray) {
+            self.nearest[i]
+        } else {
+            self.structure.nearest_camera(ray)
+        }
+    }
+
+    #[inline]
+    fn shading_point<'s>(
+        &'s self,
+        scene: &'s Scene,
+        ray: &Ray,
+        nearest: &Nearest,
+    ) -> Cow<'s, ShadingPoint<'s>> {
+        let i = self.pixel.get();
+        match self.points.get(i) {
+            Some(Some(s)) if self.traced(ray) => Cow::Borrowed(s),
+            _ => self.structure.shading_point(scene, ray, nearest),
+        }
+    }
+}
+
 /// Whether a block's first rays go as packets: packets asked for, one ray a pixel (not the
 /// rays-per-pixel view, which counts each pixel's rays), from chapter 2 on, through a BVH or
 /// an octree.
-fn packets(tracer: &Tracer) -> bool {
+fn packets(tracer: &Tracer<'_, Accelerated<'_>>) -> bool {
     let o: &Options = tracer.options;
     o.packets
         && o.samples_per_pixel() == 1
@@ -139,7 +152,7 @@ fn packets(tracer: &Tracer) -> bool {
 /// row: [`Tracer::pixel`] of each, its first rays traced as packets when that pays. `scratch`
 /// keeps its allocation from one block to the next.
 pub(crate) fn block(
-    tracer: &Tracer,
+    tracer: &Tracer<'_, Accelerated<'_>>,
     (x0, x1): (u32, u32),
     (y0, y1): (u32, u32),
     scratch: &mut Feelers,
@@ -180,14 +193,18 @@ pub(crate) fn block(
         .map(|(i, ray)| {
             packed.query().pixel.set(i);
             packed.query().light.set(0);
-            packed.camera_ray(ray, stats)
+            packed.sample_colour(ray, stats)
         })
         .collect()
 }
 
-/// Traces, light by light as one packet, the feelers the road sends from the shading points
-/// `points` (`Tracer::feeler`), into `feelers[light][pixel]`.
-fn trace_feelers(tracer: &Tracer, points: &[Option<ShadingPoint>], feelers: &mut Feelers) {
+/// Traces, light by light as one packet, the feelers the road may send from the shading points
+/// `points` (`Tracer::feeler` towards a light in front), into `feelers[light][pixel]`.
+fn trace_feelers(
+    tracer: &Tracer<'_, Accelerated<'_>>,
+    points: &[Option<ShadingPoint>],
+    feelers: &mut Feelers,
+) {
     feelers.clear();
     if points.is_empty() {
         return;
@@ -200,7 +217,12 @@ fn trace_feelers(tracer: &Tracer, points: &[Option<ShadingPoint>], feelers: &mut
         let mut rays = Block::<Ray>::new();
         let mut u_min = Block::<Real>::new();
         for (i, s) in points.iter().enumerate() {
-            if let Some(feeler) = s.as_ref().and_then(|s| tracer.feeler(s, light)) {
+            let in_front = |s: &&ShadingPoint| shadow::in_front(s.n, s.p, light.position);
+            if let Some(feeler) = s
+                .as_ref()
+                .filter(in_front)
+                .and_then(|s| tracer.feeler(s, light))
+            {
                 who.push(i);
                 rays.push(feeler.ray);
                 u_min.push(feeler.u_min);

@@ -2,9 +2,10 @@
 //!
 //! Every stop of the road ([`super::tracer`]) reports what it computed to a [`Recorder`], the
 //! values themselves, as it computes them: a ray leaves (camera, mirror or transmitted, with
-//! its weight and its k), it hits something or nothing, the ambient term, each light's Phong
-//! terms, the objects its feeler crosses and the share it lets through, the local light, a
-//! branch that was not followed and why, the colour a ray brings back. Two recorders exist:
+//! its weight and its k), it hits something or nothing, the ambient term, each light (whether
+//! it lies in front, as the road decided, and its Phong terms), the objects its feeler crosses
+//! and the share it lets through, the local light, a branch that was not followed and why, the
+//! colour a ray brings back. Two recorders exist:
 //!
 //! - [`Stats`] keeps only the counts of rays by kind. Its methods are empty or one addition,
 //!   and the road is compiled once per recorder, so a plain render pays nothing for the
@@ -18,11 +19,11 @@
 //!
 //! Course book: [The ray tree of one pixel](../../../../../docs/book/inspect.html) (`docs/src/inspect.md`).
 
-use super::Stats;
-use super::tracer::{Feeler, ShadingPoint};
+use super::stats::Stats;
 use crate::ray::Ray;
 use crate::real::{Real, Vec3};
 use crate::shading::Phong;
+use crate::shadow::Feeler;
 use crate::shapes::{Hits, Nearest};
 
 /// The kinds of ray the road sends from the camera and from surfaces (feelers are reported
@@ -66,28 +67,29 @@ pub trait Recorder {
     /// Object number `object`, whose hits with the feeler under way are `hits` (their u; the
     /// normals left in object space), blocks it
     /// ([`crate::shadow::blocks`]); its transmission is `k_t`. Told by a query that tests
-    /// every object ([`super::tracer::EveryObject`]), in scene order, before the feeler's
+    /// every object ([`super::EveryObject`]), in scene order, before the feeler's
     /// [`Recorder::light`].
     #[inline]
     fn crossing(&mut self, object: usize, hits: &Hits, k_t: Real) {
         let _ = (object, hits, k_t);
     }
 
-    /// Light number `light` seen from the shading point `s`: its Phong terms before shadowing
-    /// (`phong.sum` = I_d + I_s), the feeler sent towards it (from chapter 4, if it casts
-    /// shadows and lies in front), the share of it that arrives (1 without a feeler) and
-    /// (I_d + I_s)·share.
+    /// Light number `light` seen from the hit: whether it lies in front of the surface, as the
+    /// road decided it once for this light (n·(L − P) > 0, [`crate::shadow::in_front`]), its
+    /// Phong terms before shadowing (`phong.sum` = I_d + I_s), the feeler sent towards it (from
+    /// chapter 4, if it casts shadows, lies in front and adds something), the share of it that
+    /// arrives (1 without a feeler) and (I_d + I_s)·share.
     #[inline]
     fn light(
         &mut self,
         light: usize,
-        s: &ShadingPoint,
+        in_front: bool,
         phong: &Phong,
         feeler: Option<&Feeler>,
         share: Real,
         arriving: Vec3,
     ) {
-        let _ = (light, s, phong, feeler, share, arriving);
+        let _ = (light, in_front, phong, feeler, share, arriving);
     }
 
     /// The local light I_a + Σ (I_d + I_s)·share at the hit.
@@ -122,15 +124,7 @@ impl Recorder for Stats {
     }
 
     #[inline]
-    fn light(
-        &mut self,
-        _: usize,
-        _: &ShadingPoint,
-        _: &Phong,
-        f: Option<&Feeler>,
-        _: Real,
-        _: Vec3,
-    ) {
+    fn light(&mut self, _: usize, _: bool, _: &Phong, f: Option<&Feeler>, _: Real, _: Vec3) {
         self.shadow += u64::from(f.is_some());
     }
 
@@ -170,14 +164,16 @@ impl<A: Recorder, B: Recorder> Recorder for (&mut A, &mut B) {
     fn light(
         &mut self,
         light: usize,
-        s: &ShadingPoint,
+        in_front: bool,
         phong: &Phong,
         feeler: Option<&Feeler>,
         share: Real,
         arriving: Vec3,
     ) {
-        self.0.light(light, s, phong, feeler, share, arriving);
-        self.1.light(light, s, phong, feeler, share, arriving);
+        self.0
+            .light(light, in_front, phong, feeler, share, arriving);
+        self.1
+            .light(light, in_front, phong, feeler, share, arriving);
     }
 
     fn local(&mut self, colour: Vec3) {

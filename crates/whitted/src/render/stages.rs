@@ -27,9 +27,9 @@
 //!
 //! Course book: [Chapter 3, shading](../../../../../docs/book/ch03-shading.html) (`docs/src/ch03-shading.md`).
 
-use super::View;
-use super::tracer::ShadingPoint;
-use super::views::light_colour;
+use super::options::View;
+use super::query::ShadingPoint;
+use super::scales::light_colour;
 use crate::camera::direction_colour;
 use crate::light::Light;
 use crate::optics;
@@ -84,8 +84,8 @@ pub fn colour(view: View, s: &ShadingPoint, scene: &Scene) -> Vec3 {
             if !s.material.is_translucent() {
                 return NOTHING;
             }
-            let entering = s.hit.normal.dot(s.d) < 0.0; // the side that was hit
-            let (n1, n2) = optics::indices(entering, s.material.ior);
+            // the side that was hit, as the shape found it
+            let (n1, n2) = optics::indices(s.hit.entering, s.material.ior);
             match optics::refract(s.d, s.n, n1, n2) {
                 Some(t) => direction_colour(t),
                 None => Vec3::ONE, // total internal reflection: white

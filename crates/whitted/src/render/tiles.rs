@@ -5,7 +5,9 @@
 //! itself. Every pixel depends only on its own coordinates (supersampling positions come from
 //! a hash of the pixel and the sample's index), so the image is the same whatever the number
 //! of threads. Inside a tile, pixels go by blocks of [`BLOCK`] × [`BLOCK`]: a block is traced
-//! as packets where that pays ([`super::packets`]), pixel by pixel otherwise.
+//! as packets where that pays ([`super::packets`]), pixel by pixel otherwise. Every render
+//! asks the acceleration structure the options name ([`build_accel`]): the tracer
+//! [`Tracer::new`] makes, or [`Tracer::with_accel`] with one built beforehand.
 //!
 //! There is one tile loop, [`render_rect`], and the whole image is one call of it. It renders
 //! any [`Rect`] of the image into a framebuffer the caller keeps, reports each finished tile,
@@ -32,12 +34,17 @@
 //!
 //! Course book: [Performance](../../../../../docs/book/performance.html) (`docs/src/performance.md`).
 
+use std::borrow::Cow;
 use std::sync::atomic::{AtomicBool, Ordering};
 
 use rayon::prelude::*;
 
+use super::accelerated::Accelerated;
+use super::framebuffer::Framebuffer;
+use super::options::{Chapter, Options};
 use super::packets::{self, Feelers};
-use super::{Chapter, Framebuffer, Options, Stats, Tracer};
+use super::stats::Stats;
+use super::tracer::Tracer;
 use crate::accel::Accel;
 use crate::accel::Accelerator;
 use crate::error::Error;
@@ -65,6 +72,31 @@ pub fn build_accel(scene: &Scene, options: &Options) -> Accelerator {
         options.accel
     };
     Accelerator::build(&scene.objects, &camera, kind, TILE)
+}
+
+impl<'a> Tracer<'a, Accelerated<'a>> {
+    /// A tracer for the scene with the options' image size, asking the acceleration structure
+    /// the options name (built here, [`build_accel`]): the tracer of every render.
+    #[must_use]
+    pub fn new(scene: &'a Scene, options: &'a Options) -> Self {
+        let accel = Cow::Owned(build_accel(scene, options));
+        Self::with_query(
+            scene,
+            options,
+            Accelerated::new(accel, scene, options.numerics),
+        )
+    }
+
+    /// A tracer using an acceleration structure built beforehand (see [`build_accel`]).
+    #[must_use]
+    pub fn with_accel(scene: &'a Scene, options: &'a Options, accel: &'a Accelerator) -> Self {
+        let accel = Cow::Borrowed(accel);
+        Self::with_query(
+            scene,
+            options,
+            Accelerated::new(accel, scene, options.numerics),
+        )
+    }
 }
 
 /// Renders the scene: returns the image and the rays cast.
@@ -223,7 +255,7 @@ impl Finished {
 /// reported: the scales of the depth and rays views are fixed when the tracer is made
 /// ([`super::views`]).
 pub fn render_rect(
-    tracer: &Tracer,
+    tracer: &Tracer<'_, Accelerated<'_>>,
     rect: Rect,
     fb: &mut Framebuffer,
     cancel: &(dyn Fn() -> bool + Sync),
@@ -250,7 +282,7 @@ fn pixel_count(o: &Options) -> usize {
 
 /// The tile loop of [`render_rect`], for a framebuffer known to be the tracer's size.
 fn tile_loop(
-    tracer: &Tracer,
+    tracer: &Tracer<'_, Accelerated<'_>>,
     rect: Rect,
     fb: &mut Framebuffer,
     cancel: &(dyn Fn() -> bool + Sync),
@@ -308,7 +340,7 @@ fn tile_loop(
 /// `rows`, whose first row is image row `top`: block by block, blocks on the image's grid of
 /// [`BLOCK`] × [`BLOCK`] cut to the tile.
 fn render_tile(
-    tracer: &Tracer,
+    tracer: &Tracer<'_, Accelerated<'_>>,
     tile: Rect,
     top: u32,
     w: u32,

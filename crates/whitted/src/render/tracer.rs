@@ -6,77 +6,51 @@
 //!   ─► + k_t·I_r + k_r·I_l from the transmitted and mirror rays, recursively (ch5) ─► colour
 //! ```
 //!
-//! Read it top to bottom: [`Tracer::pixel`] → `Tracer::camera_ray` → [`Query::nearest`] (the
-//! notes' step 4, [`EveryObject`]) → `Tracer::shade` → `Tracer::local_light` (with
-//! `Tracer::feeler` and [`Query::share`]) → `Tracer::reflect_and_refract` → [`Tracer::trace`]
-//! for each new ray. Each stop calls the small function of the notes' formula (camera,
-//! shapes, shading, shadow, optics). The road itself adds up what they bring back (the sums of
-//! the lighting equation) and decides which rays to send: a feeler for a light in front that
-//! casts shadows, a branch while the depth and its weight allow, the transmitted share moved
-//! to the mirror ray under total internal reflection. How far a chapter goes:
+//! Read it top to bottom: `Tracer::camera_ray` (each sample of [`Tracer::pixel`]) →
+//! [`Query::nearest`] (the notes' step 4, [`EveryObject`]) → `Tracer::hit_colour` →
+//! `Tracer::shade` → `Tracer::local_light` (with `Tracer::feeler` and [`Query::share`]) →
+//! `Tracer::reflect_and_refract` → [`Tracer::trace`] for each new ray. Each stop calls the small
+//! function of the notes' formula (camera, shapes, shading, shadow, optics). The road itself
+//! adds up what they bring back (the sums of the lighting equation) and decides which rays to
+//! send: a feeler for a light in front that casts shadows, a branch while the depth and its
+//! weight allow, the transmitted share moved to the mirror ray under total internal reflection.
+//! How far a chapter goes:
 //!
 //! | [`Chapter`] | what a camera ray returns |
 //! |---|---|
 //! | 1 [`Chapter::CameraRays`] | the ray direction as a colour, (d̂ + 1)/2 |
-//! | 2 [`Chapter::GenericObjects`] | the nearest hit, seen through a [`View`] (flat colour, normals, depth) |
+//! | 2 [`Chapter::GenericObjects`] | the nearest hit: the diffuse colour ρd of its material, unlit |
 //! | 3 [`Chapter::Shading`] | ambient + diffuse + specular from every light (Phong) |
 //! | 4 [`Chapter::Shadows`] | the same, each light tested by a feeler ray |
 //! | 5 [`Chapter::ReflectionRefraction`] | plus mirror and transmitted rays, recursively: I = I_a + I_d + I_s + I_l + I_r |
 //!
-//! Every stop tells a [`Recorder`] what it computed ([`Stats`] counts rays, the inspector keeps
-//! the ray tree). The nearest hit of a ray, what shading needs to know of it, and the share of
-//! a feeler are asked of a [`Query`]: the notes' own answer, [`EveryObject`], tests every object
-//! in turn; the structures ([`super::Accelerated`]) and the packets give the same answers sooner.
+//! Every stop tells a [`Recorder`] what it computed ([`Stats`](super::Stats) counts rays, the
+//! inspector keeps the ray tree). The nearest hit of a ray and the share of a feeler are asked
+//! of a [`Query`] ([`super::query`]): the notes' own answer, [`EveryObject`], tests every object
+//! in turn; the structures ([`super::Accelerated`]) and the packets give the same answers
+//! sooner, and may take the [`Shortcuts`] beside it.
+//!
+//! Around the road, and calling it: the pixel and its samples ([`super::pixel`]), the views
+//! that show a hit otherwise than the chapter does ([`super::views`], [`super::stages`]), the
+//! ray tree ([`super::inspect`]), and the speed machinery ([`super::tiles`],
+//! [`super::packets`], [`super::accelerated`]). The road calls none of them.
 //!
 //! Course book: [Chapter 1, camera rays](../../../../../docs/book/ch01-camera-rays.html) (`docs/src/ch01-camera-rays.md`).
 
-use std::borrow::Cow;
-
-use super::accelerated::Accelerated;
-use super::inspect::{self, RayTree};
+use super::options::{Chapter, Options};
+use super::query::{Query, ShadingPoint};
 use super::recorder::{RayKind, Recorder, Stop};
-use super::{Chapter, Options, Stats, View, build_accel, sampling, stages, views};
-use crate::accel::Accelerator;
+use super::scales::Scales;
+use super::shortcuts::Shortcuts;
 use crate::camera::{Camera, direction_colour};
 use crate::light::Light;
-use crate::material::Material;
-use crate::offset::SpawnPoint;
 use crate::optics;
 use crate::ray::Ray;
 use crate::real::{Real, Vec3};
 use crate::scene::Scene;
 use crate::shading;
-use crate::shadow;
-use crate::shapes::{Hit, Nearest, Numerics, nearer};
-
-// ANCHOR: ch2_query
-/// What the road asks of the scene's objects: the nearest hit of a ray (the notes' step 4,
-/// "find the intersections of this ray with objects; keep the smallest t"), what shading needs
-/// to know of that hit, and the share of its light a feeler lets through (chapter 4).
-/// [`EveryObject`] answers by testing every object in turn; the acceleration structures and
-/// the packets answer the same, sooner.
-pub trait Query {
-    /// The nearest hit of `ray` with t > `t_min` (its normal in the world), of equal t the
-    /// object listed first; `None` when the ray hits nothing.
-    fn nearest(&self, ray: &Ray, t_min: Real) -> Option<Nearest>;
-
-    /// [`Query::nearest`] of a camera ray, t > 0: the same answer. A camera ray leaves the eye
-    /// through the image, which lets projection extents narrow the objects to test.
-    fn nearest_camera(&self, ray: &Ray) -> Option<Nearest> {
-        self.nearest(ray, 0.0)
-    }
-
-    /// What shading needs to know of `nearest`, the nearest hit of `ray`:
-    /// [`ShadingPoint::new`] of it, made here, or lent by a query that made it already.
-    fn shading_point(&self, ray: &Ray, nearest: &Nearest) -> Cow<'_, ShadingPoint<'_>>;
-
-    /// The share of its light that `feeler` lets through: [`shadow::transmittance`] of the
-    /// transmissions of the objects it crosses with u ∈ ]u_min, 1], in scene order (0 behind
-    /// an opaque one). An answer that tests every object tells `rec` each object crossed
-    /// ([`Recorder::crossing`]).
-    fn share(&self, feeler: &Feeler, rec: &mut impl Recorder) -> Real;
-}
-// ANCHOR_END: ch2_query
+use crate::shadow::{self, Feeler};
+use crate::shapes::{Nearest, Numerics, nearer};
 
 /// The notes' own [`Query`]: every object of the scene, in turn.
 #[derive(Clone, Copy, Debug)]
@@ -110,10 +84,6 @@ impl Query for EveryObject<'_> {
         })
     }
 
-    fn shading_point(&self, ray: &Ray, nearest: &Nearest) -> Cow<'_, ShadingPoint<'_>> {
-        Cow::Owned(ShadingPoint::new(self.scene, ray, nearest))
-    }
-
     fn share(&self, feeler: &Feeler, rec: &mut impl Recorder) -> Real {
         let mut crossed = Vec::new(); // the k_t of each object the feeler crosses, in order
         for (i, object) in self.scene.objects.iter().enumerate() {
@@ -129,105 +99,35 @@ impl Query for EveryObject<'_> {
 }
 // ANCHOR_END: ch2_every_object
 
+/// The notes' loop takes no shortcut: its camera rays and shading points are the plain ones.
+impl Shortcuts for EveryObject<'_> {}
+
 /// Traces rays through one scene with one set of options, asking its [`Query`] `Q` for the
-/// nearest hits and the feelers' shares (by default the acceleration structure of the options,
-/// [`Accelerated`]).
-pub struct Tracer<'a, Q = Accelerated<'a>> {
+/// nearest hits and the feelers' shares (every render asks the acceleration structure of the
+/// options, [`super::Accelerated`], made by `Tracer::new`).
+pub struct Tracer<'a, Q> {
     pub(crate) scene: &'a Scene,
     /// The options it renders with: size, chapter, view, depth …
     pub options: &'a Options,
     camera: Camera,
     query: Q,
     /// The scales of the depth and rays-per-pixel views, fixed before the first pixel.
-    scales: views::Scales,
-}
-
-/// What shading needs to know of a hit: the shading point of the notes' formulas.
-#[derive(Clone, Copy, Debug)]
-pub struct ShadingPoint<'s> {
-    /// The hit (world normal, pointing out of the object).
-    pub hit: Hit,
-    /// The material hit.
-    pub material: &'s Material,
-    /// The hit point P = r(t).
-    pub p: Vec3,
-    /// The ray's unit direction.
-    pub d: Vec3,
-    /// The shading normal n, turned towards the viewer ([`shading::facing`]).
-    pub n: Vec3,
-    /// Where rays leaving the hit start.
-    pub spawn: SpawnPoint,
-}
-
-// ANCHOR: ch3_shading_point
-impl<'s> ShadingPoint<'s> {
-    /// What shading needs to know of `nearest`, the nearest hit of `ray` in `scene`.
-    #[inline]
-    #[must_use]
-    pub fn new(scene: &'s Scene, ray: &Ray, nearest: &Nearest) -> Self {
-        let hit = nearest.hit;
-        let object = &scene.objects[nearest.object];
-        let d = crate::numeric::normalize(ray.dir);
-        Self {
-            hit,
-            material: &scene.materials[object.material],
-            p: ray.at(hit.t),
-            d,
-            n: shading::facing(hit.normal, d), // shading normal, towards the viewer
-            spawn: SpawnPoint::new(object, ray, &hit),
-        }
-    }
-}
-// ANCHOR_END: ch3_shading_point
-
-// ANCHOR: ch4_feeler_type
-/// A feeler towards a light, and the smallest u that counts.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Feeler {
-    /// S(u) = P′ + (L − P′)·u from the offset start P′: u = 0 at P′, u = 1 at the light.
-    pub ray: Ray,
-    /// Hits count for u ∈ ]u_min, 1].
-    pub u_min: Real,
-}
-// ANCHOR_END: ch4_feeler_type
-
-impl<'a> Tracer<'a> {
-    /// A tracer for the scene with the options' image size (builds `options.accel`).
-    #[must_use]
-    pub fn new(scene: &'a Scene, options: &'a Options) -> Self {
-        let accel = Cow::Owned(build_accel(scene, options));
-        Self::with_query(
-            scene,
-            options,
-            Accelerated::new(accel, scene, options.numerics),
-        )
-    }
-
-    /// A tracer using an acceleration structure built beforehand (see [`build_accel`]).
-    #[must_use]
-    pub fn with_accel(scene: &'a Scene, options: &'a Options, accel: &'a Accelerator) -> Self {
-        let accel = Cow::Borrowed(accel);
-        Self::with_query(
-            scene,
-            options,
-            Accelerated::new(accel, scene, options.numerics),
-        )
-    }
+    scales: Scales,
 }
 
 impl<'a, Q: Query> Tracer<'a, Q> {
     /// A tracer that asks `query` for the nearest hits and the feelers' shares.
     #[must_use]
     pub fn with_query(scene: &'a Scene, options: &'a Options, query: Q) -> Self {
-        let mut tracer = Self {
+        let camera = options.camera(scene);
+        let scales = Scales::measure(options, scene, &camera, &query);
+        Self {
             scene,
             options,
-            camera: options.camera(scene),
+            camera,
             query,
-            scales: views::Scales::default(),
-        };
-        tracer.scales = views::Scales::measure(&tracer);
-        tracer
+            scales,
+        }
     }
 
     /// The same tracer (scene, options, camera, scales) asking `query` instead.
@@ -257,102 +157,9 @@ impl<'a, Q: Query> Tracer<'a, Q> {
     /// The scales of the views whose colours need one (depth, rays per pixel), fixed before
     /// the first pixel is traced.
     #[must_use]
-    pub fn scales(&self) -> &views::Scales {
+    pub fn scales(&self) -> &Scales {
         &self.scales
     }
-
-    /// The ray tree of pixel (x, y): the road of [`Tracer::pixel`], every stop written down
-    /// ([`inspect::ray_tree`]). Its colour is the pixel's colour bit for bit.
-    #[must_use]
-    pub fn inspect(&self, x: u32, y: u32) -> RayTree {
-        inspect::ray_tree(self, x, y)
-    }
-
-    // ANCHOR: ch1_pixel
-    /// The colour of pixel (x, y), row y from the top: the mean over its samples. `rec`
-    /// hears every stop of the road ([`Stats`] counts the rays).
-    pub fn pixel(&self, x: u32, y: u32, rec: &mut impl Recorder) -> Vec3 {
-        if self.options.view == View::Rays {
-            // the colour is the number of rays this pixel cast
-            let mut count = Stats::default();
-            self.samples(x, y, &mut (rec, &mut count));
-            return self.scales.heat(count.total());
-        }
-        self.samples(x, y, rec)
-    }
-
-    /// The mean of the colours the samples of pixel (x, y) bring back.
-    fn samples(&self, x: u32, y: u32, rec: &mut impl Recorder) -> Vec3 {
-        let samples = self.options.samples_per_pixel();
-        let mut sum = Vec3::ZERO;
-        for s in 0..samples {
-            let ((dx, dy), ray) = self.sample_ray(x, y, (s, samples));
-            rec.sample(s, dx, dy);
-            let colour = self.camera_ray(&ray, rec);
-            if samples == 1 {
-                return colour; // the mean of one colour
-            }
-            sum += colour;
-        }
-        sum / samples as Real
-    }
-
-    /// Where sample `s` of the `n` of pixel (x, y) lies in the pixel, and its camera ray
-    /// (chapter 1: r(t) = e + d·t through that point of the image).
-    pub(crate) fn sample_ray(&self, x: u32, y: u32, (s, n): (u32, u32)) -> ((Real, Real), Ray) {
-        let (dx, dy) = sampling::sample_position(self.options.seed, n, x, y, s);
-        ((dx, dy), self.camera.pixel_ray(x, y, dx, dy))
-    }
-    // ANCHOR_END: ch1_pixel
-
-    // ANCHOR: ch1_camera_ray
-    /// What a camera ray brings back, `rec` told that it leaves, all that follows and the
-    /// colour: in chapter 1 its direction, from chapter 2 its nearest hit as the view shows it.
-    pub(crate) fn camera_ray(&self, ray: &Ray, rec: &mut impl Recorder) -> Vec3 {
-        rec.ray(RayKind::Camera, ray, 0.0, 0, 1.0, 1.0);
-        let colour = if self.options.chapter == Chapter::CameraRays {
-            direction_colour(ray.dir) // chapter 1: (d̂ + 1)/2
-        } else {
-            let nearest = self.query.nearest_camera(ray); // chapter 2: step 4, t > 0
-            rec.hit(nearest.as_ref());
-            self.view_colour(ray, nearest, rec)
-        };
-        rec.done(colour);
-        colour
-    }
-    // ANCHOR_END: ch1_camera_ray
-
-    // ANCHOR: ch2_view_colour
-    /// The colour the view shows for a camera ray (from chapter 2 on) whose nearest hit is
-    /// `nearest`.
-    fn view_colour(&self, ray: &Ray, nearest: Option<Nearest>, rec: &mut impl Recorder) -> Vec3 {
-        let o = self.options;
-        match o.view {
-            View::Color | View::Rays if o.chapter == Chapter::GenericObjects => self.flat(nearest),
-            View::Color | View::Rays => self.shade(ray, nearest, 0, 1.0, rec),
-            View::Flat => self.flat(nearest),
-            View::Normals => nearest.map_or(self.scene.background, |n| {
-                direction_colour(shading::facing(n.hit.normal, ray.dir))
-            }),
-            View::Depth => self
-                .scales
-                .depth(nearest.map(|n| n.hit.t * ray.dir.length())),
-            View::Shadows => nearest.map_or(Vec3::ZERO, |n| {
-                views::shadow_mask_at(self, &self.query.shading_point(ray, &n), rec)
-            }),
-            stage => nearest.map_or(self.scene.background, |n| {
-                stages::colour(stage, &self.query.shading_point(ray, &n), self.scene)
-            }),
-        }
-    }
-
-    /// Chapter 2's colour: the diffuse colour ρd of the material hit, unlit.
-    fn flat(&self, nearest: Option<Nearest>) -> Vec3 {
-        nearest.map_or(self.scene.background, |n| {
-            self.scene.materials[self.scene.objects[n.object].material].diffuse
-        })
-    }
-    // ANCHOR_END: ch2_view_colour
 
     // ANCHOR: ch2_nearest
     /// The nearest hit with t > `t_min` over all objects (the notes' steps 4 and 5: the
@@ -362,6 +169,55 @@ impl<'a, Q: Query> Tracer<'a, Q> {
         self.query.nearest(ray, t_min)
     }
     // ANCHOR_END: ch2_nearest
+}
+
+impl<Q: Query + Shortcuts> Tracer<'_, Q> {
+    // ANCHOR: ch1_camera_ray
+    /// What a camera ray brings back, `rec` told that it leaves, all that follows and the
+    /// colour: in chapter 1 its direction; from chapter 2 on its nearest hit as `show` draws
+    /// it — the chapter's own colour ([`Tracer::hit_colour`]), or another view's.
+    pub(crate) fn camera_ray<R: Recorder>(
+        &self,
+        ray: &Ray,
+        rec: &mut R,
+        show: impl FnOnce(Option<Nearest>, &mut R) -> Vec3,
+    ) -> Vec3 {
+        rec.ray(RayKind::Camera, ray, 0.0, 0, 1.0, 1.0);
+        let colour = if self.options.chapter == Chapter::CameraRays {
+            direction_colour(ray.dir) // chapter 1: (d̂ + 1)/2
+        } else {
+            let nearest = self.query.nearest_camera(ray); // chapter 2: step 4, t > 0
+            rec.hit(nearest.as_ref());
+            show(nearest, rec)
+        };
+        rec.done(colour);
+        colour
+    }
+    // ANCHOR_END: ch1_camera_ray
+
+    // ANCHOR: ch2_hit_colour
+    /// The chapter's own colour of a camera ray (from chapter 2 on) whose nearest hit is
+    /// `nearest`: chapter 2's flat colour, then the hit shaded.
+    pub(crate) fn hit_colour(
+        &self,
+        ray: &Ray,
+        nearest: Option<Nearest>,
+        rec: &mut impl Recorder,
+    ) -> Vec3 {
+        if self.options.chapter == Chapter::GenericObjects {
+            self.flat(nearest)
+        } else {
+            self.shade(ray, nearest, 0, 1.0, rec)
+        }
+    }
+
+    /// Chapter 2's colour: the diffuse colour ρd of the material hit, unlit.
+    pub(crate) fn flat(&self, nearest: Option<Nearest>) -> Vec3 {
+        nearest.map_or(self.scene.background, |n| {
+            self.scene.materials[self.scene.objects[n.object].material].diffuse
+        })
+    }
+    // ANCHOR_END: ch2_hit_colour
 
     // ANCHOR: ch5_trace
     /// The light coming back along `ray` (chapters 3–5): the nearest hit after `t_min`, shaded.
@@ -395,7 +251,7 @@ impl<'a, Q: Query> Tracer<'a, Q> {
         let Some(nearest) = nearest else {
             return self.scene.background;
         };
-        let s = self.query.shading_point(ray, &nearest);
+        let s = self.query.shading_point(self.scene, ray, &nearest);
         let local = self.local_light(&s, rec);
         self.reflect_and_refract(&s, local, depth, weight, rec)
     }
@@ -404,7 +260,9 @@ impl<'a, Q: Query> Tracer<'a, Q> {
     // ANCHOR: ch3_local_light_sig
     /// The local light I_a + Σ_lights (I_d + I_s)·share (chapters 3 and 4): Phong's terms of
     /// every light ([`shading::phong`]), each times the share of that light its feeler lets
-    /// through (from chapter 4, [`Query::share`]; 1 without a feeler).
+    /// through (from chapter 4, [`Query::share`]; 1 without a feeler). Whether a light lies in
+    /// front of the surface is decided here, once per light ([`shadow::in_front`]): it decides
+    /// whether a feeler goes towards it, and the recorder is told.
     pub(crate) fn local_light(&self, s: &ShadingPoint, rec: &mut impl Recorder) -> Vec3 {
         // ANCHOR_END: ch3_local_light_sig
         // BEGIN SOLUTION local_light
@@ -412,19 +270,20 @@ impl<'a, Q: Query> Tracer<'a, Q> {
         rec.ambient(i_a);
         let mut color = i_a;
         for (l, light) in self.scene.lights.iter().enumerate() {
+            let in_front = shadow::in_front(s.n, s.p, light.position); // n·(L − P) > 0
             let phong = shading::phong(s.material, light, s.p, s.n, -s.d); // I_d + I_s
-            // a light that adds nothing (behind the surface) has nothing to shadow
-            let feeler = if phong.sum == Vec3::ZERO {
-                None
-            } else {
+            // a light behind the surface, or one that adds nothing, has nothing to shadow
+            let feeler = if in_front && phong.sum != Vec3::ZERO {
                 self.feeler(s, light)
+            } else {
+                None
             };
             let share = match &feeler {
                 Some(feeler) => self.query.share(feeler, rec),
                 None => 1.0,
             };
             let arriving = phong.sum * share; // (I_d + I_s)·share
-            rec.light(l, s, &phong, feeler.as_ref(), share, arriving);
+            rec.light(l, in_front, &phong, feeler.as_ref(), share, arriving);
             color += arriving;
         }
         rec.local(color);
@@ -433,9 +292,9 @@ impl<'a, Q: Query> Tracer<'a, Q> {
     }
 
     // ANCHOR: ch4_feeler_sig
-    /// From chapter 4, the feeler S(u) = P′ + (L − P′)·u towards a `light` that casts shadows
-    /// and lies in front, n·(L − P) > 0 ([`shadow::in_front`]), from P moved off the surface
-    /// to P′ ([`crate::offset`]).
+    /// From chapter 4, the feeler S(u) = P′ + (L − P′)·u towards a `light` that casts shadows,
+    /// from P moved off the surface to P′ ([`crate::offset`]). It is asked only for a light in
+    /// front of the surface, n·(L − P) > 0, as the caller has decided ([`shadow::in_front`]).
     #[inline]
     pub(crate) fn feeler(&self, s: &ShadingPoint, light: &Light) -> Option<Feeler> {
         let o = self.options;
@@ -444,7 +303,7 @@ impl<'a, Q: Query> Tracer<'a, Q> {
         }
         // ANCHOR_END: ch4_feeler_sig
         // BEGIN SOLUTION send_feeler
-        if !light.shadows || !shadow::in_front(s.n, s.p, light.position) {
+        if !light.shadows {
             return None;
         }
         let (start, u_min) = o.offset.spawn(&s.spawn, light.position - s.p);
@@ -487,8 +346,8 @@ impl<'a, Q: Query> Tracer<'a, Q> {
         }
         let mut k_r = material.reflection;
         if material.is_translucent() {
-            let entering = s.hit.normal.dot(d) < 0.0; // the side that was hit
-            let (n1, n2) = optics::indices(entering, material.ior);
+            // the side that was hit, as the shape found it
+            let (n1, n2) = optics::indices(s.hit.entering, material.ior);
             match optics::refract(d, n, n1, n2) {
                 Some(t_dir) => {
                     let k_t = material.transmission;

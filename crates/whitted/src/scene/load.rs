@@ -26,7 +26,7 @@ use std::path::Path;
 use toml::Spanned;
 
 use super::format::{AxialDesc, BoxDesc, ObjectDesc, PolyhedronDesc, SceneFile, StepDesc};
-use super::{CameraSettings, Scene};
+use super::model::{CameraSettings, Scene};
 use crate::camera::viewing_basis;
 use crate::error::{Error, line_col};
 use crate::light::Light;

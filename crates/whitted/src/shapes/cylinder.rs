@@ -14,8 +14,8 @@
 //!
 //! Course book: [Chapter 2, generic objects](../../../../../docs/book/ch02-generic-objects.html) (`docs/src/ch02-generic-objects.md`).
 
+use super::hits::{Hit, Hits, Part, Span, entering_leaving};
 use super::quadratic::{Numerics, solve, stable_roots};
-use super::{Hit, Hits, Part, Span, entering_leaving};
 use crate::ray::Ray;
 use crate::real::{Real, Vec3};
 

@@ -6,7 +6,7 @@
 //!
 //! Course book: [Chapter 2, generic objects](../../../../../docs/book/ch02-generic-objects.html) (`docs/src/ch02-generic-objects.md`).
 
-use super::{Hit, Hits, Part};
+use super::hits::{Hit, Hits, Part};
 use crate::ray::Ray;
 use crate::real::Vec3;
 

@@ -22,7 +22,7 @@
 //!
 //! Course book: [Chapter 2, generic objects](../../../../../docs/book/ch02-generic-objects.html) (`docs/src/ch02-generic-objects.md`).
 
-use super::{Hit, Hits, Part, entering_leaving};
+use super::hits::{Hit, Hits, Part, entering_leaving};
 use crate::ray::Ray;
 use crate::real::{Mat3, Real, Vec3};
 

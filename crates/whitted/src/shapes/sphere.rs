@@ -10,8 +10,8 @@
 //!
 //! Course book: [Chapter 2, generic objects](../../../../../docs/book/ch02-generic-objects.html) (`docs/src/ch02-generic-objects.md`).
 
+use super::hits::{Hit, Hits, Part, entering_leaving};
 use super::quadratic::{self, Numerics, Roots, solve_with_discriminant};
-use super::{Hit, Hits, Part, entering_leaving};
 use crate::ray::Ray;
 use crate::real::{Real, Vec3};
 

@@ -2,22 +2,23 @@
 //!
 //! It writes down the values the road hands it and computes no formula of its own: the names
 //! it adds (of objects, shapes, materials) are labels for the reader. What it reads off those
-//! values, it reads with the road's own functions: the hit point P = r(t) ([`Ray::at`]), which
-//! of a crossing object's hits lie in ]u_min, 1] ([`shadow::between`]), and whether a light
-//! lies in front of the surface ([`shadow::in_front`]).
+//! values, it reads with the road's own functions: the hit point P = r(t) ([`Ray::at`]), and
+//! which of a crossing object's hits lie in ]u_min, 1] ([`shadow::between`]). Whether a light
+//! lies in front of the surface is the road's decision, handed to it.
 //!
 //! Course book: [The ray tree of one pixel](../../../../../../docs/book/inspect.html) (`docs/src/inspect.md`).
 
 use super::super::framebuffer::Encoding;
+use super::super::query::Query;
 use super::super::recorder::{RayKind, Recorder, Stop};
-use super::super::tracer::{EveryObject, Feeler, Query, ShadingPoint, Tracer};
+use super::super::tracer::{EveryObject, Tracer};
 use super::super::{Options, Stats};
 use super::tree::{Crossing, FeelerNode, HitNode, LightNode, RayNode, RayTree, Sample};
 use crate::ray::Ray;
 use crate::real::{Real, Vec3};
 use crate::scene::Scene;
 use crate::shading::Phong;
-use crate::shadow;
+use crate::shadow::{self, Feeler};
 use crate::shapes::{Hits, Nearest};
 
 /// The ray tree of pixel (x, y): the road of [`Tracer::pixel`] with a [`TreeRecorder`], each
@@ -158,7 +159,7 @@ impl Recorder for TreeRecorder<'_> {
     fn light(
         &mut self,
         light: usize,
-        s: &ShadingPoint,
+        in_front: bool,
         phong: &Phong,
         feeler: Option<&Feeler>,
         share: Real,
@@ -192,7 +193,7 @@ impl Recorder for TreeRecorder<'_> {
             diffuse: phong.diffuse,
             specular: phong.specular,
             unshadowed: phong.sum,
-            in_front: shadow::in_front(s.n, s.p, position),
+            in_front,
             feeler,
             share,
             arriving,
