@@ -6,7 +6,10 @@
 use std::path::Path;
 use std::process::ExitCode;
 
-use super::{Grade, GradeSetup};
+use super::class::grade_class;
+use super::grading::grade;
+use super::outcome::Grade;
+use super::setup::GradeSetup;
 use crate::manifest::Manifest;
 use crate::{ToolError, files};
 
@@ -62,17 +65,16 @@ pub fn command(
         let jobs =
             jobs.unwrap_or_else(|| std::thread::available_parallelism().map_or(1, usize::from));
         let start = std::time::Instant::now();
-        let entries =
-            super::grade_class(root, manifest, class, setup, jobs, &|e| match &e.grade {
-                Ok(g) => eprintln!(
-                    "graded {}: {} / {} points in {:.0} s",
-                    e.student,
-                    crate::report::points(g.score()),
-                    crate::report::points(g.max()),
-                    g.elapsed.as_secs_f64()
-                ),
-                Err(why) => eprintln!("could not grade {}: {why}", e.student),
-            })?;
+        let entries = grade_class(root, manifest, class, setup, jobs, &|e| match &e.grade {
+            Ok(g) => eprintln!(
+                "graded {}: {} / {} points in {:.0} s",
+                e.student,
+                crate::report::points(g.score()),
+                crate::report::points(g.max()),
+                g.elapsed.as_secs_f64()
+            ),
+            Err(why) => eprintln!("could not grade {}: {why}", e.student),
+        })?;
         let chapters: Vec<u8> = setup.chapter.map_or_else(
             || crate::syllabus::CHAPTERS.iter().map(|c| c.number).collect(),
             |c| vec![c],
@@ -130,7 +132,7 @@ pub fn command(
         return Ok(ExitCode::SUCCESS);
     }
     let submission = submission.unwrap_or(root);
-    let g = super::grade(root, manifest, submission, setup)?;
+    let g = grade(root, manifest, submission, setup)?;
     print!("{}", crate::report::table(&g, manifest));
     write_reports(&g, manifest, None, reports.json, reports.junit, reports.csv)?;
     Ok(ExitCode::SUCCESS)
