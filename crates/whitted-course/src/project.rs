@@ -1,5 +1,7 @@
 //! The project a command of `whitted` works on: the one `--root DIR` names, or the nearest
 //! one at or above the current directory.
+//!
+//! Course book: [The instructor's guide](../../../../docs/book/instructor-guide.html) (`docs/src/instructor-guide.md`).
 
 use std::path::PathBuf;
 

@@ -1,5 +1,7 @@
 //! The command line of `whitted autograder`: the package a platform takes, and what that
 //! package runs for each submission (`grade`, `prebuild`, `check`).
+//!
+//! Course book: [The instructor's guide](../../../../../docs/book/instructor-guide.html) (`docs/src/instructor-guide.md`).
 
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;

@@ -1,5 +1,7 @@
 //! What a package grades and how: the settings every grading of a platform's package gets,
 //! which the package's scripts and workflow pass on.
+//!
+//! Course book: [The instructor's guide](../../../../../docs/book/instructor-guide.html) (`docs/src/instructor-guide.md`).
 
 use std::path::PathBuf;
 

@@ -1,5 +1,7 @@
 //! The command line of `whitted grade`, and of the sandbox every grading command takes
 //! (`--sandbox LEVEL`, `--unsandboxed`).
+//!
+//! Course book: [The instructor's guide](../../../../../docs/book/instructor-guide.html) (`docs/src/instructor-guide.md`).
 
 use std::path::PathBuf;
 use std::process::ExitCode;

@@ -1,6 +1,8 @@
 //! The build of the graded copy: the student's bodies first, each one that does not compile
 //! put back to its `todo!()` and the build tried again, so that a compile error costs only
 //! the exercise it is in; then the hidden tests.
+//!
+//! Course book: [The instructor's guide](../../../../../docs/book/instructor-guide.html) (`docs/src/instructor-guide.md`).
 
 use std::collections::BTreeMap;
 use std::path::Path;

@@ -1,5 +1,7 @@
 //! The graded copy of the instructor's project: where it lies and where cargo builds it, and
 //! which of the project's files go into it whole.
+//!
+//! Course book: [The instructor's guide](../../../../../docs/book/instructor-guide.html) (`docs/src/instructor-guide.md`).
 
 use std::path::{Path, PathBuf};
 

@@ -1,6 +1,8 @@
 //! The feedback of a graded submission worded for a report: each chapter that lost points,
 //! its picture's line and the first wrong number of its ray trees, attributed to an exercise
 //! as `cargo learn` attributes it.
+//!
+//! Course book: [The instructor's guide](../../../../../docs/book/instructor-guide.html) (`docs/src/instructor-guide.md`).
 
 use super::outcome::Grade;
 use crate::manifest::Manifest;

@@ -1,6 +1,8 @@
 //! One grading, step by step ([`grade`]): the graded copy and its sandbox, the student's
 //! bodies spliced in and built, the tests run, the points, and the pictures of the chapters
 //! that lost points.
+//!
+//! Course book: [The instructor's guide](../../../../../docs/book/instructor-guide.html) (`docs/src/instructor-guide.md`).
 
 use std::collections::BTreeMap;
 use std::path::Path;

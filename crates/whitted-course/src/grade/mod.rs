@@ -33,14 +33,14 @@
 //! tests follow the same naming, so they count for the exercise they name; reports for
 //! students show their points, never their names or messages ([`super::report`]).
 //!
-//! Course book: [The instructor's guide](../../../../docs/book/instructor-guide.html) (`docs/src/instructor-guide.md`).
-//!
 //! Its files, one job each: `setup.rs` (how a grading is set up), `grading.rs` ([`grade()`],
 //! the steps in order), `copy.rs` (the graded copy), `splice.rs` and `screen.rs` (the
 //! student's bodies in it), `build.rs` and `blame.rs` (the build), `nextest.rs`, `junit.rs`, `runner.rs`,
 //! `sandbox/` and `clean.rs` (the test run), `test_result.rs`, `score.rs` and `outcome.rs` (the results and the points),
 //! `render.rs` and `explained.rs` (the pictures and their words), `class.rs` (a class),
 //! `command.rs` (the reports) and `args.rs` (the command line).
+//!
+//! Course book: [The instructor's guide](../../../../docs/book/instructor-guide.html) (`docs/src/instructor-guide.md`).
 
 mod args;
 mod blame;

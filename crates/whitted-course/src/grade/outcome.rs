@@ -1,4 +1,6 @@
 //! What a grading finds: each exercise's points, and the grade of the whole submission.
+//!
+//! Course book: [The instructor's guide](../../../../../docs/book/instructor-guide.html) (`docs/src/instructor-guide.md`).
 
 use std::time::Duration;
 

@@ -1,5 +1,7 @@
 //! Points: each exercise's share of its tests that passed, and which test targets the graded
 //! chapters run.
+//!
+//! Course book: [The instructor's guide](../../../../../docs/book/instructor-guide.html) (`docs/src/instructor-guide.md`).
 
 use std::collections::{BTreeMap, BTreeSet};
 

@@ -1,5 +1,7 @@
 //! How a grading is set up: which chapters, the hidden tests, the time limit, where it
 //! builds, and its sandbox.
+//!
+//! Course book: [The instructor's guide](../../../../../docs/book/instructor-guide.html) (`docs/src/instructor-guide.md`).
 
 use std::path::PathBuf;
 use std::time::Duration;

@@ -1,4 +1,6 @@
 //! One test's result, as the test run reports it.
+//!
+//! Course book: [The instructor's guide](../../../../../docs/book/instructor-guide.html) (`docs/src/instructor-guide.md`).
 
 /// How one test ended.
 #[derive(Clone, Debug, PartialEq, Eq)]

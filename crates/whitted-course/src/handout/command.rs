@@ -1,4 +1,6 @@
 //! `whitted handout` as the command line asks.
+//!
+//! Course book: [The instructor's guide](../../../../../docs/book/instructor-guide.html) (`docs/src/instructor-guide.md`).
 
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;

@@ -21,12 +21,12 @@
 //! and no `.ci/`. It is written into a temporary directory beside the destination and renamed
 //! into place, so a failure leaves nothing half written.
 //!
-//! Course book: [The instructor's guide](../../../../docs/book/instructor-guide.html) (`docs/src/instructor-guide.md`).
-//!
 //! Its files, one job each: `regions.rs` finds the solution regions, `select.rs` which
 //! exercises go, `todo.rs` what a handed-out body becomes, `parts.rs` what becomes of each
 //! file, `workspace.rs` and `student_readme.rs` the files a handout writes anew, `write.rs`
 //! the copy, and `command.rs` the command line.
+//!
+//! Course book: [The instructor's guide](../../../../docs/book/instructor-guide.html) (`docs/src/instructor-guide.md`).
 
 mod command;
 mod parts;

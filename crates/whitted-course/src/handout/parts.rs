@@ -1,4 +1,6 @@
 //! What becomes of each file of the project in a handout: left out, copied, or written anew.
+//!
+//! Course book: [The instructor's guide](../../../../../docs/book/instructor-guide.html) (`docs/src/instructor-guide.md`).
 
 use std::path::Path;
 

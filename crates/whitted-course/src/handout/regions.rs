@@ -1,5 +1,7 @@
 //! Where each exercise's reference body sits: its solution region, between the
 //! `// BEGIN SOLUTION NAME` and `// END SOLUTION` lines inside the function's body.
+//!
+//! Course book: [The instructor's guide](../../../../../docs/book/instructor-guide.html) (`docs/src/instructor-guide.md`).
 
 use std::collections::BTreeMap;
 use std::ops::Range;

@@ -1,4 +1,6 @@
 //! Which exercises a handout takes out: by chapter, by name or id, or all.
+//!
+//! Course book: [The instructor's guide](../../../../../docs/book/instructor-guide.html) (`docs/src/instructor-guide.md`).
 
 use crate::ToolError;
 use crate::manifest::Manifest;

@@ -1,4 +1,6 @@
 //! The student's README of a handout, from its template.
+//!
+//! Course book: [The instructor's guide](../../../../../docs/book/instructor-guide.html) (`docs/src/instructor-guide.md`).
 
 use std::path::Path;
 

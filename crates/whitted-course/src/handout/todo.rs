@@ -1,5 +1,7 @@
 //! What a handed-out exercise becomes: its region's body replaced by a `todo!()` that names
 //! the exercise, and the renderer's `lib.rs` allowing what is unused until the student writes it.
+//!
+//! Course book: [The instructor's guide](../../../../../docs/book/instructor-guide.html) (`docs/src/instructor-guide.md`).
 
 use crate::layout::{BEGIN, END};
 use crate::manifest::{Entry, Manifest};

@@ -1,5 +1,7 @@
 //! The handout's own cargo files: its workspace manifest, with only the crates a student
 //! gets, and its `.cargo/config.toml`, with only the student's alias.
+//!
+//! Course book: [The instructor's guide](../../../../../docs/book/instructor-guide.html) (`docs/src/instructor-guide.md`).
 
 use crate::{ToolError, layout};
 

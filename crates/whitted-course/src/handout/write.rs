@@ -1,5 +1,7 @@
 //! Writing a handout: every file the handout holds, each as its [`Part`] says, into a
 //! temporary directory renamed into place at the end.
+//!
+//! Course book: [The instructor's guide](../../../../../docs/book/instructor-guide.html) (`docs/src/instructor-guide.md`).
 
 use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};

@@ -1,5 +1,7 @@
 //! `whitted trees --check`: the committed trees files are still what the reference traces,
 //! and the committed known mistakes still what the hand-written mutants do.
+//!
+//! Course book: [The ray tree of one pixel](../../../../../docs/book/inspect.html) (`docs/src/inspect.md`).
 
 use std::path::Path;
 use std::process::ExitCode;

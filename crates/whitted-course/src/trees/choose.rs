@@ -1,5 +1,7 @@
 //! Choosing the pixels a trees file keeps: the *steady* trees (whose neighbours all have
 //! their shape), and among them, greedily, the fewest that show every feature of the scene.
+//!
+//! Course book: [The ray tree of one pixel](../../../../../docs/book/inspect.html) (`docs/src/inspect.md`).
 
 use std::collections::BTreeSet;
 

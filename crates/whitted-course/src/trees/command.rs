@@ -1,5 +1,7 @@
 //! `whitted trees [--check]` as the command line asks: the steps that write the trees files
 //! and the known mistakes, or the check of the committed ones.
+//!
+//! Course book: [The ray tree of one pixel](../../../../../docs/book/inspect.html) (`docs/src/inspect.md`).
 
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;

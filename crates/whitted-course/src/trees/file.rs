@@ -1,6 +1,8 @@
 //! A chapter's trees file (`chapters/chNN_name/trees.json`, its shape in
 //! `docs/src/inspect.md`), written and read as the tree's types: [`TreeFile`] and its
 //! [`Kept`] pixels.
+//!
+//! Course book: [The ray tree of one pixel](../../../../../docs/book/inspect.html) (`docs/src/inspect.md`).
 
 use std::path::Path;
 

@@ -1,6 +1,8 @@
 //! The grid of trees to choose from: the chapter binary traces every [`STEP`]-th pixel of
 //! every [`STEP`]-th row of its figure (`--inspect-grid STEP`), one line of JSON a tree after a
 //! first line of settings; each line is read once, as the tree's types.
+//!
+//! Course book: [The ray tree of one pixel](../../../../../docs/book/inspect.html) (`docs/src/inspect.md`).
 
 use std::collections::BTreeSet;
 use std::path::Path;

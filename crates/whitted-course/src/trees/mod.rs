@@ -28,12 +28,12 @@
 //! comparison), and that the pixels chosen for the scene's features are still those a fresh
 //! choice makes. It needs no build of the mistakes.
 //!
-//! Course book: [The ray tree of one pixel](../../../../docs/book/inspect.html) (`docs/src/inspect.md`).
-//!
 //! Its files, one job each: `grid.rs` traces the trees to choose from, `shape.rs` says what
 //! one tree is made of, `choose.rs` keeps the pixels, `file.rs` writes and reads a trees file,
 //! `switched.rs` traces the known mistakes, `check.rs` compares the committed files, `run.rs`
 //! runs a chapter binary, and `command.rs` puts the steps in order.
+//!
+//! Course book: [The ray tree of one pixel](../../../../docs/book/inspect.html) (`docs/src/inspect.md`).
 
 mod check;
 mod choose;

@@ -1,5 +1,7 @@
 //! Running a chapter binary for `whitted trees`: which binary and which figure's settings,
 //! the run itself, and the `--against` comparison it prints.
+//!
+//! Course book: [The ray tree of one pixel](../../../../../docs/book/inspect.html) (`docs/src/inspect.md`).
 
 use std::path::{Path, PathBuf};
 

@@ -1,6 +1,8 @@
 //! What one ray tree is made of, in words: its *shape* ([`signature`]), which two pixels
 //! share when their trees differ only in numbers that move continuously with the pixel, and
 //! its *features* ([`features`]), which the pixels kept must show between them.
+//!
+//! Course book: [The ray tree of one pixel](../../../../../docs/book/inspect.html) (`docs/src/inspect.md`).
 
 use std::collections::BTreeSet;
 

@@ -2,6 +2,8 @@
 //! mutant behind its switch ([`crate::mistakes`]), each mutant's chapter traced `--against`
 //! the reference's trees, so that every mistake changes a tree kept ([`Switched::add_pixels`]),
 //! and each mistake's fingerprint written for `cargo learn` ([`Switched::fingerprints`]).
+//!
+//! Course book: [The ray tree of one pixel](../../../../../docs/book/inspect.html) (`docs/src/inspect.md`).
 
 use std::collections::{BTreeMap, BTreeSet};
 use std::path::{Path, PathBuf};

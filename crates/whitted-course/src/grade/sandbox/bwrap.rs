@@ -1,5 +1,7 @@
 //! bubblewrap's arguments, piece by piece: the system read-only, the parents of what is
 //! bound, the namespaces left.
+//!
+//! Course book: [The instructor's guide](../../../../../../docs/book/instructor-guide.html) (`docs/src/instructor-guide.md`).
 
 use std::ffi::OsString;
 use std::path::{Path, PathBuf};

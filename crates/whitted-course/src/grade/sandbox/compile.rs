@@ -1,5 +1,7 @@
 //! The sandbox cargo builds the student's code in ([`Sandbox::build_wrapper`]): a body's
 //! `include_str!`, `include_bytes!` or `#[path]` can read only what it shows.
+//!
+//! Course book: [The instructor's guide](../../../../../../docs/book/instructor-guide.html) (`docs/src/instructor-guide.md`).
 
 use std::ffi::OsString;
 use std::path::{Path, PathBuf};

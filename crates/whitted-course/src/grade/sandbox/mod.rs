@@ -27,12 +27,12 @@
 //! root, the secrets closed by their permissions, what the test's user leaves swept) or
 //! unsandboxed ([`Level::Off`]: the runner's verdict, limits and cleaning only).
 //!
-//! Course book: [The instructor's guide](../../../../../docs/book/instructor-guide.html) (`docs/src/instructor-guide.md`).
-//!
 //! Its files, one job each: `policy.rs` (the levels, the limits and the command of a test
 //! run), `bwrap.rs` (bubblewrap's arguments), `worker.rs` (a worker's sandbox, found and
 //! tried), `compile.rs` (the build's sandbox), `protect.rs` (the secrets at the user level)
 //! and `sweep.rs` (what a test's user leaves behind).
+//!
+//! Course book: [The instructor's guide](../../../../../docs/book/instructor-guide.html) (`docs/src/instructor-guide.md`).
 
 mod bwrap;
 mod compile;

@@ -1,6 +1,8 @@
 //! The policy of a test run: how much of the machine the student's code is kept from
 //! ([`Level`]), the limits it runs under, and the command that starts a test binary in the
 //! sandbox. The grader writes it into [`POLICY_VAR`]; the runner reads it back.
+//!
+//! Course book: [The instructor's guide](../../../../../../docs/book/instructor-guide.html) (`docs/src/instructor-guide.md`).
 
 use std::ffi::OsString;
 use std::path::{Path, PathBuf};

@@ -1,6 +1,8 @@
 //! At the user level, the secrets kept from the tests by their permissions: the instructor's
 //! project and the hidden tests must be closed to other users, and the graded copy is closed
 //! while the hidden tests are in it.
+//!
+//! Course book: [The instructor's guide](../../../../../../docs/book/instructor-guide.html) (`docs/src/instructor-guide.md`).
 
 use std::path::Path;
 

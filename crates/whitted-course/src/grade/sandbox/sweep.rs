@@ -1,5 +1,7 @@
 //! What a test's user leaves behind at the user level (as root, without namespaces): its
 //! processes, ended, and its files in the machine's shared temporary directories, removed.
+//!
+//! Course book: [The instructor's guide](../../../../../../docs/book/instructor-guide.html) (`docs/src/instructor-guide.md`).
 
 use std::path::Path;
 use std::process::{Command, Stdio};

@@ -1,5 +1,7 @@
 //! The sandbox of one grading worker ([`Sandbox`]): bubblewrap found and tried, the policy
 //! of its test runs, and the environment that makes nextest run each test binary through it.
+//!
+//! Course book: [The instructor's guide](../../../../../../docs/book/instructor-guide.html) (`docs/src/instructor-guide.md`).
 
 use std::ffi::OsString;
 use std::path::{Path, PathBuf};
