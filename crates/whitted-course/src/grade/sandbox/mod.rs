@@ -41,7 +41,7 @@ mod protect;
 mod sweep;
 mod worker;
 
-pub(in crate::grade) use policy::SLOT_VAR;
+pub(crate) use policy::SLOT_VAR;
 pub use policy::{FIRST_UID, Level, Limits, POLICY_VAR, Policy, RUNNER_COMMAND, SLOTS};
 pub use sweep::{SHARED_TEMPORARY, processes_of, remove_left_files};
 pub use worker::Sandbox;

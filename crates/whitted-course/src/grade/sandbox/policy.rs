@@ -30,7 +30,7 @@ pub const FIRST_UID: u32 = 61_000;
 pub const SLOTS: u32 = 64;
 
 /// The environment variable in which nextest tells a test (and its runner) its slot.
-pub(in crate::grade) const SLOT_VAR: &str = "NEXTEST_TEST_GLOBAL_SLOT";
+pub(crate) const SLOT_VAR: &str = "NEXTEST_TEST_GLOBAL_SLOT";
 
 /// What a test may use.
 #[derive(Clone, Debug, PartialEq, Eq, Serialize, Deserialize)]
