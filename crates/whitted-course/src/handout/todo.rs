@@ -3,10 +3,9 @@
 //!
 //! Course book: [The instructor's guide](../../../../../docs/book/instructor-guide.html) (`docs/src/instructor-guide.md`).
 
+use super::regions::Region;
 use crate::layout::{BEGIN, END};
 use crate::manifest::{Entry, Manifest};
-
-use super::regions::Region;
 
 /// The line the handout adds at the top of the renderer's `lib.rs`, after the crate's
 /// documentation.
