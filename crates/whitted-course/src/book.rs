@@ -540,3 +540,22 @@ pub fn command(root: &Path, mdbook: &Path) -> Result<ExitCode, ToolError> {
         Ok(ExitCode::from(1))
     }
 }
+
+/// The arguments of `whitted book`.
+#[derive(clap::Args)]
+pub struct BookArgs {
+    /// The mdbook program to run.
+    #[arg(long, value_name = "PATH", default_value = "mdbook")]
+    mdbook: PathBuf,
+    /// The project [default: the nearest Cargo.toml at or above the current directory].
+    #[arg(long, value_name = "DIR")]
+    root: Option<PathBuf>,
+}
+
+impl BookArgs {
+    /// Runs `whitted book` on the project the arguments name.
+    pub fn run(&self) -> Result<ExitCode, ToolError> {
+        let root = crate::project::root(self.root.as_ref())?;
+        command(&root, &self.mdbook)
+    }
+}

@@ -15,7 +15,7 @@
 //!
 //! Course book: [Introduction](../../../../docs/book/introduction.html) (`docs/src/introduction.md`).
 
-use std::path::Path;
+use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 
 use crate::ToolError;
@@ -206,4 +206,26 @@ pub fn command(root: &Path, check: bool, only: Option<&str>) -> Result<ExitCode,
         return Ok(ExitCode::from(1));
     }
     Ok(ExitCode::SUCCESS)
+}
+
+/// The arguments of `whitted figures`.
+#[derive(clap::Args)]
+pub struct FiguresArgs {
+    /// Compare fresh renders with the committed figures instead of writing them.
+    #[arg(long)]
+    check: bool,
+    /// Only the figures whose file names contain this text.
+    #[arg(long, value_name = "TEXT")]
+    only: Option<String>,
+    /// The project [default: the nearest Cargo.toml at or above the current directory].
+    #[arg(long, value_name = "DIR")]
+    root: Option<PathBuf>,
+}
+
+impl FiguresArgs {
+    /// Runs `whitted figures` on the project the arguments name.
+    pub fn run(&self) -> Result<ExitCode, ToolError> {
+        let root = crate::project::root(self.root.as_ref())?;
+        command(&root, self.check, self.only.as_deref())
+    }
 }

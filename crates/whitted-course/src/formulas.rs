@@ -10,8 +10,9 @@
 //!
 //! Course book: [The instructor's guide](../../../../docs/book/instructor-guide.html) (`docs/src/instructor-guide.md`).
 
-use std::path::Path;
+use std::path::{Path, PathBuf};
 use std::process::ExitCode;
+use std::time::Duration;
 
 use crate::manifest::Manifest;
 use crate::prove::PoisonedRuns;
@@ -141,4 +142,96 @@ pub fn readmes(root: &Path, manifest: &Manifest) -> Result<ExitCode, ToolError> 
         }
     );
     Ok(ExitCode::SUCCESS)
+}
+
+/// The arguments of `whitted formulas`.
+#[derive(clap::Args)]
+pub struct FormulasArgs {
+    #[command(subcommand)]
+    /// What to do with the functions [default: list them].
+    what: Option<FormulasCommand>,
+    /// The project's root (the directory of Cargo.toml) [default: the nearest one at or
+    /// above the current directory].
+    #[arg(long, value_name = "DIR", global = true)]
+    root: Option<PathBuf>,
+}
+
+#[derive(clap::Subcommand)]
+enum FormulasCommand {
+    /// Lists the functions by chapter, each with its file:line, the formula and the notes'
+    /// section.
+    List,
+    /// Proves that each function is on every render path of its chapter: in a copy of the
+    /// project built once (into target/prove), the render paths must pass unpoisoned, then
+    /// fail with each function of their chapter poisoned in turn. Exit status 1 when some
+    /// function is not proven.
+    Prove {
+        /// Prove only this function (a path as in the manifest, e.g. camera::viewing_basis);
+        /// may be repeated.
+        #[arg(long, value_name = "PATH")]
+        only: Vec<String>,
+        #[command(flatten)]
+        runs: RunsArgs,
+    },
+    /// Measures which tests of a handout need which exercise (each poisoned in turn, the
+    /// manifest's [handout] tests run) and checks chapters/exercise-tests.toml against it.
+    /// Exit status 1 when it is out of date.
+    Deps {
+        /// Write chapters/exercise-tests.toml from the measurements.
+        #[arg(long)]
+        write: bool,
+        #[command(flatten)]
+        runs: RunsArgs,
+    },
+    /// Rewrites the "## Exercises" section of each chapter's README from the manifest.
+    Readmes,
+}
+
+/// How the poisoned copy of `prove` and `deps` is built and run.
+#[derive(clap::Args)]
+struct RunsArgs {
+    /// Keep the temporary copy of the project and the test runs' output, for debugging; its
+    /// path is printed.
+    #[arg(long)]
+    keep: bool,
+    /// The time limit of one test run, in seconds: a poisoned function that makes a render
+    /// loop forever counts as not proven instead of hanging the proof.
+    #[arg(long, value_name = "SECONDS", default_value_t = 120,
+          value_parser = clap::value_parser!(u64).range(1..=86_400))]
+    timeout: u64,
+    /// Cargo features to build the poisoned copy with, comma-separated (`--features f32`
+    /// works in single precision).
+    #[arg(long, value_name = "LIST", value_delimiter = ',')]
+    features: Vec<String>,
+}
+
+impl RunsArgs {
+    /// The runs asked for, of the functions `only` (all when empty).
+    fn runs(&self, only: &[String]) -> PoisonedRuns {
+        PoisonedRuns {
+            only: only.to_vec(),
+            keep: self.keep,
+            timeout: Duration::from_secs(self.timeout),
+            features: self.features.clone(),
+            ..PoisonedRuns::default()
+        }
+    }
+}
+
+impl FormulasArgs {
+    /// Runs `whitted formulas` as the arguments ask, on the project they name.
+    pub fn run(&self) -> Result<ExitCode, ToolError> {
+        let root = crate::project::root(self.root.as_ref())?;
+        let manifest = crate::cli::read_manifest(&root)?;
+        match &self.what {
+            None | Some(FormulasCommand::List) => list(&root, &manifest),
+            Some(FormulasCommand::Prove { only, runs }) => {
+                prove(&root, &manifest, &runs.runs(only))
+            }
+            Some(FormulasCommand::Deps { write, runs }) => {
+                deps(&root, &manifest, &runs.runs(&[]), *write)
+            }
+            Some(FormulasCommand::Readmes) => readmes(&root, &manifest),
+        }
+    }
 }

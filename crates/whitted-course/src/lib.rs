@@ -74,6 +74,7 @@ pub mod handout;
 pub mod mistakes;
 pub mod parallel;
 pub mod poison;
+pub mod project;
 pub mod prove;
 pub mod readme;
 pub mod report;

@@ -6,8 +6,11 @@ mod common;
 
 use common::root;
 
-use serde_json::json;
 use whitted_course::{handout, manifest, mistakes, trees};
+use whitted_syllabus::tree::{
+    Crossing, FeelerNode, HitNode, LightNode, Number, Plain, RayKind, RayNode, RayTree, Sample,
+    Stop, TreeFile,
+};
 
 /// In the sources with every hand-written mutant behind its switch, each mutated region
 /// holds `if crate::__mutant::on("NAME") {` with the body as the mutant makes it, then the
@@ -79,26 +82,121 @@ fn a_mutant_that_does_not_apply_is_named() {
     );
 }
 
+/// Three equal numbers.
+fn vector(x: f64) -> [Number; 3] {
+    [Number(x); 3]
+}
+
+/// A ray of `kind` that meets `hit`; its numbers, which neither the shape nor the features
+/// of a tree read, are zero.
+fn ray(kind: RayKind, hit: Option<HitNode<Plain>>) -> RayNode<Plain> {
+    RayNode {
+        kind,
+        origin: vector(0.0),
+        direction: vector(0.0),
+        t_min: Number(0.0),
+        depth: 0,
+        weight: Number(1.0),
+        k: Number(1.0),
+        colour: vector(0.0),
+        hit,
+    }
+}
+
+/// Light `index` seen in front of a hit, with the share `share` arriving, a feeler that
+/// crosses `crossings` (each an object and its number of hits) or none, and the specular
+/// factor ρs·max(r·v, 0)^f `specular` in the green channel.
+fn light(
+    index: usize,
+    share: f64,
+    crossings: Option<&[(usize, usize)]>,
+    specular: f64,
+) -> LightNode<Plain> {
+    LightNode {
+        index,
+        position: vector(0.0),
+        attenuation: Number(1.0),
+        intensity: vector(1.0),
+        diffuse: vector(0.0),
+        specular: [Number(0.0), Number(specular), Number(0.0)],
+        unshadowed: vector(0.0),
+        in_front: true,
+        feeler: crossings.map(|crossings| FeelerNode {
+            origin: vector(0.0),
+            u_min: Number(1e-4),
+            crossings: crossings
+                .iter()
+                .map(|&(object, hits)| Crossing {
+                    object,
+                    name: None,
+                    u: vec![Number(0.2); hits],
+                    transmission: Number(0.5),
+                })
+                .collect(),
+        }),
+        share: Number(share),
+        arriving: vector(0.0),
+    }
+}
+
+/// A hit on the surface of object 0, named `name`, from outside, with `lights`, the stopped
+/// branches `stopped` and the branches traced `branches`.
+fn hit(
+    name: &str,
+    lights: Vec<LightNode<Plain>>,
+    stopped: Vec<(RayKind, Stop)>,
+    branches: Vec<RayNode<Plain>>,
+) -> HitNode<Plain> {
+    HitNode {
+        object: 0,
+        name: Some(name.into()),
+        shape: "plane".into(),
+        material: "matte".into(),
+        part: "surface".into(),
+        t: Number(1.0),
+        point: vector(0.0),
+        normal: vector(0.0),
+        entering: true,
+        ambient: None,
+        lights,
+        local: None,
+        branches,
+        stopped,
+    }
+}
+
+/// The tree of pixel (3, 1) whose one sample's camera ray is `ray`.
+fn tree_of(ray: RayNode<Plain>) -> RayTree<Plain> {
+    RayTree {
+        pixel: (3, 1),
+        chapter: 5,
+        view: "color".into(),
+        colour: vector(0.0),
+        encoding: "srgb".into(),
+        rays: 1,
+        samples: vec![Sample {
+            index: 0,
+            position: (Number(0.5), Number(0.5)),
+            ray,
+        }],
+    }
+}
+
 /// A tree of the floor lit by one light through its feeler and shadowed from another, with a
 /// mirror ray that misses.
-fn floor_tree(share: f64) -> serde_json::Value {
-    json!({
-        "pixel": [3, 1],
-        "samples": [{ "ray": {
-            "kind": "camera",
-            "hit": {
-                "object": 0, "name": "floor", "part": "surface", "entering": true,
-                "lights": [
-                    { "index": 0, "in_front": true, "share": 1.0,
-                      "feeler": { "crossings": [] } },
-                    { "index": 1, "in_front": true, "share": share,
-                      "feeler": { "crossings": [{ "object": 4, "u": [0.2, 0.3] }] } }
-                ],
-                "stopped": [{ "kind": "transmitted", "why": "total_internal_reflection" }],
-                "branches": [{ "kind": "mirror", "hit": null }]
-            }
-        }}]
-    })
+fn floor_tree(share: f64) -> RayTree<Plain> {
+    tree_of(ray(
+        RayKind::Camera,
+        Some(hit(
+            "floor",
+            vec![
+                light(0, 1.0, Some(&[]), 0.0),
+                light(1, share, Some(&[(4, 2)]), 0.0),
+            ],
+            vec![(RayKind::Transmitted, Stop::TotalInternalReflection)],
+            vec![ray(RayKind::Mirror, None)],
+        )),
+    ))
 }
 
 /// The shape of a tree changes with what its rays hit and cross, and with whether a share is
@@ -136,17 +234,15 @@ fn a_trees_shape_and_features_are_what_its_rays_meet() {
 #[test]
 fn a_highlight_that_arrives_is_a_feature() {
     let tree = |specular: f64, share: f64| {
-        json!({
-            "pixel": [3, 1],
-            "samples": [{ "ray": {
-                "kind": "camera",
-                "hit": {
-                    "object": 0, "name": "ball", "part": "surface", "entering": true,
-                    "lights": [{ "index": 1, "in_front": true, "share": share,
-                                 "feeler": null, "specular": [0.0, specular, 0.0] }]
-                }
-            }}]
-        })
+        tree_of(ray(
+            RayKind::Camera,
+            Some(hit(
+                "ball",
+                vec![light(1, share, None, specular)],
+                Vec::new(),
+                Vec::new(),
+            )),
+        ))
     };
     let highlight = "light 1: a highlight";
     assert!(trees::features(&tree(0.3, 1.0), (8, 4)).contains(highlight));
@@ -161,21 +257,15 @@ fn a_highlight_that_arrives_is_a_feature() {
 #[test]
 fn chapter_3s_trees_hold_a_highlight() {
     let path = root().join(trees::trees_file(3).unwrap());
-    let doc: serde_json::Value =
-        serde_json::from_str(&std::fs::read_to_string(&path).unwrap()).unwrap();
-    let largest = doc["pixels"]
-        .as_array()
-        .unwrap()
+    let file = TreeFile::<Plain>::parse(&std::fs::read_to_string(&path).unwrap()).unwrap();
+    let largest = file
+        .pixels
         .iter()
-        .flat_map(|p| p["tree"]["samples"].as_array().unwrap())
-        .flat_map(|s| {
-            s["ray"]["hit"]["lights"]
-                .as_array()
-                .cloned()
-                .unwrap_or_default()
-        })
-        .flat_map(|l| l["specular"].as_array().cloned().unwrap_or_default())
-        .filter_map(|x| x.as_f64())
+        .flat_map(|p| &p.tree.tree.samples)
+        .filter_map(|s| s.ray.hit.as_ref())
+        .flat_map(|h| &h.lights)
+        .flat_map(|l| l.specular)
+        .map(|x| x.0)
         .fold(0.0, f64::max);
     assert!(
         largest >= trees::HIGHLIGHT,

@@ -12,7 +12,7 @@
 
 use std::path::{Path, PathBuf};
 
-use super::package::{NEXTEST_VERSION, Options};
+use super::options::{NEXTEST_VERSION, Options};
 use crate::manifest::Manifest;
 use crate::{ToolError, files, layout};
 

@@ -16,7 +16,9 @@
 
 pub mod classroom;
 pub mod codegrade;
+pub mod command;
 pub mod gradescope;
+mod options;
 pub mod package;
 pub mod prairielearn;
 pub mod run;

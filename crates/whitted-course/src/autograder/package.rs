@@ -24,30 +24,11 @@
 use std::io::Write;
 use std::path::{Path, PathBuf};
 
-use super::{Platform, Settings};
+use super::Platform;
+pub use super::options::{NEXTEST_VERSION, Options};
 use crate::grade::sandbox::Level;
 use crate::manifest::Manifest;
 use crate::{ToolError, files};
-
-/// The cargo-nextest version the packages install (the one `.ci/run` installs).
-pub const NEXTEST_VERSION: &str = "0.9.143";
-
-/// What a package grades and how.
-#[derive(Clone, Debug)]
-pub struct Options {
-    /// Only this chapter, or all.
-    pub chapter: Option<u8>,
-    /// The hidden tests' directory.
-    pub hidden: Option<PathBuf>,
-    /// The time limit of one test, in seconds.
-    pub timeout: u64,
-    /// How results are shown.
-    pub settings: Settings,
-    /// The sandbox every grading of the package uses ([`Level::User`] for a platform whose
-    /// container makes no namespace; `setup.sh` then closes the project to other users);
-    /// `None` grades without one, the container then being the only sandbox.
-    pub sandbox: Option<Level>,
-}
 
 /// A file of a package: its path in the package, its text, whether it is executable.
 struct Item {

@@ -5,7 +5,9 @@
 
 use std::path::{Path, PathBuf};
 
-use super::{Grade, GradeSetup, grade};
+use super::grading::grade;
+use super::outcome::Grade;
+use super::setup::GradeSetup;
 use crate::ToolError;
 use crate::manifest::Manifest;
 

@@ -6,7 +6,10 @@
 use std::path::Path;
 use std::process::ExitCode;
 
-use super::{Grade, GradeSetup};
+use super::class::grade_class;
+use super::grading::grade;
+use super::outcome::Grade;
+use super::setup::GradeSetup;
 use crate::manifest::Manifest;
 use crate::{ToolError, files};
 
@@ -51,88 +54,97 @@ pub fn command(
             hidden.display()
         )));
     }
-    if let Some(Class {
+    if let Some(class) = class {
+        return grade_a_class(root, manifest, setup, class);
+    }
+    let submission = submission.unwrap_or(root);
+    let g = grade(root, manifest, submission, setup)?;
+    print!("{}", crate::report::table(&g, manifest));
+    write_reports(&g, manifest, None, reports.json, reports.junit, reports.csv)?;
+    Ok(ExitCode::SUCCESS)
+}
+
+/// Grades every submission of `class`, writes each one's reports in a directory of its own
+/// and the class's gradebook, and says how long the submissions took.
+fn grade_a_class(
+    root: &Path,
+    manifest: &Manifest,
+    setup: &GradeSetup,
+    class: Class<'_>,
+) -> Result<ExitCode, ToolError> {
+    let Class {
         dir: class,
         out,
         jobs,
-    }) = class
-    {
-        std::fs::create_dir_all(out).map_err(|e| ToolError::io(out, e))?;
-        let out = out.canonicalize().map_err(|e| ToolError::io(out, e))?;
-        let jobs =
-            jobs.unwrap_or_else(|| std::thread::available_parallelism().map_or(1, usize::from));
-        let start = std::time::Instant::now();
-        let entries =
-            super::grade_class(root, manifest, class, setup, jobs, &|e| match &e.grade {
-                Ok(g) => eprintln!(
-                    "graded {}: {} / {} points in {:.0} s",
-                    e.student,
-                    crate::report::points(g.score()),
-                    crate::report::points(g.max()),
-                    g.elapsed.as_secs_f64()
-                ),
-                Err(why) => eprintln!("could not grade {}: {why}", e.student),
-            })?;
-        let chapters: Vec<u8> = setup.chapter.map_or_else(
-            || crate::syllabus::CHAPTERS.iter().map(|c| c.number).collect(),
-            |c| vec![c],
-        );
-        let mut csv = crate::report::csv_header(manifest, &chapters) + "\n";
-        for e in &entries {
-            match &e.grade {
-                Ok(g) => {
-                    let dir = out.join(&e.student);
-                    std::fs::create_dir_all(&dir).map_err(|err| ToolError::io(&dir, err))?;
-                    write_reports(
-                        g,
-                        manifest,
-                        Some(&dir.join("report.txt")),
-                        Some(&dir.join("results.json")),
-                        Some(&dir.join("junit.xml")),
-                        None,
-                    )?;
-                    csv += &crate::report::csv_row(g, manifest);
-                }
-                Err(why) => {
-                    csv += &format!("{},0,,\"not graded: {}\"", e.student, why.replace('"', "'"))
-                }
+    } = class;
+    std::fs::create_dir_all(out).map_err(|e| ToolError::io(out, e))?;
+    let out = out.canonicalize().map_err(|e| ToolError::io(out, e))?;
+    let jobs = jobs.unwrap_or_else(|| std::thread::available_parallelism().map_or(1, usize::from));
+    let start = std::time::Instant::now();
+    let entries = grade_class(root, manifest, class, setup, jobs, &|e| match &e.grade {
+        Ok(g) => eprintln!(
+            "graded {}: {} / {} points in {:.0} s",
+            e.student,
+            crate::report::points(g.score()),
+            crate::report::points(g.max()),
+            g.elapsed.as_secs_f64()
+        ),
+        Err(why) => eprintln!("could not grade {}: {why}", e.student),
+    })?;
+    let chapters: Vec<u8> = setup.chapter.map_or_else(
+        || crate::syllabus::CHAPTERS.iter().map(|c| c.number).collect(),
+        |c| vec![c],
+    );
+    let mut csv = crate::report::csv_header(manifest, &chapters) + "\n";
+    for e in &entries {
+        match &e.grade {
+            Ok(g) => {
+                let dir = out.join(&e.student);
+                std::fs::create_dir_all(&dir).map_err(|err| ToolError::io(&dir, err))?;
+                write_reports(
+                    g,
+                    manifest,
+                    Some(&dir.join("report.txt")),
+                    Some(&dir.join("results.json")),
+                    Some(&dir.join("junit.xml")),
+                    None,
+                )?;
+                csv += &crate::report::csv_row(g, manifest);
             }
-            csv.push('\n');
+            Err(why) => {
+                csv += &format!("{},0,,\"not graded: {}\"", e.student, why.replace('"', "'"))
+            }
         }
-        files::write_file(&out.join("class.csv"), csv.as_bytes())?;
-        let graded: Vec<&Grade> = entries
-            .iter()
-            .filter_map(|e| e.grade.as_ref().ok())
-            .collect();
-        // the first grading of each worker builds the dependencies: the median is of the rest
-        let later = if graded.len() > jobs {
-            &graded[jobs..]
-        } else {
-            &graded[..]
-        };
-        let median = |f: &dyn Fn(&Grade) -> std::time::Duration| {
-            let mut t: Vec<f64> = later.iter().map(|g| f(g).as_secs_f64()).collect();
-            t.sort_by(f64::total_cmp);
-            t.get(t.len() / 2).copied().unwrap_or(0.0)
-        };
-        println!(
-            "graded {} of {} submissions in {:.0} s ({jobs} at a time); after each worker's first, the median submission took {:.1} s: splice {:.1} s, build {:.1} s, test run {:.1} s; reports in {}, the gradebook in {}",
-            graded.len(),
-            entries.len(),
-            start.elapsed().as_secs_f64(),
-            median(&|g| g.elapsed),
-            median(&|g| g.timings.splice),
-            median(&|g| g.timings.build),
-            median(&|g| g.timings.run),
-            out.display(),
-            out.join("class.csv").display()
-        );
-        return Ok(ExitCode::SUCCESS);
+        csv.push('\n');
     }
-    let submission = submission.unwrap_or(root);
-    let g = super::grade(root, manifest, submission, setup)?;
-    print!("{}", crate::report::table(&g, manifest));
-    write_reports(&g, manifest, None, reports.json, reports.junit, reports.csv)?;
+    files::write_file(&out.join("class.csv"), csv.as_bytes())?;
+    let graded: Vec<&Grade> = entries
+        .iter()
+        .filter_map(|e| e.grade.as_ref().ok())
+        .collect();
+    // the first grading of each worker builds the dependencies: the median is of the rest
+    let later = if graded.len() > jobs {
+        &graded[jobs..]
+    } else {
+        &graded[..]
+    };
+    let median = |f: &dyn Fn(&Grade) -> std::time::Duration| {
+        let mut t: Vec<f64> = later.iter().map(|g| f(g).as_secs_f64()).collect();
+        t.sort_by(f64::total_cmp);
+        t.get(t.len() / 2).copied().unwrap_or(0.0)
+    };
+    println!(
+        "graded {} of {} submissions in {:.0} s ({jobs} at a time); after each worker's first, the median submission took {:.1} s: splice {:.1} s, build {:.1} s, test run {:.1} s; reports in {}, the gradebook in {}",
+        graded.len(),
+        entries.len(),
+        start.elapsed().as_secs_f64(),
+        median(&|g| g.elapsed),
+        median(&|g| g.timings.splice),
+        median(&|g| g.timings.build),
+        median(&|g| g.timings.run),
+        out.display(),
+        out.join("class.csv").display()
+    );
     Ok(ExitCode::SUCCESS)
 }
 

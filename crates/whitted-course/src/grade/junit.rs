@@ -3,7 +3,7 @@
 //!
 //! Course book: [The instructor's guide](../../../../../docs/book/instructor-guide.html) (`docs/src/instructor-guide.md`).
 
-use super::{Status, TestResult};
+use super::test_result::{Status, TestResult};
 use crate::ToolError;
 use crate::cargo::test_name;
 use crate::manifest::Manifest;

@@ -6,9 +6,9 @@
 use std::path::Path;
 use std::time::Duration;
 
-use super::TestResult;
 use super::junit::parse_junit;
 use super::sandbox::Sandbox;
+use super::test_result::TestResult;
 use crate::manifest::Manifest;
 use crate::{ToolError, cargo, files, layout};
 

@@ -1,0 +1,152 @@
+//! The command line of `whitted grade`, and of the sandbox every grading command takes
+//! (`--sandbox LEVEL`, `--unsandboxed`).
+//!
+//! Course book: [The instructor's guide](../../../../../docs/book/instructor-guide.html) (`docs/src/instructor-guide.md`).
+
+use std::path::PathBuf;
+use std::process::ExitCode;
+use std::time::Duration;
+
+use super::command::{Class, Reports, command};
+use super::sandbox::Level;
+use super::setup::{GradeSetup, SandboxSetup};
+use crate::{ToolError, syllabus};
+
+/// The arguments of `whitted grade`.
+#[derive(clap::Args)]
+pub struct GradeArgs {
+    /// The student's copy of the project [default: the current project].
+    #[arg(value_name = "DIR", conflicts_with = "class")]
+    submission: Option<PathBuf>,
+    /// Grade only this chapter's exercises (1-5).
+    #[arg(long, value_name = "N",
+          value_parser = clap::value_parser!(u8).range(i64::from(syllabus::FIRST)..=i64::from(syllabus::LAST)))]
+    chapter: Option<u8>,
+    /// The instructor's hidden tests: a directory of .rs test files, each added as a test
+    /// target; their tests are named after the exercise they check (ex_NAME_…), like the public
+    /// ones. Students' reports show their points, not their names.
+    #[arg(long, value_name = "DIR")]
+    hidden: Option<PathBuf>,
+    /// Write Gradescope's results.json here.
+    #[arg(long, value_name = "FILE")]
+    json: Option<PathBuf>,
+    /// Write a JUnit XML report here.
+    #[arg(long, value_name = "FILE")]
+    junit: Option<PathBuf>,
+    /// Write the gradebook's header and this submission's row here (CSV).
+    #[arg(long, value_name = "FILE")]
+    csv: Option<PathBuf>,
+    /// The time limit of one test, in seconds.
+    #[arg(long, value_name = "SECONDS", default_value_t = 20,
+          value_parser = clap::value_parser!(u64).range(1..=3600))]
+    timeout: u64,
+    /// Grade every submission of a class: each subdirectory of DIR.
+    #[arg(long, value_name = "DIR", requires = "out")]
+    class: Option<PathBuf>,
+    /// With --class: where the reports go (one directory per student, and class.csv).
+    #[arg(long, value_name = "DIR", requires = "class")]
+    out: Option<PathBuf>,
+    /// With --class: submissions graded at a time [default: the cores].
+    #[arg(long, value_name = "N", requires = "class",
+          value_parser = clap::value_parser!(u64).range(1..=64))]
+    jobs: Option<u64>,
+    /// Where cargo builds, kept between gradings so the dependencies are built once (a class
+    /// gives each of its --jobs its own directory in it) [default: target/grade in the
+    /// instructor's project].
+    #[arg(long, value_name = "DIR")]
+    target_dir: Option<PathBuf>,
+    /// Keep each graded copy (its path is printed).
+    #[arg(long)]
+    keep: bool,
+    /// Leave out the feedback of each chapter that lost points (its picture beside the book's
+    /// figure, and the first wrong number of its ray trees): a faster grading, reports of the
+    /// tests alone.
+    #[arg(long)]
+    no_feedback: bool,
+    #[command(flatten)]
+    sandbox: SandboxArgs,
+    /// The instructor's project, whose tests and manifest grade [default: the nearest
+    /// Cargo.toml at or above the current directory].
+    #[arg(long, value_name = "DIR")]
+    root: Option<PathBuf>,
+}
+
+impl GradeArgs {
+    /// Runs `whitted grade` as the arguments ask: one submission, or a class.
+    pub fn run(&self) -> Result<ExitCode, ToolError> {
+        let root = crate::project::root(self.root.as_ref())?;
+        let manifest = crate::cli::read_manifest(&root)?;
+        let setup = GradeSetup {
+            chapter: self.chapter,
+            hidden: self.hidden.clone(),
+            timeout: Duration::from_secs(self.timeout),
+            // kept between gradings: the dependencies are built once
+            target_dir: Some(
+                self.target_dir
+                    .clone()
+                    .unwrap_or_else(|| root.join("target").join("grade")),
+            ),
+            keep: self.keep,
+            sandbox: self.sandbox.setup()?,
+            render: false,
+            feedback: !self.no_feedback,
+            screen: true,
+        };
+        let class = match (&self.class, &self.out) {
+            (Some(dir), Some(out)) => Some(Class {
+                dir,
+                out,
+                jobs: self.jobs.map(|j| j as usize),
+            }),
+            _ => None,
+        };
+        let reports = Reports {
+            json: self.json.as_deref(),
+            junit: self.junit.as_deref(),
+            csv: self.csv.as_deref(),
+        };
+        command(
+            &root,
+            &manifest,
+            &setup,
+            self.submission.as_deref(),
+            class,
+            reports,
+        )
+    }
+}
+
+/// The sandbox of a grading.
+#[derive(clap::Args, Clone, Copy)]
+pub struct SandboxArgs {
+    /// The sandbox: bubblewrap's namespaces, or (as root, where no namespace can be made)
+    /// the tests as a user of their own with limits, the project closed to other users.
+    #[arg(long, value_enum, value_name = "LEVEL", default_value = "namespaces")]
+    sandbox: Level,
+    /// Build and run the student's code without any sandbox, with this program's rights:
+    /// only for work you trust.
+    #[arg(long, conflicts_with = "sandbox")]
+    unsandboxed: bool,
+}
+
+impl SandboxArgs {
+    /// The level asked for; `None` unsandboxed.
+    #[must_use]
+    pub fn level(self) -> Option<Level> {
+        (!self.unsandboxed).then_some(self.sandbox)
+    }
+
+    /// The sandbox of a grading at the level asked for ([`Level::Off`] unsandboxed): this
+    /// program runs each test binary, sandboxed or not, and passes a test only when libtest
+    /// reported it `ok`.
+    pub fn setup(self) -> Result<Option<SandboxSetup>, ToolError> {
+        let level = self.level().unwrap_or(Level::Off);
+        let runner = std::env::current_exe()
+            .map_err(|e| ToolError::Usage(format!("cannot find this program's path: {e}")))?;
+        Ok(Some(SandboxSetup {
+            runner,
+            worker: 0,
+            level,
+        }))
+    }
+}

@@ -1,0 +1,98 @@
+//! The build of the graded copy: the student's bodies first, each one that does not compile
+//! put back to its `todo!()` and the build tried again, so that a compile error costs only
+//! the exercise it is in; then the hidden tests.
+//!
+//! Course book: [The instructor's guide](../../../../../docs/book/instructor-guide.html) (`docs/src/instructor-guide.md`).
+
+use std::collections::BTreeMap;
+use std::path::Path;
+
+use super::blame::{blame, blame_files, build};
+use super::clean::clean;
+use super::copy::GradedCopy;
+use super::splice::{self, Spliced};
+use crate::handout::todo_statement;
+use crate::manifest::Manifest;
+use crate::{ToolError, cargo, files};
+
+/// Builds the graded copy's `public` test targets with the student's bodies in `files` (the
+/// bodies of `chapters`): an exercise whose body does not compile is noted in `notes` and
+/// put back to its `todo!()`, and the build is tried again, so that a compile error costs
+/// only the exercise it is in. Returns what concerns the whole submission: that it does not
+/// build, when no body can be blamed (none when it builds).
+pub(super) fn build_bodies(
+    copy: &GradedCopy,
+    manifest: &Manifest,
+    chapters: &[u8],
+    files: &mut [Spliced],
+    public: &[String],
+    wrapper: Option<&cargo::Wrapper>,
+    notes: &mut BTreeMap<usize, String>,
+) -> Result<Vec<String>, ToolError> {
+    loop {
+        // each file's body lines, as written, for placing the compiler's errors
+        let mut placed = Vec::with_capacity(files.len());
+        for f in files.iter() {
+            let (text, lines) = f.text();
+            files::write_if_changed(&copy.project.join(&f.file), text.as_bytes())?;
+            placed.push((f.file.clone(), lines));
+        }
+        let errors = build(&copy.project, &copy.target_dir, public, wrapper)?;
+        if errors.is_empty() {
+            return Ok(Vec::new());
+        }
+        let mut broken = blame(&placed, &errors);
+        if broken.is_empty() {
+            // not on a body's lines (an unclosed brace is reported at the end of the file):
+            // every student body of the files with errors goes back to its todo!()
+            broken = blame_files(files, &errors, |e| {
+                chapters.contains(&manifest.entries[e].chapter) && !notes.contains_key(&e)
+            });
+        }
+        if broken.is_empty() {
+            return Ok(vec![clean(&format!(
+                "the submission does not build, and not because of an exercise's body: {}",
+                errors[0].1
+            ))]);
+        }
+        for (entry, message) in broken {
+            let e = &manifest.entries[entry];
+            notes.insert(
+                entry,
+                clean(&format!(
+                    "does not compile, graded as not written: {message}"
+                )),
+            );
+            for f in files.iter_mut() {
+                for (r, body) in &mut f.regions {
+                    if r.entry == entry {
+                        *body = format!("{}{}\n", r.indent, todo_statement(e));
+                    }
+                }
+            }
+        }
+    }
+}
+
+/// Adds the instructor's hidden tests (the directory `hidden`) to the copy and builds them,
+/// once the student's crate has built for the public tests (`whole` empty); returns their
+/// test targets. Hidden tests that do not build are the instructor's to fix: they leave the
+/// copy, `whole` says so, and the public tests still count.
+pub(super) fn build_hidden(
+    copy: &GradedCopy,
+    hidden: Option<&Path>,
+    wrapper: Option<&cargo::Wrapper>,
+    whole: &mut Vec<String>,
+) -> Result<Vec<String>, ToolError> {
+    if !whole.is_empty() || hidden.is_none() {
+        return Ok(Vec::new());
+    }
+    let targets = splice::add_hidden(&copy.project, hidden)?;
+    let errors = build(&copy.project, &copy.target_dir, &targets, wrapper)?;
+    if let Some((_, first)) = errors.first() {
+        whole.push(format!("the hidden tests do not build: {first}"));
+        splice::remove_hidden(&copy.project, &copy.target_dir)?;
+        return Ok(Vec::new());
+    }
+    Ok(targets)
+}

@@ -1,0 +1,88 @@
+//! What a grading finds: each exercise's points, and the grade of the whole submission.
+//!
+//! Course book: [The instructor's guide](../../../../../docs/book/instructor-guide.html) (`docs/src/instructor-guide.md`).
+
+use std::time::Duration;
+
+use super::render::{ChapterFeedback, RenderScore};
+use super::test_result::TestResult;
+use crate::manifest::Manifest;
+
+/// One exercise's points.
+#[derive(Clone, Debug, PartialEq)]
+pub struct ExerciseScore {
+    /// The manifest entry.
+    pub entry: usize,
+    /// Points earned.
+    pub score: f64,
+    /// Points possible.
+    pub max: f64,
+    /// Its tests that passed.
+    pub passed: usize,
+    /// Its tests.
+    pub total: usize,
+    /// What the grader noticed: the body did not compile, its markers were missing …
+    pub note: Option<String>,
+}
+
+/// A graded submission.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Grade {
+    /// The submission's name (its directory's name).
+    pub student: String,
+    /// The chapters graded.
+    pub chapters: Vec<u8>,
+    /// The exercises of those chapters, in manifest order.
+    pub exercises: Vec<ExerciseScore>,
+    /// Every test run.
+    pub tests: Vec<TestResult>,
+    /// Remarks about the whole submission (it did not build at all …).
+    pub notes: Vec<String>,
+    /// How long grading took.
+    pub elapsed: Duration,
+    /// Where that time went.
+    pub timings: Timings,
+    /// The render of the leaderboard when it was asked for
+    /// ([`GradeSetup::render`](crate::grade::GradeSetup::render)): its speed and error, or why
+    /// there is none.
+    pub render: Option<Result<RenderScore, String>>,
+    /// What the student's code draws of each graded chapter that lost points, beside the
+    /// reference ([`GradeSetup::feedback`](crate::grade::GradeSetup::feedback)): the picture,
+    /// the first wrong number of the ray trees, or why the chapter cannot be drawn.
+    pub feedback: Vec<ChapterFeedback>,
+}
+
+/// Where a grading's time went.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct Timings {
+    /// Copying the project and splicing the student's bodies into it.
+    pub splice: Duration,
+    /// Building (the student's crate and the tests, the hidden ones too, each build again
+    /// after a body that did not compile).
+    pub build: Duration,
+    /// Running the tests (listing them, nextest, the sandbox).
+    pub run: Duration,
+}
+
+impl Grade {
+    /// Points earned.
+    #[must_use]
+    pub fn score(&self) -> f64 {
+        self.exercises.iter().map(|e| e.score).sum()
+    }
+
+    /// Points possible.
+    #[must_use]
+    pub fn max(&self) -> f64 {
+        self.exercises.iter().map(|e| e.max).sum()
+    }
+
+    /// Points earned and possible in chapter `chapter`.
+    #[must_use]
+    pub fn chapter(&self, manifest: &Manifest, chapter: u8) -> (f64, f64) {
+        self.exercises
+            .iter()
+            .filter(|e| manifest.entries[e.entry].chapter == chapter)
+            .fold((0.0, 0.0), |(s, m), e| (s + e.score, m + e.max))
+    }
+}

@@ -1,0 +1,72 @@
+//! How a grading is set up: which chapters, the hidden tests, the time limit, where it
+//! builds, and its sandbox.
+//!
+//! Course book: [The instructor's guide](../../../../../docs/book/instructor-guide.html) (`docs/src/instructor-guide.md`).
+
+use std::path::PathBuf;
+use std::time::Duration;
+
+use super::sandbox;
+
+/// The default time limit of one test.
+pub const DEFAULT_TIMEOUT: Duration = Duration::from_secs(20);
+
+/// How a grading is set up: which chapter, the hidden tests, the time limit, where it builds.
+#[derive(Clone, Debug)]
+pub struct GradeSetup {
+    /// Grade only this chapter (its exercises and its test file); all five when `None`.
+    pub chapter: Option<u8>,
+    /// The instructor's hidden tests: a directory of `*.rs` test files.
+    pub hidden: Option<PathBuf>,
+    /// The time limit of each test.
+    pub timeout: Duration,
+    /// Where cargo builds, kept from one grading to the next so the dependencies are built
+    /// once, with the graded copy beside the build (a class gives each worker its own
+    /// directory under it); a fresh copy with its own `target/` when `None`. Never to be used
+    /// by two gradings at once.
+    pub target_dir: Option<PathBuf>,
+    /// Keep the graded copy (its path is printed) instead of removing it.
+    pub keep: bool,
+    /// Build and run the student's code in a sandbox ([`sandbox`]); with `None` it runs with
+    /// the grader's rights.
+    pub sandbox: Option<SandboxSetup>,
+    /// Render the last graded chapter's figure with the student's code, for the leaderboard
+    /// ([`Grade::render`](crate::grade::Grade::render)).
+    pub render: bool,
+    /// For each graded chapter that lost points, render its figure with the student's code
+    /// beside the book's and compare its ray trees with the reference's
+    /// ([`Grade::feedback`](crate::grade::Grade::feedback)).
+    pub feedback: bool,
+    /// Refuse to compile a body that does more than compute
+    /// ([`screen()`](crate::grade::screen())). Always on from the command line; off only where
+    /// a test proves the second lock, the runner's, alone.
+    pub screen: bool,
+}
+
+/// What a sandboxed grading needs to know.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct SandboxSetup {
+    /// The `whitted` program, whose hidden `sandbox-run` command nextest starts each test
+    /// binary with.
+    pub runner: PathBuf,
+    /// The worker's number: as root, its tests run as user [`sandbox::FIRST_UID`] + this.
+    pub worker: usize,
+    /// Namespaces (bubblewrap), or a user of its own only.
+    pub level: sandbox::Level,
+}
+
+impl Default for GradeSetup {
+    fn default() -> Self {
+        Self {
+            chapter: None,
+            hidden: None,
+            timeout: DEFAULT_TIMEOUT,
+            target_dir: None,
+            keep: false,
+            sandbox: None,
+            render: false,
+            feedback: true,
+            screen: true,
+        }
+    }
+}
