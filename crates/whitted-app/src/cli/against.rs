@@ -1,6 +1,8 @@
 //! `--against TREES.json`: the pixels of a reference's trees (chapters/chNN_name/trees.json)
 //! traced with this code and the settings the file records, and for each pixel whose tree
 //! differs, the first quantity that does and the functions that computed it.
+//!
+//! Course book: [The ray tree of one pixel](../../../../../docs/book/inspect.html) (`docs/src/inspect.md`).
 
 use std::path::Path;
 use std::time::Instant;

@@ -2,6 +2,8 @@
 //! chapter, [`Objects`], [`Accuracy`] and [`Tracing`] from the chapter that first needs each
 //! ([`super::offers`]). Each field's doc comment is its line in `--help`, and README.md and the
 //! chapters' READMEs print that help (`tests/docs.rs` compares them).
+//!
+//! Course book: [Introduction](../../../../../docs/book/introduction.html) (`docs/src/introduction.md`).
 
 use std::path::PathBuf;
 

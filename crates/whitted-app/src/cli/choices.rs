@@ -1,6 +1,8 @@
 //! The library's closed sets of values (views, acceleration structures, offsets, encodings …)
 //! as command-line choices: [`Choice`] says how a type is offered, [`choice`] is clap's parser
 //! for it, and each type's lines of `--help` are written here, one per value.
+//!
+//! Course book: [Introduction](../../../../../docs/book/introduction.html) (`docs/src/introduction.md`).
 
 use clap::builder::PossibleValue;
 

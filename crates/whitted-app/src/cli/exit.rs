@@ -1,5 +1,7 @@
 //! How a chapter binary's run ends: [`guard`] turns an error, or the panic of an exercise not
 //! written yet, into one line on stderr and exit status 2.
+//!
+//! Course book: [Introduction](../../../../../docs/book/introduction.html) (`docs/src/introduction.md`).
 
 use std::process::ExitCode;
 

@@ -1,6 +1,8 @@
 //! The ray trees on stdout: `--inspect X,Y` prints one pixel's (as text, or JSON with
 //! `--json`), and the hidden `--inspect-grid STEP` prints a grid of them as JSON lines after a
 //! line with the settings they were traced with (`whitted trees` reads them).
+//!
+//! Course book: [The ray tree of one pixel](../../../../../docs/book/inspect.html) (`docs/src/inspect.md`).
 
 use whitted::error::Error;
 use whitted::output::Encoding;

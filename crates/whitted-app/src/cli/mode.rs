@@ -2,6 +2,8 @@
 //! one pixel's tree, print a grid of trees, trace a reference's trees, open the window, or
 //! render a PNG. The switches that do not go together are refused here, and the reference's
 //! trees of `--against` are read here, so that a bad file is reported before the scene is read.
+//!
+//! Course book: [Introduction](../../../../../docs/book/introduction.html) (`docs/src/introduction.md`).
 
 use whitted::error::Error;
 use whitted::render::inspect::against::TreeFile;

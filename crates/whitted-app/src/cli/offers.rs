@@ -1,6 +1,8 @@
 //! Which chapter first offers each group of arguments: the first chapter that needs it. The
 //! command line reads them to build a chapter's arguments, and the window's keys read them too
 //! (views from [`OBJECTS_FROM`], depth and supersampling from [`TRACING_FROM`]).
+//!
+//! Course book: [Introduction](../../../../../docs/book/introduction.html) (`docs/src/introduction.md`).
 
 use whitted::render::Chapter;
 

@@ -1,6 +1,8 @@
 //! What the command line sets before any mode runs: the scene it names (or the showcase), the
 //! image's size, and the render's [`Options`]: the scene's and the chapter's, then each
 //! argument group's switches over them.
+//!
+//! Course book: [Introduction](../../../../../docs/book/introduction.html) (`docs/src/introduction.md`).
 
 use std::path::Path;
 

@@ -2,6 +2,8 @@
 //! each group the chapter reaches ([`super::offers`]), and [`ChapterArgs`] reads back what was
 //! given. [`parsed_or_exit`] is the exit every whitted program makes when its command line
 //! cannot be read (`--help` and `--version` too).
+//!
+//! Course book: [Introduction](../../../../../docs/book/introduction.html) (`docs/src/introduction.md`).
 
 use clap::{Args, FromArgMatches};
 

@@ -3,6 +3,8 @@
 //! side and stdout gets the line that says how they differ; with `--against TREES.json` the
 //! reference's trees are traced after the render. Unless `--quiet`, stderr gets what was
 //! written and the statistics lines.
+//!
+//! Course book: [Introduction](../../../../../docs/book/introduction.html) (`docs/src/introduction.md`).
 
 use std::io::IsTerminal;
 use std::path::Path;

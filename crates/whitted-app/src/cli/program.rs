@@ -1,6 +1,8 @@
 //! A chapter binary's program from start to end: [`main`] reads the command line and [`run`]
 //! runs it under [`guard`]: the scene read and the options set, then the one mode the
 //! arguments ask for ([`Mode`]), each mode a function in a file of its own.
+//!
+//! Course book: [Introduction](../../../../../docs/book/introduction.html) (`docs/src/introduction.md`).
 
 use std::path::PathBuf;
 use std::process::ExitCode;

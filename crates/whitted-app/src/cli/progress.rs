@@ -1,5 +1,7 @@
 //! The progress bar of a long render: on stderr, only when stderr is a terminal and not with
 //! `--quiet`, and only once the render has lasted a second.
+//!
+//! Course book: [Introduction](../../../../../docs/book/introduction.html) (`docs/src/introduction.md`).
 
 use std::sync::atomic::{AtomicBool, Ordering};
 use std::time::{Duration, Instant};

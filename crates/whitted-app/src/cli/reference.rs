@@ -2,6 +2,8 @@
 //! starts. [`Reference::check`] refuses a render of another size and an output that would
 //! replace the reference; [`Reference::write_comparison`] writes the render, the reference and
 //! their difference side by side ([`crate::compare`]). The window compares with it too.
+//!
+//! Course book: [Introduction](../../../../../docs/book/introduction.html) (`docs/src/introduction.md`).
 
 use std::path::{Path, PathBuf};
 

@@ -1,5 +1,7 @@
 //! The lines on stderr after a render: [`summary`], the last one (resolution, rays by kind,
 //! time, M rays/s), and with `--stats` in a build with the `counters` feature, [`work_line`].
+//!
+//! Course book: [Introduction](../../../../../docs/book/introduction.html) (`docs/src/introduction.md`).
 
 use whitted::render;
 

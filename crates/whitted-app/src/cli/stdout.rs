@@ -1,4 +1,6 @@
 //! What the modes print on stdout (trees, the comparison's line) goes through [`print_out`].
+//!
+//! Course book: [Introduction](../../../../../docs/book/introduction.html) (`docs/src/introduction.md`).
 
 use std::path::PathBuf;
 

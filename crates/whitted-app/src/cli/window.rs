@@ -2,6 +2,8 @@
 //! a file. Without `--width` or `--height` the image is the scene's size, shrunk to fit
 //! [`WINDOW_FIT`]; the sizes (and the reference's, with `--compare`) are checked before the
 //! window opens.
+//!
+//! Course book: [The live window](../../../../../docs/book/window.html) (`docs/src/window.md`).
 
 use std::path::PathBuf;
 

@@ -1,6 +1,8 @@
 //! What a key asks for: an [`Action`], with the directions the camera [`Move`]s and [`Turn`]s
 //! in. The keymap ([`super::keys`]) binds keys to actions, and the state ([`super::state`])
 //! carries them out.
+//!
+//! Course book: [The live window](../../../../../docs/book/window.html) (`docs/src/window.md`).
 
 use whitted::render::Chapter;
 

@@ -2,6 +2,8 @@
 //! press goes ([`MOVE_SHARE`], [`TURN_DEGREES`], [`FAST`] with Shift), the camera [`moved`] or
 //! [`turned`] (never straight along its up vector), and the `[camera]` table of the scene
 //! format ([`camera_table`]).
+//!
+//! Course book: [The live window](../../../../../docs/book/window.html) (`docs/src/window.md`).
 
 use whitted::camera::Camera;
 use whitted::real::{Real, Vec3};
