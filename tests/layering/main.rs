@@ -239,7 +239,7 @@ fn the_renderer_knows_no_command_line() {
 /// The road of one pixel (`src/render/tracer.rs`) is plain: no tile, packet, mailbox or
 /// counter code in it (no word of its code names one: `shadow::blocks`, an object blocking a
 /// feeler, is not a block of pixels), and short enough to read in one sitting, the notes' step
-/// 4 (the `Query` trait and its loop over every object) included.
+/// 4 as the road asks it (`EveryObject`, its loop over every object) included.
 #[test]
 fn the_road_of_one_pixel_holds_no_speed_machinery() {
     let path = src().join("render/tracer.rs");

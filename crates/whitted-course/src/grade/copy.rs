@@ -82,8 +82,8 @@ impl GradedCopy {
 }
 
 /// Whether the project file `file` goes whole into the graded copy: what the student's crate
-/// and its tests are built from (every manifest, the lock, cargo's settings, the syllabus, the
-/// renderer with the handout's tests, the scenes), and the chapter binaries and the book's
+/// and its tests are built from (every manifest, the exercises' manifest, the lock, cargo's
+/// settings, the syllabus, the renderer with the handout's tests, the scenes), and the chapter binaries and the book's
 /// figures for the leaderboard's render: all of it in the handout too. Every other file is
 /// there empty, so that a body compiled in the copy cannot include the instructor's other
 /// files (a mutant list, a guide, tools that quote the solutions).
@@ -98,6 +98,9 @@ fn whole_in_copy(root: &Path, manifest: &Manifest, file: &Path) -> bool {
         || file.starts_with(layout::SYLLABUS)
         || file.starts_with(layout::APP)
         || file.starts_with("scenes")
+        // the renderer builds the manifest in: it says which functions computed each
+        // number of a ray tree (`render::inspect::provenance`), which the feedback names
+        || file == Path::new(whitted_learn::manifest::DEFAULT_PATH)
         || render::needs(file)
     {
         return true;
@@ -115,4 +118,35 @@ pub(super) fn run_reads(project: &Path) -> Vec<PathBuf> {
         project.join("scenes"),
         project.join(layout::core_tests()).join("golden"),
     ]
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The graded copy holds whole what the renderer builds in (the exercises' manifest, which
+    /// names the functions of a tree's numbers), and the instructor's other files empty.
+    #[test]
+    fn the_copy_holds_what_the_renderer_builds_in_and_no_more() {
+        let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("../..");
+        let manifest =
+            whitted_learn::manifest::load(&root.join(whitted_learn::manifest::DEFAULT_PATH))
+                .unwrap();
+        for (file, whole) in [
+            ("chapters/formulas.toml", true),
+            ("crates/whitted/src/render/inspect/provenance.rs", true),
+            ("chapters/ch02_generic_objects/trees.json", true),
+            (
+                "crates/whitted-course/tests/mutants/hand-written.toml",
+                false,
+            ),
+            ("docs/src/instructor-guide.md", false),
+        ] {
+            assert_eq!(
+                whole_in_copy(&root, &manifest, Path::new(file)),
+                whole,
+                "{file} whole in the graded copy"
+            );
+        }
+    }
 }

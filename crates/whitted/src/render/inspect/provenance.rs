@@ -384,6 +384,13 @@ pub fn number(x: f64) -> String {
 /// The manifest's text, as the renderer was built with it.
 const MANIFEST: &str = include_str!("../../../../../chapters/formulas.toml");
 
+// a copy of the project that leaves the manifest out would name no function for any number:
+// it does not build instead
+const _: () = assert!(
+    !MANIFEST.is_empty(),
+    "chapters/formulas.toml is empty: the renderer names the functions of the ray tree's numbers from it"
+);
+
 /// One formula of the manifest, as far as provenance reads it.
 #[derive(Debug, Deserialize)]
 struct Formula {
