@@ -264,10 +264,10 @@ impl Quantity {
     pub fn computed_by(self, place: &Place) -> Vec<&'static str> {
         let mut found: Vec<(bool, &'static str)> = manifest()
             .iter()
-            .filter_map(|f| {
-                let entries = f.computes.iter().filter(|c| c.covers(self, place));
+            .filter_map(|(function, computes)| {
+                let entries = computes.iter().filter(|c| c.covers(self, place));
                 let general = entries.map(Computes::general).reduce(|a, b| a && b)?;
-                Some((general, f.function.as_str()))
+                Some((general, function.as_str()))
             })
             .collect();
         found.sort_by_key(|(general, _)| *general);
@@ -391,12 +391,13 @@ const _: () = assert!(
     "chapters/formulas.toml is empty: the renderer names the functions of the ray tree's numbers from it"
 );
 
-/// One formula of the manifest, as far as provenance reads it.
-#[derive(Debug, Deserialize)]
+/// One formula of the manifest, as far as provenance reads it: its function and its
+/// `computes` entries as written.
+#[derive(Deserialize)]
 struct Formula {
     function: String,
     #[serde(default)]
-    computes: Vec<Computes>,
+    computes: Vec<String>,
 }
 
 /// The manifest, as far as provenance reads it.
@@ -405,14 +406,24 @@ struct Manifest {
     formula: Vec<Formula>,
 }
 
-/// The manifest's formulas, read once (a manifest that does not read gives no provenance;
-/// `tests/trees.rs` proves the committed one reads).
-fn manifest() -> &'static [Formula] {
-    static FORMULAS: OnceLock<Vec<Formula>> = OnceLock::new();
-    FORMULAS.get_or_init(|| {
-        toml::from_str::<Manifest>(MANIFEST)
-            .map(|m| m.formula)
-            .unwrap_or_default()
+/// The manifest's formulas (none when it does not read: `tests/trees.rs` proves the
+/// committed one reads).
+fn formulas() -> Vec<Formula> {
+    toml::from_str::<Manifest>(MANIFEST).map_or_else(|_| Vec::new(), |m| m.formula)
+}
+
+/// Each formula's function with what it computes, read once; an entry that does not read
+/// counts for nothing here, and [`manifest_entries`] names it.
+fn manifest() -> &'static [(String, Vec<Computes>)] {
+    static TABLE: OnceLock<Vec<(String, Vec<Computes>)>> = OnceLock::new();
+    TABLE.get_or_init(|| {
+        formulas()
+            .into_iter()
+            .map(|f| {
+                let read = f.computes.iter().filter_map(|c| Computes::parse(c).ok());
+                (f.function, read.collect())
+            })
+            .collect()
     })
 }
 
@@ -420,25 +431,14 @@ fn manifest() -> &'static [Formula] {
 /// means: the quantity and where it holds, or why this module cannot read it.
 #[must_use]
 pub fn manifest_entries() -> Vec<(String, String, Result<Computes, String>)> {
-    #[derive(Deserialize)]
-    struct Raw {
-        function: String,
-        #[serde(default)]
-        computes: Vec<String>,
-    }
-    #[derive(Deserialize)]
-    struct RawManifest {
-        formula: Vec<Raw>,
-    }
-    let Ok(raw) = toml::from_str::<RawManifest>(MANIFEST) else {
-        return Vec::new();
-    };
-    raw.formula
+    formulas()
         .into_iter()
         .flat_map(|f| {
-            f.computes
-                .into_iter()
-                .map(move |c| (f.function.clone(), c.clone(), Computes::parse(&c)))
+            let function = f.function;
+            f.computes.into_iter().map(move |c| {
+                let read = Computes::parse(&c);
+                (function.clone(), c, read)
+            })
         })
         .collect()
 }
@@ -449,8 +449,7 @@ pub fn manifest_entries() -> Vec<(String, String, Result<Computes, String>)> {
 /// of ray it belongs to (`camera`, `mirror`, `transmitted`), or for a colour the road that
 /// shades it (`ch1`: chapter 1's, whatever the view; `lit`: the colour view from chapter 3;
 /// `ch5-lit`: the colour view of chapter 5).
-#[derive(Clone, Debug, PartialEq, Deserialize)]
-#[serde(try_from = "String")]
+#[derive(Clone, Debug, PartialEq)]
 pub struct Computes {
     /// The quantity.
     pub quantity: Quantity,
@@ -539,12 +538,5 @@ impl Computes {
     pub fn covers(&self, quantity: Quantity, place: &Place) -> bool {
         self.quantity == quantity
             && (self.places.is_empty() || self.places.iter().any(|w| w.holds(place)))
-    }
-}
-
-impl TryFrom<String> for Computes {
-    type Error = String;
-    fn try_from(text: String) -> Result<Self, String> {
-        Self::parse(&text)
     }
 }

@@ -123,21 +123,22 @@ pub fn part_name(part: Part) -> String {
     }
 }
 
+/// The parts that are not numbered, as [`Part::Facet`] is.
+const WHOLE_PARTS: [Part; 6] = [
+    Part::Surface,
+    Part::Wall,
+    Part::TopCap,
+    Part::BottomCap,
+    Part::Base,
+    Part::Apex,
+];
+
 /// The part [`part_name`] words so.
 fn part_named(name: &str) -> Option<Part> {
     if let Some(i) = name.strip_prefix("facet ") {
         return i.parse().ok().map(Part::Facet);
     }
-    [
-        Part::Surface,
-        Part::Wall,
-        Part::TopCap,
-        Part::BottomCap,
-        Part::Base,
-        Part::Apex,
-    ]
-    .into_iter()
-    .find(|p| part_name(*p) == name)
+    WHOLE_PARTS.into_iter().find(|p| part_name(*p) == name)
 }
 
 /// Serde for a type written by its name: the one among `ALL` whose `name()` it is.
@@ -207,16 +208,10 @@ mod tests {
     /// Every part reads back from the name it is written by.
     #[test]
     fn a_part_reads_back_from_its_name() {
-        for part in [
-            Part::Surface,
-            Part::Wall,
-            Part::TopCap,
-            Part::BottomCap,
-            Part::Base,
-            Part::Apex,
-            Part::Facet(0),
-            Part::Facet(17),
-        ] {
+        for part in WHOLE_PARTS
+            .into_iter()
+            .chain([Part::Facet(0), Part::Facet(17)])
+        {
             let json = serde_json::to_string(&part).unwrap();
             let back: Part = serde_json::from_str(&json).unwrap();
             assert_eq!(
