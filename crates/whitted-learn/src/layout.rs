@@ -40,10 +40,18 @@ pub const LEARN_PACKAGE: &str = "whitted-learn";
 /// The instructor's course tools, which a handout does not hold.
 pub const COURSE: &str = "crates/whitted-course";
 
+/// A path of this file's constants (written with `/`) with the system's separator between its
+/// parts, so that a path shown to a student is written one way: `crates\whitted\src\light.rs`
+/// on Windows, not `crates/whitted\src\light.rs`.
+#[must_use]
+pub fn native(path: &str) -> PathBuf {
+    path.split('/').collect()
+}
+
 /// The renderer's sources, where every exercise is (`crates/whitted/src`).
 #[must_use]
 pub fn core_src() -> PathBuf {
-    Path::new(CORE).join("src")
+    native(CORE).join("src")
 }
 
 /// The renderer's crate root file (`crates/whitted/src/lib.rs`).
@@ -55,7 +63,7 @@ pub fn core_lib() -> PathBuf {
 /// The renderer's integration tests (`crates/whitted/tests`).
 #[must_use]
 pub fn core_tests() -> PathBuf {
-    Path::new(CORE).join("tests")
+    native(CORE).join("tests")
 }
 
 /// The file of the test target `name` of the renderer (`crates/whitted/tests/NAME.rs`), where a
@@ -92,4 +100,32 @@ pub fn find_root(start: &Path) -> Option<PathBuf> {
         }
     }
     any
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A path shown to a student has one separator, the system's, between every part.
+    #[test]
+    fn a_shown_path_is_written_with_one_separator() {
+        let file = core_src().join("light.rs");
+        let parts: Vec<_> = file
+            .iter()
+            .map(|p| p.to_string_lossy().into_owned())
+            .collect();
+        assert_eq!(
+            parts,
+            ["crates", "whitted", "src", "light.rs"],
+            "{}",
+            file.display()
+        );
+        let sep = std::path::MAIN_SEPARATOR;
+        let shown = file.display().to_string();
+        assert_eq!(shown, format!("crates{sep}whitted{sep}src{sep}light.rs"));
+        assert_eq!(
+            core_test_file("ch03_shading").display().to_string(),
+            format!("crates{sep}whitted{sep}tests{sep}ch03_shading.rs")
+        );
+    }
 }

@@ -125,8 +125,9 @@ pub fn write(
 
 /// Lets cargo drop from the handout's `Cargo.lock` the packages that only the instructor's
 /// crates use (`cargo metadata --offline`, which resolves from the lock without the network),
-/// so that the student's first build leaves the lock as it is. If cargo cannot, the lock stays
-/// as copied, and the first build prunes it.
+/// so that the student's first build leaves the lock as it is. Resolving reads every package's
+/// manifest, the other platforms' too (Windows' and macOS' crates), so it needs them
+/// downloaded; if cargo cannot, the lock stays as copied, and the first build prunes it.
 fn prune_lock(project: &Path) {
     let pruned = crate::cargo::command(project, None, true)
         .args(["metadata", "--offline", "--format-version", "1"])
@@ -134,7 +135,10 @@ fn prune_lock(project: &Path) {
         .stderr(std::process::Stdio::null())
         .status();
     if !pruned.is_ok_and(|s| s.success()) {
-        eprintln!("warning: cargo could not prune the handout's Cargo.lock; its first build will");
+        eprintln!(
+            "warning: cargo could not prune the handout's Cargo.lock offline (`cargo fetch` in \
+             the project downloads every platform's packages); the student's first build prunes it"
+        );
     }
 }
 

@@ -11,13 +11,15 @@ pub struct Style {
 }
 
 impl Style {
-    /// Colour when stdout is a terminal and `NO_COLOR` is unset or empty.
+    /// Colour when stdout is a terminal that shows it and `NO_COLOR` is unset or empty.
+    /// Windows' console shows ANSI colours only once its virtual terminal processing is on
+    /// (Windows 10 and later): it is switched on here, and where it cannot be, no colour.
     #[must_use]
     pub fn detect() -> Self {
-        Self::choose(
-            std::io::stdout().is_terminal(),
-            std::env::var_os("NO_COLOR").as_deref(),
-        )
+        let terminal = std::io::stdout().is_terminal();
+        // `None` off Windows, where every terminal shows them
+        let shows = terminal && anstyle_query::windows::enable_ansi_colors().unwrap_or(true);
+        Self::choose(shows, std::env::var_os("NO_COLOR").as_deref())
     }
 
     /// Colour on a terminal, unless `NO_COLOR` holds something (<https://no-color.org>).
