@@ -24,7 +24,6 @@ use std::collections::BTreeSet;
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
 
-use whitted_course::cargo::{TestOutcome, parse_libtest};
 use whitted_course::deps;
 use whitted_course::handout;
 use whitted_course::manifest::Manifest;
@@ -64,20 +63,7 @@ fn run_tests(project: &Path, m: &Manifest) -> (BTreeSet<String>, BTreeSet<String
             .env_remove("WHITTED_BLESS")
             .output()
             .unwrap();
-        let stdout = String::from_utf8_lossy(&out.stdout);
-        assert!(
-            stdout.contains("test result:"),
-            "{target} crashed: {}",
-            text(&out)
-        );
-        for (name, outcome) in parse_libtest(&stdout) {
-            let id = format!("{target}::{name}");
-            match outcome {
-                TestOutcome::Failed => failed.insert(id),
-                TestOutcome::Passed => passed.insert(id),
-                TestOutcome::Ignored => false,
-            };
-        }
+        common::sort_outcomes(&target, &out, &mut failed, &mut passed);
     }
     (failed, passed)
 }

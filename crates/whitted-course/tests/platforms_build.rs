@@ -35,7 +35,6 @@ use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
 
 use serve::{Server, TARGET, windows_path};
-use whitted_course::cargo::{TestOutcome, parse_libtest};
 use whitted_course::manifest::Manifest;
 use whitted_course::{deps, handout};
 
@@ -175,20 +174,7 @@ fn run_under_wine(
             .env_remove("WHITTED_BLESS")
             .output()
             .unwrap();
-        let stdout = String::from_utf8_lossy(&out.stdout);
-        assert!(
-            stdout.contains("test result:"),
-            "{target} did not finish under Wine: {}",
-            text(&out)
-        );
-        for (name, outcome) in parse_libtest(&stdout) {
-            let id = format!("{target}::{name}");
-            match outcome {
-                TestOutcome::Failed => failed.insert(id),
-                TestOutcome::Passed => passed.insert(id),
-                TestOutcome::Ignored => false,
-            };
-        }
+        common::sort_outcomes(target, &out, &mut failed, &mut passed);
     }
     (failed, passed)
 }

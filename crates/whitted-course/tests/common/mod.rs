@@ -75,3 +75,29 @@ pub fn one_line_error(o: &std::process::Output, context: &str) -> String {
     assert_eq!(err.lines().count(), 1, "{context}: {err}");
     err
 }
+
+/// The tests of one test executable's run (`out`, of the test target `target`), as
+/// `target::name`, into `failed` and `passed`; panics with its output when libtest did not
+/// finish (no summary line).
+pub fn sort_outcomes(
+    target: &str,
+    out: &std::process::Output,
+    failed: &mut std::collections::BTreeSet<String>,
+    passed: &mut std::collections::BTreeSet<String>,
+) {
+    use whitted_course::cargo::{TestOutcome, parse_libtest};
+    let stdout = String::from_utf8_lossy(&out.stdout);
+    assert!(
+        stdout.contains("test result:"),
+        "{target} did not finish: {stdout}{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    for (name, outcome) in parse_libtest(&stdout) {
+        let id = format!("{target}::{name}");
+        match outcome {
+            TestOutcome::Failed => failed.insert(id),
+            TestOutcome::Passed => passed.insert(id),
+            TestOutcome::Ignored => false,
+        };
+    }
+}
