@@ -12,7 +12,8 @@
 //!   cargo to build for Windows (see `platforms/wire.rs`; Wine cannot wait on a Linux program
 //!   started from a Windows one). Cargo's messages reach it with Windows paths (`Z:\…\x.exe`);
 //!   it runs the test executables, names the next exercise and draws the chapter's picture with
-//!   the chapter's `.exe`, and a body written back (in CRLF) turns that exercise green. The
+//!   the chapter's `.exe`, and a body written back (in CRLF) turns that exercise green;
+//!   `cargo learn hint` gives the next exercise's hints one more at a time. The
 //!   window's Windows backend (Win32) opens under Wine on an X server of its own (Xvfb) and
 //!   shows exactly the picture the same binary writes with `-o`.
 //! - **macOS.** A handout type-checks for `aarch64-apple-darwin` and `x86_64-apple-darwin`
@@ -458,6 +459,32 @@ fn a_handout_builds_tests_and_learns_on_windows_under_wine() {
         "exercise {} is not named next:\n{report}",
         second.id
     );
+
+    // a hint for the next exercise, twice: the second shows one more (its count kept in
+    // .whitted, written whole under Windows' file rules)
+    for shown in 1..=2 {
+        let out = wine()
+            .args([learn.as_os_str(), "hint".as_ref()])
+            .current_dir(&student)
+            .output()
+            .unwrap();
+        let said = String::from_utf8_lossy(&out.stdout);
+        assert!(
+            out.status.success() && said.starts_with(&format!("exercise {} —", second.id)),
+            "whitted-learn.exe hint: {}",
+            text(&out)
+        );
+        let count = said
+            .lines()
+            .filter(|l| l.trim_start().starts_with("hint "))
+            .count();
+        let hints = m.entries[chapter[1]].exercise.hints.len();
+        assert_eq!(
+            count,
+            shown.min(hints),
+            "hints shown the {shown}th time:\n{said}"
+        );
+    }
 
     // the window's Windows backend (Win32, through Wine's X11 driver): chapter 2's window shows
     // exactly the picture its `-o` writes
