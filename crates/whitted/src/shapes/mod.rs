@@ -212,7 +212,7 @@ impl Object {
     #[inline]
     #[must_use]
     pub fn refine(&self, ray: &Ray, mut hit: Hit, numerics: Numerics) -> Hit {
-        let surface = self.shape.surface(hit.part);
+        let surface = || self.shape.surface(hit.part);
         hit.t = refine::refine(hit.t, &self.placement, ray, numerics, surface);
         hit
     }

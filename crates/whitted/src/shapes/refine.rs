@@ -22,14 +22,15 @@
 //! (error)²/(distance to the other root), far below f32's spacing, and t is rounded to f32
 //! once. The hit's normal, part and side stay those the f32 formulas found.
 //!
-//! Only the hit a ray shows is refined, once per ray, as the query that found it carries its
-//! normal to the world ([`crate::shapes::Object::refine`]): the hits that lose to it and the
-//! feelers' hits stay as the formulas found them, so the cost is one f64 transform and a few
-//! f64 products per ray, not per ray–object test. The step is taken only where it is safe
-//! (see [`refine`]), and only with [`Numerics::Robust`]: [`Numerics::Textbook`] keeps the
-//! notes' formulas as printed, with their errors. In the f64 build, which holds the planet
-//! to R·u = 1e-12, [`refine`] returns t untouched and M⁻¹ in f64 is not kept: not one number
-//! of an f64 image changes.
+//! Only the hit a ray shows is refined, as the query that found it carries its normal to the
+//! world ([`crate::shapes::Object::refine`]): the hits that lose to it and the feelers' hits
+//! stay as the formulas found them. And the step is taken only where the f32 root has lost
+//! digits that matter, the ray's origin much farther from the object's centre than from the
+//! hit, and where it is safe (see [`refine`]): an ordinary view pays one comparison per ray,
+//! and its f32 image does not change. Only [`Numerics::Robust`] refines:
+//! [`Numerics::Textbook`] keeps the notes' formulas as printed, with their errors. In the f64
+//! build, which holds the planet to R·u = 1e-12, [`refine`] returns t untouched and M⁻¹ in f64
+//! is not kept: not one number of an f64 image changes.
 //!
 //! Course book: [The speed–accuracy trade](../../../../../docs/book/tradeoff.html) (`docs/src/tradeoff.md`).
 
@@ -87,31 +88,54 @@ impl Surface {
     }
 }
 
+/// How much farther from the object's centre than from the hit the ray's origin must be for
+/// [`refine`] to take its step (see there).
+pub const FAR_FROM_CENTRE: Real = 16.0;
+
 /// The t of the visible hit of the world `ray` with a shape placed by `placement` (found by
-/// the f32 formulas), refined by one Newton step in f64 on the equation `surface` of the part
-/// it hit, the hit point carried into object space by M⁻¹ in f64
+/// the f32 formulas), refined by one Newton step in f64 on the equation `surface()` of the
+/// part it hit, the hit point carried into object space by M⁻¹ in f64
 /// ([`Placement::wide_inv`]).
 ///
+/// The step is taken where the f32 root has lost digits that matter. Rounding the
+/// object-space origin e′ = M⁻¹e costs u·|e′| in object space, which M carries back to about
+/// u·|e − c| in the world, c = M·0 the object's centre, whatever M's scales: against the
+/// distance |d|·t to the hit, a relative error of u·|e − c|/(|d|·t). So the step is taken
+/// only when |e − c| > [`FAR_FROM_CENTRE`]·|d|·t (a planet 0.79 below an eye 1e4 from its
+/// centre); elsewhere the f32 root is already good to about 17·u, and a ray pays one
+/// comparison.
+///
 /// Along the ray F is a quadratic (linear for a plane) whose other root lies 2|F′|/|F″| away
-/// from this one; the step F/F′ is taken when it is shorter than a quarter of that, where
-/// Newton's method from t comes closer to the root it started near (not near a graze, where
-/// the two roots meet and F′ vanishes).
+/// from this one; the step F/F′ is taken when it is also shorter than a quarter of that,
+/// where Newton's method from t comes closer to the root it started near (not near a graze,
+/// where the two roots meet and F′ vanishes).
 #[cfg(feature = "f32")]
-#[inline]
+#[inline(always)]
 #[must_use]
 pub fn refine(
     t: Real,
     placement: &Placement,
     ray: &Ray,
     numerics: Numerics,
-    surface: Option<Surface>,
+    surface: impl FnOnce() -> Option<Surface>,
 ) -> Real {
-    let Some(surface) = surface else {
+    let Some(surface) = surface() else {
         return t;
     };
-    if numerics != Numerics::Robust {
-        return t;
+    let centre = placement.m().w_axis.truncate();
+    let reach = FAR_FROM_CENTRE * t;
+    let far = (ray.origin - centre).length_squared() > reach * reach * ray.dir.length_squared();
+    if far && numerics == Numerics::Robust {
+        newton_step(t, placement, ray, surface)
+    } else {
+        t
     }
+}
+
+/// The step of [`refine`], once it is to be taken (kept out of line: most rays never take it).
+#[cfg(feature = "f32")]
+#[inline(never)]
+fn newton_step(t: Real, placement: &Placement, ray: &Ray, surface: Surface) -> Real {
     // the hit point in f64, carried by M⁻¹ in f64; the direction needs no more than f32 (it
     // only gives the step's slope, to a relative 1e-7)
     let t_wide = f64::from(t);
@@ -137,7 +161,7 @@ pub fn refine(
     _placement: &Placement,
     _ray: &Ray,
     _numerics: Numerics,
-    _surface: Option<Surface>,
+    _surface: impl FnOnce() -> Option<Surface>,
 ) -> Real {
     t
 }
