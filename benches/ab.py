@@ -8,8 +8,8 @@ of the machine's speed weighs on both alike, and prints each one's median wall t
 process, as a user waits for it), the ratio of the medians (NEW / OLD: below 1 is faster), and
 the median and range of the runs' own ratios; then the same for the CPU time the process used
 (user + system), which other work on a shared machine disturbs less than the wall time. `-o` is
-pointed at a temporary file unless ARGS give one. With --threads, RAYON_NUM_THREADS is set for
-both.
+pointed at a temporary file (removed at the end) unless ARGS give one. With --threads,
+RAYON_NUM_THREADS is set for both.
 """
 import os
 import resource
@@ -44,9 +44,14 @@ def main(argv):
     env = dict(os.environ)
     if threads:
         env["RAYON_NUM_THREADS"] = threads
-    tmp = tempfile.mkdtemp(prefix="whitted-ab-")
-    if "-o" not in args:
-        args = args + ["-o", os.path.join(tmp, "out.png")]
+    with tempfile.TemporaryDirectory(prefix="whitted-ab-") as tmp:
+        if "-o" not in args:
+            args = args + ["-o", os.path.join(tmp, "out.png")]
+        return measure(binaries, args, env, runs)
+
+
+def measure(binaries, args, env, runs):
+    """Runs the two binaries in turns and prints the medians; 0."""
 
     def cpu():
         used = resource.getrusage(resource.RUSAGE_CHILDREN)
