@@ -17,7 +17,8 @@
 //! An intersection reports *every* hit along the whole line, in increasing t, each with its
 //! world-space unit normal pointing out of the object, the [`Part`] that was hit and whether
 //! the ray enters or leaves there ([`hits`]). The generic shapes are convex, so a line meets
-//! each at most twice (the plane once).
+//! each at most twice (the plane once). In the f32 build the hit a ray shows is refined in f64
+//! where f32 cannot hold it, a huge object seen from close by ([`refine`]).
 //!
 //! ```toml
 //! [[objects]]
@@ -204,9 +205,9 @@ impl Object {
 
     /// The visible hit of a world ray with the object (found by
     /// [`Object::intersect_object_space`], normal still in object space) as the road shades
-    /// it: in the f32 build its t refined by one Newton step in f64 ([`refine::refine`]), so
-    /// that a huge object seen from close by is hit where it is; in the f64 build the hit as
-    /// it is. Every query refines the one hit it answers, as it carries its normal to the
+    /// it: in the f32 build its t refined by one Newton step in f64 where f32 has lost digits
+    /// that matter ([`refine::refine`]), so that a huge object seen from close by is hit where
+    /// it is; in the f64 build the hit as it is. Every query refines the one hit it answers, as it carries its normal to the
     /// world, and nothing else: the other hits, and those of feelers, stay as the formulas
     /// found them.
     #[inline]
