@@ -6,10 +6,13 @@
 Runs OLD and NEW in turns (A B, then B A, ...) after one unmeasured run of each, so a drift
 of the machine's speed weighs on both alike, and prints each one's median wall time (the whole
 process, as a user waits for it), the ratio of the medians (NEW / OLD: below 1 is faster), and
-the median and range of the runs' own ratios. `-o` is pointed at a temporary file unless ARGS
-give one. With --threads, RAYON_NUM_THREADS is set for both.
+the median and range of the runs' own ratios; then the same for the CPU time the process used
+(user + system), which other work on a shared machine disturbs less than the wall time. `-o` is
+pointed at a temporary file (removed at the end) unless ARGS give one. With --threads,
+RAYON_NUM_THREADS is set for both.
 """
 import os
+import resource
 import statistics
 import subprocess
 import sys
@@ -41,14 +44,24 @@ def main(argv):
     env = dict(os.environ)
     if threads:
         env["RAYON_NUM_THREADS"] = threads
-    tmp = tempfile.mkdtemp(prefix="whitted-ab-")
-    if "-o" not in args:
-        args = args + ["-o", os.path.join(tmp, "out.png")]
+    with tempfile.TemporaryDirectory(prefix="whitted-ab-") as tmp:
+        if "-o" not in args:
+            args = args + ["-o", os.path.join(tmp, "out.png")]
+        return measure(binaries, args, env, runs)
+
+
+def measure(binaries, args, env, runs):
+    """Runs the two binaries in turns and prints the medians; 0."""
+
+    def cpu():
+        used = resource.getrusage(resource.RUSAGE_CHILDREN)
+        return used.ru_utime + used.ru_stime
 
     def once(binary):
-        start = time.perf_counter()
+        """The run's wall time and CPU time, in seconds."""
+        start, start_cpu = time.perf_counter(), cpu()
         subprocess.run([binary] + args + ["-q"], env=env, check=True)
-        return time.perf_counter() - start
+        return time.perf_counter() - start, cpu() - start_cpu
 
     for b in binaries:
         once(b)  # unmeasured: caches, page faults, frequency
@@ -58,13 +71,16 @@ def main(argv):
         for b in order:
             times[b].append(once(b))
     old, new = binaries
-    m_old, m_new = statistics.median(times[old]), statistics.median(times[new])
-    ratios = [n / o for o, n in zip(times[old], times[new])]
     print(f"args: {' '.join(args)}  ({runs} runs each, alternated)")
-    print(f"  median {m_old:.4f} s  old  {old}")
-    print(f"  median {m_new:.4f} s  new  {new}")
-    print(f"  new / old: {m_new / m_old:.3f} (median of run ratios {statistics.median(ratios):.3f}, "
-          f"range {min(ratios):.3f} to {max(ratios):.3f})")
+    for k, what in enumerate(["wall", "cpu"]):
+        t_old = [t[k] for t in times[old]]
+        t_new = [t[k] for t in times[new]]
+        m_old, m_new = statistics.median(t_old), statistics.median(t_new)
+        ratios = [n / o for o, n in zip(t_old, t_new)]
+        print(f"  {what}: median {m_old:.4f} s  old  {old}")
+        print(f"  {what}: median {m_new:.4f} s  new  {new}")
+        print(f"  {what}: new / old: {m_new / m_old:.3f} (median of run ratios "
+              f"{statistics.median(ratios):.3f}, range {min(ratios):.3f} to {max(ratios):.3f})")
     return 0
 
 

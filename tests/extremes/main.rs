@@ -15,6 +15,7 @@
 mod cylinder_cone;
 mod placements;
 mod plane;
+mod planet;
 mod quadratic;
 mod refraction;
 mod scenes;
@@ -45,6 +46,9 @@ mod tol {
     pub const CRITICAL_STEP: f64 = 1e-9;
     /// A vector so large (or, inverted, so small) that its squared length overflows (underflows).
     pub const HUGE: f64 = 1e200;
+    /// Relative error allowed on t where a ray from 0.79 above a sphere (a tube, a box) of
+    /// radius 1e4 meets it (tests/extremes/planet.rs): a few R·u/h = 1.4e-12.
+    pub const PLANET_REL: f64 = 1e-11;
 }
 
 /// Tolerances and problem sizes for the precision under test.
@@ -64,6 +68,9 @@ mod tol {
     pub const CRITICAL_STEP: f64 = 1e-4;
     /// A vector so large (or, inverted, so small) that its squared length overflows (underflows).
     pub const HUGE: f64 = 1e30;
+    /// Relative error allowed on t where a ray from 0.79 above a sphere (a tube, a box) of
+    /// radius 1e4 meets it (tests/extremes/planet.rs): issue 35's mark, 5e-4.
+    pub const PLANET_REL: f64 = 5e-4;
 }
 
 /// The unit roundoff of [`Real`], as f64.

@@ -172,6 +172,7 @@ pub struct Placement {
     m: Mat4,
     inv: Mat4,
     normal_matrix: Mat3,
+    wide_inv: WideInverse,
 }
 
 impl Default for Placement {
@@ -188,6 +189,7 @@ impl Placement {
             m: Mat4::IDENTITY,
             inv: Mat4::IDENTITY,
             normal_matrix: Mat3::IDENTITY,
+            wide_inv: WideInverse::of(&Mat4::IDENTITY),
         }
     }
 
@@ -218,6 +220,7 @@ impl Placement {
             m,
             inv,
             normal_matrix: Mat3::from_mat4(inv).transpose(),
+            wide_inv: WideInverse::of(&m), // the f32 build's M⁻¹ in f64 (nothing in f64)
         }
     }
     // ANCHOR_END: ch2_from_matrices
@@ -236,6 +239,13 @@ impl Placement {
         &self.inv
     }
 
+    /// M⁻¹ as the f32 build also keeps it, in f64 (see [`WideInverse`]).
+    #[inline]
+    #[must_use]
+    pub fn wide_inv(&self) -> &WideInverse {
+        &self.wide_inv
+    }
+
     /// (M⁻¹)ᵀ restricted to 3×3: carries object-space normals to world space.
     #[inline]
     #[must_use]
@@ -252,5 +262,42 @@ impl Placement {
         // BEGIN SOLUTION normal_to_world
         crate::numeric::normalize(self.normal_matrix * n_object)
         // END SOLUTION
+    }
+}
+
+/// M⁻¹ in f64, which the f32 build keeps beside its f32 M⁻¹ for [`crate::shapes::refine`].
+///
+/// A sphere of radius R is placed by M = translate · scale R, and M⁻¹ carries a point h
+/// above its surface to the distance 1 + h/R from the unit sphere's centre. In f32, whose
+/// numbers near 1 are 1.2e-7 apart, that height survives only to R·u (u = 6e-8): 6e-4 world
+/// units for R = 1e4, more than the whole error allowed on a hit 0.79 away. The f32 M⁻¹
+/// itself is M's inverse rounded, so it places the surface off by as much; M⁻¹ inverted
+/// from M in f64 carries the same points with 1e-16. In the f64 build, which holds the
+/// planet to R·u = 1e-12 without it, the type is empty and costs nothing.
+#[cfg(feature = "f32")]
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct WideInverse(pub glam::DMat4);
+
+#[cfg(feature = "f32")]
+impl WideInverse {
+    /// M⁻¹ computed from M in f64.
+    #[must_use]
+    pub fn of(m: &Mat4) -> Self {
+        Self(m.as_dmat4().inverse())
+    }
+}
+
+/// M⁻¹ in f64, which the f32 build keeps beside its f32 M⁻¹ for [`crate::shapes::refine`];
+/// empty in the f64 build, which needs nothing more (see the f32 build's documentation).
+#[cfg(not(feature = "f32"))]
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct WideInverse;
+
+#[cfg(not(feature = "f32"))]
+impl WideInverse {
+    /// Nothing to keep in the f64 build.
+    #[must_use]
+    pub fn of(_m: &Mat4) -> Self {
+        Self
     }
 }

@@ -61,8 +61,8 @@ pub fn hit_errors(planet: &Planet, samples: &[Sample], method: Method) -> Vec<Hi
     out
 }
 
-/// Shadow acne on the planet: for each offset strategy, the share of lit hit points (found by
-/// the library's method) whose feeler towards [`LIGHT`] meets the planet again, then the
+/// Shadow acne on the planet: for each offset strategy, the share of lit hit points (the
+/// library's, [`Method::Library`]) whose feeler towards [`LIGHT`] meets the planet again, then the
 /// median push of the error-bound offset (world units), then the share under the classic
 /// fixed ε when the hits and the feelers are found by the anchored fix (b′).
 pub fn acne(planet: &Planet, samples: &[Sample]) -> ([f64; 3], f64, f64) {
@@ -72,6 +72,8 @@ pub fn acne(planet: &Planet, samples: &[Sample]) -> ([f64; 3], f64, f64) {
     let (mut lit_fixed, mut blocked_fixed) = (0usize, 0usize);
     for s in samples {
         if let Some(hit) = planet.sphere.intersect(&s.ray, formula).first_after(0.0) {
+            // the hit as the road shades it (in the f32 build, its t refined)
+            let hit = planet.sphere.refine(&s.ray, hit, formula);
             let p = s.ray.at(hit.t);
             // the tracer's test: the light is on the outer side of the surface
             if hit.normal.dot(light - p) > 0.0 {

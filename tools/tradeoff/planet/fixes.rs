@@ -1,6 +1,7 @@
 //! The ways of finding a ray's nearest hit with the planet that the measurement compares: the
-//! library's generic-object method, and fixes written here for the measurement only (the
-//! library's rendering code is not changed).
+//! generic-object method alone, the library's nearest hit (the same, refined in the f32 build
+//! by one Newton step in f64: `whitted::shapes::refine`), and fixes written here for the
+//! measurement only.
 
 use glam::DVec3;
 use whitted::ray::Ray;
@@ -13,9 +14,13 @@ use super::setup::{Planet, wide3};
 /// A way of finding the nearest hit.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Method {
-    /// The library's: the ray carried into object space by M⁻¹, the unit sphere there
-    /// ([`whitted::shapes::Shape::intersect_placed`], robust formulas).
+    /// The generic-object method alone: the ray carried into object space by M⁻¹, the unit
+    /// sphere there ([`whitted::shapes::Shape::intersect_placed`], robust formulas).
     Generic,
+    /// The library's nearest hit: [`Method::Generic`], then [`whitted::shapes::Object::refine`],
+    /// which in the f32 build refines t by one Newton step in f64 (fix (c₂) on the one hit a
+    /// ray shows) and in the f64 build leaves it.
+    Library,
     /// (b) In world space relative to the centre C: f = e − C, a·t² + 2b·t + c = 0 with
     /// b = f·d and c = |f|² − R² (robust discriminant and roots).
     Centre,
@@ -35,9 +40,10 @@ pub enum Method {
 }
 
 impl Method {
-    /// Every method, the library's first.
-    pub const ALL: [Method; 6] = [
+    /// Every method, the generic-object method and the library's first.
+    pub const ALL: [Method; 7] = [
         Method::Generic,
+        Method::Library,
         Method::Centre,
         Method::Anchored,
         Method::WideTransform,
@@ -49,6 +55,7 @@ impl Method {
     pub fn name(self) -> &'static str {
         match self {
             Method::Generic => "generic",
+            Method::Library => "library",
             Method::Centre => "centre",
             Method::Anchored => "anchored",
             Method::WideTransform => "f64-transform",
@@ -67,6 +74,11 @@ impl Method {
                 .intersect_object_space(ray, formula)
                 .first_after(0.0)
                 .map(|h| h.t),
+            Method::Library => planet
+                .sphere
+                .intersect_object_space(ray, formula)
+                .first_after(0.0)
+                .map(|h| planet.sphere.refine(ray, h, formula).t),
             Method::Centre => nearest_root(centre_roots(planet, ray)),
             Method::Anchored => nearest_root(anchored_roots(planet, ray)),
             Method::WideTransform => {

@@ -10,9 +10,11 @@
 //!
 //! - how far the hit found lies from the true surface, and how far along the ray from the
 //!   true hit (against an f64 reference computed in world space, see [`truth`]), for the
-//!   library's method and for the fixes of [`fixes`];
-//! - the share of lit hit points whose feeler ray meets the planet again (shadow acne) under
-//!   each offset strategy, and how far the error-bound offset pushes feelers out;
+//!   generic-object method alone, for the library's nearest hit (refined in the f32 build)
+//!   and for the fixes of [`fixes`];
+//! - the share of the library's lit hit points whose feeler ray meets the planet again
+//!   (shadow acne) under each offset strategy, and how far the error-bound offset pushes
+//!   feelers out;
 //! - the time per ray of each method.
 //!
 //! The sphere is placed as the scene file places `sphere = { center = [0, −R, 0], radius = R }`

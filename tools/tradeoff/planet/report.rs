@@ -44,6 +44,9 @@ fn cell(e: &HitError) -> String {
 /// The unit roundoff of each precision.
 const U32: f64 = f32::EPSILON as f64 / 2.0;
 const U64: f64 = f64::EPSILON / 2.0;
+/// The ε of the *fixed* offset in the acne measurement (a no-op cast in the f64 build).
+#[allow(clippy::unnecessary_cast)]
+const EPSILON: f64 = whitted::offset::Offset::FIXED_EPSILON as f64;
 
 /// The Markdown section, from the f64 and the f32 worker's measurements.
 pub fn section(wide: &Measured, narrow: &Measured) -> String {
@@ -127,9 +130,9 @@ pub fn section(wide: &Measured, narrow: &Measured) -> String {
         })
         .collect();
     w(format!(
-        "The library's method (table: the largest distance of a hit point from the true surface, \
-         then, in f32, the largest error along the ray at each angle; the hits lie {} units from the \
-         camera at {}°):",
+        "The generic-object method alone (table: the largest distance of a hit point from the true \
+         surface, then, in f32, the largest error along the ray at each angle; the hits lie {} units \
+         from the camera at {}°):",
         distances.join(", "),
         ANGLES.map(|a| format!("{a}")).join(", "),
     ));
@@ -161,28 +164,37 @@ pub fn section(wide: &Measured, narrow: &Measured) -> String {
     w(String::new());
 
     // acne
-    // a fixed ε without acne where the error is largest is luck, not accuracy
-    let largest = RADII[RADII.len() - 1];
-    let luck = match acne_at(narrow, largest) {
-        Some(a) if a.1[0] == 0.0 => format!(
-            " (At R = {} the fixed ε shows no acne by luck of the rounding, not by accuracy: the \
-             hit points all round to object-space points exactly on the unit sphere, so a feeler \
-             finds its own surface at t = 0, which does not count; the points are still {} off.)",
-            radius(largest),
-            num(narrow.worst(largest, Method::Generic).surface),
+    // a fixed ε without acne where it is below R·u is luck, not accuracy
+    let lucky: Vec<String> = RADII
+        .iter()
+        .filter(|&&r| r * U32 > EPSILON && acne_at(narrow, r).is_some_and(|a| a.1[0] == 0.0))
+        .map(|&r| radius(r))
+        .collect();
+    let luck = match lucky.as_slice() {
+        [] => String::new(),
+        [one] => format!(
+            " (At R = {one} the fixed ε shows no acne by luck of the rounding of these feelers' \
+             starts, not by accuracy: ε = {EPSILON:.0e} is below R·u there.)"
         ),
-        _ => String::new(),
+        [first @ .., last] => format!(
+            " (At R = {} and {last} the fixed ε shows no acne by luck of the rounding of these \
+             feelers' starts, not by accuracy: ε = {EPSILON:.0e} is below R·u there.)",
+            first.join(", ")
+        ),
     };
     w(format!(
-        "What a picture shows: shading computed at points that wander by R·u from pixel to pixel (a \
-         bumpy, noisy ground), and shadow acne. A feeler ray towards a light high above (at ({}, {}, {})) \
-         starts from a hit point that may lie below the surface, and meets the planet it leaves. The \
-         table gives the share of lit hit points whose feeler is blocked under each offset strategy \
-         (ε = 1e-4 for *fixed* and *scaled*), and how far the default *error-bound* offset pushes the \
-         feeler out (the median over the points): it avoids the acne by pushing by a bound on the \
-         error, which grows like R·u too. At R = {} in f32 that is {} units: the feeler starts that \
-         far above the ground and passes over anything lower standing there, which then casts no \
-         shadow.{}",
+        "Left at that, a picture shows shading computed at points that wander by R·u from pixel to \
+         pixel (a bumpy, noisy ground), and shadow acne: a feeler ray towards a light high above \
+         (at ({}, {}, {})) starts from a hit point that may lie below the surface, and meets the \
+         planet it leaves. The f32 build refines the hit each ray shows (see *What the f32 build \
+         does* below), which puts the shading points and the feelers' starts back on the surface; \
+         but a feeler is tested against the planet by the method alone, which knows its start only \
+         to R·u, so an offset below R·u may still let it meet the planet it leaves. The table gives, for the hit points as the library shades them, the share \
+         of lit ones whose feeler is blocked under each offset strategy (ε = 1e-4 for *fixed* and \
+         *scaled*), and how far the default *error-bound* offset pushes the feeler out (the median \
+         over the points): it avoids the acne by pushing by a bound on the error, which grows like \
+         R·u too. At R = {} in f32 that is {} units: the feeler starts that far above the ground and \
+         passes over anything lower standing there, which then casts no shadow.{}",
         LIGHT[0],
         LIGHT[1],
         LIGHT[2],
@@ -216,16 +228,19 @@ pub fn section(wide: &Measured, narrow: &Measured) -> String {
     // fixes
     w("### What fixes it, and at what cost".into());
     w(String::new());
-    w("The same rays in f32, found by the library's method and by four alternatives written in the \
-       tool for this measurement (`tools/tradeoff/planet/fixes.rs`; the library is unchanged): the \
+    w("The same rays in f32, found by the generic-object method alone, by the library (the same \
+       method, then the f32 build's refinement of the hit a ray shows, below), and by four \
+       alternatives written in the tool for this measurement (`tools/tradeoff/planet/fixes.rs`): the \
        largest distance of a hit point from the true surface over all angles, and the time per ray \
-       to find the nearest hit (one thread, the fastest of 15 passes over every radius). The library's \
-       method does more than the fixes (it returns both hits, each with its normal), so compare the \
-       fixes with each other, and the f64 row with the f32 row for what f64 costs."
+       to find the nearest hit (one thread, the fastest of 15 passes over every radius). The method \
+       alone and the library do more than the fixes (they return both hits, each with its normal), \
+       so compare the fixes with each other, the library with the method alone for what the \
+       refinement costs, and the f64 row with the f32 row for what f64 costs."
         .into());
     w(String::new());
     let fixes = [
-        (Method::Generic, "library: M⁻¹, unit sphere"),
+        (Method::Generic, "M⁻¹, unit sphere, alone"),
+        (Method::Library, "library: the same, hit refined"),
         (Method::Centre, "(b) world, from the centre"),
         (Method::Anchored, "(b′) world, from a surface point"),
         (Method::WideTransform, "(c₁) M⁻¹ in f64 only"),
@@ -279,16 +294,24 @@ pub fn section(wide: &Measured, narrow: &Measured) -> String {
              transform and the quadratic in f64** for this object fixes it ({}): the object-space \
              numbers then carry f64's 1e-16, and only t is rounded to f32. The cost is f64 arithmetic \
              and converting the ray to f64 and t back (the ns rows); a CPU's scalar f64 is about as fast as f32, but SIMD lanes \
-             and GPUs hold half as many f64.",
+             and GPUs hold half as many f64. The library's f32 build takes this fix for the one hit a \
+             ray shows, as one Newton step from the f32 root rather than a second solution \
+             (*library*: {} at R = {}, {} at R = {}: one step leaves about the square of the f32 \
+             root's error over the distance to the far root).",
             at(Method::WideTransform),
             at(Method::Wide),
+            num(narrow.worst(RADII[1], Method::Library).surface),
+            radius(RADII[1]),
+            at(Method::Library),
+            radius(big),
         ),
         format!(
             "- **(d) A plane instead of the planet**: the generic plane z = 0 is placed by an exact \
              quarter turn, with no scale, so t = −e_z/d_z is as exact as one division ({}). The plane \
              is not the sphere: it stands x²/2R above it at a distance x along the ground, 5 mm at \
              100 units for R = 1e6, 0.5 units at 1000. A huge *box* does not help: its face sits at \
-             1 in object space, and 1 − (1 + 1/R) cancels like the sphere's c.",
+             1 in object space, and 1 − (1 + 1/R) cancels like the sphere's c (the f32 build refines \
+             a facet's hit as it does the sphere's).",
             at(Method::Plane),
         ),
         "- **(a) Moving the ray's origin near the object before transforming** (start at the \
@@ -301,15 +324,59 @@ pub fn section(wide: &Measured, narrow: &Measured) -> String {
         w(line);
     }
     w(String::new());
+    library(&mut w, wide, narrow);
     w(format!(
         "In short: in f32, keep the numbers a test subtracts of the size of the distances that \
          matter. A planet should be a plane near the camera, or be intersected from a point of its \
-         surface, or in f64; the error-bound offset keeps the shadows free of acne only by pushing \
-         feelers out by a bound that grows like R·u ({} units at R = {}). In f64 the method holds to R·u = {} at R = {}.",
+         surface, or in f64 (the f32 build does the last for the hit each ray shows); the \
+         error-bound offset keeps the shadows free of acne only by pushing feelers out by a bound \
+         that grows like R·u ({} units at R = {}). In f64 the method holds to R·u = {} at R = {}.",
         big_acne.map_or("–".into(), |a| num(a.2)),
         radius(big),
         num(wide.worst(big, Method::Generic).surface),
         radius(big),
     ));
     md
+}
+
+/// The subsection on what the f32 build does at the planet: the refinement of the hit each ray
+/// shows, its effect and its cost per ray from the measurements, then the side-by-side timings
+/// of whole renders, measured apart (`tradeoff-f32-cost.md`, included by mdBook).
+fn library(w: &mut impl FnMut(String), wide: &Measured, narrow: &Measured) {
+    let at = |r: f64, m: Method| num(narrow.worst(r, m).surface);
+    let (small, big) = (RADII[1], RADII[RADII.len() - 2]);
+    w("### What the f32 build does".into());
+    w(String::new());
+    w(format!(
+        "The f32 build takes fix (c₂) for the one hit each ray shows \
+         (`crates/whitted/src/shapes/refine.rs`). Once the notes' formulas have found the nearest \
+         hit in f32, the hit point e + d·t is carried into object space by M⁻¹ held in f64 \
+         (inverted from M in f64 when the object is placed), the generic equation F of the part hit \
+         (|P|² − 1 for the sphere) is evaluated there in f64, and t moves by one Newton step, \
+         −F/(∇F·d′), rounded to f32 once. It does so only where the f32 root has lost digits that \
+         matter: where the ray's origin is more than {} times farther from the object's centre than \
+         from the hit (u·|e − c| against |d|·t), as from an eye near a planet; elsewhere a ray pays \
+         one comparison, and the scenes above render as they would without it. The step starts \
+         from the root the student's formulas found, so they still find every hit; the hits that \
+         lose, and the feelers' hits, are left as they are; the plane z = 0, whose t subtracts \
+         nothing, is not refined; and the f64 build does none of it (its images are the same, bit \
+         for bit). On the planet the largest distance of a \
+         hit point from the surface goes in f32 from {} to {} at R = {}, from {} to {} at R = {}, \
+         for {:.1} ns per ray against {:.1} for the method alone (the table above; in the f64 build \
+         {:.1} against {:.1}, the same work).",
+        whitted::shapes::refine::FAR_FROM_CENTRE,
+        at(small, Method::Generic),
+        at(small, Method::Library),
+        radius(small),
+        at(big, Method::Generic),
+        at(big, Method::Library),
+        radius(big),
+        narrow.cost(Method::Library),
+        narrow.cost(Method::Generic),
+        wide.cost(Method::Library),
+        wide.cost(Method::Generic),
+    ));
+    w(String::new());
+    w("{{#include tradeoff-f32-cost.md}}".into());
+    w(String::new());
 }

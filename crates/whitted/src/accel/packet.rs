@@ -148,8 +148,8 @@ impl Accelerator {
                 }
             });
         }
-        for (out, best) in out.iter_mut().zip(best) {
-            *out = best.nearest(objects);
+        for ((out, best), ray) in out.iter_mut().zip(best).zip(rays) {
+            *out = best.nearest(objects, ray, numerics);
         }
     }
 

@@ -35,15 +35,22 @@ impl Best {
         }
     }
 
-    /// The nearest hit found, its normal carried to the world.
-    #[inline]
-    pub(super) fn nearest(self, objects: &[Object]) -> Option<Nearest> {
-        self.hit.map(|mut hit| {
-            hit.normal = objects[self.object].placement.normal_to_world(hit.normal);
-            Nearest {
-                hit,
-                object: self.object,
-            }
+    /// The nearest hit found for `ray`, its normal carried to the world (and its t refined,
+    /// in the f32 build: see [`Object::refine`]).
+    #[inline(always)]
+    pub(super) fn nearest(
+        self,
+        objects: &[Object],
+        ray: &Ray,
+        numerics: Numerics,
+    ) -> Option<Nearest> {
+        let hit = self.hit?;
+        let object = &objects[self.object];
+        let mut hit = object.refine(ray, hit, numerics);
+        hit.normal = object.placement.normal_to_world(hit.normal);
+        Some(Nearest {
+            hit,
+            object: self.object,
         })
     }
 
@@ -217,7 +224,7 @@ impl Accelerator {
                 }
             }
         }
-        best.nearest(objects)
+        best.nearest(objects, ray, numerics)
     }
 
     /// Tests the objects without a box, which every ray is tested against.

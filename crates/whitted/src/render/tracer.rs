@@ -76,10 +76,12 @@ impl Query for EveryObject<'_> {
                 nearest = Some(Nearest { hit, object: i });
             }
         }
-        // the winner's normal, and only the winner's, carried to the world: (M⁻¹)ᵀ·n′
+        // the winner's normal, and only the winner's, carried to the world: (M⁻¹)ᵀ·n′ (and
+        // its t refined, in the f32 build: see `Object::refine`)
         nearest.map(|mut n| {
-            let placement = &self.scene.objects[n.object].placement;
-            n.hit.normal = placement.normal_to_world(n.hit.normal);
+            let object = &self.scene.objects[n.object];
+            n.hit = object.refine(ray, n.hit, self.numerics);
+            n.hit.normal = object.placement.normal_to_world(n.hit.normal);
             n
         })
     }

@@ -17,7 +17,8 @@
 //! An intersection reports *every* hit along the whole line, in increasing t, each with its
 //! world-space unit normal pointing out of the object, the [`Part`] that was hit and whether
 //! the ray enters or leaves there ([`hits`]). The generic shapes are convex, so a line meets
-//! each at most twice (the plane once).
+//! each at most twice (the plane once). In the f32 build the hit a ray shows is refined in f64
+//! where f32 cannot hold it, a huge object seen from close by ([`refine`]).
 //!
 //! ```toml
 //! [[objects]]
@@ -33,6 +34,7 @@ pub mod hits;
 pub mod plane;
 pub mod polyhedron;
 pub mod quadratic;
+pub mod refine;
 pub mod sphere;
 
 pub use hits::{Hit, Hits, Part};
@@ -42,6 +44,7 @@ pub use quadratic::Numerics;
 use crate::ray::Ray;
 use crate::real::{Mat4, Real, Vec3};
 use crate::transform::Placement;
+use refine::Surface;
 
 /// The nearest hit of a ray over the objects of a scene: the hit (world normal) and the index
 /// of the object hit.
@@ -112,6 +115,30 @@ impl Shape {
     }
     // ANCHOR_END: ch2_intersect_local
 
+    /// The generic equation of the shape's `part`, which [`refine::refine`] evaluates (in the
+    /// f32 build); `None` where there is nothing to refine: the plane z = 0, whose t =
+    /// −e′_z/d′_z subtracts nothing, a point (the cone's apex), a part the shape does not
+    /// have.
+    #[must_use]
+    pub fn surface(&self, part: Part) -> Option<Surface> {
+        match (self, part) {
+            (Shape::Sphere, _) => Some(Surface::Sphere),
+            // z = 0 subtracts nothing: t = −e′_z/d′_z keeps every digit (no refinement)
+            (Shape::Plane, _) => None,
+            (Shape::Cylinder, Part::TopCap) => Some(Surface::Level(1.0)),
+            (Shape::Cylinder, Part::BottomCap) => Some(Surface::Level(-1.0)),
+            (Shape::Cylinder, _) => Some(Surface::Tube),
+            (Shape::Cone, Part::Base) => Some(Surface::Level(-1.0)),
+            (Shape::Cone, Part::Apex) => None,
+            (Shape::Cone, _) => Some(Surface::Cone),
+            (Shape::Polyhedron(poly), Part::Facet(i)) => poly
+                .facets()
+                .get(i as usize)
+                .map(|f| Surface::Facet(f.normal(), f.d())),
+            (Shape::Polyhedron(_), _) => None,
+        }
+    }
+
     /// The shape's name as the scene file writes it.
     #[must_use]
     pub fn name(&self) -> &'static str {
@@ -174,6 +201,21 @@ impl Object {
     pub fn intersect_object_space(&self, ray: &Ray, numerics: Numerics) -> Hits {
         self.shape
             .intersect_placed(self.placement.inv(), ray, numerics)
+    }
+
+    /// The visible hit of a world ray with the object (found by
+    /// [`Object::intersect_object_space`], normal still in object space) as the road shades
+    /// it: in the f32 build its t refined by one Newton step in f64 where f32 has lost digits
+    /// that matter ([`refine::refine`]), so that a huge object seen from close by is hit where
+    /// it is; in the f64 build the hit as it is. Every query refines the one hit it answers, as it carries its normal to the
+    /// world, and nothing else: the other hits, and those of feelers, stay as the formulas
+    /// found them.
+    #[inline]
+    #[must_use]
+    pub fn refine(&self, ray: &Ray, mut hit: Hit, numerics: Numerics) -> Hit {
+        let surface = || self.shape.surface(hit.part);
+        hit.t = refine::refine(hit.t, &self.placement, ray, numerics, surface);
+        hit
     }
 }
 
