@@ -160,11 +160,21 @@ fn answer(dir: &Path, id: &str, ask: &Ask, target_dir: &Path) {
             command.env(k, v);
         }
     }
-    let out = command.output().expect("the bridge cannot run cargo");
-    let stdout = windows_messages(&String::from_utf8_lossy(&out.stdout));
+    // an answer always comes, so that the stand-in never waits for one that cannot
+    let (stdout, stderr, code) = match command.output() {
+        Ok(out) => (
+            windows_messages(&String::from_utf8_lossy(&out.stdout)),
+            out.stderr,
+            out.status.code().unwrap_or(101),
+        ),
+        Err(e) => (
+            String::new(),
+            format!("error: the bridge cannot run cargo: {e}\n").into_bytes(),
+            101,
+        ),
+    };
     wire::put(&wire::file(dir, id, "out"), stdout.as_bytes()).unwrap();
-    wire::put(&wire::file(dir, id, "err"), &out.stderr).unwrap();
-    let code = out.status.code().unwrap_or(101);
+    wire::put(&wire::file(dir, id, "err"), &stderr).unwrap();
     wire::put(&wire::file(dir, id, "code"), code.to_string().as_bytes()).unwrap();
 }
 
