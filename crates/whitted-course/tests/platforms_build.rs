@@ -313,7 +313,12 @@ fn window_under_wine(exe: &Path, student: &Path, args: &[&str], shot: &Path) {
     eprintln!("the window under Wine: {title}");
     let _ = window.kill();
     let _ = window.wait();
-    let _ = wine().args(["wineserver", "-k"]).status();
+    // the prefix's server, and every Windows process left in it, ended
+    let prefix = root().join("target").join("wine");
+    let _ = Command::new("wineserver")
+        .arg("-k")
+        .env("WINEPREFIX", &prefix)
+        .status();
     let _ = x.kill();
     let _ = x.wait();
 }
