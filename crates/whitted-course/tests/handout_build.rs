@@ -18,11 +18,11 @@
 
 mod common;
 
-use common::{manifest, root};
+use common::{manifest, root, text};
 
 use std::collections::BTreeSet;
 use std::path::{Path, PathBuf};
-use std::process::{Command, Output};
+use std::process::Command;
 
 use whitted_course::deps;
 use whitted_course::handout;
@@ -39,14 +39,6 @@ fn cargo() -> Command {
         .env("CARGO_PROFILE_DEV_DEBUG", "0")
         .env_remove("WHITTED_POISON");
     c
-}
-
-fn text(o: &Output) -> String {
-    format!(
-        "{}{}",
-        String::from_utf8_lossy(&o.stdout),
-        String::from_utf8_lossy(&o.stderr)
-    )
 }
 
 /// Builds the handout's test targets in `project` and runs each: the failed and the passed

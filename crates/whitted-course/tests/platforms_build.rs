@@ -29,23 +29,15 @@ mod serve;
 #[path = "platforms/wire.rs"]
 mod wire;
 
-use common::{manifest, root};
+use common::{manifest, root, text};
 
 use std::collections::{BTreeMap, BTreeSet};
 use std::path::{Path, PathBuf};
-use std::process::{Command, Output};
+use std::process::Command;
 
 use serve::{Server, TARGET, windows_path};
 use whitted_course::manifest::Manifest;
 use whitted_course::{deps, handout};
-
-fn text(o: &Output) -> String {
-    format!(
-        "{}{}",
-        String::from_utf8_lossy(&o.stdout),
-        String::from_utf8_lossy(&o.stderr)
-    )
-}
 
 /// This machine's cargo, building in `target_dir`.
 fn cargo(target_dir: &Path) -> Command {

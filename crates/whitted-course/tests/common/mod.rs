@@ -76,6 +76,15 @@ pub fn one_line_error(o: &std::process::Output, context: &str) -> String {
     err
 }
 
+/// A process's output, stdout then stderr, as text (for a failure's message).
+pub fn text(o: &std::process::Output) -> String {
+    format!(
+        "{}{}",
+        String::from_utf8_lossy(&o.stdout),
+        String::from_utf8_lossy(&o.stderr)
+    )
+}
+
 /// The tests of one test executable's run (`out`, of the test target `target`), as
 /// `target::name`, into `failed` and `passed`; panics with its output when libtest did not
 /// finish (no summary line).
