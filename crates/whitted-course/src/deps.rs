@@ -49,6 +49,31 @@ impl Measured {
 
 pub use whitted_learn::map::{Group, MAP_PATH, TestId, expected, load_map, needs_of, parse_map};
 
+/// The tests that fail when the exercises `stripped` (manifest indices) are missing and each
+/// exercise is judged alone (`whitted grade`'s default, [`crate::grade::Judging::Alone`]): an
+/// exercise's own test (`ex_NAME_…`) runs the student's body of that exercise only, so it fails
+/// when that exercise is stripped and the test needs it; a test of no exercise runs the student's
+/// whole road, so it fails when it needs any stripped exercise ([`expected`]).
+#[must_use]
+pub fn expected_alone(
+    manifest: &Manifest,
+    map: &[Group],
+    tests: &BTreeSet<TestId>,
+    stripped: &[usize],
+) -> BTreeSet<TestId> {
+    tests
+        .iter()
+        .filter(|t| {
+            let needs = needs_of(map, t);
+            match manifest.exercise_of_test(crate::cargo::test_name(t)) {
+                Some(own) => stripped.contains(&own) && needs.contains(&own),
+                None => needs.iter().any(|i| stripped.contains(i)),
+            }
+        })
+        .cloned()
+        .collect()
+}
+
 /// The differences between what was measured and what the map says, one line per exercise
 /// that disagrees, and one per test the map does not name (empty when they agree).
 #[must_use]

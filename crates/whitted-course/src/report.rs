@@ -36,6 +36,7 @@ pub fn table(grade: &Grade, manifest: &Manifest) -> String {
         100.0 * grade.score() / grade.max().max(1e-9),
         grade.elapsed.as_secs_f64()
     );
+    out += &format!("  {}\n", grade.judging.line());
     for note in &grade.notes {
         out += &format!("  ! {note}\n");
     }
@@ -57,6 +58,9 @@ pub fn table(grade: &Grade, manifest: &Manifest) -> String {
             points(m),
             tests.len() - passed
         );
+        if let Some(road) = grade.road(manifest, c) {
+            out += &format!("  {}\n", road.line());
+        }
         let told = explained.iter().find(|x| x.chapter == c);
         if let Some(x) = told {
             out += &format!("  picture: {}\n", x.picture_line);

@@ -51,6 +51,7 @@ fn grade_of(m: &Manifest) -> Grade {
         timings: Default::default(),
         render: None,
         feedback: Vec::new(),
+        judging: grade::Judging::Alone,
     }
 }
 

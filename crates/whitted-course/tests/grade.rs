@@ -7,7 +7,8 @@ mod common;
 
 use common::{manifest, root};
 
-use std::path::Path;
+use std::collections::BTreeSet;
+use std::path::{Path, PathBuf};
 use std::time::Duration;
 
 use whitted_course::grade::{self, Grade, Status, TestResult};
@@ -176,6 +177,7 @@ fn graded(m: &Manifest) -> Grade {
         timings: Default::default(),
         render: None,
         feedback: Vec::new(),
+        judging: grade::Judging::Alone,
     }
 }
 
@@ -374,35 +376,54 @@ fn without_its_sandbox_grading_refuses_in_one_line() {
 }
 
 /// A body that does more than compute is refused before it compiles, at every sandbox level,
-/// by any spelling: ending or starting a process, files, the environment, `unsafe`, items that
-/// escape (`extern`, `#[no_mangle]`, `#[path]`, `macro_rules!`), the compile-time readers even
-/// as plain identifiers handed to a macro, the renderer's own file and exit functions; a body
-/// that closes its function. A name in a string or a comment is fine.
+/// by any spelling: a path into the process, files or the environment, `unsafe`, items
+/// (`extern`, `fn`, `mod`, `macro_rules!`), attributes other than lints, the compile-time
+/// readers, the renderer's own file and exit functions; a body that closes its function. Names
+/// are free: a variable called `env`, `load`, `save`, `path`, `io`, `os`, `exit` or
+/// `include_str`, a `///` comment, a name in a string or a comment.
 #[test]
 fn a_body_that_does_more_than_compute_is_refused() {
     for (body, found) in [
         ("    near * (fov.to_radians() / 2.0).tan()\n", None),
-        ("std::process::exit(0)", Some("`process`")),
-        ("::std::process::abort()", Some("`process`")),
-        ("use std::process as p; p::exit(0)", Some("`process`")),
-        ("r#process::exit(0)", Some("`process`")),
-        ("{ let _ = [libc::exit(0)]; 0.0 }", Some("`libc`")),
+        (
+            "std::process::exit(0)",
+            Some("`std::process::exit` (`process`)"),
+        ),
+        (
+            "::std::process::abort()",
+            Some("`std::process::abort` (`process`)"),
+        ),
+        (
+            "use std::process as p; p::exit(0)",
+            Some("`use` of `process`"),
+        ),
+        ("r#process::exit(0)", Some("`process::exit` (`process`)")),
+        (
+            "{ let _ = [libc::exit(0)]; 0.0 }",
+            Some("`libc::exit` (`libc`)"),
+        ),
         ("let exit = t1.max(t0); exit", None),
-        ("std::os::unix::process::CommandExt::exec", Some("`os`")),
-        ("use std::io::Write; 0.0", Some("`io`")),
-        ("std::fs::read_to_string(\"x\")", Some("`fs`")),
-        ("std::env::var(\"HOME\")", Some("`env`")),
+        (
+            "std::os::unix::process::CommandExt::exec",
+            Some("`std::os::unix::process::CommandExt::exec` (`os`)"),
+        ),
+        ("use std::io::Write; 0.0", Some("`use` of `io`")),
+        (
+            "std::fs::read_to_string(\"x\")",
+            Some("`std::fs::read_to_string` (`fs`)"),
+        ),
+        ("std::env::var(\"HOME\")", Some("`std::env::var` (`env`)")),
         ("unsafe { 0.0 }", Some("`unsafe`")),
         ("extern \"C\" { fn exit(c: i32); }", Some("`extern`")),
         (
             "macro_rules! m { ($i:ident) => { $i!(\"x\") } }\nm!(include_str)",
             Some("`macro_rules`"),
         ),
-        ("m!(include_str, \"x\")", Some("`include_str`")),
-        ("m!(option_env)", Some("`option_env`")),
+        ("m!(include_str, \"x\")", Some("`m!`")),
+        ("option_env!(\"HOME\")", Some("`option_env!`")),
         (
             "include_bytes /* spaced */ ! (\"x\")",
-            Some("`include_bytes`"),
+            Some("`include_bytes!`"),
         ),
         ("#[path = \"/x.rs\"] mod m;", Some("`#[path]`")),
         ("#[no_mangle] fn f() {} 0.0", Some("`#[no_mangle]`")),
@@ -412,19 +433,38 @@ fn a_body_that_does_more_than_compute_is_refused() {
         ),
         ("#![no_mangle] 0.0", Some("`#[no_mangle]`")),
         ("#[allow(unused)] let x = 1.0; x", None),
-        ("std::panic::set_hook(Box::new(|_| {}))", Some("`set_hook`")),
+        (
+            "std::panic::set_hook(Box::new(|_| {}))",
+            Some("`std::panic::set_hook` (`panic`)"),
+        ),
         (
             "whitted_syllabus::words::leave_after_args(true, || {}, || {})",
-            Some("`leave_after_args`"),
+            Some("`whitted_syllabus::words::leave_after_args` (`leave_after_args`)"),
         ),
-        ("crate::output::save(fb, p, e)", Some("`save`")),
         (
-            "let include_str = 1.0; include_str * 2.0",
-            Some("`include_str`"),
+            "crate::output::save(fb, p, e)",
+            Some("`crate::output::save` (`save`)"),
         ),
+        ("let include_str = 1.0; include_str * 2.0", None),
+        (
+            "let env = 1.0; let load = 2.0; let save = 3.0; let path = 4.0; let io = 5.0; let os = 6.0;\nenv + load + save + path + io + os",
+            None,
+        ),
+        ("/// half of it\nlet h = 0.5 * w;\nh", None),
+        ("fn helper(x: f64) -> f64 { x } helper(1.0)", None),
+        (
+            "fn stretch<'a, 'b, T>(_: &'a &'b (), v: &'b T) -> &'a T { v }",
+            Some("`fn stretch<…>`"),
+        ),
+        ("struct S; 0.0", Some("`struct`")),
+        (
+            "const N: u64 = { let mut i = 0; loop { i += 1 } }; 0.0",
+            Some("`const`"),
+        ),
+        ("let f = |x: &'static f64| *x; 0.0", Some("`'static`")),
         (
             "0.0 }\nfn evil() -> &'static str { \"\" ",
-            Some("delimiters that do not balance"),
+            Some("a bracket, brace, quote or comment"),
         ),
         (
             "// std::process::exit(0)\n\"process exit unsafe\".len() as f64",
@@ -453,6 +493,41 @@ fn every_reference_body_and_every_mutant_passes_the_screen() {
     for mu in &mutants {
         let body = common::mutant_body(&m, mu);
         assert_eq!(grade::screen(&body), None, "mutant {}: {body}", mu.name);
+    }
+}
+
+/// The screen reads a one-segment name (`save(…)`) as the student's own, so no file that holds
+/// an exercise may bring a refused name into scope: each of their `use` lines passes the same
+/// screen a body does.
+#[test]
+fn no_file_with_an_exercise_imports_what_the_screen_refuses() {
+    let m = manifest();
+    let files: BTreeSet<PathBuf> = handout::regions(&root(), &m)
+        .unwrap()
+        .into_iter()
+        .map(|r| r.file)
+        .collect();
+    assert!(files.len() > 10, "{files:?}");
+    for file in files {
+        let text = std::fs::read_to_string(root().join(&file)).unwrap();
+        let mut statement = String::new();
+        for line in text.lines() {
+            let l = line.trim_start();
+            if statement.is_empty() && !(l.starts_with("use ") || l.starts_with("pub use ")) {
+                continue;
+            }
+            statement += l.trim_start_matches("pub ");
+            statement.push('\n');
+            if l.trim_end().ends_with(';') {
+                assert_eq!(
+                    whitted_learn::screen::screen(&statement),
+                    None,
+                    "{}: {statement}",
+                    file.display()
+                );
+                statement.clear();
+            }
+        }
     }
 }
 

@@ -119,6 +119,28 @@ fn failed(g: &Grade) -> BTreeSet<String> {
         .collect()
 }
 
+/// No failed test of an exercise speaks of another exercise's `todo!()`: judged alone, an
+/// exercise's tests never run a body of the student's but its own.
+fn assert_blames_only_its_own(g: &Grade, m: &Manifest) {
+    for t in g.tests.iter().filter(|t| t.status != Status::Passed) {
+        let Some(own) = t.exercise else { continue };
+        for (i, e) in m.entries.iter().enumerate() {
+            assert!(
+                i == own
+                    || !t
+                        .message
+                        .contains(&format!("exercise {} (", e.exercise.name)),
+                "{}: the test {} of exercise {} blames exercise {}: {}",
+                g.student,
+                t.name,
+                m.entries[own].exercise.id,
+                e.exercise.id,
+                t.message
+            );
+        }
+    }
+}
+
 /// Every public test that ran, as `target::name`.
 fn ran(g: &Grade) -> BTreeSet<String> {
     g.tests
@@ -163,6 +185,7 @@ fn setup(hidden: &Path) -> grade::GradeSetup {
         render: false,
         feedback: true,
         screen: true,
+        judging: grade::Judging::Alone,
     }
 }
 
@@ -577,9 +600,14 @@ fn a_class_is_graded_as_each_submission_deserves() {
     );
     let all_tests = ran(reference);
 
-    // the chapter-4 handout: exactly the tests that need a chapter-4 exercise fail
+    // the chapter-4 handout: each exercise judged alone, exactly the chapter-4 exercises' own
+    // tests fail, and the tests of no exercise (the whole road) that need one of them
     let h4 = find(&entries, "handout4");
-    assert_eq!(failed(h4), deps::expected(&map, &all_tests, &chapter4));
+    assert_eq!(
+        failed(h4),
+        deps::expected_alone(&m, &map, &all_tests, &chapter4)
+    );
+    assert_blames_only_its_own(h4, &m);
     assert_eq!(h4.chapter(&m, 4).0, 0.0);
     for c in [1, 2, 3] {
         let (s, max) = h4.chapter(&m, c);
@@ -593,7 +621,11 @@ fn a_class_is_graded_as_each_submission_deserves() {
         index(&m, "direction_colour"),
         index(&m, "facet_crossing"),
     ];
-    assert_eq!(failed(b), deps::expected(&map, &all_tests, &three));
+    assert_eq!(
+        failed(b),
+        deps::expected_alone(&m, &map, &all_tests, &three)
+    );
+    assert_blames_only_its_own(b, &m);
     let own = |id: &str| -> Vec<Status> {
         let i = index(&m, id);
         b.tests
@@ -622,22 +654,13 @@ fn a_class_is_graded_as_each_submission_deserves() {
             .as_deref()
             .is_some_and(|n| n.starts_with("does not compile"))
     );
+    // each exercise judged alone: the three lose their points, every other keeps all of its
     for e in &b.exercises {
-        let needs_broken = b
-            .tests
-            .iter()
-            .filter(|t| t.exercise == Some(e.entry) && !t.hidden)
-            .any(|t| {
-                deps::needs_of(&map, &format!("{}::{}", t.target, t.name))
-                    .iter()
-                    .any(|i| three.contains(i))
-            });
-        if !needs_broken {
-            assert_eq!(
-                e.score, e.max,
-                "exercise {}",
-                m.entries[e.entry].exercise.id
-            );
+        let id = &m.entries[e.entry].exercise.id;
+        if three.contains(&e.entry) {
+            assert_eq!(e.score, 0.0, "exercise {id}");
+        } else {
+            assert_eq!(e.score, e.max, "exercise {id}: {:?}", e.note);
         }
     }
 
@@ -663,7 +686,7 @@ fn a_class_is_graded_as_each_submission_deserves() {
         lost.push(i);
         assert_eq!(
             failed(g),
-            deps::expected(&map, &all_tests, &lost),
+            deps::expected_alone(&m, &map, &all_tests, &lost),
             "hostile-{name} ({exercise}): lost other tests than its own, or gained some"
         );
         assert!(
@@ -729,7 +752,10 @@ fn a_class_is_graded_as_each_submission_deserves() {
         ("env-at-compile-time", "normal_to_world"),
     ] {
         let note = note_of(hostile_grade(name), &m, exercise);
-        assert!(note.starts_with("uses `"), "hostile-{name}: {note}");
+        assert!(
+            note.starts_with("refused by the screen"),
+            "hostile-{name}: {note}"
+        );
     }
     // what a submission prints reaches every report escaped, and the submission is graded
     assert!(
@@ -773,7 +799,11 @@ fn a_class_is_graded_as_each_submission_deserves() {
         let refused = find(&entries, name)
             .exercises
             .iter()
-            .filter(|e| e.note.as_deref().is_some_and(|n| n.starts_with("uses `")))
+            .filter(|e| {
+                e.note
+                    .as_deref()
+                    .is_some_and(|n| n.starts_with("refused by the screen"))
+            })
             .count();
         assert_eq!(
             refused,
@@ -860,20 +890,37 @@ fn a_class_is_graded_as_each_submission_deserves() {
     );
     assert!(leaker.score() < leaker.max());
 
-    // each mutant loses points in its exercise and its chapter
+    // each mutant loses points in its own exercise and nowhere else
     for mu in &mutants {
         let g = find(&entries, &format!("mutant-{}", mu.name));
         let i = index(&m, &mu.exercise);
-        let e = g.exercises.iter().find(|e| e.entry == i).unwrap();
-        assert!(
-            e.score < e.max,
-            "mutant {} ({}) keeps all of exercise {}'s points",
-            mu.name,
-            mu.why,
-            mu.exercise
-        );
-        let (s, max) = g.chapter(&m, m.entries[i].chapter);
-        assert!(s < max);
+        for e in &g.exercises {
+            if e.entry == i {
+                assert!(
+                    e.score < e.max,
+                    "mutant {} ({}) keeps all of exercise {}'s points",
+                    mu.name,
+                    mu.why,
+                    mu.exercise
+                );
+            } else {
+                assert_eq!(
+                    e.score,
+                    e.max,
+                    "mutant {} ({}) of exercise {} costs exercise {} points: {:?}",
+                    mu.name,
+                    mu.why,
+                    mu.exercise,
+                    m.entries[e.entry].exercise.id,
+                    g.tests
+                        .iter()
+                        .filter(|t| t.exercise == Some(e.entry) && t.status != Status::Passed)
+                        .map(|t| &t.message)
+                        .collect::<Vec<_>>()
+                );
+            }
+        }
+        assert_blames_only_its_own(g, &m);
     }
     // and its report says, as learn does, where the ray trees first go wrong and which
     // exercise computed it, for each mistake whose trees differ (chapters/mistakes.json)
@@ -1253,6 +1300,7 @@ fn user_level_runtime(
         render: false,
         feedback: false,
         screen: false,
+        judging: grade::Judging::Alone,
     };
     let dir = work.join("user-level");
     let all: Vec<usize> = (0..m.entries.len()).collect();

@@ -105,6 +105,7 @@ fn a_class_of_a_hundred_is_graded_and_timed() {
         render: false,
         feedback: true,
         screen: true,
+        judging: grade::Judging::Alone,
     };
     let start = std::time::Instant::now();
     let entries = grade::grade_class(&root(), &m, &class, &options, 1, &|e| {

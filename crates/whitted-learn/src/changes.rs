@@ -20,8 +20,31 @@ pub const REGIONS: &str = "regions.json";
 /// between its markers, as they stand).
 #[must_use]
 pub fn regions(root: &Path) -> BTreeMap<String, String> {
-    let mut out = BTreeMap::new();
+    located(root)
+        .into_iter()
+        .map(|r| (r.name, r.body))
+        .collect()
+}
+
+/// An exercise's region as it stands in the student's sources.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Located {
+    /// The exercise's name.
+    pub name: String,
+    /// The source file, relative to the project.
+    pub file: PathBuf,
+    /// The line of the body's first line in the file (the line after BEGIN), from 1.
+    pub line: usize,
+    /// The lines between its markers, joined by newlines.
+    pub body: String,
+}
+
+/// Every exercise's region in the renderer's sources, where it stands, in file order.
+#[must_use]
+pub fn located(root: &Path) -> Vec<Located> {
+    let mut out = Vec::new();
     let mut stack: Vec<PathBuf> = vec![root.join(layout::core_src())];
+    let mut files = Vec::new();
     while let Some(dir) = stack.pop() {
         let Ok(entries) = std::fs::read_dir(&dir) else {
             continue;
@@ -29,28 +52,38 @@ pub fn regions(root: &Path) -> BTreeMap<String, String> {
         for path in entries.flatten().map(|e| e.path()) {
             if path.is_dir() {
                 stack.push(path);
-            } else if path.extension().is_some_and(|x| x == "rs")
-                && let Ok(text) = std::fs::read_to_string(&path)
-            {
-                read_regions(&text, &mut out);
+            } else if path.extension().is_some_and(|x| x == "rs") {
+                files.push(path);
             }
+        }
+    }
+    files.sort();
+    for path in files {
+        if let Ok(text) = std::fs::read_to_string(&path) {
+            let file = path.strip_prefix(root).unwrap_or(&path).to_path_buf();
+            read_regions(&text, &file, &mut out);
         }
     }
     out
 }
 
-/// Adds the regions of the source `text` to `out`.
-fn read_regions(text: &str, out: &mut BTreeMap<String, String>) {
-    let mut open: Option<(String, Vec<&str>)> = None;
-    for line in text.lines() {
+/// Adds the regions of the source `text` (of `file`) to `out`.
+fn read_regions(text: &str, file: &Path, out: &mut Vec<Located>) {
+    let mut open: Option<(String, usize, Vec<&str>)> = None;
+    for (n, line) in text.lines().enumerate() {
         let trimmed = line.trim();
         if let Some(name) = trimmed.strip_prefix(layout::BEGIN) {
-            open = Some((name.trim().to_string(), Vec::new()));
+            open = Some((name.trim().to_string(), n + 2, Vec::new()));
         } else if trimmed == layout::END {
-            if let Some((name, lines)) = open.take() {
-                out.insert(name, lines.join("\n"));
+            if let Some((name, first, lines)) = open.take() {
+                out.push(Located {
+                    name,
+                    file: file.to_path_buf(),
+                    line: first,
+                    body: lines.join("\n"),
+                });
             }
-        } else if let Some((_, lines)) = &mut open {
+        } else if let Some((_, _, lines)) = &mut open {
             lines.push(line);
         }
     }
@@ -136,18 +169,21 @@ mod tests {
         assert_eq!(touched(&m, &before, &map("todo!()", "")), vec![1]);
     }
 
-    /// A region is the text between its markers; text outside any region is no exercise's.
+    /// A region is the text between its markers, its first line the one after BEGIN; text
+    /// outside any region is no exercise's.
     #[test]
     fn a_region_is_the_text_between_its_markers() {
         let text = "fn a() {\n    // BEGIN SOLUTION first\n    1 + 1\n    // END SOLUTION\n}\n\
                     fn b() {\n    let x = 2;\n    // BEGIN SOLUTION second\n    x\n    // END SOLUTION\n}\n";
-        let mut out = BTreeMap::new();
-        read_regions(text, &mut out);
+        let mut out = Vec::new();
+        read_regions(text, Path::new("f.rs"), &mut out);
         assert_eq!(
-            out.into_iter().collect::<Vec<_>>(),
+            out.into_iter()
+                .map(|r| (r.name, r.line, r.body))
+                .collect::<Vec<_>>(),
             vec![
-                ("first".to_string(), "    1 + 1".to_string()),
-                ("second".to_string(), "    x".to_string())
+                ("first".to_string(), 3, "    1 + 1".to_string()),
+                ("second".to_string(), 9, "    x".to_string())
             ]
         );
     }

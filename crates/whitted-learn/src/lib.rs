@@ -27,6 +27,7 @@ pub mod learn;
 pub mod manifest;
 pub mod map;
 pub mod picture;
+pub mod screen;
 pub mod trees;
 
 /// The course's outline: the chapters (and the notes' sections, the todo!() message), read from

@@ -251,9 +251,17 @@ impl Report {
                 time: t.time,
             });
         }
-        let mut output = String::new();
+        let mut output = format!("{}\n", grade.judging.line());
         for note in &grade.notes {
             output += &format!("{note}\n");
+        }
+        for road in grade
+            .chapters
+            .iter()
+            .filter_map(|&c| grade.road(manifest, c))
+            .filter(|r| r.passed < r.total)
+        {
+            output += &format!("{}\n", road.line());
         }
         let mut images = Vec::new();
         for x in &explained {

@@ -217,5 +217,6 @@ pub fn setup(
         render,
         feedback: true,
         screen: true,
+        judging: grade::Judging::default(),
     }
 }

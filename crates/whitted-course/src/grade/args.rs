@@ -7,6 +7,7 @@ use std::path::PathBuf;
 use std::process::ExitCode;
 use std::time::Duration;
 
+use super::alone::Judging;
 use super::command::{Class, Reports, command};
 use super::sandbox::Level;
 use super::setup::{GradeSetup, SandboxSetup};
@@ -63,6 +64,12 @@ pub struct GradeArgs {
     /// tests alone.
     #[arg(long)]
     no_feedback: bool,
+    /// Judge every test with all of the student's bodies together, as before each exercise was
+    /// judged alone: a mistake then also costs the exercises whose tests call it. By default an
+    /// exercise's tests run with the student's body for it and the reference's for every other
+    /// exercise; the reports say which was used.
+    #[arg(long)]
+    whole_road: bool,
     #[command(flatten)]
     sandbox: SandboxArgs,
     /// The instructor's project, whose tests and manifest grade [default: the nearest
@@ -91,6 +98,11 @@ impl GradeArgs {
             render: false,
             feedback: !self.no_feedback,
             screen: true,
+            judging: if self.whole_road {
+                Judging::WholeRoad
+            } else {
+                Judging::Alone
+            },
         };
         let class = match (&self.class, &self.out) {
             (Some(dir), Some(out)) => Some(Class {

@@ -8,6 +8,7 @@ use std::collections::BTreeMap;
 use std::path::Path;
 use std::time::Instant;
 
+use super::alone;
 use super::build::{build_bodies, build_hidden};
 use super::clean::clean;
 use super::copy::{GradedCopy, run_reads};
@@ -78,6 +79,7 @@ pub fn grade(
         timings,
         render,
         feedback,
+        judging: options.judging,
     })
 }
 
@@ -156,7 +158,15 @@ impl Grading {
         options: &GradeSetup,
         notes: &mut BTreeMap<usize, String>,
     ) -> Result<Vec<Spliced>, ToolError> {
-        let files = splice::splice(root, manifest, submission, chapters, options.screen, notes)?;
+        let files = splice::splice(
+            root,
+            manifest,
+            submission,
+            chapters,
+            (options.screen, options.judging),
+            notes,
+        )?;
+        alone::add_switch(&self.copy.project, manifest)?;
         splice::remove_hidden(&self.copy.project, &self.copy.target_dir)?;
         nextest::write_profile(&self.copy.project, options.timeout)?;
         Ok(files)

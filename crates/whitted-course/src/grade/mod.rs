@@ -10,9 +10,15 @@
 //! file by file for each submission, so that cargo recompiles only the bodies that differ from
 //! the last submission's; without one, it is a fresh temporary directory.
 //!
-//! A body that names what a formula never needs (ending or starting a process, files, the
-//! network, the environment, `unsafe`, a compile-time read …) is not even put in: it counts as
-//! not written ([`screen()`]).
+//! A body that is not a formula's grammar (a path into the process, files, the network or the
+//! environment, `unsafe`, an item, a lifetime, a macro outside the short list …) is not even
+//! put in: it counts as not written ([`screen()`], the screen `cargo learn` runs at every save).
+//!
+//! **Each exercise is judged alone** ([`alone`]): the copy holds the student's body and the
+//! reference's side by side in each graded region, and a test named after an exercise runs the
+//! student's body of that exercise and the reference's of every other one, so that a mistake
+//! costs its own exercise only. The tests of no exercise, the pictures and the ray trees run the
+//! student's whole road. `--whole-road` ([`Judging::WholeRoad`]) judges every test that way.
 //!
 //! Then, in that copy:
 //!
@@ -20,8 +26,8 @@
 //!    build is tried again, so a compile error costs only the exercise it is in; its first
 //!    error goes into the report.
 //! 2. **Run** every test of the graded chapters with cargo-nextest, each test in its own
-//!    process with its own time limit: a `todo!()`, a panic, a stack overflow, an abort or an
-//!    endless loop fails the tests it touches and no others. Each test binary goes through
+//!    process with its own time limit, judging its exercise alone: a `todo!()`, a panic, a
+//!    stack overflow, an abort or an endless loop fails that exercise's tests and no others. Each test binary goes through
 //!    the [`runner`], which passes a test only when libtest reported it `ok` (a process that
 //!    ended early passes nothing) and cleans what it printed ([`clean`]).
 //! 3. **Score.** An exercise's points ([`super::manifest::Exercise::points`]) are shared
@@ -34,14 +40,15 @@
 //! students show their points, never their names or messages ([`super::report`]).
 //!
 //! Its files, one job each: `setup.rs` (how a grading is set up), `grading.rs` ([`grade()`],
-//! the steps in order), `copy.rs` (the graded copy), `splice.rs` and `screen.rs` (the
-//! student's bodies in it), `build.rs` and `blame.rs` (the build), `nextest.rs`, `junit.rs`, `runner.rs`,
+//! the steps in order), `copy.rs` (the graded copy), `splice.rs`, `alone.rs` and `screen.rs`
+//! (the student's bodies in it), `build.rs` and `blame.rs` (the build), `nextest.rs`, `junit.rs`, `runner.rs`,
 //! `sandbox/` and `clean.rs` (the test run), `test_result.rs`, `score.rs` and `outcome.rs` (the results and the points),
 //! `render.rs` and `explained.rs` (the pictures and their words), `class.rs` (a class),
 //! `command.rs` (the reports) and `args.rs` (the command line).
 //!
 //! Course book: [The instructor's guide](../../../../docs/book/instructor-guide.html) (`docs/src/instructor-guide.md`).
 
+pub mod alone;
 mod args;
 mod blame;
 mod build;
@@ -63,13 +70,14 @@ mod setup;
 mod splice;
 mod test_result;
 
+pub use alone::Judging;
 pub use args::{GradeArgs, SandboxArgs};
 pub use class::{ClassEntry, grade_class};
 pub use explained::Explained;
 pub use grading::grade;
 pub use junit::{MESSAGE_CHARS, panic_message, parse_junit};
 pub use nextest::NEXTEST_PROFILE;
-pub use outcome::{ExerciseScore, Grade, Timings};
+pub use outcome::{ExerciseScore, Grade, Road, Timings};
 pub use render::{ChapterFeedback, PICTURE_BYTES, RenderScore};
 pub use score::{chapter_targets, scores};
 pub use screen::screen;

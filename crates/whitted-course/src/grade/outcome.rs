@@ -4,8 +4,9 @@
 
 use std::time::Duration;
 
+use super::alone::Judging;
 use super::render::{ChapterFeedback, RenderScore};
-use super::test_result::TestResult;
+use super::test_result::{Status, TestResult};
 use crate::manifest::Manifest;
 
 /// One exercise's points.
@@ -50,6 +51,44 @@ pub struct Grade {
     /// reference ([`GradeSetup::feedback`](crate::grade::GradeSetup::feedback)): the picture,
     /// the first wrong number of the ray trees, or why the chapter cannot be drawn.
     pub feedback: Vec<ChapterFeedback>,
+    /// How the tests were judged: each exercise alone, or the student's whole road.
+    pub judging: Judging,
+}
+
+/// What the student's whole road does in one chapter: of the chapter's tests that are no
+/// exercise's, which run every body of the student's together, how many pass.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Road {
+    /// The chapter.
+    pub chapter: u8,
+    /// Its whole-road tests that passed.
+    pub passed: usize,
+    /// Its whole-road tests.
+    pub total: usize,
+}
+
+impl Road {
+    /// The report's line: whether the student's bodies, together, draw the chapter as the
+    /// reference does.
+    #[must_use]
+    pub fn line(&self) -> String {
+        let c = self.chapter;
+        let (n, failed) = (self.total, self.total - self.passed);
+        let what = match (n, failed) {
+            (1, 0) => "its test of no exercise passes".to_string(),
+            (1, _) => "its test of no exercise fails".to_string(),
+            (_, 0) => format!("its {n} tests of no exercise pass"),
+            _ => format!("{failed} of its {n} tests of no exercise fail"),
+        };
+        let draws = if failed == 0 {
+            "draws as the reference's"
+        } else {
+            "does not yet draw as the reference's"
+        };
+        format!(
+            "your whole road: chapter {c} {draws}: {what} with all of your bodies together (they count no points)"
+        )
+    }
 }
 
 /// Where a grading's time went.
@@ -75,6 +114,33 @@ impl Grade {
     #[must_use]
     pub fn max(&self) -> f64 {
         self.exercises.iter().map(|e| e.max).sum()
+    }
+
+    /// The tests of chapter `chapter` that are no exercise's (its render paths, its whole
+    /// pictures): they run the student's whole road, every body of theirs together. `None` when
+    /// the chapter has none.
+    #[must_use]
+    pub fn road(&self, manifest: &Manifest, chapter: u8) -> Option<Road> {
+        let binary = crate::syllabus::chapter(chapter)?.binary;
+        let paths = manifest
+            .prove
+            .filter
+            .replace("{chapter}", &chapter.to_string());
+        let own: Vec<&TestResult> = self
+            .tests
+            .iter()
+            .filter(|t| t.exercise.is_none())
+            .filter(|t| {
+                t.target == binary
+                    || (t.target == manifest.prove.test
+                        && crate::cargo::test_name(&t.name).starts_with(&paths))
+            })
+            .collect();
+        (!own.is_empty()).then(|| Road {
+            chapter,
+            passed: own.iter().filter(|t| t.status == Status::Passed).count(),
+            total: own.len(),
+        })
     }
 
     /// Points earned and possible in chapter `chapter`.

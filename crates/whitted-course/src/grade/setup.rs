@@ -6,6 +6,7 @@
 use std::path::PathBuf;
 use std::time::Duration;
 
+use super::alone::Judging;
 use super::sandbox;
 
 /// The default time limit of one test.
@@ -41,6 +42,9 @@ pub struct GradeSetup {
     /// ([`screen()`](crate::grade::screen())). Always on from the command line; off only where
     /// a test proves the second lock, the runner's, alone.
     pub screen: bool,
+    /// How an exercise's tests are judged: alone (the student's body for it, the reference's for
+    /// every other exercise), or with the student's whole road (`--whole-road`).
+    pub judging: Judging,
 }
 
 /// What a sandboxed grading needs to know.
@@ -67,6 +71,7 @@ impl Default for GradeSetup {
             render: false,
             feedback: true,
             screen: true,
+            judging: Judging::default(),
         }
     }
 }

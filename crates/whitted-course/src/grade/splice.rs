@@ -4,9 +4,10 @@
 //!
 //! Course book: [The instructor's guide](../../../../../docs/book/instructor-guide.html) (`docs/src/instructor-guide.md`).
 
-use std::collections::BTreeMap;
+use std::collections::{BTreeMap, BTreeSet};
 use std::path::{Path, PathBuf};
 
+use super::alone::{self, Judging};
 use crate::handout::{self, BEGIN, END, Region};
 use crate::manifest::Manifest;
 use crate::{ToolError, files, layout};
@@ -54,6 +55,10 @@ pub(super) struct Spliced {
     pub(super) reference: String,
     /// The regions in the file, in order, with the body each one now holds.
     pub(super) regions: Vec<(Region, String)>,
+    /// The regions whose body is the student's (their manifest entries), when each exercise is
+    /// judged alone: each holds the reference's body too, beside the student's
+    /// ([`super::alone::both_bodies`]).
+    pub(super) alone: BTreeSet<usize>,
 }
 
 impl Spliced {
@@ -72,13 +77,20 @@ impl Spliced {
             // the BEGIN line, the body, the END line and the line after it: a syntax error
             // in a body is often reported at the token that follows it
             let first = out.lines().count();
-            let mut body = body.clone();
-            if !body.is_empty() && !body.ends_with('\n') {
-                body.push('\n');
+            if self.alone.contains(&r.entry) {
+                // the student's body, then the line after it (the `} else {`)
+                let (both, end) = alone::both_bodies(r.entry, &r.indent, body, &r.solution);
+                out.push_str(&both);
+                lines.push((r.entry, first, first + end + 1));
+            } else {
+                let mut body = body.clone();
+                if !body.is_empty() && !body.ends_with('\n') {
+                    body.push('\n');
+                }
+                out.push_str(&body);
+                let last = out.lines().count() + 2;
+                lines.push((r.entry, first, last));
             }
-            out.push_str(&body);
-            let last = out.lines().count() + 2;
-            lines.push((r.entry, first, last));
             out.push_str(&r.indent);
             out.push_str(END);
             out.push('\n');
@@ -90,27 +102,35 @@ impl Spliced {
 }
 
 /// The graded copy's source files with the student's bodies in the regions of `chapters`
-/// (the other regions keep the reference code). A body that cannot be found is noted and
-/// replaced by the exercise's `todo!()`; so is, when `screen` (always, but for a test of the
-/// runner's lock alone), a body that does more than compute ([`super::screen::screen`]): it
-/// is never compiled.
+/// (the other regions keep the reference code), each beside the reference's when each exercise
+/// is judged alone ([`Judging::Alone`]). A body that cannot be found is noted and replaced by
+/// the exercise's `todo!()`; so is, when `screen` (always, but for a test of the runner's lock
+/// alone), a body that does more than compute ([`super::screen::screen`]), and a body that is
+/// not whole on its own ([`alone::whole_on_its_own`]): it is never compiled.
 pub(super) fn splice(
     root: &Path,
     manifest: &Manifest,
     submission: &Path,
     chapters: &[u8],
-    screen: bool,
+    (screen, judging): (bool, Judging),
     notes: &mut BTreeMap<usize, String>,
 ) -> Result<Vec<Spliced>, ToolError> {
     let mut by_file: BTreeMap<PathBuf, Vec<(Region, String)>> = BTreeMap::new();
+    let mut alone = BTreeSet::new();
     for r in handout::regions(root, manifest)? {
         let e = &manifest.entries[r.entry];
         let body = if chapters.contains(&e.chapter) {
+            if judging == Judging::Alone {
+                alone.insert(r.entry);
+            }
             student_body(submission, &r, &e.exercise.name)
-                .and_then(|body| match super::screen::screen(&body).filter(|_| screen) {
-                    Some(what) => Err(format!(
-                        "uses {what}, which a formula never needs: the grader compiles no body that could end or start a process, reach a file, the network or the environment, or read anything at compile time; graded as not written"
+                .and_then(|body| match whitted_learn::screen::screen(&body).filter(|_| screen) {
+                    Some(refused) => Err(format!(
+                        "refused by the screen, {refused}; graded as not written (cargo learn says the same at the save)"
                     )),
+                    None if !alone::whole_on_its_own(&body) => Err(
+                        "its brackets, braces, quotes or comments do not close inside the body: graded as not written".to_string()
+                    ),
                     None => Ok(body),
                 })
                 .unwrap_or_else(|why| {
@@ -132,6 +152,7 @@ pub(super) fn splice(
                 file,
                 reference,
                 regions,
+                alone: alone.clone(),
             })
         })
         .collect()

@@ -48,6 +48,11 @@ pub fn check(
             s => s.clone(),
         }
     };
+    // the grader's screen, on every body, before anything is built: what it would refuse is
+    // told now, with its line and a way to write it
+    for refused in crate::screen::refused(root, manifest) {
+        say.report(&style.bad(&format!("{}\n", refused.line(manifest))));
+    }
     // 0. what was saved since the last check comes first: its targets, then its verdict
     let regions = crate::changes::regions(root);
     let touched = crate::changes::touched(manifest, &crate::changes::saved(root), &regions);

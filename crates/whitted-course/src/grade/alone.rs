@@ -1,0 +1,186 @@
+//! Each exercise judged alone: an exercise's tests run with the student's body for that
+//! exercise and the reference's body for every other one, so that a mistake, a compile error
+//! or a marker slip costs its own exercise and nothing else.
+//!
+//! The submission is built once. In the graded copy each graded exercise's region holds both
+//! bodies, the student's first:
+//!
+//! ```text
+//! // BEGIN SOLUTION sphere_coefficients
+//! if crate::graded_bodies::student(11) {
+//!     …the student's body…
+//! } else {
+//!     …the reference's body…
+//! }
+//! // END SOLUTION
+//! ```
+//!
+//! and the crate gains the module `graded_bodies` ([`switch_module`]), which answers, once per
+//! process, which exercise runs the student's body. The test runner names the test it starts in
+//! [`GRADED_TEST_VAR`]: a test named after an exercise (`ex_NAME_…`) runs the student's body of
+//! that exercise alone; any other test (the render paths, a chapter's whole picture) and any
+//! program started without the variable (the chapter binaries the feedback renders with) runs
+//! every body of the student's: their whole road, which the reports show beside the points.
+//!
+//! A student's body goes in only when it is whole on its own (its brackets, braces, quotes and
+//! comments close inside it: [`whole_on_its_own`]), so it can never close the `if` around it and
+//! reach the reference's body beside it.
+//!
+//! Course book: [The instructor's guide](../../../../../docs/book/instructor-guide.html) (`docs/src/instructor-guide.md`).
+
+use std::path::Path;
+
+use crate::manifest::Manifest;
+use crate::{ToolError, files, layout};
+
+/// The environment variable in which the test runner names the test a process runs (its libtest
+/// name, module path and all): the graded copy's switch reads it.
+pub const GRADED_TEST_VAR: &str = "WHITTED_GRADED_TEST";
+
+/// The module the graded copy's crate gains (`crate::graded_bodies`).
+const MODULE: &str = "graded_bodies";
+
+/// How the graded copy judges the tests of an exercise.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum Judging {
+    /// Each exercise alone: its tests run with the student's body for it and the reference's
+    /// for every other exercise.
+    #[default]
+    Alone,
+    /// The whole road: every test runs with all of the student's bodies together, so that an
+    /// exercise's tests fail too when an exercise they call is wrong (`--whole-road`).
+    WholeRoad,
+}
+
+impl Judging {
+    /// The line a report gives: how the tests were judged.
+    #[must_use]
+    pub fn line(self) -> &'static str {
+        match self {
+            Self::Alone => {
+                "each exercise judged alone: its tests ran with your body for it and the reference's for every other exercise"
+            }
+            Self::WholeRoad => {
+                "the whole road judged (--whole-road): every test ran with all of your bodies together, so a mistake also costs the exercises that call it"
+            }
+        }
+    }
+}
+
+/// Whether `body` is whole on its own: it lexes as Rust tokens whose brackets and braces all
+/// close inside it, and none of its strings or comments is left open.
+#[must_use]
+pub fn whole_on_its_own(body: &str) -> bool {
+    body.parse::<proc_macro2::TokenStream>().is_ok()
+}
+
+/// The region's text in the graded copy when the exercise `entry` is judged alone: the
+/// student's `body` and the `reference`'s side by side, chosen per process by the switch; and
+/// the line (counted from the region's first line after BEGIN, from 0) where the student's body
+/// ends: the `} else {` after it, where a syntax error in the body is often reported.
+#[must_use]
+pub fn both_bodies(entry: usize, indent: &str, body: &str, reference: &str) -> (String, usize) {
+    let ended = |s: &str| -> String {
+        if s.is_empty() || s.ends_with('\n') {
+            s.to_string()
+        } else {
+            format!("{s}\n")
+        }
+    };
+    let student = ended(body);
+    let text = format!(
+        "{indent}if crate::{MODULE}::student({entry}) {{\n{student}{indent}}} else {{\n{}{indent}}}\n",
+        ended(reference)
+    );
+    (text, 1 + student.lines().count())
+}
+
+/// The module the graded copy's crate gains: which exercise runs the student's body in this
+/// process. Its names are the manifest's, in order, so that [`both_bodies`]' `entry` is the
+/// manifest entry.
+#[must_use]
+pub fn switch_module(manifest: &Manifest) -> String {
+    let names: Vec<String> = manifest
+        .entries
+        .iter()
+        .map(|e| format!("{:?}", e.exercise.test_prefix()))
+        .collect();
+    format!(
+        r#"
+/// Written by `whitted grade` into its graded copy: which exercise runs the student's body in
+/// this process. The test runner names the test in `{GRADED_TEST_VAR}`: a test named after an
+/// exercise runs the student's body of that exercise and the reference's of every other one;
+/// any other test, and a program started without the variable, runs every body of the student's.
+#[doc(hidden)]
+pub mod {MODULE} {{
+    /// Each exercise's test prefix (`ex_NAME_`), in the manifest's order.
+    const PREFIXES: [&str; {count}] = [{names}];
+
+    /// The exercise judged alone in this process, `None` for the student's whole road: read
+    /// once.
+    static JUDGED: std::sync::OnceLock<Option<usize>> = std::sync::OnceLock::new();
+
+    /// Whether exercise `entry` (the manifest's order) runs the student's body here.
+    #[must_use]
+    pub fn student(entry: usize) -> bool {{
+        JUDGED.get_or_init(judged).is_none_or(|j| j == entry)
+    }}
+
+    fn judged() -> Option<usize> {{
+        let test = std::env::var("{GRADED_TEST_VAR}").ok()?;
+        let own = test.rsplit("::").next().unwrap_or(&test);
+        PREFIXES.iter().position(|p| own.starts_with(p))
+    }}
+}}
+"#,
+        count = names.len(),
+        names = names.join(", "),
+    )
+}
+
+/// Adds the switch ([`switch_module`]) to the graded copy's `lib.rs`, which the copy holds as the
+/// instructor's: written only when it is not already there, so that a copy kept between
+/// gradings is not rebuilt for it.
+pub(super) fn add_switch(project: &Path, manifest: &Manifest) -> Result<(), ToolError> {
+    let lib = project.join(layout::core_src()).join("lib.rs");
+    let text = std::fs::read_to_string(&lib).map_err(|e| ToolError::io(&lib, e))?;
+    let module = switch_module(manifest);
+    if text.ends_with(&module) {
+        return Ok(());
+    }
+    files::write_if_changed(&lib, format!("{text}{module}").as_bytes()).map(|_| ())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A body is whole when its delimiters, strings and comments close inside it: one that
+    /// would close the `if` around it and reach the reference's body is not.
+    #[test]
+    fn a_body_that_could_close_its_block_is_not_whole() {
+        for (body, whole) in [
+            ("    let a = 1.0;\n    a * 2.0\n", true),
+            ("    x // a comment } else {\n", true),
+            ("    \"} else {\"\n", true),
+            ("    } else { } if false {\n", false),
+            ("    todo!() }\n", false),
+            ("    /* open comment\n", false),
+            ("    r#\"open raw string\n", false),
+        ] {
+            assert_eq!(whole_on_its_own(body), whole, "{body:?}");
+        }
+    }
+
+    /// The student's body comes first, under the switch, the reference's after `else`, and the
+    /// line after the student's body is the `} else {`.
+    #[test]
+    fn both_bodies_stand_side_by_side_under_the_switch() {
+        let (text, end) = both_bodies(3, "    ", "    a + b\n", "    a - b");
+        assert_eq!(
+            text,
+            "    if crate::graded_bodies::student(3) {\n    a + b\n    } else {\n    a - b\n    }\n"
+        );
+        assert_eq!(text.lines().nth(end), Some("    } else {"), "{text}");
+    }
+}
