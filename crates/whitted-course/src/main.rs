@@ -72,15 +72,19 @@ enum Command {
     ///
     /// Only the student's exercise bodies (between `// BEGIN SOLUTION NAME` and `// END
     /// SOLUTION` in DIR's src/) are taken; they go into a fresh copy of this project, so the
-    /// tests, the manifest and the code around the exercises are the instructor's. A body that
-    /// does not compile is graded as not written, and the others still count; so is a body
-    /// that names what a formula never needs (ending or starting a process, files, the network,
-    /// the environment, `unsafe`, `macro_rules!`, the compile-time readers), which is never
-    /// compiled. Each test runs in its own process under --timeout (cargo-nextest), so a panic,
-    /// a stack overflow or an endless loop costs only its own tests, and passes only when
-    /// libtest reported it `ok`: a process that ends early passes nothing. An exercise's points
-    /// (chapters/formulas.toml) are shared by its tests. Exit status 0 once graded, whatever
-    /// the score; 2 on an error.
+    /// tests, the manifest and the code around the exercises are the instructor's. Each
+    /// exercise is judged alone: its tests run with the student's body for it and this
+    /// project's for every other exercise, so a mistake costs only its own exercise
+    /// (--whole-road judges with all of the student's bodies together). A body that does not
+    /// compile, or that stops the compiler at its limits (--compile-cpu, --compile-memory), is
+    /// graded as not written; so is a body the screen refuses (`cargo learn` runs the same
+    /// screen at every save: a formula's grammar passes, whatever its names; `unsafe`, items,
+    /// lifetimes, most macros and paths into the process, files, the network or the
+    /// environment do not), which is never compiled. Each test runs in its own process under
+    /// --timeout (cargo-nextest), so a panic, a stack overflow or an endless loop costs only
+    /// its own tests, and passes only when libtest reported it `ok`: a process that ends early
+    /// passes nothing. An exercise's points (chapters/formulas.toml) are shared by its tests.
+    /// Exit status 0 once graded, whatever the score; 2 on an error.
     Grade(grade::GradeArgs),
     /// Writes what a grading platform takes (Gradescope's zip, PrairieLearn's image and entry
     /// point, CodeGrade's scripts, GitHub Classroom's workflow) into --out; its subcommands are
@@ -92,6 +96,14 @@ enum Command {
         /// The test binary and its arguments.
         #[arg(trailing_var_arg = true, allow_hyphen_values = true, required = true)]
         command: Vec<std::ffi::OsString>,
+    },
+    /// Runs a graded copy's build with each of its processes under a CPU time and a memory
+    /// limit: the grader's wrapper around cargo.
+    #[command(name = "compile-watch", hide = true)]
+    CompileWatch {
+        /// `--cpu-ms N --memory BYTES -- PROGRAM ARGS…`
+        #[arg(trailing_var_arg = true, allow_hyphen_values = true, required = true)]
+        args: Vec<std::ffi::OsString>,
     },
     /// Renders the course book's figures (docs/figures.toml), or checks them with --check.
     ///
@@ -132,6 +144,7 @@ fn main() -> ExitCode {
         Command::Grade(g) => g.run(),
         Command::Autograder(a) => a.run(),
         Command::SandboxRun { command } => return grade::runner::run_test(&command),
+        Command::CompileWatch { args } => return grade::sandbox::watch::run(&args),
         Command::Figures(f) => f.run(),
         Command::Trees(t) => t.run(),
         Command::Book(b) => b.run(),

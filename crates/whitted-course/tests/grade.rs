@@ -255,6 +255,64 @@ fn the_table_explains_each_lost_point() {
     );
 }
 
+/// The reports say how the tests were judged, and for each chapter whether the student's
+/// whole road (the tests of no exercise: the render paths, a whole picture) draws it; those
+/// tests count no points.
+#[test]
+fn the_reports_say_how_it_was_judged_and_what_the_whole_road_draws() {
+    let m = manifest();
+    let mut g = graded(&m);
+    let before = g.score();
+    let whole = |target: &str, name: &str, status: Status| TestResult {
+        time: 0.1,
+        hidden: false,
+        name: name.into(),
+        target: target.into(),
+        exercise: None,
+        status,
+        message: String::new(),
+    };
+    g.tests
+        .push(whole("render_paths", "ch1_road", Status::Failed));
+    g.tests.push(whole(
+        "ch01_camera_rays",
+        "centre_pixel_of_a_chapter_one_image_is_the_colour_of_minus_n",
+        Status::Passed,
+    ));
+    g.tests
+        .push(whole("render_paths", "ch2_road", Status::Passed));
+    assert_eq!(
+        g.road(&m, 1),
+        Some(grade::Road {
+            chapter: 1,
+            passed: 1,
+            total: 2
+        })
+    );
+    assert_eq!(g.road(&m, 3), None);
+    let table = report::table(&g, &m);
+    let second = table.lines().nth(1).unwrap_or("");
+    assert_eq!(second.trim(), grade::Judging::Alone.line(), "{table}");
+    assert!(
+        table.contains("your whole road: chapter 1 does not yet draw as the reference's: 1 of its 2 tests of no exercise fail with all of your bodies together (they count no points)"),
+        "{table}"
+    );
+    let json = report::gradescope(&g, &m);
+    let output = json["output"].as_str().unwrap_or("");
+    assert!(
+        output.contains(grade::Judging::Alone.line())
+            && output.contains("your whole road: chapter 1"),
+        "{output}"
+    );
+    g.judging = grade::Judging::WholeRoad;
+    assert!(report::table(&g, &m).contains("--whole-road"));
+    assert_eq!(
+        g.score(),
+        before,
+        "the tests of no exercise count no points"
+    );
+}
+
 /// JUnit is well-formed XML with a suite per chapter and the failures; the CSV row has a
 /// column for each header column, the name quoted.
 #[test]

@@ -150,6 +150,19 @@ fn ran(g: &Grade) -> BTreeSet<String> {
         .collect()
 }
 
+/// Says on stderr how a submission of a class was graded, as it is.
+fn say_graded(e: &ClassEntry) {
+    if let Ok(g) = &e.grade {
+        eprintln!(
+            "graded {}: {:.2} / {} in {:.0} s",
+            e.student,
+            g.score(),
+            g.max(),
+            g.elapsed.as_secs_f64()
+        );
+    }
+}
+
 fn find<'a>(entries: &'a [ClassEntry], student: &str) -> &'a Grade {
     let e = entries.iter().find(|e| e.student == student).unwrap();
     e.grade
@@ -186,6 +199,7 @@ fn setup(hidden: &Path) -> grade::GradeSetup {
         feedback: true,
         screen: true,
         judging: grade::Judging::Alone,
+        compile: grade::sandbox::watch::CompileLimits::default(),
     }
 }
 
@@ -378,6 +392,30 @@ fn screened(t: &Targets) -> Vec<(&'static str, &'static str, String)> {
             r##"    panic!("{:?} {:?}", option_env!("WHITTED_GRADER_SECRET"), option_env!("HOME"))"##
                 .to_string(),
         ),
+        // what stalls the compiler: refused before it compiles (and with the screen off,
+        // stopped at the compiler's limits: a_body_that_stalls_the_compiler_costs_its_own_exercise)
+        (
+            "endless-const",
+            "near_plane_half_width",
+            ENDLESS_CONST.to_string(),
+        ),
+        // rust-lang/rust#25860's pattern: a helper whose named lifetimes stretch a borrow, the
+        // first step to raw memory and a forged `ok` line; refused for its generic signature
+        (
+            "stretches-a-lifetime",
+            "viewing_basis",
+            r##"    fn stretch<'a, 'b, T: ?Sized>(_: &'a &'b (), v: &'b T) -> &'a T { v }
+    let widen: for<'x> fn(&'x &'static (), &'x String) -> &'static String = stretch;
+    let dangling: &'static String = { let s = String::from("ok"); widen(&&(), &s) };
+    println!("test ex_viewing_basis_is_orthonormal_and_n_points_back_to_the_eye ... {dangling}");
+    None"##
+                .to_string(),
+        ),
+        (
+            "generic-explosion",
+            "pixel_on_near_plane",
+            GENERIC_EXPLOSION.to_string(),
+        ),
     ]
 }
 
@@ -538,7 +576,15 @@ fn a_class_is_graded_as_each_submission_deserves() {
         );
     }
 
-    // 7. whole submissions that end their process: in every body, or in every body while a
+    // 7. an honest one whose names the old screen refused: variables called env, load, save,
+    // path, io and os, comments, a `///` comment on a helper function
+    let honest = class.join("honest-names");
+    copy(&honest);
+    for (exercise, body) in HONEST {
+        set_body(&honest, &m, exercise, body);
+    }
+
+    // 8. whole submissions that end their process: in every body, or in every body while a
     // test runs; screened, and for the runner alone
     for name in ["exits-everywhere", "exits-under-test"] {
         let body = if name == "exits-everywhere" {
@@ -557,17 +603,7 @@ fn a_class_is_graded_as_each_submission_deserves() {
     let options = setup(&hidden);
     let start = std::time::Instant::now();
     // one at a time: the dependencies are built once, and the time a submission takes is its own
-    let graded = |e: &ClassEntry| {
-        if let Ok(g) = &e.grade {
-            eprintln!(
-                "graded {}: {:.2} / {} in {:.0} s",
-                e.student,
-                g.score(),
-                g.max(),
-                g.elapsed.as_secs_f64()
-            );
-        }
-    };
+    let graded = say_graded;
     let entries = grade::grade_class(&root(), &m, &class, &options, 1, &graded).unwrap();
     // what is checked here is containment, not the feedback: no pictures (faster)
     let unscreened = grade::GradeSetup {
@@ -664,6 +700,18 @@ fn a_class_is_graded_as_each_submission_deserves() {
         }
     }
 
+    // the honest names score full marks, and no note
+    let h = find(&entries, "honest-names");
+    assert_eq!(h.score(), h.max(), "{:?}", failed(h));
+    assert!(
+        h.exercises.iter().all(|e| e.note.is_none()),
+        "{:?}",
+        h.exercises
+            .iter()
+            .filter_map(|e| e.note.as_ref())
+            .collect::<Vec<_>>()
+    );
+
     // the tampered handout gains nothing from its edited tests and manifest
     let t = find(&entries, "tampered");
     assert_eq!(t.score(), 0.0);
@@ -750,6 +798,9 @@ fn a_class_is_graded_as_each_submission_deserves() {
     for (name, exercise) in [
         ("macro-include", "nearer_hit"),
         ("env-at-compile-time", "normal_to_world"),
+        ("endless-const", "near_plane_half_width"),
+        ("generic-explosion", "pixel_on_near_plane"),
+        ("stretches-a-lifetime", "viewing_basis"),
     ] {
         let note = note_of(hostile_grade(name), &m, exercise);
         assert!(
@@ -988,6 +1039,127 @@ fn json(path: &Path) -> serde_json::Value {
 /// a submission that is not a copy; PrairieLearn's entry point in a `/grade`-shaped root
 /// (`GRADE_ROOT`) on the same handout uploaded as a folder, then on an essay. They build in
 /// the class's directory, so only the student's crate compiles.
+/// Right bodies with names a formula may well use: `env`, `load`, `save`, `path`, `io`, `os`,
+/// comments, and a helper function with a `///` comment.
+const HONEST: [(&str, &str); 4] = [
+    (
+        "near_plane_half_height",
+        "    // env: the tangent of half the angle, in radians\n    let env = (fov_degrees.to_radians() / 2.0).tan();\n    near * env",
+    ),
+    (
+        "near_plane_half_width",
+        "    /// W = H·A, saved for the record\n    fn save(h: Real, a: Real) -> Real {\n        h * a\n    }\n    save(half_height, aspect)",
+    ),
+    (
+        "point_on_ray",
+        "        let path = self.dir * t; // how far along\n        let load = self.origin;\n        load + path",
+    ),
+    (
+        "direction_colour",
+        "    let io = crate::numeric::normalize(d);\n    let os = Vec3::ONE;\n    (io + os) * 0.5",
+    ),
+];
+
+/// A body that stalls the compiler: an endless `const` (its lint allowed), in exercise 1.3.
+const ENDLESS_CONST: &str = "    #[allow(long_running_const_eval)]
+    const SPIN: u64 = {
+        let mut i: u64 = 0;
+        loop {
+            i = i.wrapping_add(1);
+        }
+    };
+    half_height * aspect + SPIN as Real";
+
+/// A body that grows the compiler's memory: a type doubled 28 times by a generic helper, in
+/// exercise 1.4.
+const GENERIC_EXPLOSION: &str = "    fn d<T: Clone>(x: T) -> (T, T) {
+        (x.clone(), x)
+    }
+    let big = d(d(d(d(d(d(d(d(d(d(d(d(d(d(d(d(d(d(d(d(d(d(d(d(d(d(d(d(0u8))))))))))))))))))))))))))));
+    std::hint::black_box(&big);
+    (half_width * (2.0 * c / columns - 1.0), half_height * (2.0 * r / rows - 1.0))";
+
+/// The compiler under limits: a class of three graded on chapter 1 with the screen off (the
+/// screen refuses both bodies before they compile, which the class above shows): the
+/// reference, a body with an endless `const` and one with a generic blow-up. Each stalled
+/// submission loses exactly the exercise that stalls, with a note that says so, and the class
+/// around it is graded: about log₂ 7 builds more, each stopped at 20 s of CPU or 2 GiB.
+#[test]
+#[ignore = "builds submissions until the compiler's limits stop them (minutes): .ci/run runs it"]
+fn a_body_that_stalls_the_compiler_costs_its_own_exercise() {
+    let m = manifest();
+    let work = tempfile::tempdir().unwrap();
+    let class = work.path().join("class");
+    copy(&class.join("reference"));
+    for (name, exercise, body) in [
+        ("endless-const", "near_plane_half_width", ENDLESS_CONST),
+        (
+            "generic-explosion",
+            "pixel_on_near_plane",
+            GENERIC_EXPLOSION,
+        ),
+    ] {
+        let dir = class.join(name);
+        copy(&dir);
+        set_body(&dir, &m, exercise, body);
+        assert!(
+            grade::screen(body).is_some(),
+            "{name}: the screen refuses it"
+        );
+    }
+    let _one = BUILD.lock().unwrap_or_else(|p| p.into_inner());
+    let options = grade::GradeSetup {
+        chapter: Some(1),
+        hidden: None,
+        screen: false,
+        feedback: false,
+        compile: grade::sandbox::watch::CompileLimits {
+            cpu: Duration::from_secs(20),
+            memory: 2 << 30,
+        },
+        ..setup(work.path())
+    };
+    let start = std::time::Instant::now();
+    let entries = grade::grade_class(&root(), &m, &class, &options, 1, &say_graded).unwrap();
+    eprintln!(
+        "the class of three in {:.0} s",
+        start.elapsed().as_secs_f64()
+    );
+    let reference = find(&entries, "reference");
+    assert_eq!(
+        reference.score(),
+        reference.max(),
+        "{:?}",
+        failed(reference)
+    );
+    for (name, exercise, limit) in [
+        ("endless-const", "near_plane_half_width", "of CPU"),
+        ("generic-explosion", "pixel_on_near_plane", ""),
+    ] {
+        let g = find(&entries, name);
+        let i = index(&m, exercise);
+        for e in &g.exercises {
+            if e.entry == i {
+                let note = e.note.as_deref().unwrap_or("");
+                assert!(
+                    e.score == 0.0
+                        && note.starts_with("stops the compiler")
+                        && note.contains(limit),
+                    "{name}: exercise {exercise}: {} points, {note}",
+                    e.score
+                );
+                eprintln!("{name}: {note}");
+            } else {
+                assert_eq!(
+                    e.score, e.max,
+                    "{name}: exercise {}: {:?}",
+                    m.entries[e.entry].exercise.id, e.note
+                );
+            }
+        }
+    }
+}
+
 #[test]
 #[ignore = "builds and grades through the platforms' scripts (a minute): .ci/run runs it"]
 fn the_platforms_packages_grade_in_their_layouts() {
@@ -1301,6 +1473,7 @@ fn user_level_runtime(
         feedback: false,
         screen: false,
         judging: grade::Judging::Alone,
+        compile: grade::sandbox::watch::CompileLimits::default(),
     };
     let dir = work.join("user-level");
     let all: Vec<usize> = (0..m.entries.len()).collect();

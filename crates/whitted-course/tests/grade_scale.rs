@@ -106,6 +106,7 @@ fn a_class_of_a_hundred_is_graded_and_timed() {
         feedback: true,
         screen: true,
         judging: grade::Judging::Alone,
+        compile: grade::sandbox::watch::CompileLimits::default(),
     };
     let start = std::time::Instant::now();
     let entries = grade::grade_class(&root(), &m, &class, &options, 1, &|e| {

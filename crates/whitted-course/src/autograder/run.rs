@@ -218,5 +218,6 @@ pub fn setup(
         feedback: true,
         screen: true,
         judging: grade::Judging::default(),
+        compile: grade::sandbox::watch::CompileLimits::default(),
     }
 }

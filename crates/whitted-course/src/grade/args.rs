@@ -10,6 +10,7 @@ use std::time::Duration;
 use super::alone::Judging;
 use super::command::{Class, Reports, command};
 use super::sandbox::Level;
+use super::sandbox::watch::CompileLimits;
 use super::setup::{GradeSetup, SandboxSetup};
 use crate::{ToolError, syllabus};
 
@@ -70,6 +71,16 @@ pub struct GradeArgs {
     /// exercise; the reports say which was used.
     #[arg(long)]
     whole_road: bool,
+    /// The CPU time each process of a submission's build may take, in seconds: a body that
+    /// stalls the compiler past it (an endless `const`, a generic blow-up) is graded as not
+    /// written, and found in about log2(exercises) builds more.
+    #[arg(long, value_name = "SECONDS", default_value_t = 120,
+          value_parser = clap::value_parser!(u64).range(5..=3600))]
+    compile_cpu: u64,
+    /// The memory each process of a submission's build may take, in GiB (as --compile-cpu).
+    #[arg(long, value_name = "GIB", default_value_t = 4,
+          value_parser = clap::value_parser!(u64).range(1..=256))]
+    compile_memory: u64,
     #[command(flatten)]
     sandbox: SandboxArgs,
     /// The instructor's project, whose tests and manifest grade [default: the nearest
@@ -102,6 +113,10 @@ impl GradeArgs {
                 Judging::WholeRoad
             } else {
                 Judging::Alone
+            },
+            compile: CompileLimits {
+                cpu: Duration::from_secs(self.compile_cpu),
+                memory: self.compile_memory << 30,
             },
         };
         let class = match (&self.class, &self.out) {

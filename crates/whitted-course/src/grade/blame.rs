@@ -6,11 +6,20 @@
 use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
 
+use super::sandbox::watch;
 use super::splice::{BodyLines, Spliced};
 use crate::{ToolError, cargo, layout};
 
 /// A compiler error: the file and line of its primary span, and its message with its place.
 pub(super) type CompileError = ((PathBuf, usize), String);
+
+/// How the one error of a build stopped at a limit begins ([`watch`]).
+pub(super) const STALLED: &str = "the compiler was stopped: ";
+
+/// The limit a build was stopped at, when it was.
+pub(super) fn stalled(errors: &[CompileError]) -> Option<&str> {
+    errors.first().and_then(|(_, m)| m.strip_prefix(STALLED))
+}
 
 /// Builds `tests` (test targets) or else `bins` of `package` in the graded copy, inside
 /// `wrapper` (the build sandbox) when there is one, without debug information.
@@ -40,7 +49,8 @@ pub(super) fn cargo_build(
 
 /// Builds the test targets (inside `wrapper`, the build sandbox, when there is one); returns
 /// the compiler's errors, each as the primary span's file and line, and the error's first line
-/// with its place (empty when the build succeeded).
+/// with its place (empty when the build succeeded); a build stopped at the compiler's limits
+/// has one error, [`STALLED`] and the limit.
 pub(super) fn build(
     project: &Path,
     target_dir: &Path,
@@ -57,6 +67,9 @@ pub(super) fn build(
     )?;
     if built.success {
         return Ok(Vec::new());
+    }
+    if let Some(why) = watch::stopped(&built.stderr) {
+        return Ok(vec![((PathBuf::new(), 0), format!("{STALLED}{why}"))]);
     }
     let mut errors: Vec<CompileError> = built
         .errors

@@ -7,7 +7,7 @@
 use std::collections::BTreeMap;
 use std::path::Path;
 
-use super::blame::{blame, blame_files, build};
+use super::blame::{blame, blame_files, build, stalled};
 use super::clean::clean;
 use super::copy::GradedCopy;
 use super::splice::{self, Spliced};
@@ -41,6 +41,31 @@ pub(super) fn build_bodies(
         if errors.is_empty() {
             return Ok(Vec::new());
         }
+        if let Some(why) = stalled(&errors) {
+            let why = why.to_string();
+            let students: Vec<usize> = files
+                .iter()
+                .flat_map(|f| f.regions.iter().map(|(r, _)| r.entry))
+                .filter(|&e| {
+                    chapters.contains(&manifest.entries[e].chapter) && !notes.contains_key(&e)
+                })
+                .collect::<std::collections::BTreeSet<usize>>()
+                .into_iter()
+                .collect();
+            let Some(entry) = stalling_body(copy, manifest, files, &students, wrapper)? else {
+                return Ok(vec![clean(&format!(
+                    "the submission's build was stopped at the compiler's limit ({why}), and not because of one exercise's body"
+                ))]);
+            };
+            notes.insert(
+                entry,
+                clean(&format!(
+                    "stops the compiler ({why}): graded as not written; a formula compiles in moments"
+                )),
+            );
+            put_back(manifest, files, entry);
+            continue;
+        }
         let mut broken = blame(&placed, &errors);
         if broken.is_empty() {
             // not on a body's lines (an unclosed brace is reported at the end of the file):
@@ -56,22 +81,68 @@ pub(super) fn build_bodies(
             ))]);
         }
         for (entry, message) in broken {
-            let e = &manifest.entries[entry];
             notes.insert(
                 entry,
                 clean(&format!(
                     "does not compile, graded as not written: {message}"
                 )),
             );
-            for f in files.iter_mut() {
-                for (r, body) in &mut f.regions {
-                    if r.entry == entry {
-                        *body = format!("{}{}\n", r.indent, todo_statement(e));
-                    }
-                }
+            put_back(manifest, files, entry);
+        }
+    }
+}
+
+/// Puts the body of exercise `entry` back to its `todo!()` in `files`.
+fn put_back(manifest: &Manifest, files: &mut [Spliced], entry: usize) {
+    let e = &manifest.entries[entry];
+    for f in files.iter_mut() {
+        for (r, body) in &mut f.regions {
+            if r.entry == entry {
+                *body = format!("{}{}\n", r.indent, todo_statement(e));
             }
         }
     }
+}
+
+/// The student's body that stops the compiler at its limits, among `students` (manifest entries,
+/// in order), when one does: the shortest run of them, from the first, whose build (the crate
+/// alone, every later one of them put back to its `todo!()`) is stopped ends with it. A binary
+/// search: about log₂ n builds, each stopped at the limit or done sooner. `None` when the crate
+/// builds with all of them (the stop was elsewhere). The copy's files are left as the search's
+/// last build wrote them; the caller writes them again.
+fn stalling_body(
+    copy: &GradedCopy,
+    manifest: &Manifest,
+    files: &[Spliced],
+    students: &[usize],
+    wrapper: Option<&cargo::Wrapper>,
+) -> Result<Option<usize>, ToolError> {
+    let stalls = |first: usize| -> Result<bool, ToolError> {
+        let mut probe: Vec<Spliced> = files.to_vec();
+        for &e in &students[first..] {
+            put_back(manifest, &mut probe, e);
+        }
+        for f in &probe {
+            let (text, _) = f.text();
+            files::write_if_changed(&copy.project.join(&f.file), text.as_bytes())?;
+        }
+        let errors = build(&copy.project, &copy.target_dir, &[], wrapper)?;
+        Ok(stalled(&errors).is_some())
+    };
+    // invariant: the first `lo` do not stall the crate, the first `hi` do
+    let (mut lo, mut hi) = (0, students.len());
+    if hi == 0 || !stalls(hi)? {
+        return Ok(None);
+    }
+    while hi - lo > 1 {
+        let mid = lo + (hi - lo) / 2;
+        if stalls(mid)? {
+            hi = mid;
+        } else {
+            lo = mid;
+        }
+    }
+    Ok(Some(students[hi - 1]))
 }
 
 /// Adds the instructor's hidden tests (the directory `hidden`) to the copy and builds them,

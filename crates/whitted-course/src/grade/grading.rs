@@ -14,7 +14,7 @@ use super::clean::clean;
 use super::copy::{GradedCopy, run_reads};
 use super::outcome::{ExerciseScore, Grade, Timings};
 use super::render::{self, ChapterFeedback, RenderScore};
-use super::sandbox::Sandbox;
+use super::sandbox::{Sandbox, watch};
 use super::score::{chapter_targets, scores};
 use super::setup::{GradeSetup, SandboxSetup};
 use super::splice::Spliced;
@@ -135,9 +135,15 @@ impl Grading {
             None => None,
         };
         copy.sync(root, manifest, options.keep)?;
-        let wrapper = sandbox
-            .as_ref()
-            .and_then(|s| s.build_wrapper(&copy.project, &copy.target_dir));
+        // the build runs under the compiler's limits, inside its sandbox when there is one
+        let wrapper = match (&options.sandbox, &sandbox) {
+            (Some(setup), Some(s)) => Some(watch::watched(
+                &setup.runner,
+                options.compile,
+                s.build_wrapper(&copy.project, &copy.target_dir),
+            )),
+            _ => None,
+        };
         Ok(Self {
             copy,
             sandbox,

@@ -8,6 +8,7 @@ use std::time::Duration;
 
 use super::alone::Judging;
 use super::sandbox;
+use super::sandbox::watch::CompileLimits;
 
 /// The default time limit of one test.
 pub const DEFAULT_TIMEOUT: Duration = Duration::from_secs(20);
@@ -42,6 +43,9 @@ pub struct GradeSetup {
     /// ([`screen()`](crate::grade::screen())). Always on from the command line; off only where
     /// a test proves the second lock, the runner's, alone.
     pub screen: bool,
+    /// The limits of each process of the submission's build (the compiler's CPU time and
+    /// memory): a body that stalls the compiler is graded as not written.
+    pub compile: CompileLimits,
     /// How an exercise's tests are judged: alone (the student's body for it, the reference's for
     /// every other exercise), or with the student's whole road (`--whole-road`).
     pub judging: Judging,
@@ -72,6 +76,7 @@ impl Default for GradeSetup {
             feedback: true,
             screen: true,
             judging: Judging::default(),
+            compile: CompileLimits::default(),
         }
     }
 }

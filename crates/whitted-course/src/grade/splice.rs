@@ -48,6 +48,7 @@ pub fn student_body(submission: &Path, r: &Region, name: &str) -> Result<String,
 pub(super) type BodyLines = (usize, usize, usize);
 
 /// A source file of the graded copy and the lines each exercise's body holds in it.
+#[derive(Clone)]
 pub(super) struct Spliced {
     /// The file, relative to the project.
     pub(super) file: PathBuf,

@@ -5,9 +5,14 @@
 //!   what the linker needs), the toolchain and the registry read-only, the graded copy
 //!   read-only, the build directory writable, and nothing else: not the instructor's project,
 //!   not the hidden tests, not the results, not the machine's own files. A body's
-//!   `include_str!`, `include_bytes!` or `#[path]` can read only what the sandbox shows, which
-//!   holds nothing secret (the graded copy carries no reference body of a graded exercise and
-//!   no hidden test while the student's crate compiles).
+//!   `include_str!`, `include_bytes!` or `#[path]` can read only what the sandbox shows: no
+//!   hidden test while the student's crate compiles, and of the instructor's files only the
+//!   graded copy, whose regions hold the reference's bodies beside the student's (each exercise
+//!   is judged alone, [`super::alone`]). Those macros and attributes are the screen's to refuse
+//!   ([`super::screen()`]: a body may call only a short list of macros and carry only lint
+//!   attributes), which it does at every level.
+//! - **The compiler under limits** ([`watch`]): each process of the build has a CPU time and a
+//!   memory limit, so a body that stalls the compiler costs its own exercise.
 //! - **Run.** nextest stays outside and writes its report; each test binary it starts goes
 //!   through [`super::runner::run_test`] (nextest's target runner, `CARGO_TARGET_<TRIPLE>_RUNNER`): a new
 //!   root that holds only the system's libraries, the test binary read-only, the files the
@@ -29,8 +34,8 @@
 //!
 //! Its files, one job each: `policy.rs` (the levels, the limits and the command of a test
 //! run), `bwrap.rs` (bubblewrap's arguments), `worker.rs` (a worker's sandbox, found and
-//! tried), `compile.rs` (the build's sandbox), `protect.rs` (the secrets at the user level)
-//! and `sweep.rs` (what a test's user leaves behind).
+//! tried), `compile.rs` (the build's sandbox), `watch.rs` (the build's limits), `protect.rs`
+//! (the secrets at the user level) and `sweep.rs` (what a test's user leaves behind).
 //!
 //! Course book: [The instructor's guide](../../../../../docs/book/instructor-guide.html) (`docs/src/instructor-guide.md`).
 
@@ -39,6 +44,7 @@ mod compile;
 mod policy;
 mod protect;
 mod sweep;
+pub mod watch;
 mod worker;
 
 pub(crate) use policy::SLOT_VAR;
