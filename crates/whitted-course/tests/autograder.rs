@@ -276,8 +276,19 @@ fn the_classroom_workflow_scores_every_exercise_once() {
         timeout: 20,
         settings: Settings::default(),
         sandbox: Some(Level::Namespaces),
+        judging: grade::Judging::Alone,
     };
     let yml = classroom::workflow(&m, &options);
+    // each exercise judged alone unless the instructor asks for the whole road
+    assert!(!yml.contains("--whole-road"), "{yml}");
+    let whole = classroom::workflow(
+        &m,
+        &package::Options {
+            judging: grade::Judging::WholeRoad,
+            ..options.clone()
+        },
+    );
+    assert!(whole.contains(" --whole-road"), "{whole}");
     let ids: Vec<String> = m
         .entries
         .iter()
@@ -380,6 +391,7 @@ fn the_gradescope_zip_holds_its_scripts_at_the_root() {
         timeout: 9,
         settings: Settings::default(),
         sandbox: Some(Level::Namespaces),
+        judging: grade::Judging::Alone,
     };
     package::write(&root(), &m, Platform::Gradescope, &options, &out).unwrap();
     let file = std::fs::File::open(out.join("autograder.zip")).unwrap();
@@ -418,6 +430,7 @@ fn the_gradescope_zip_holds_its_scripts_at_the_root() {
     let bare = dir.path().join("bare");
     let options = package::Options {
         sandbox: None,
+        judging: grade::Judging::Alone,
         ..options
     };
     package::write(&root(), &m, Platform::Gradescope, &options, &bare).unwrap();
@@ -447,6 +460,7 @@ fn the_prairielearn_package_has_its_entry_point_and_image() {
         timeout: 20,
         settings: Settings::default(),
         sandbox: Some(Level::Namespaces),
+        judging: grade::Judging::Alone,
     };
     package::write(&root(), &manifest(), Platform::Prairielearn, &options, &out).unwrap();
     let run = std::fs::read_to_string(out.join("run.sh")).unwrap();

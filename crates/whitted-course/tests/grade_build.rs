@@ -1181,6 +1181,7 @@ fn the_platforms_packages_grade_in_their_layouts() {
         timeout: 5,
         settings: Settings::default(),
         sandbox: Some(Level::Namespaces),
+        judging: grade::Judging::Alone,
     };
     let _one = BUILD.lock().unwrap_or_else(|p| p.into_inner());
 
@@ -1313,6 +1314,7 @@ fn the_platforms_packages_grade_in_their_layouts() {
     let package = work.path().join("gradescope-user");
     let user = autograder::package::Options {
         sandbox: Some(Level::User),
+        judging: grade::Judging::Alone,
         ..options
     };
     autograder::package::write(&root(), &m, Platform::Gradescope, &user, &package).unwrap();
@@ -1832,6 +1834,7 @@ fn the_classroom_workflow_grades_the_students_repository() {
         timeout: 5,
         settings: Settings::default(),
         sandbox: Some(Level::Namespaces),
+        judging: grade::Judging::Alone,
     };
     autograder::package::write(&root(), &m, Platform::Classroom, &options, &repo).unwrap();
     let git = |args: &[&str]| {

@@ -41,6 +41,9 @@ pub fn workflow(manifest: &Manifest, options: &Options) -> String {
     if let Some(c) = options.chapter {
         args += &format!(" --chapter {c}");
     }
+    if options.judging == crate::grade::Judging::WholeRoad {
+        args += " --whole-road";
+    }
     let mut out = format!(
         r#"# Written by `whitted autograder --platform classroom`. GitHub Classroom runs it in each
 # student's repository on every push: one step grades, one step per exercise scores it, and

@@ -9,7 +9,7 @@ use std::process::ExitCode;
 use super::options::Options;
 use super::run::{self, Submission};
 use super::{Platform, Settings, package};
-use crate::grade::{GradeSetup, SandboxArgs};
+use crate::grade::{GradeSetup, Judging, SandboxArgs};
 use crate::manifest::Manifest;
 use crate::{ToolError, syllabus};
 
@@ -58,9 +58,22 @@ struct PackageGrading {
     /// Post the leaderboard: the render's M rays/s and its error against the reference.
     #[arg(long)]
     leaderboard: bool,
+    /// Judge every test with all of the student's bodies together, as `whitted grade
+    /// --whole-road` does, instead of each exercise alone.
+    #[arg(long)]
+    whole_road: bool,
 }
 
 impl PackageGrading {
+    /// How each exercise's tests are judged.
+    fn judging(&self) -> Judging {
+        if self.whole_road {
+            Judging::WholeRoad
+        } else {
+            Judging::Alone
+        }
+    }
+
     /// How the results are shown.
     fn settings(&self) -> Settings {
         Settings {
@@ -164,6 +177,7 @@ impl AutograderArgs {
                     timeout: self.grading.timeout,
                     settings: self.grading.settings(),
                     sandbox: self.sandbox.level(),
+                    judging: self.grading.judging(),
                 };
                 write_package(self.root.as_ref(), platform, &options, &out)
             }
@@ -192,6 +206,10 @@ impl PackageBuild {
             self.sandbox.setup()?,
             grading.leaderboard,
         );
+        let setup = GradeSetup {
+            judging: grading.judging(),
+            ..setup
+        };
         Ok((root, manifest, setup))
     }
 }

@@ -6,6 +6,7 @@
 use std::path::PathBuf;
 
 use super::Settings;
+use crate::grade::Judging;
 use crate::grade::sandbox::Level;
 
 /// The cargo-nextest version the packages install (the one `.ci/run` installs).
@@ -26,4 +27,6 @@ pub struct Options {
     /// container makes no namespace; `setup.sh` then closes the project to other users);
     /// `None` grades without one, the container then being the only sandbox.
     pub sandbox: Option<Level>,
+    /// How each exercise's tests are judged (`--whole-road` for the student's whole road).
+    pub judging: Judging,
 }

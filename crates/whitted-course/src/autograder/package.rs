@@ -26,6 +26,7 @@ use std::path::{Path, PathBuf};
 
 use super::Platform;
 pub use super::options::{NEXTEST_VERSION, Options};
+use crate::grade::Judging;
 use crate::grade::sandbox::Level;
 use crate::manifest::Manifest;
 use crate::{ToolError, files};
@@ -63,6 +64,9 @@ fn prebuild_args(options: &Options) -> String {
     }
     if options.settings.leaderboard {
         a += " --leaderboard";
+    }
+    if options.judging == Judging::WholeRoad {
+        a += " --whole-road";
     }
     match options.sandbox {
         Some(Level::Namespaces) => {}

@@ -105,8 +105,8 @@ fn put_back(manifest: &Manifest, files: &mut [Spliced], entry: usize) {
 }
 
 /// The student's body that stops the compiler at its limits, among `students` (manifest entries,
-/// in order), when one does: the shortest run of them, from the first, whose build (the crate
-/// alone, every later one of them put back to its `todo!()`) is stopped ends with it. A binary
+/// in order), when one does: the last of the shortest run of them, from the first, whose build
+/// (the crate alone, every later one of them put back to its `todo!()`) is stopped. A binary
 /// search: about log₂ n builds, each stopped at the limit or done sooner. `None` when the crate
 /// builds with all of them (the stop was elsewhere). The copy's files are left as the search's
 /// last build wrote them; the caller writes them again.
