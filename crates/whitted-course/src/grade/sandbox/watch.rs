@@ -8,7 +8,7 @@
 //! memory), ends any that passes its limit with everything it started, and says so on its
 //! stderr in one line that begins with [`STOPPED`]. CPU time, not the wall clock: a loaded
 //! machine makes a build slower, not costlier, so it never stops an honest one. The build then
-//! fails, and the grader finds the body to blame ([`super::super::build`]).
+//! fails, and the grader finds the body to blame (`grade/build.rs`).
 //!
 //! Course book: [The instructor's guide](../../../../../../docs/book/instructor-guide.html) (`docs/src/instructor-guide.md`).
 
