@@ -130,8 +130,8 @@ const STD_REFUSED: &[(&[&str], &str)] = &[
 ];
 
 /// The functions and types of the renderer and the syllabus that open a file or end the process:
-/// a path to one is refused like [`STD_REFUSED`]'s (`tests/grade.rs` checks this is all of
-/// them).
+/// a path to one is refused like a path through the standard library's modules of the process or
+/// the files (`tests/grade.rs` checks this is all of them).
 pub const REFUSED_OF_THE_PROJECT: &[&str] = &[
     "check_destination",
     "write_png",
