@@ -65,10 +65,10 @@ pub struct GradeArgs {
     /// tests alone.
     #[arg(long)]
     no_feedback: bool,
-    /// Judge every test with all of the student's bodies together, as before each exercise was
-    /// judged alone: a mistake then also costs the exercises whose tests call it. By default an
-    /// exercise's tests run with the student's body for it and the reference's for every other
-    /// exercise; the reports say which was used.
+    /// Judge every test with all of the student's bodies together: a mistake then also costs
+    /// the exercises whose tests call it. By default an exercise's tests run with the
+    /// student's body for it and the reference's for every other exercise; the reports say
+    /// which was used.
     #[arg(long)]
     whole_road: bool,
     /// The CPU time each process of a submission's build may take, in seconds: a body that
