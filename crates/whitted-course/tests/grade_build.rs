@@ -577,7 +577,7 @@ fn a_class_is_graded_as_each_submission_deserves() {
     }
 
     // 7. an honest one whose names the old screen refused: variables called env, load, save,
-    // path, io and os, comments, a `///` comment on a helper function
+    // path, io and os, comments, a `///` comment on a helper function, an inner lint attribute
     let honest = class.join("honest-names");
     copy(&honest);
     for (exercise, body) in HONEST {
@@ -1040,8 +1040,12 @@ fn json(path: &Path) -> serde_json::Value {
 /// (`GRADE_ROOT`) on the same handout uploaded as a folder, then on an essay. They build in
 /// the class's directory, so only the student's crate compiles.
 /// Right bodies with names a formula may well use: `env`, `load`, `save`, `path`, `io`, `os`,
-/// comments, and a helper function with a `///` comment.
-const HONEST: [(&str, &str); 4] = [
+/// comments, a helper function with a `///` comment, and a lint opened as a function's body may.
+const HONEST: [(&str, &str); 5] = [
+    (
+        "lambert",
+        "    #![allow(clippy::float_cmp)]\n    n.dot(s).max(0.0)",
+    ),
     (
         "near_plane_half_height",
         "    // env: the tangent of half the angle, in radians\n    let env = (fov_degrees.to_radians() / 2.0).tan();\n    near * env",

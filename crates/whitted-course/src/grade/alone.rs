@@ -8,12 +8,19 @@
 //! ```text
 //! // BEGIN SOLUTION sphere_coefficients
 //! if crate::graded_bodies::student(11) {
+//! {
 //!     …the student's body…
+//! }
 //! } else {
+//! {
 //!     …the reference's body…
+//! }
 //! }
 //! // END SOLUTION
 //! ```
+//!
+//! Each body keeps a block of its own, the final expression of its branch: there, as at the
+//! top of a function's body, it may open with an inner attribute (`#![allow(…)]`).
 //!
 //! and the crate gains the module `graded_bodies` ([`switch_module`]), which answers, once per
 //! process, which exercise runs the student's body. The test runner names the test it starts in
@@ -75,9 +82,10 @@ pub fn whole_on_its_own(body: &str) -> bool {
 }
 
 /// The region's text in the graded copy when the exercise `entry` is judged alone: the
-/// student's `body` and the `reference`'s side by side, chosen per process by the switch; and
-/// the line (counted from the region's first line after BEGIN, from 0) where the student's body
-/// ends: the `} else {` after it, where a syntax error in the body is often reported.
+/// student's `body` and the `reference`'s side by side, each in a block of its own, chosen per
+/// process by the switch; and the line (counted from the region's first line after BEGIN, from
+/// 0) where the student's body ends: the `}` after it, where a syntax error in the body is
+/// often reported.
 #[must_use]
 pub fn both_bodies(entry: usize, indent: &str, body: &str, reference: &str) -> (String, usize) {
     let ended = |s: &str| -> String {
@@ -89,10 +97,10 @@ pub fn both_bodies(entry: usize, indent: &str, body: &str, reference: &str) -> (
     };
     let student = ended(body);
     let text = format!(
-        "{indent}if crate::{MODULE}::student({entry}) {{\n{student}{indent}}} else {{\n{}{indent}}}\n",
+        "{indent}if crate::{MODULE}::student({entry}) {{\n{indent}{{\n{student}{indent}}}\n{indent}}} else {{\n{indent}{{\n{}{indent}}}\n{indent}}}\n",
         ended(reference)
     );
-    (text, 1 + student.lines().count())
+    (text, 2 + student.lines().count())
 }
 
 /// The module the graded copy's crate gains: which exercise runs the student's body in this
@@ -172,15 +180,57 @@ mod tests {
         }
     }
 
-    /// The student's body comes first, under the switch, the reference's after `else`, and the
-    /// line after the student's body is the `} else {`.
+    /// The student's body comes first, under the switch, the reference's after `else`, each in
+    /// a block of its own; the line after the student's body closes its block.
     #[test]
     fn both_bodies_stand_side_by_side_under_the_switch() {
         let (text, end) = both_bodies(3, "    ", "    a + b\n", "    a - b");
         assert_eq!(
             text,
-            "    if crate::graded_bodies::student(3) {\n    a + b\n    } else {\n    a - b\n    }\n"
+            "    if crate::graded_bodies::student(3) {\n    {\n    a + b\n    }\n    } else {\n    {\n    a - b\n    }\n    }\n"
         );
-        assert_eq!(text.lines().nth(end), Some("    } else {"), "{text}");
+        assert_eq!(text.lines().nth(end), Some("    }"), "{text}");
+        assert_eq!(text.lines().nth(end - 1), Some("    a + b"), "{text}");
+    }
+
+    /// Both bodies compile side by side, the student's opening with an inner attribute as a
+    /// function's body may, and each runs where the switch says: rustc itself builds a crate
+    /// of the two and its switch.
+    #[test]
+    fn a_body_that_opens_with_an_inner_attribute_compiles_beside_the_reference() {
+        let (both, _) = both_bodies(
+            0,
+            "    ",
+            "    #![allow(unused_variables)]\n    let unused = 1.0;\n    x * 2.0",
+            "    x + 1.0",
+        );
+        let source = format!(
+            "#![deny(unused_variables)]\nmod graded_bodies {{ pub fn student(_: usize) -> bool {{ std::env::args().count() > 1 }} }}\nfn f(x: f64) -> f64 {{\n{both}}}\nfn main() {{ println!(\"{{}}\", f(3.0)); }}\n"
+        );
+        let dir = tempfile::tempdir().unwrap();
+        let file = dir.path().join("both.rs");
+        std::fs::write(&file, &source).unwrap();
+        let exe = dir.path().join("both");
+        let rustc = std::env::var_os("RUSTC").unwrap_or_else(|| "rustc".into());
+        let built = std::process::Command::new(rustc)
+            .args(["--edition", "2024", "-o"])
+            .arg(&exe)
+            .arg(&file)
+            .output()
+            .unwrap();
+        assert!(
+            built.status.success(),
+            "{}\n{source}",
+            String::from_utf8_lossy(&built.stderr)
+        );
+        let run = |args: &[&str]| {
+            let out = std::process::Command::new(&exe)
+                .args(args)
+                .output()
+                .unwrap();
+            String::from_utf8_lossy(&out.stdout).trim().to_string()
+        };
+        assert_eq!(run(&[]), "4", "the reference's body");
+        assert_eq!(run(&["student"]), "6", "the student's body");
     }
 }
