@@ -690,6 +690,19 @@ fn a_class_is_graded_as_each_submission_deserves() {
             .as_deref()
             .is_some_and(|n| n.starts_with("does not compile"))
     );
+    // the error is placed at the student's own line, not the graded copy's
+    let facet = &handout::regions(&root(), &m).unwrap()[index(&m, "facet_crossing")].file;
+    let text = std::fs::read_to_string(broken.join(facet)).unwrap();
+    let line = 1 + text
+        .lines()
+        .position(|l| l.contains("\"not a number\""))
+        .unwrap();
+    let place = format!("{}:{line}: ", facet.display());
+    assert!(
+        e222.note.as_deref().is_some_and(|n| n.contains(&place)),
+        "{place} in {:?}",
+        e222.note
+    );
     // each exercise judged alone: the three lose their points, every other keeps all of its
     for e in &b.exercises {
         let id = &m.entries[e.entry].exercise.id;

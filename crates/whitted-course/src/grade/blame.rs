@@ -96,9 +96,16 @@ pub(super) fn blame(
     let mut out = BTreeMap::new();
     for ((file, line), message) in errors {
         for (_, lines) in placed.iter().filter(|(f, _)| f == file) {
-            for &(entry, first, last) in lines {
+            for &(entry, first, last, shift) in lines {
                 if (first..=last).contains(line) {
-                    out.entry(entry).or_insert_with(|| message.clone());
+                    // the place as the student's own file numbers it
+                    let copy = format!("{}:{line}: ", file.display());
+                    let own = usize::try_from(*line as i64 + shift).unwrap_or(*line);
+                    let told = message.strip_prefix(&copy).map_or_else(
+                        || message.clone(),
+                        |m| format!("{}:{own}: {m}", file.display()),
+                    );
+                    out.entry(entry).or_insert(told);
                 }
             }
         }

@@ -15,22 +15,28 @@ use crate::{ToolError, files, layout};
 /// The body a student wrote for the region `r` of the exercise named `name`: the lines between
 /// the region's markers in the same file of the submission. `Err` says why there is none.
 pub fn student_body(submission: &Path, r: &Region, name: &str) -> Result<String, String> {
+    student_body_at(submission, r, name).map(|(body, _)| body)
+}
+
+/// [`student_body`], and the line of the student's file (from 1) where the body begins.
+fn student_body_at(submission: &Path, r: &Region, name: &str) -> Result<(String, usize), String> {
     let path = submission.join(&r.file);
     let text = std::fs::read_to_string(&path)
         .map_err(|e| format!("cannot read {}: {e}", r.file.display()))?;
     let begin = format!("{BEGIN} {name}");
     let mut lines = text.split_inclusive('\n');
-    if !lines.by_ref().any(|l| l.trim() == begin) {
+    let Some(at) = lines.by_ref().position(|l| l.trim() == begin) else {
         return Err(format!(
             "`{begin}` is missing from {}: graded as not written",
             r.file.display()
         ));
-    }
+    };
     let mut body = String::new();
     for line in lines {
         let t = line.trim();
         if t == END {
-            return Ok(body);
+            // `at` counts from 0 the BEGIN line: the body begins on the line after it
+            return Ok((body, at + 2));
         }
         if t.starts_with(BEGIN) {
             break;
@@ -43,9 +49,10 @@ pub fn student_body(submission: &Path, r: &Region, name: &str) -> Result<String,
     ))
 }
 
-/// An exercise's body in a spliced file: its manifest entry, and the first and last line
-/// (from 1) an error in it may be reported on.
-pub(super) type BodyLines = (usize, usize, usize);
+/// An exercise's body in a spliced file: its manifest entry, the first and last line (from 1)
+/// an error in it may be reported on, and what to add to such a line to find it in the student's
+/// own file (0 when the body is not the student's).
+pub(super) type BodyLines = (usize, usize, usize, i64);
 
 /// A source file of the graded copy and the lines each exercise's body holds in it.
 #[derive(Clone)]
@@ -60,6 +67,9 @@ pub(super) struct Spliced {
     /// judged alone: each holds the reference's body too, beside the student's
     /// ([`super::alone::both_bodies`]).
     pub(super) alone: BTreeSet<usize>,
+    /// For each region whose body is the student's, the line of the student's file (from 1)
+    /// where it begins: a compiler error is reported at the student's own line.
+    pub(super) student_at: BTreeMap<usize, usize>,
 }
 
 impl Spliced {
@@ -78,11 +88,17 @@ impl Spliced {
             // the BEGIN line, the body, the END line and the line after it: a syntax error
             // in a body is often reported at the token that follows it
             let first = out.lines().count();
+            // the body's first line here, and in the student's file
+            let shift = |starts: usize| {
+                self.student_at
+                    .get(&r.entry)
+                    .map_or(0, |&at| at as i64 - starts as i64)
+            };
             if self.alone.contains(&r.entry) {
-                // the student's body, then the line after it (the `} else {`)
+                // the student's body (after the `if` and its block's `{`), then the line after it
                 let (both, end) = alone::both_bodies(r.entry, &r.indent, body, &r.solution);
                 out.push_str(&both);
-                lines.push((r.entry, first, first + end + 1));
+                lines.push((r.entry, first, first + end + 1, shift(first + 3)));
             } else {
                 let mut body = body.clone();
                 if !body.is_empty() && !body.ends_with('\n') {
@@ -90,7 +106,7 @@ impl Spliced {
                 }
                 out.push_str(&body);
                 let last = out.lines().count() + 2;
-                lines.push((r.entry, first, last));
+                lines.push((r.entry, first, last, shift(first + 1)));
             }
             out.push_str(&r.indent);
             out.push_str(END);
@@ -118,13 +134,18 @@ pub(super) fn splice(
 ) -> Result<Vec<Spliced>, ToolError> {
     let mut by_file: BTreeMap<PathBuf, Vec<(Region, String)>> = BTreeMap::new();
     let mut alone = BTreeSet::new();
+    let mut student_at = BTreeMap::new();
     for r in handout::regions(root, manifest)? {
         let e = &manifest.entries[r.entry];
         let body = if chapters.contains(&e.chapter) {
             if judging == Judging::Alone {
                 alone.insert(r.entry);
             }
-            student_body(submission, &r, &e.exercise.name)
+            student_body_at(submission, &r, &e.exercise.name)
+                .map(|(body, at)| {
+                    student_at.insert(r.entry, at);
+                    body
+                })
                 .and_then(|body| match whitted_learn::screen::screen(&body).filter(|_| screen) {
                     Some(refused) => Err(format!(
                         "refused by the screen, {refused}; graded as not written (cargo learn says the same at the save)"
@@ -135,6 +156,7 @@ pub(super) fn splice(
                     None => Ok(body),
                 })
                 .unwrap_or_else(|why| {
+                    student_at.remove(&r.entry);
                     notes.insert(r.entry, super::clean::clean(&why));
                     format!("{}{}\n", r.indent, handout::todo_statement(e))
                 })
@@ -154,6 +176,7 @@ pub(super) fn splice(
                 reference,
                 regions,
                 alone: alone.clone(),
+                student_at: student_at.clone(),
             })
         })
         .collect()
