@@ -50,7 +50,7 @@ pub fn check(
     };
     // the grader's screen, on every body, before anything is built: what it would refuse is
     // told now, with its line and a way to write it
-    for refused in crate::screen::refused(root, manifest) {
+    for refused in crate::screen::refused::refused(root, manifest) {
         say.report(&style.bad(&format!("{}\n", refused.line(manifest))));
     }
     // 0. what was saved since the last check comes first: its targets, then its verdict

@@ -35,9 +35,7 @@
 
 use proc_macro2::{Delimiter, Spacing, TokenStream, TokenTree};
 
-mod refused;
-
-pub use refused::{Refused, refused};
+pub mod refused;
 
 /// The macros a body may call: printing, formatting, assertions, and the panics that mark what
 /// is not written yet.

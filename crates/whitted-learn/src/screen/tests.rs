@@ -121,7 +121,7 @@ fn the_loop_names_the_refused_line_in_the_students_file() {
     std::fs::create_dir_all(&src).unwrap();
     let text = "pub fn near_plane_half_width(h: Real, a: Real) -> Real {\n    // BEGIN SOLUTION near_plane_half_width\n    let env = h * a;\n    env\n    // END SOLUTION\n}\n\npub fn viewing_basis() {\n    // BEGIN SOLUTION viewing_basis\n    let home = 1.0;\n    let x = std::env::var(\"HOME\");\n    // END SOLUTION\n}\n";
     std::fs::write(src.join("camera.rs"), text).unwrap();
-    let found = refused(dir.path(), &manifest);
+    let found = super::refused::refused(dir.path(), &manifest);
     assert_eq!(found.len(), 1, "{found:?}");
     let r = &found[0];
     assert_eq!(Some(r.entry), manifest.by_name("viewing_basis"));
