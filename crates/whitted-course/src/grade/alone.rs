@@ -19,15 +19,15 @@
 //! // END SOLUTION
 //! ```
 //!
-//! Each body keeps a block of its own, the final expression of its branch: there, as at the
-//! top of a function's body, it may open with an inner attribute (`#![allow(…)]`).
-//!
 //! and the crate gains the module `graded_bodies` ([`switch_module`]), which answers, once per
 //! process, which exercise runs the student's body. The test runner names the test it starts in
 //! [`GRADED_TEST_VAR`]: a test named after an exercise (`ex_NAME_…`) runs the student's body of
 //! that exercise alone; any other test (the render paths, a chapter's whole picture) and any
 //! program started without the variable (the chapter binaries the feedback renders with) runs
 //! every body of the student's: their whole road, which the reports show beside the points.
+//!
+//! Each body keeps a block of its own, the final expression of its branch: there, as at the
+//! top of a function's body, it may open with an inner attribute (`#![allow(…)]`).
 //!
 //! A student's body goes in only when it is whole on its own (its brackets, braces, quotes and
 //! comments close inside it: [`whole_on_its_own`]), so it can never close the `if` around it and
