@@ -52,7 +52,8 @@ pub(super) fn build_bodies(
                 .collect::<std::collections::BTreeSet<usize>>()
                 .into_iter()
                 .collect();
-            let Some(entry) = stalling_body(copy, manifest, files, &students, wrapper)? else {
+            let Some(entry) = stalling_body(copy, manifest, files, &students, public, wrapper)?
+            else {
                 return Ok(vec![clean(&format!(
                     "the submission's build was stopped at the compiler's limit ({why}), and not because of one exercise's body"
                 ))]);
@@ -106,15 +107,17 @@ fn put_back(manifest: &Manifest, files: &mut [Spliced], entry: usize) {
 
 /// The student's body that stops the compiler at its limits, among `students` (manifest entries,
 /// in order), when one does: the last of the shortest run of them, from the first, whose build
-/// (the crate alone, every later one of them put back to its `todo!()`) is stopped. A binary
-/// search: about log₂ n builds, each stopped at the limit or done sooner. `None` when the crate
-/// builds with all of them (the stop was elsewhere). The copy's files are left as the search's
-/// last build wrote them; the caller writes them again.
+/// (of the same `targets`, every later one of them put back to its `todo!()`) is stopped. A
+/// binary search from the build that was stopped with all of them: about log₂ n builds more,
+/// each stopped at the limit or done sooner. `None` when the build is stopped with none of them
+/// (the limit is too low for the build itself): no body is blamed then. The copy's files are
+/// left as the search's last build wrote them; the caller writes them again.
 fn stalling_body(
     copy: &GradedCopy,
     manifest: &Manifest,
     files: &[Spliced],
     students: &[usize],
+    targets: &[String],
     wrapper: Option<&cargo::Wrapper>,
 ) -> Result<Option<usize>, ToolError> {
     let stalls = |first: usize| -> Result<bool, ToolError> {
@@ -126,12 +129,12 @@ fn stalling_body(
             let (text, _) = f.text();
             files::write_if_changed(&copy.project.join(&f.file), text.as_bytes())?;
         }
-        let errors = build(&copy.project, &copy.target_dir, &[], wrapper)?;
+        let errors = build(&copy.project, &copy.target_dir, targets, wrapper)?;
         Ok(stalled(&errors).is_some())
     };
-    // invariant: the first `lo` do not stall the crate, the first `hi` do
+    // invariant: the first `lo` do not stall the build, the first `hi` do (all of them did)
     let (mut lo, mut hi) = (0, students.len());
-    if hi == 0 || !stalls(hi)? {
+    if hi == 0 || stalls(0)? {
         return Ok(None);
     }
     while hi - lo > 1 {
