@@ -90,7 +90,7 @@ pub fn viewing_basis(eye: Vec3, look_at: Vec3, up: Vec3) -> Option<(Vec3, Vec3, 
 
 /// A pinhole camera with the notes' parameters, and the derived near-plane size. Built once
 /// by [`Camera::new`]; its parts are read with the accessors of the same names.
-#[derive(Clone, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
 pub struct Camera {
     eye: Vec3,
     u: Vec3,

@@ -38,6 +38,7 @@
 pub mod accel;
 pub mod camera;
 pub mod error;
+pub mod judge;
 pub mod light;
 pub mod material;
 pub mod numeric;

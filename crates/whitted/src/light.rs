@@ -16,7 +16,7 @@
 use crate::real::{Real, Vec3};
 
 /// A point light.
-#[derive(Clone, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
 pub struct Light {
     /// Its position L.
     pub position: Vec3,

@@ -20,7 +20,7 @@
 use crate::real::{Real, Vec3};
 
 /// How a surface answers light.
-#[derive(Clone, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
 pub struct Material {
     /// ρa per channel.
     pub ambient: Vec3,

@@ -11,7 +11,7 @@ use crate::real::{Mat4, Real, Vec3};
 /// A ray r(t) = e + d·t. The direction is *not* required to be unit length: primary rays keep
 /// the notes' d (which reaches the near plane at t = 1), and rays carried into object space
 /// keep M⁻¹d unnormalised so that t means the same point in both spaces.
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Copy, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
 pub struct Ray {
     /// The origin e.
     pub origin: Vec3,

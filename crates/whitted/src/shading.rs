@@ -82,7 +82,7 @@ pub fn highlight(n: Vec3, s: Vec3, v: Vec3, shininess: Real) -> Real {
 /// One light's Phong terms at a point, before shadowing, as [`phong`] computes them: each
 /// factor of I_d + I_s = I_p·att·(ρd·max(n·s, 0) + ρs·max(r·v, 0)^f), per channel, and the sum.
 /// The ray tree shows these very numbers ([`crate::render::inspect`]).
-#[derive(Clone, Copy, Debug, Default, PartialEq)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, serde::Serialize, serde::Deserialize)]
 pub struct Phong {
     /// att = 1/(a0 + a1·d + a2·d²) at the light's distance d.
     pub attenuation: Real,

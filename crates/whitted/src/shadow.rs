@@ -53,7 +53,7 @@ pub fn feeler(p: Vec3, light: Vec3) -> Ray {
 
 // ANCHOR: ch4_feeler_type
 /// A feeler towards a light, and the smallest u that counts.
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Copy, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
 pub struct Feeler {
     /// S(u) = P′ + (L − P′)·u from the offset start P′: u = 0 at P′, u = 1 at the light.
     pub ray: Ray,

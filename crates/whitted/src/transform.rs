@@ -24,7 +24,7 @@
 use crate::real::{Mat3, Mat4, Real, Vec3, Vec4};
 
 /// One elementary placement step. Angles are in degrees, as in the scene file.
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Copy, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
 pub enum Step {
     /// Scale by (sx, sy, sz); every factor must be finite and non-zero.
     Scale(Vec3),
@@ -167,7 +167,7 @@ pub fn rotation_from_z(to: Vec3) -> Step {
 }
 
 /// A placement M with its cached inverse M⁻¹ and the normal matrix (M⁻¹)ᵀ.
-#[derive(Clone, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
 pub struct Placement {
     m: Mat4,
     inv: Mat4,
@@ -275,7 +275,7 @@ impl Placement {
 /// from M in f64 carries the same points with 1e-16. In the f64 build, which holds the
 /// planet to R·u = 1e-12 without it, the type is empty and costs nothing.
 #[cfg(feature = "f32")]
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Copy, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
 pub struct WideInverse(pub glam::DMat4);
 
 #[cfg(feature = "f32")]
@@ -290,7 +290,7 @@ impl WideInverse {
 /// M⁻¹ in f64, which the f32 build keeps beside its f32 M⁻¹ for [`crate::shapes::refine`];
 /// empty in the f64 build, which needs nothing more (see the f32 build's documentation).
 #[cfg(not(feature = "f32"))]
-#[derive(Clone, Copy, Debug, Default, PartialEq)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, serde::Serialize, serde::Deserialize)]
 pub struct WideInverse;
 
 #[cfg(not(feature = "f32"))]

@@ -61,6 +61,7 @@ mod grading;
 mod junit;
 mod nextest;
 mod outcome;
+pub mod outside;
 mod render;
 pub mod runner;
 pub mod sandbox;

@@ -30,7 +30,7 @@ pub enum Part {
 
 // ANCHOR: ch2_hit
 /// One point where a ray meets a surface.
-#[derive(Clone, Copy, Debug, Default, PartialEq)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, serde::Serialize, serde::Deserialize)]
 pub struct Hit {
     /// The ray parameter: the point is r(t) = e + d·t.
     pub t: Real,
@@ -46,7 +46,7 @@ pub struct Hit {
 // ANCHOR_END: ch2_hit
 
 /// The hits of one ray with one object, in increasing t (at most two: the shapes are convex).
-#[derive(Clone, Copy, Debug, Default, PartialEq)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, serde::Serialize, serde::Deserialize)]
 pub struct Hits {
     len: u8,
     items: [Hit; 2],

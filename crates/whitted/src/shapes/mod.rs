@@ -70,7 +70,7 @@ pub fn nearer(t: Real, object: usize, best_t: Real, best_object: usize) -> bool 
 }
 
 /// The closed set of generic shapes.
-#[derive(Clone, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
 pub enum Shape {
     /// The unit sphere x² + y² + z² = 1.
     Sphere,

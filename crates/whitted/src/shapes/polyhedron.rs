@@ -27,7 +27,7 @@ use crate::ray::Ray;
 use crate::real::{Mat3, Real, Vec3};
 
 /// One facet: the plane n·P = d with n the outward unit normal.
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Copy, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
 pub struct Facet {
     normal: Vec3,
     d: Real,
@@ -70,7 +70,7 @@ pub fn facet_t(facet: &Facet, ray: &Ray) -> Real {
 }
 
 /// A convex polyhedron given by its facets.
-#[derive(Clone, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
 pub struct Polyhedron {
     facets: Vec<Facet>,
 }

@@ -45,7 +45,7 @@ impl Numerics {
 }
 
 /// The real roots of a quadratic, in increasing order; non-finite roots are dropped.
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Copy, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
 pub enum Roots {
     /// b² − ac < 0: no real root (the ray misses).
     None,

@@ -1,0 +1,385 @@
+//! The judge outside the student's process: the code a copy of the project gains so that an
+//! exercise's calls cross the wire of the renderer's `judge` module (its documentation tells
+//! the whole design).
+//!
+//! [`add_wire`] writes three things into a copy, each from the manifest and the functions'
+//! signatures, and nothing else:
+//!
+//! - **a stub** first in each exercise's function, on the line of its `{` (no line of the file
+//!   moves, so a compiler error still names the student's line):
+//!   `if crate::judged::remote(12) { return crate::judged::call(12, &(ray, a, b)); }`;
+//! - **an answer** at the end of the function's file, where the signature's type names mean what
+//!   they mean in it: it decodes the arguments, calls the function and encodes its value;
+//! - **the table** (`crate::judged`) at the end of `lib.rs`, and the server program
+//!   (`examples/judged_server.rs`).
+//!
+//! The same code goes into the judge's copy (the instructor's bodies, and the tests) and into
+//! the server's (the student's bodies). An argument crosses by value: `&T` as a `T`, `&[T]` as
+//! a `Vec<T>`. A function with an argument that cannot cross gets no stub: [`Wired::kept`] names
+//! it, and it runs where it is called. Four do not cross yet: the road's three methods
+//! (`Tracer`'s `&self` holds the scene and the query by reference, and they take the recorder)
+//! and `transmittance`, whose iterator is pulled item by item (which items are pulled is part of
+//! its contract: it stops at the first 0).
+//!
+//! Course book: [The instructor's guide](../../../../../docs/book/instructor-guide.html) (`docs/src/instructor-guide.md`).
+
+use std::collections::BTreeMap;
+use std::path::{Path, PathBuf};
+
+use crate::manifest::Manifest;
+use crate::source::{self, Edit};
+use crate::{ToolError, files, layout};
+
+/// The environment variable that gives the judge's tests the server's command line (the
+/// renderer's `judge::SERVER_VAR`): its words separated by `\x1f`.
+pub const SERVER_VAR: &str = "WHITTED_JUDGE_SERVER";
+
+/// The server program a wired copy gains, beside the renderer's crate's sources.
+pub const SERVER_EXAMPLE: &str = "judged_server";
+
+/// The road's type, whose methods take the recorder and hold the scene by reference: its
+/// calls stay where they are made.
+const ROAD: &str = "Tracer";
+
+/// What [`add_wire`] did.
+#[derive(Debug, Default, PartialEq, Eq)]
+pub struct Wired {
+    /// The manifest entries whose calls cross the wire.
+    pub crossing: Vec<usize>,
+    /// The entries that run where they are called, each with the argument that cannot cross.
+    pub kept: Vec<(usize, String)>,
+}
+
+/// How one argument crosses.
+#[derive(Debug, PartialEq, Eq)]
+struct Crossing {
+    /// What the stub sends for it.
+    sent: String,
+    /// The type the answer decodes.
+    decoded: String,
+    /// What the answer passes to the function (`a0`, `&a0`).
+    passed: String,
+}
+
+/// How the argument `param` (a parameter's text, `name: Type` or a receiver) crosses as the
+/// answer's argument number `k`, or why it cannot.
+fn crossing(param: &str, k: usize, self_type: Option<&str>) -> Result<Crossing, String> {
+    let a = format!("a{k}");
+    let param = param.trim();
+    if param == "&self" {
+        let ty = self_type.ok_or("a receiver outside an `impl`")?;
+        if ty == ROAD {
+            return Err(format!(
+                "`&self`: the road's `{ROAD}` holds its scene and query by reference"
+            ));
+        }
+        return Ok(Crossing {
+            sent: "self".into(),
+            decoded: ty.into(),
+            passed: format!("&{a}"),
+        });
+    }
+    let (name, ty) =
+        top_level_split(param, ':').ok_or_else(|| format!("`{param}` is no `name: Type`"))?;
+    let (name, ty) = (name.trim(), ty.trim());
+    let name = name.strip_prefix("mut ").unwrap_or(name).trim();
+    if !name.chars().all(|c| c == '_' || c.is_alphanumeric()) {
+        return Err(format!("`{param}`: a pattern, not a name"));
+    }
+    if ty.starts_with("&mut") || ty.contains("Recorder") {
+        return Err(format!(
+            "`{param}`: what the function changes stays in its process"
+        ));
+    }
+    if ty.starts_with("impl ") || ty.contains("dyn ") {
+        // an iterator's items are pulled one at a time, and which are pulled is part of the
+        // contract (`transmittance` stops at the first 0): it cannot cross as a `Vec`
+        return Err(format!("`{param}`: a type the wire does not know"));
+    }
+    if let Some(slice) = ty.strip_prefix("&[").and_then(|t| t.strip_suffix(']')) {
+        return Ok(Crossing {
+            sent: name.into(),
+            decoded: format!("Vec<{}>", slice.trim()),
+            passed: format!("&{a}"),
+        });
+    }
+    if let Some(inner) = ty.strip_prefix('&') {
+        return Ok(Crossing {
+            sent: name.into(),
+            decoded: inner.trim().into(),
+            passed: format!("&{a}"),
+        });
+    }
+    Ok(Crossing {
+        sent: name.into(),
+        decoded: ty.into(),
+        passed: a,
+    })
+}
+
+/// `text` split at its first `sep` outside brackets, or `None`.
+fn top_level_split(text: &str, sep: char) -> Option<(&str, &str)> {
+    let mut depth = 0i32;
+    let mut previous = ' ';
+    for (i, c) in text.char_indices() {
+        let arrow = previous == '-';
+        previous = c;
+        match c {
+            '(' | '[' | '<' | '{' => depth += 1,
+            '>' if arrow => {}
+            ')' | ']' | '>' | '}' => depth -= 1,
+            c if c == sep && depth == 0 => return Some((&text[..i], &text[i + c.len_utf8()..])),
+            _ => {}
+        }
+    }
+    None
+}
+
+/// The parameters of the signature that ends where `body` (a function's `{`) starts: the text
+/// between the parentheses after `fn NAME`, split at its top-level commas.
+fn parameters(text: &str, body: usize, name: &str) -> Result<Vec<String>, String> {
+    let head = &text[..body];
+    let at = head
+        .rfind(&format!("fn {name}"))
+        .ok_or_else(|| format!("no `fn {name}` before its body"))?;
+    let open = at
+        + head[at..]
+            .find('(')
+            .ok_or_else(|| format!("`fn {name}` has no `(`"))?;
+    let mut depth = 0i32;
+    let mut close = None;
+    for (i, c) in head[open..].char_indices() {
+        match c {
+            '(' | '[' | '<' => depth += 1,
+            ')' | ']' | '>' if !head[open..open + i].ends_with('-') => {
+                depth -= 1;
+                if depth == 0 {
+                    close = Some(open + i);
+                    break;
+                }
+            }
+            _ => {}
+        }
+    }
+    let close = close.ok_or_else(|| format!("`fn {name}`'s parameters do not close"))?;
+    let mut params = Vec::new();
+    let mut rest = &head[open + 1..close];
+    while let Some((one, after)) = top_level_split(rest, ',') {
+        params.push(one.trim().to_string());
+        rest = after;
+    }
+    if !rest.trim().is_empty() {
+        params.push(rest.trim().to_string());
+    }
+    Ok(params)
+}
+
+/// The module path (`crate::shapes::sphere`) of a source file of the renderer's crate.
+fn module_of(file: &Path) -> String {
+    let relative = file.strip_prefix(layout::core_src()).unwrap_or(file);
+    let mut parts: Vec<String> = relative
+        .with_extension("")
+        .iter()
+        .map(|p| p.to_string_lossy().into_owned())
+        .collect();
+    if matches!(parts.last().map(String::as_str), Some("mod" | "lib")) {
+        parts.pop();
+    }
+    std::iter::once("crate".to_string())
+        .chain(parts)
+        .collect::<Vec<_>>()
+        .join("::")
+}
+
+/// The stub and the answer of the function `path` (the manifest's, `module::Type::method` or
+/// `module::fn`) whose parameters are `params`, as exercise `n`.
+fn stub_and_answer(n: usize, path: &str, params: &[String]) -> Result<(String, String), String> {
+    let segments: Vec<&str> = path.split("::").collect();
+    let function = segments.last().copied().unwrap_or_default();
+    let self_type = segments
+        .len()
+        .checked_sub(2)
+        .map(|i| segments[i])
+        .filter(|s| s.starts_with(|c: char| c.is_uppercase()));
+    let crossings = params
+        .iter()
+        .enumerate()
+        .map(|(k, p)| crossing(p, k, self_type))
+        .collect::<Result<Vec<_>, _>>()?;
+    let sent: Vec<&str> = crossings.iter().map(|c| c.sent.as_str()).collect();
+    let stub = format!(
+        "if crate::judged::remote({n}) {{ return crate::judged::call({n}, &({},)); }}",
+        sent.join(", ")
+    );
+    let names: Vec<String> = (0..crossings.len()).map(|k| format!("a{k}")).collect();
+    let types: Vec<&str> = crossings.iter().map(|c| c.decoded.as_str()).collect();
+    let passed: Vec<&str> = crossings.iter().map(|c| c.passed.as_str()).collect();
+    let callee = match self_type {
+        Some(ty) => format!("{ty}::{function}"),
+        None => function.to_string(),
+    };
+    let answer = format!(
+        "\n/// Written by `whitted grade`: exercise {n} run here for the other end of the grader's wire.\n#[doc(hidden)]\npub(crate) fn judged_answer_{n}(args: &[u8]) -> Result<Vec<u8>, String> {{\n    let ({},): ({},) = crate::judge::decode(args)?;\n    crate::judge::encode(&{callee}({}))\n}}\n",
+        names.join(", "),
+        types.join(", "),
+        passed.join(", "),
+    );
+    Ok((stub, answer))
+}
+
+/// What one source file gains: the stubs, put first in bodies, and the answers appended.
+type FileWire = (Vec<(std::ops::Range<usize>, Edit)>, String);
+
+/// Writes the wire into the copy of the project at `project`: every exercise's stub and answer
+/// that can cross, the table, and the server program (see the module's documentation).
+pub fn add_wire(project: &Path, manifest: &Manifest) -> Result<Wired, ToolError> {
+    let mut wired = Wired::default();
+    let mut by_file: BTreeMap<PathBuf, FileWire> = BTreeMap::new();
+    let mut arms = Vec::new();
+    for (n, entry) in manifest.entries.iter().enumerate() {
+        let at =
+            source::locate(project, &entry.function).map_err(|message| ToolError::Function {
+                manifest: manifest.file.clone(),
+                line: entry.line,
+                function: entry.function.clone(),
+                message,
+            })?;
+        let path = project.join(&at.file);
+        let text = std::fs::read_to_string(&path).map_err(|e| ToolError::io(&path, e))?;
+        let name = entry.function.rsplit("::").next().unwrap_or_default();
+        let made = parameters(&text, at.body.start, name)
+            .and_then(|params| stub_and_answer(n, &entry.function, &params));
+        match made {
+            Ok((stub, answer)) => {
+                let (edits, answers) = by_file.entry(at.file.clone()).or_default();
+                edits.push((at.body.clone(), Edit::Prepend(stub)));
+                answers.push_str(&answer);
+                arms.push(format!(
+                    "            {n} => {}::judged_answer_{n}(args),",
+                    module_of(&at.file)
+                ));
+                wired.crossing.push(n);
+            }
+            Err(why) => wired.kept.push((n, why)),
+        }
+    }
+    for (file, (edits, answers)) in &by_file {
+        let path = project.join(file);
+        let text = std::fs::read_to_string(&path).map_err(|e| ToolError::io(&path, e))?;
+        let edited = source::edit_bodies(&text, edits)
+            .map_err(|why| ToolError::Usage(format!("{}: {why}", path.display())))?;
+        files::write_if_changed(&path, format!("{edited}{answers}").as_bytes())?;
+    }
+    let lib = project.join(layout::core_lib());
+    let text = std::fs::read_to_string(&lib).map_err(|e| ToolError::io(&lib, e))?;
+    files::write_if_changed(&lib, format!("{text}{}", table(manifest, &arms)).as_bytes())?;
+    let examples = project.join(layout::core_src()).with_file_name("examples");
+    std::fs::create_dir_all(&examples).map_err(|e| ToolError::io(&examples, e))?;
+    let server = examples.join(format!("{SERVER_EXAMPLE}.rs"));
+    files::write_if_changed(
+        &server,
+        b"//! Written by `whitted grade`: the student's end of the grader's wire.\n\nfn main() -> std::process::ExitCode {\n    whitted::judged::serve()\n}\n",
+    )?;
+    Ok(wired)
+}
+
+/// The table module appended to `lib.rs`: the exercises' test prefixes and the dispatch over
+/// the answers (`arms`).
+fn table(manifest: &Manifest, arms: &[String]) -> String {
+    let prefixes: Vec<String> = manifest
+        .entries
+        .iter()
+        .map(|e| format!("{:?}", e.exercise.test_prefix()))
+        .collect();
+    format!(
+        r#"
+/// Written by `whitted grade`: this copy's end of the grader's wire ([`crate::judge`]).
+#[doc(hidden)]
+pub mod judged {{
+    static TABLE: crate::judge::Table = crate::judge::Table {{
+        prefixes: &[{prefixes}],
+        dispatch,
+    }};
+
+    fn dispatch(n: u16, args: &[u8]) -> Result<Vec<u8>, String> {{
+        match n {{
+{arms}
+            _ => Err(format!("exercise {{n}} does not cross the wire")),
+        }}
+    }}
+
+    /// Whether exercise `n`'s calls cross the wire in this process.
+    #[must_use]
+    pub fn remote(n: u16) -> bool {{
+        crate::judge::remote(&TABLE, n)
+    }}
+
+    /// Exercise `n`'s value for `args`, from the other end of the wire.
+    pub fn call<A: serde::Serialize + ?Sized, R: serde::de::DeserializeOwned>(n: u16, args: &A) -> R {{
+        crate::judge::call(&TABLE, n, args)
+    }}
+
+    /// The server's `main`.
+    #[must_use]
+    pub fn serve() -> std::process::ExitCode {{
+        crate::judge::serve(&TABLE)
+    }}
+}}
+"#,
+        prefixes = prefixes.join(", "),
+        arms = arms.join("\n"),
+    )
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Each kind of parameter crosses as the wire can carry it: a receiver and `&T` by value,
+    /// a slice and an iterator as a `Vec`; what the function changes does not cross.
+    #[test]
+    fn each_parameter_crosses_by_value_or_is_named_as_kept() {
+        let c = |p: &str| crossing(p, 1, Some("Camera")).map(|c| (c.sent, c.decoded, c.passed));
+        let own = |a: &str, b: &str, c: &str| Ok((a.to_string(), b.to_string(), c.to_string()));
+        assert_eq!(c("&self"), own("self", "Camera", "&a1"));
+        assert_eq!(c("ray: &Ray"), own("ray", "Ray", "&a1"));
+        assert_eq!(c("steps: &[Step]"), own("steps", "Vec<Step>", "&a1"));
+        assert_eq!(c("mut t: Real"), own("t", "Real", "a1"));
+        assert!(c("crossed: impl IntoIterator<Item = Real>").is_err());
+        assert!(c("rec: &mut impl Recorder").is_err());
+        assert!(c("(a, b): (Real, Real)").is_err());
+    }
+
+    /// The parameters are read between the signature's own parentheses, whatever the types
+    /// hold (generics, tuples, `->`).
+    #[test]
+    fn parameters_are_split_at_their_top_level_commas() {
+        let text =
+            "pub fn f(a: (Real, Real), m: &HashMap<u8, u8>, k: impl Fn(u8) -> u8) -> (u8, u8) {";
+        let body = text.len() - 1;
+        assert_eq!(
+            parameters(text, body, "f").unwrap(),
+            [
+                "a: (Real, Real)",
+                "m: &HashMap<u8, u8>",
+                "k: impl Fn(u8) -> u8"
+            ]
+        );
+        assert_eq!(
+            parameters("fn g() {", 7, "g").unwrap(),
+            Vec::<String>::new()
+        );
+    }
+
+    /// A file's module path is the path the crate's root reaches it by.
+    #[test]
+    fn a_files_module_is_its_path_from_the_crate_root() {
+        let src = layout::core_src();
+        assert_eq!(
+            module_of(&src.join("shapes/sphere.rs")),
+            "crate::shapes::sphere"
+        );
+        assert_eq!(module_of(&src.join("shapes/mod.rs")), "crate::shapes");
+        assert_eq!(module_of(&src.join("lib.rs")), "crate");
+    }
+}

@@ -1,0 +1,515 @@
+//! The grader's wire (no chapter adds it; `whitted grade` writes the code that uses it): an
+//! exercise judged from outside the process that runs the student's body.
+//!
+//! The grader builds a project twice. The **judge** is the instructor's crate with its tests,
+//! public and hidden: the expected values, the comparisons, the verdict. The **server** is the
+//! student's crate: the student's bodies and no reference body. In both, the grader puts a stub
+//! first in each exercise's function, on the line of its `{`, and a table in `lib.rs`:
+//!
+//! ```text
+//! pub fn discriminant(ray: &Ray, a: Real, b: Real) -> Real {if crate::judged::remote(12) { return crate::judged::call(12, &(ray, a, b)); }
+//! ```
+//!
+//! In the judge, the exercise a test is named after (`ex_NAME_…`, in [`TEST_VAR`]) is remote:
+//! its arguments cross to the server, which runs the student's body and sends back the value
+//! it returned; any other test runs every exercise on the server (the student's whole road). In
+//! the server, every exercise that the judge did not name is remote: the student's body asks
+//! the judge for the reference's value. Each side answers the other's calls while it waits for
+//! its own answer, so calls nest as deeply as the functions do.
+//!
+//! What this guarantees: the judge runs no student code, and the server holds no reference
+//! body, so it can neither call the reference's code for its exercise nor read it. Whatever the
+//! server does to its own process — print libtest's lines, exit with 0, write files — the judge
+//! sees only frames on a pipe: a value of the function's type is judged by the test's own
+//! assertions, and anything else (no frame, a frame that is no such value, the process ended)
+//! fails the test that asked.
+//!
+//! The wire is the server's standard input and output. A frame is [`MAGIC`], a little-endian
+//! `u32` length and a bincode payload (exact for every float, NaN and ∞ included); what else the
+//! server writes to its standard output is the student's own output, passed to the judge's
+//! standard error beside the test's failure. A panic on either side crosses as a panic of the
+//! call that caused it, with its message.
+
+use std::io::{BufRead, BufReader, Write};
+use std::panic::{AssertUnwindSafe, catch_unwind};
+use std::process::{Child, Command, ExitCode, Stdio};
+use std::sync::{Condvar, Mutex, MutexGuard, OnceLock, PoisonError};
+use std::thread::ThreadId;
+
+use serde::de::DeserializeOwned;
+use serde::{Deserialize, Serialize};
+
+/// The environment variable that gives the judge the server's command line, its words
+/// separated by the unit separator `\x1f`. Without it the judge runs every exercise itself.
+pub const SERVER_VAR: &str = "WHITTED_JUDGE_SERVER";
+
+/// The environment variable in which the test runner names the test a process runs.
+pub const TEST_VAR: &str = "WHITTED_GRADED_TEST";
+
+/// What every frame begins with: a byte no Rust `print!` of text begins a line with, then a
+/// name. Its first byte appears nowhere else in it, so a scan can restart at any byte.
+pub const MAGIC: &[u8; 6] = b"\x1bWHJDG";
+
+/// The largest payload a frame may carry (a scene's arguments are a few kilobytes).
+const MAX_FRAME: u32 = 64 << 20;
+
+/// How much of the server's own output the judge passes on.
+const MAX_SPILL: usize = 64 << 10;
+
+/// What a graded copy tells the wire: its exercises and how to run one here.
+pub struct Table {
+    /// Each exercise's test prefix (`ex_NAME_`), by the number its stubs call it.
+    pub prefixes: &'static [&'static str],
+    /// Runs exercise `n` in this process on its encoded arguments, and encodes its value.
+    pub dispatch: fn(u16, &[u8]) -> Result<Vec<u8>, String>,
+}
+
+/// One message on the wire.
+#[derive(Debug, Serialize, Deserialize, PartialEq)]
+enum Frame {
+    /// The judge's first word to a new server: the exercises the server runs itself.
+    Start { local: Vec<u16> },
+    /// Run exercise `exercise` on these arguments and send its value.
+    Call { exercise: u16, args: Vec<u8> },
+    /// The value of the innermost call that is waiting.
+    Value(Vec<u8>),
+    /// The innermost call that is waiting panicked, with this message.
+    Panicked(String),
+}
+
+/// Which end of the wire this process is.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Side {
+    Judge,
+    Server,
+}
+
+/// The pipe to the other side, and the server process when this side is the judge.
+struct Link {
+    to: Box<dyn Write + Send>,
+    from: Box<dyn BufRead + Send>,
+    child: Option<Child>,
+    spilled: usize,
+}
+
+/// The process's end of the wire.
+struct Wire {
+    side: Side,
+    /// By exercise number: whether its calls cross the wire.
+    remote: Vec<bool>,
+    link: Mutex<Option<Link>>,
+    /// The thread holding the conversation, and how deeply its calls nest: a call from another
+    /// thread waits for the conversation to end (the renderer's tiles call from many).
+    owner: Mutex<Option<(ThreadId, usize)>>,
+    free: Condvar,
+}
+
+static WIRE: OnceLock<Wire> = OnceLock::new();
+
+fn lock<T>(m: &Mutex<T>) -> MutexGuard<'_, T> {
+    m.lock().unwrap_or_else(PoisonError::into_inner)
+}
+
+/// Whether exercise `n`'s call crosses the wire in this process: the stub's question.
+#[must_use]
+pub fn remote(table: &'static Table, n: u16) -> bool {
+    let wire = WIRE.get_or_init(|| judge_side(table));
+    wire.remote.get(usize::from(n)).copied().unwrap_or(false)
+}
+
+/// The judge's end: which exercises cross, from the test's name; none without a server.
+fn judge_side(table: &Table) -> Wire {
+    let count = table.prefixes.len();
+    let remote = if std::env::var_os(SERVER_VAR).is_none() {
+        vec![false; count]
+    } else {
+        match std::env::var(TEST_VAR).ok().and_then(|t| judged(table, &t)) {
+            Some(x) => (0..count).map(|n| n == x).collect(),
+            None => vec![true; count], // a test of no exercise: the student's whole road
+        }
+    };
+    Wire {
+        side: Side::Judge,
+        remote,
+        link: Mutex::new(None),
+        owner: Mutex::new(None),
+        free: Condvar::new(),
+    }
+}
+
+/// The exercise a libtest name (`target::module::ex_NAME_sentence`) is named after.
+fn judged(table: &Table, test: &str) -> Option<usize> {
+    let own = test.rsplit("::").next().unwrap_or(test);
+    table.prefixes.iter().position(|p| own.starts_with(p))
+}
+
+/// Exercise `n`'s value for `args`, computed on the other side of the wire: the stub's call.
+/// A panic there is a panic here, with its message.
+pub fn call<A: Serialize + ?Sized, R: DeserializeOwned>(
+    table: &'static Table,
+    n: u16,
+    args: &A,
+) -> R {
+    let wire = WIRE.get_or_init(|| judge_side(table));
+    let turn = wire.turn();
+    let args = bincode::serialize(args)
+        .unwrap_or_else(|e| wire.broken(&format!("exercise {n}'s arguments cannot be sent: {e}")));
+    match wire.exchange(table, Frame::Call { exercise: n, args }) {
+        Ok(value) => {
+            let r = bincode::deserialize(&value).unwrap_or_else(|e| {
+                wire.broken(&format!(
+                    "the answer for exercise {} is no value of its function's type ({e})",
+                    name(table, n)
+                ))
+            });
+            drop(turn);
+            r
+        }
+        Err(message) => {
+            drop(turn);
+            panic!("{message}")
+        }
+    }
+}
+
+/// The name an exercise's number stands for, in messages.
+fn name(table: &Table, n: u16) -> String {
+    table.prefixes.get(usize::from(n)).map_or_else(
+        || format!("#{n}"),
+        |p| {
+            p.trim_start_matches("ex_")
+                .trim_end_matches('_')
+                .to_string()
+        },
+    )
+}
+
+/// Decodes an exercise's arguments (the grader's generated dispatch).
+pub fn decode<A: DeserializeOwned>(args: &[u8]) -> Result<A, String> {
+    bincode::deserialize(args).map_err(|e| format!("arguments that are no such values: {e}"))
+}
+
+/// Encodes an exercise's value (the grader's generated dispatch).
+pub fn encode<R: Serialize + ?Sized>(value: &R) -> Result<Vec<u8>, String> {
+    bincode::serialize(value).map_err(|e| format!("a value that cannot be sent: {e}"))
+}
+
+/// The server's `main`: reads the judge's first frame, then answers its calls until the judge
+/// closes the pipe.
+pub fn serve(table: &'static Table) -> ExitCode {
+    let mut from: Box<dyn BufRead + Send> = Box::new(BufReader::new(std::io::stdin()));
+    let local = match read_frame(&mut from, &mut std::io::sink()) {
+        Ok(Frame::Start { local }) => local,
+        _ => return ExitCode::FAILURE,
+    };
+    let count = table.prefixes.len();
+    let wire = Wire {
+        side: Side::Server,
+        remote: (0..count)
+            .map(|n| !local.iter().any(|&l| usize::from(l) == n))
+            .collect(),
+        link: Mutex::new(Some(Link {
+            to: Box::new(std::io::stdout()),
+            from,
+            child: None,
+            spilled: 0,
+        })),
+        owner: Mutex::new(None),
+        free: Condvar::new(),
+    };
+    if WIRE.set(wire).is_err() {
+        return ExitCode::FAILURE;
+    }
+    let Some(wire) = WIRE.get() else {
+        return ExitCode::FAILURE;
+    };
+    let _turn = wire.turn();
+    loop {
+        let frame = wire.receive();
+        match frame {
+            Some(Frame::Call { exercise, args }) => wire.answer(table, exercise, &args),
+            _ => return ExitCode::SUCCESS, // the judge is done, or is no judge
+        }
+    }
+}
+
+/// Ends on this side when the wire breaks: the judge fails the test with the reason; a server
+/// whose judge is gone just ends.
+impl Wire {
+    fn broken(&self, why: &str) -> ! {
+        if self.side == Side::Judge {
+            let status = lock(&self.link)
+                .as_mut()
+                .and_then(|l| l.child.as_mut())
+                .and_then(|c| c.try_wait().ok().flatten())
+                .map(|s| format!(" (the student's process: {s})"))
+                .unwrap_or_default();
+            eprintln!("whitted judge: {why}{status}: the test fails");
+            std::process::exit(101);
+        }
+        std::process::exit(0);
+    }
+
+    /// Waits for this thread's turn in the conversation; nested calls of the thread that has
+    /// it go on at once.
+    fn turn(&self) -> Turn<'_> {
+        let me = std::thread::current().id();
+        let mut owner = lock(&self.owner);
+        loop {
+            match *owner {
+                None => *owner = Some((me, 1)),
+                Some((t, depth)) if t == me => *owner = Some((t, depth + 1)),
+                Some(_) => {
+                    owner = self
+                        .free
+                        .wait(owner)
+                        .unwrap_or_else(PoisonError::into_inner);
+                    continue;
+                }
+            }
+            return Turn(self);
+        }
+    }
+
+    /// Sends `frame`, then answers the other side's calls until the value (or the panic) of
+    /// this one arrives.
+    fn exchange(&self, table: &Table, frame: Frame) -> Result<Vec<u8>, String> {
+        self.send(&frame);
+        loop {
+            match self.receive() {
+                Some(Frame::Value(v)) => return Ok(v),
+                Some(Frame::Panicked(m)) => return Err(m),
+                Some(Frame::Call { exercise, args }) => self.answer(table, exercise, &args),
+                Some(Frame::Start { .. }) => {
+                    self.broken("the student's process sent a frame out of turn")
+                }
+                None => self.broken("the student's process ended or sent what is no frame"),
+            }
+        }
+    }
+
+    /// Runs exercise `n` here for the other side and sends its value, or its panic.
+    fn answer(&self, table: &Table, n: u16, args: &[u8]) {
+        let ran = catch_unwind(AssertUnwindSafe(|| (table.dispatch)(n, args)));
+        let frame = match ran {
+            Ok(Ok(value)) => Frame::Value(value),
+            Ok(Err(why)) => Frame::Panicked(format!("exercise {}: {why}", name(table, n))),
+            Err(payload) => Frame::Panicked(panic_message(payload.as_ref())),
+        };
+        self.send(&frame);
+    }
+
+    fn send(&self, frame: &Frame) {
+        let mut guard = lock(&self.link);
+        let link = match guard.as_mut() {
+            Some(link) => link,
+            None => match self.connect() {
+                Ok(link) => guard.insert(link),
+                Err(why) => {
+                    drop(guard);
+                    self.broken(&why)
+                }
+            },
+        };
+        let sent = write_frame(&mut link.to, frame);
+        drop(guard);
+        if let Err(e) = sent {
+            self.broken(&format!("the student's process stopped reading ({e})"));
+        }
+    }
+
+    fn receive(&self) -> Option<Frame> {
+        let mut guard = lock(&self.link);
+        let link = guard.as_mut()?;
+        let mut spill = Vec::new();
+        let frame = read_frame(&mut link.from, &mut spill).ok();
+        if self.side == Side::Judge && !spill.is_empty() && link.spilled < MAX_SPILL {
+            let room = MAX_SPILL - link.spilled;
+            link.spilled += spill.len().min(room);
+            eprint!(
+                "{}",
+                String::from_utf8_lossy(&spill[..spill.len().min(room)])
+            );
+        }
+        frame
+    }
+
+    /// The judge's link: the server started from [`SERVER_VAR`], told what it runs itself.
+    fn connect(&self) -> Result<Link, String> {
+        let line = std::env::var(SERVER_VAR).map_err(|_| format!("{SERVER_VAR} is not set"))?;
+        let mut words = line.split('\x1f');
+        let program = words.next().unwrap_or_default();
+        let mut child = Command::new(program)
+            .args(words)
+            .stdin(Stdio::piped())
+            .stdout(Stdio::piped())
+            .spawn()
+            .map_err(|e| format!("the student's process cannot start ({program}: {e})"))?;
+        let (Some(to), Some(from)) = (child.stdin.take(), child.stdout.take()) else {
+            return Err("the student's process has no pipes".into());
+        };
+        let mut link = Link {
+            to: Box::new(to),
+            from: Box::new(BufReader::new(from)),
+            child: Some(child),
+            spilled: 0,
+        };
+        let local = (0..self.remote.len())
+            .filter(|&n| self.remote[n])
+            .filter_map(|n| u16::try_from(n).ok())
+            .collect();
+        write_frame(&mut link.to, &Frame::Start { local })
+            .map_err(|e| format!("the student's process does not read ({e})"))?;
+        Ok(link)
+    }
+}
+
+/// A thread's turn in the conversation, given back when dropped (a panic included).
+struct Turn<'w>(&'w Wire);
+
+impl Drop for Turn<'_> {
+    fn drop(&mut self) {
+        let mut owner = lock(&self.0.owner);
+        if let Some((t, depth)) = *owner {
+            *owner = (depth > 1).then_some((t, depth - 1));
+        }
+        if owner.is_none() {
+            self.0.free.notify_all();
+        }
+    }
+}
+
+/// A panic's message, as `panic!` was given it.
+fn panic_message(payload: &(dyn std::any::Any + Send)) -> String {
+    payload
+        .downcast_ref::<&str>()
+        .map(|s| (*s).to_string())
+        .or_else(|| payload.downcast_ref::<String>().cloned())
+        .unwrap_or_else(|| "a panic with no message".to_string())
+}
+
+fn write_frame(to: &mut dyn Write, frame: &Frame) -> std::io::Result<()> {
+    let payload = bincode::serialize(frame).map_err(std::io::Error::other)?;
+    let len = u32::try_from(payload.len()).map_err(std::io::Error::other)?;
+    to.write_all(MAGIC)?;
+    to.write_all(&len.to_le_bytes())?;
+    to.write_all(&payload)?;
+    to.flush()
+}
+
+/// The next frame on `from`; the bytes before it go to `spill`. An error at the end of the
+/// input, or for a frame that is too long or no frame.
+fn read_frame(from: &mut dyn BufRead, spill: &mut dyn Write) -> std::io::Result<Frame> {
+    let mut matched = 0;
+    while matched < MAGIC.len() {
+        let buf = from.fill_buf()?;
+        if buf.is_empty() {
+            return Err(std::io::ErrorKind::UnexpectedEof.into());
+        }
+        let mut used = 0;
+        for &b in buf {
+            used += 1;
+            if b == MAGIC[matched] {
+                matched += 1;
+                if matched == MAGIC.len() {
+                    break;
+                }
+            } else {
+                spill.write_all(&MAGIC[..matched])?;
+                matched = usize::from(b == MAGIC[0]);
+                if matched == 0 {
+                    spill.write_all(&[b])?;
+                }
+            }
+        }
+        from.consume(used);
+    }
+    let mut len = [0; 4];
+    from.read_exact(&mut len)?;
+    let len = u32::from_le_bytes(len);
+    if len > MAX_FRAME {
+        return Err(std::io::Error::other("a frame longer than the wire allows"));
+    }
+    let mut payload = vec![0; len as usize];
+    from.read_exact(&mut payload)?;
+    bincode::deserialize(&payload).map_err(std::io::Error::other)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::real::Real;
+
+    /// Frames cross whole among the student's own output, which is kept in order, even when
+    /// it holds the magic's first bytes; floats cross exactly, NaN and ∞ included.
+    #[test]
+    fn frames_cross_among_the_students_output_and_floats_cross_exactly() {
+        let values: Vec<Real> = vec![
+            0.1,
+            -0.0,
+            Real::NAN,
+            Real::INFINITY,
+            Real::MIN_POSITIVE / 2.0,
+        ];
+        let mut wire = Vec::new();
+        wire.extend_from_slice(b"debug: t = 3\n\x1bW not a frame\n");
+        write_frame(
+            &mut wire,
+            &Frame::Value(bincode::serialize(&values).unwrap()),
+        )
+        .unwrap();
+        wire.extend_from_slice(b"\x1b\x1bWHJ");
+        write_frame(&mut wire, &Frame::Panicked("not yet implemented".into())).unwrap();
+        let mut from = std::io::Cursor::new(wire);
+        let mut spill = Vec::new();
+        let Frame::Value(v) = read_frame(&mut from, &mut spill).unwrap() else {
+            panic!("no value frame first");
+        };
+        let back: Vec<Real> = bincode::deserialize(&v).unwrap();
+        let bits = |v: &[Real]| v.iter().map(|x| x.to_bits()).collect::<Vec<_>>();
+        assert_eq!(bits(&back), bits(&values), "the floats after crossing");
+        assert_eq!(
+            read_frame(&mut from, &mut spill).unwrap(),
+            Frame::Panicked("not yet implemented".into())
+        );
+        assert_eq!(
+            String::from_utf8_lossy(&spill),
+            "debug: t = 3\n\x1bW not a frame\n\x1b\x1bWHJ",
+            "the student's own output, in order"
+        );
+        assert_eq!(
+            read_frame(&mut from, &mut spill).unwrap_err().kind(),
+            std::io::ErrorKind::UnexpectedEof
+        );
+    }
+
+    /// A frame that claims more than the wire allows, or whose payload is no frame, is an
+    /// error, not an allocation or a panic.
+    #[test]
+    fn a_frame_too_long_or_garbled_is_an_error() {
+        let mut long = MAGIC.to_vec();
+        long.extend_from_slice(&u32::MAX.to_le_bytes());
+        assert!(read_frame(&mut std::io::Cursor::new(long), &mut std::io::sink()).is_err());
+        let mut garbled = MAGIC.to_vec();
+        garbled.extend_from_slice(&3u32.to_le_bytes());
+        garbled.extend_from_slice(&[0xff, 0xff, 0xff]);
+        assert!(read_frame(&mut std::io::Cursor::new(garbled), &mut std::io::sink()).is_err());
+    }
+
+    /// A test is judged on the exercise its name starts with after the module path: a name
+    /// that is a prefix of another's does not take its tests.
+    #[test]
+    fn a_test_is_judged_on_the_exercise_its_name_begins_with() {
+        fn none(_: u16, _: &[u8]) -> Result<Vec<u8>, String> {
+            Err(String::new())
+        }
+        let table = Table {
+            prefixes: &["ex_hit_sphere_", "ex_hit_", "ex_sphere_normal_"],
+            dispatch: none,
+        };
+        assert_eq!(judged(&table, "ch02::ex_hit_sphere_misses"), Some(0));
+        assert_eq!(judged(&table, "ch02::ex_hit_plane_misses"), Some(1));
+        assert_eq!(judged(&table, "render_paths::ch2_sphere"), None);
+        assert_eq!(name(&table, 2), "sphere_normal");
+    }
+}
