@@ -133,12 +133,7 @@ fn judged(
                 .env(TEST_VAR, test)
                 .output()
                 .unwrap();
-            let text = format!(
-                "{}{}",
-                String::from_utf8_lossy(&out.stdout),
-                String::from_utf8_lossy(&out.stderr)
-            );
-            results.insert(test.to_string(), (out.status.success(), text));
+            results.insert(test.to_string(), (out.status.success(), common::text(&out)));
         }
     }
     results

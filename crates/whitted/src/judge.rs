@@ -29,6 +29,8 @@
 //! server writes to its standard output is the student's own output, passed to the judge's
 //! standard error beside the test's failure. A panic on either side crosses as a panic of the
 //! call that caused it, with its message.
+//!
+//! Course book: [The instructor's guide](../../../../docs/book/instructor-guide.html) (`docs/src/instructor-guide.md`).
 
 use std::io::{BufRead, BufReader, Write};
 use std::panic::{AssertUnwindSafe, catch_unwind};
@@ -388,12 +390,16 @@ fn panic_message(payload: &(dyn std::any::Any + Send)) -> String {
         .unwrap_or_else(|| "a panic with no message".to_string())
 }
 
+/// Writes `frame` whole, in one write: the pipe to the judge is not buffered, and each write is
+/// a system call.
 fn write_frame(to: &mut dyn Write, frame: &Frame) -> std::io::Result<()> {
     let payload = bincode::serialize(frame).map_err(std::io::Error::other)?;
     let len = u32::try_from(payload.len()).map_err(std::io::Error::other)?;
-    to.write_all(MAGIC)?;
-    to.write_all(&len.to_le_bytes())?;
-    to.write_all(&payload)?;
+    let mut whole = Vec::with_capacity(MAGIC.len() + 4 + payload.len());
+    whole.extend_from_slice(MAGIC);
+    whole.extend_from_slice(&len.to_le_bytes());
+    whole.extend_from_slice(&payload);
+    to.write_all(&whole)?;
     to.flush()
 }
 

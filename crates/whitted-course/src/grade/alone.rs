@@ -108,11 +108,7 @@ pub fn both_bodies(entry: usize, indent: &str, body: &str, reference: &str) -> (
 /// manifest entry.
 #[must_use]
 pub fn switch_module(manifest: &Manifest) -> String {
-    let names: Vec<String> = manifest
-        .entries
-        .iter()
-        .map(|e| format!("{:?}", e.exercise.test_prefix()))
-        .collect();
+    let names = quoted_prefixes(manifest);
     format!(
         r#"
 /// Written by `whitted grade` into its graded copy: which exercise runs the student's body in
@@ -144,6 +140,16 @@ pub mod {MODULE} {{
         count = names.len(),
         names = names.join(", "),
     )
+}
+
+/// Each exercise's test prefix (`ex_NAME_`) as a Rust string literal, in the manifest's order:
+/// what the code written into a graded copy names the exercises by.
+pub(super) fn quoted_prefixes(manifest: &Manifest) -> Vec<String> {
+    manifest
+        .entries
+        .iter()
+        .map(|e| format!("{:?}", e.exercise.test_prefix()))
+        .collect()
 }
 
 /// Appends the switch ([`switch_module`]) to the graded copy's `lib.rs`, which the copy's sync

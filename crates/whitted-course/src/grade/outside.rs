@@ -26,6 +26,7 @@
 use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
 
+use super::alone::quoted_prefixes;
 use crate::manifest::Manifest;
 use crate::source::{self, Edit};
 use crate::{ToolError, files, layout};
@@ -286,11 +287,7 @@ pub fn add_wire(project: &Path, manifest: &Manifest) -> Result<Wired, ToolError>
 /// The table module appended to `lib.rs`: the exercises' test prefixes and the dispatch over
 /// the answers (`arms`).
 fn table(manifest: &Manifest, arms: &[String]) -> String {
-    let prefixes: Vec<String> = manifest
-        .entries
-        .iter()
-        .map(|e| format!("{:?}", e.exercise.test_prefix()))
-        .collect();
+    let prefixes = quoted_prefixes(manifest);
     format!(
         r#"
 /// Written by `whitted grade`: this copy's end of the grader's wire ([`crate::judge`]).

@@ -125,6 +125,7 @@ const STD_REFUSED: &[(&[&str], &str)] = &[
     ),
     (&["proc_macro", "tempfile"], "reaches the compiler or files"),
     (&["graded_bodies"], "reaches the grader's switch"),
+    (&["judge", "judged"], "reaches the grader's wire"),
 ];
 
 /// The functions and types of the renderer and the syllabus that open a file or end the process:

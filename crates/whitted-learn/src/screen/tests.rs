@@ -55,6 +55,16 @@ fn what_a_formula_never_needs_is_refused_with_its_line() {
             "`crate::output::save` (`save`)",
             1,
         ),
+        (
+            "crate::judged::call::<_, Real>(12, &(ray, a, b))",
+            "`crate::judged::call` (`judged`)",
+            1,
+        ),
+        (
+            "whitted::judge::serve(t)",
+            "`whitted::judge::serve` (`judge`)",
+            1,
+        ),
         ("unsafe { 0.0 }", "`unsafe`", 1),
         ("extern \"C\" { fn exit(c: i32); }", "`extern`", 1),
         ("macro_rules! m { () => {} }", "`macro_rules`", 1),
