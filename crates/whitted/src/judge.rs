@@ -24,8 +24,9 @@
 //! assertions, and anything else (no frame, a frame that is no such value, the process ended)
 //! fails the test that asked.
 //!
-//! The wire is the server's standard input and output. A frame is [`MAGIC`], a little-endian
-//! `u32` length and a bincode payload (exact for every float, NaN and ∞ included); what else the
+//! The wire is the server's standard input and output. A frame is a line: [`MAGIC`], then a
+//! bincode payload (exact for every float, NaN and ∞ included) in base64, which holds no line
+//! break, so the server's standard output writes a frame at once; what else the
 //! server writes to its standard output is the student's own output, passed to the judge's
 //! standard error beside the test's failure. A panic on either side crosses as a panic of the
 //! call that caused it, with its message.
@@ -38,8 +39,13 @@ use std::process::{Child, Command, ExitCode, Stdio};
 use std::sync::{Condvar, Mutex, MutexGuard, OnceLock, PoisonError};
 use std::thread::ThreadId;
 
+use serde::Serialize;
 use serde::de::DeserializeOwned;
-use serde::{Deserialize, Serialize};
+
+mod frame;
+
+pub use frame::MAGIC;
+use frame::{Frame, read_frame, write_frame};
 
 /// The environment variable that gives the judge the server's command line, its words
 /// separated by the unit separator `\x1f`. Without it the judge runs every exercise itself.
@@ -47,13 +53,6 @@ pub const SERVER_VAR: &str = "WHITTED_JUDGE_SERVER";
 
 /// The environment variable in which the test runner names the test a process runs.
 pub const TEST_VAR: &str = "WHITTED_GRADED_TEST";
-
-/// What every frame begins with: a byte no Rust `print!` of text begins a line with, then a
-/// name. Its first byte appears nowhere else in it, so a scan can restart at any byte.
-pub const MAGIC: &[u8; 6] = b"\x1bWHJDG";
-
-/// The largest payload a frame may carry (a scene's arguments are a few kilobytes).
-const MAX_FRAME: u32 = 64 << 20;
 
 /// How much of the server's own output the judge passes on.
 const MAX_SPILL: usize = 64 << 10;
@@ -64,19 +63,6 @@ pub struct Table {
     pub prefixes: &'static [&'static str],
     /// Runs exercise `n` in this process on its encoded arguments, and encodes its value.
     pub dispatch: fn(u16, &[u8]) -> Result<Vec<u8>, String>,
-}
-
-/// One message on the wire.
-#[derive(Debug, Serialize, Deserialize, PartialEq)]
-enum Frame {
-    /// The judge's first word to a new server: the exercises the server runs itself.
-    Start { local: Vec<u16> },
-    /// Run exercise `exercise` on these arguments and send its value.
-    Call { exercise: u16, args: Vec<u8> },
-    /// The value of the innermost call that is waiting.
-    Value(Vec<u8>),
-    /// The innermost call that is waiting panicked, with this message.
-    Panicked(String),
 }
 
 /// Which end of the wire this process is.
@@ -152,11 +138,30 @@ pub fn call<A: Serialize + ?Sized, R: DeserializeOwned>(
     n: u16,
     args: &A,
 ) -> R {
+    call_pulling::<A, R, ()>(table, n, args, None)
+}
+
+/// [`call`] for a function that also takes an iterator, `items`: the other side pulls its
+/// items one at a time, as the function asks for them ([`Pulled`]), so that an item it never
+/// asks for is never made (`transmittance` stops at the first 0).
+pub fn call_pulling<A, R, T>(
+    table: &'static Table,
+    n: u16,
+    args: &A,
+    items: Option<&mut dyn Iterator<Item = T>>,
+) -> R
+where
+    A: Serialize + ?Sized,
+    R: DeserializeOwned,
+    T: Serialize,
+{
     let wire = WIRE.get_or_init(|| judge_side(table));
     let turn = wire.turn();
     let args = bincode::serialize(args)
         .unwrap_or_else(|e| wire.broken(&format!("exercise {n}'s arguments cannot be sent: {e}")));
-    match wire.exchange(table, Frame::Call { exercise: n, args }) {
+    let mut pull = items.map(|it| move || bincode::serialize(&it.next()).unwrap_or_default());
+    let pull = pull.as_mut().map(|p| p as &mut dyn FnMut() -> Vec<u8>);
+    match wire.exchange(table, Frame::Call { exercise: n, args }, pull) {
         Ok(value) => {
             let r = bincode::deserialize(&value).unwrap_or_else(|e| {
                 wire.broken(&format!(
@@ -194,6 +199,42 @@ pub fn decode<A: DeserializeOwned>(args: &[u8]) -> Result<A, String> {
 /// Encodes an exercise's value (the grader's generated dispatch).
 pub fn encode<R: Serialize + ?Sized>(value: &R) -> Result<Vec<u8>, String> {
     bincode::serialize(value).map_err(|e| format!("a value that cannot be sent: {e}"))
+}
+
+/// The iterator a function that crosses takes, on the side that runs it: each item is pulled
+/// from the side that called, when the function asks for it ([`call_pulling`]).
+pub struct Pulled<T> {
+    table: &'static Table,
+    ended: bool,
+    item: std::marker::PhantomData<T>,
+}
+
+impl<T> Pulled<T> {
+    /// The items of the iterator that the call being answered took.
+    #[must_use]
+    pub fn new(table: &'static Table) -> Self {
+        Self {
+            table,
+            ended: false,
+            item: std::marker::PhantomData,
+        }
+    }
+}
+
+impl<T: DeserializeOwned> Iterator for Pulled<T> {
+    type Item = T;
+
+    fn next(&mut self) -> Option<T> {
+        if self.ended {
+            return None;
+        }
+        let wire = WIRE.get_or_init(|| judge_side(self.table));
+        let _turn = wire.turn();
+        let item: Option<T> = bincode::deserialize(&wire.pull(self.table))
+            .unwrap_or_else(|e| wire.broken(&format!("an item that is no such value ({e})")));
+        self.ended = item.is_none();
+        item
+    }
 }
 
 /// The server's `main`: reads the judge's first frame, then answers its calls until the judge
@@ -274,18 +315,44 @@ impl Wire {
     }
 
     /// Sends `frame`, then answers the other side's calls until the value (or the panic) of
-    /// this one arrives.
-    fn exchange(&self, table: &Table, frame: Frame) -> Result<Vec<u8>, String> {
+    /// this one arrives; the other side's pulls are answered from `pull` (the items of the
+    /// iterator this call took).
+    fn exchange(
+        &self,
+        table: &Table,
+        frame: Frame,
+        mut pull: Option<&mut dyn FnMut() -> Vec<u8>>,
+    ) -> Result<Vec<u8>, String> {
         self.send(&frame);
         loop {
             match self.receive() {
                 Some(Frame::Value(v)) => return Ok(v),
                 Some(Frame::Panicked(m)) => return Err(m),
                 Some(Frame::Call { exercise, args }) => self.answer(table, exercise, &args),
-                Some(Frame::Start { .. }) => {
+                Some(Frame::Pull) => match pull.as_mut() {
+                    Some(next) => {
+                        let item = next();
+                        self.send(&Frame::Item(item));
+                    }
+                    None => self.broken("the student's process pulled an item no call gave"),
+                },
+                Some(Frame::Start { .. } | Frame::Item(_)) => {
                     self.broken("the student's process sent a frame out of turn")
                 }
                 None => self.broken("the student's process ended or sent what is no frame"),
+            }
+        }
+    }
+
+    /// The next item of the iterator the innermost waiting call took, pulled from the other
+    /// side; the other side's calls meanwhile are answered.
+    fn pull(&self, table: &Table) -> Vec<u8> {
+        self.send(&Frame::Pull);
+        loop {
+            match self.receive() {
+                Some(Frame::Item(item)) => return item,
+                Some(Frame::Call { exercise, args }) => self.answer(table, exercise, &args),
+                _ => self.broken("the judge sent no item when one was pulled"),
             }
         }
     }
@@ -390,117 +457,9 @@ fn panic_message(payload: &(dyn std::any::Any + Send)) -> String {
         .unwrap_or_else(|| "a panic with no message".to_string())
 }
 
-/// Writes `frame` whole, in one write: the pipe to the judge is not buffered, and each write is
-/// a system call.
-fn write_frame(to: &mut dyn Write, frame: &Frame) -> std::io::Result<()> {
-    let payload = bincode::serialize(frame).map_err(std::io::Error::other)?;
-    let len = u32::try_from(payload.len()).map_err(std::io::Error::other)?;
-    let mut whole = Vec::with_capacity(MAGIC.len() + 4 + payload.len());
-    whole.extend_from_slice(MAGIC);
-    whole.extend_from_slice(&len.to_le_bytes());
-    whole.extend_from_slice(&payload);
-    to.write_all(&whole)?;
-    to.flush()
-}
-
-/// The next frame on `from`; the bytes before it go to `spill`. An error at the end of the
-/// input, or for a frame that is too long or no frame.
-fn read_frame(from: &mut dyn BufRead, spill: &mut dyn Write) -> std::io::Result<Frame> {
-    let mut matched = 0;
-    while matched < MAGIC.len() {
-        let buf = from.fill_buf()?;
-        if buf.is_empty() {
-            return Err(std::io::ErrorKind::UnexpectedEof.into());
-        }
-        let mut used = 0;
-        for &b in buf {
-            used += 1;
-            if b == MAGIC[matched] {
-                matched += 1;
-                if matched == MAGIC.len() {
-                    break;
-                }
-            } else {
-                spill.write_all(&MAGIC[..matched])?;
-                matched = usize::from(b == MAGIC[0]);
-                if matched == 0 {
-                    spill.write_all(&[b])?;
-                }
-            }
-        }
-        from.consume(used);
-    }
-    let mut len = [0; 4];
-    from.read_exact(&mut len)?;
-    let len = u32::from_le_bytes(len);
-    if len > MAX_FRAME {
-        return Err(std::io::Error::other("a frame longer than the wire allows"));
-    }
-    let mut payload = vec![0; len as usize];
-    from.read_exact(&mut payload)?;
-    bincode::deserialize(&payload).map_err(std::io::Error::other)
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::real::Real;
-
-    /// Frames cross whole among the student's own output, which is kept in order, even when
-    /// it holds the magic's first bytes; floats cross exactly, NaN and ∞ included.
-    #[test]
-    fn frames_cross_among_the_students_output_and_floats_cross_exactly() {
-        let values: Vec<Real> = vec![
-            0.1,
-            -0.0,
-            Real::NAN,
-            Real::INFINITY,
-            Real::MIN_POSITIVE / 2.0,
-        ];
-        let mut wire = Vec::new();
-        wire.extend_from_slice(b"debug: t = 3\n\x1bW not a frame\n");
-        write_frame(
-            &mut wire,
-            &Frame::Value(bincode::serialize(&values).unwrap()),
-        )
-        .unwrap();
-        wire.extend_from_slice(b"\x1b\x1bWHJ");
-        write_frame(&mut wire, &Frame::Panicked("not yet implemented".into())).unwrap();
-        let mut from = std::io::Cursor::new(wire);
-        let mut spill = Vec::new();
-        let Frame::Value(v) = read_frame(&mut from, &mut spill).unwrap() else {
-            panic!("no value frame first");
-        };
-        let back: Vec<Real> = bincode::deserialize(&v).unwrap();
-        let bits = |v: &[Real]| v.iter().map(|x| x.to_bits()).collect::<Vec<_>>();
-        assert_eq!(bits(&back), bits(&values), "the floats after crossing");
-        assert_eq!(
-            read_frame(&mut from, &mut spill).unwrap(),
-            Frame::Panicked("not yet implemented".into())
-        );
-        assert_eq!(
-            String::from_utf8_lossy(&spill),
-            "debug: t = 3\n\x1bW not a frame\n\x1b\x1bWHJ",
-            "the student's own output, in order"
-        );
-        assert_eq!(
-            read_frame(&mut from, &mut spill).unwrap_err().kind(),
-            std::io::ErrorKind::UnexpectedEof
-        );
-    }
-
-    /// A frame that claims more than the wire allows, or whose payload is no frame, is an
-    /// error, not an allocation or a panic.
-    #[test]
-    fn a_frame_too_long_or_garbled_is_an_error() {
-        let mut long = MAGIC.to_vec();
-        long.extend_from_slice(&u32::MAX.to_le_bytes());
-        assert!(read_frame(&mut std::io::Cursor::new(long), &mut std::io::sink()).is_err());
-        let mut garbled = MAGIC.to_vec();
-        garbled.extend_from_slice(&3u32.to_le_bytes());
-        garbled.extend_from_slice(&[0xff, 0xff, 0xff]);
-        assert!(read_frame(&mut std::io::Cursor::new(garbled), &mut std::io::sink()).is_err());
-    }
 
     /// A test is judged on the exercise its name starts with after the module path: a name
     /// that is a prefix of another's does not take its tests.

@@ -29,7 +29,7 @@ use crate::real::{Real, Vec3};
 use crate::shapes::{Hit, Object};
 
 /// How secondary rays leave a surface.
-#[derive(Clone, Copy, Debug, Default, PartialEq)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, serde::Serialize, serde::Deserialize)]
 pub enum Offset {
     /// Accept only t > ε from the unmoved hit point (ε in world units).
     Fixed(Real),
@@ -116,7 +116,7 @@ impl OffsetKind {
 }
 
 /// A hit point with what the offset strategies need to know about how it was computed.
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Copy, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
 pub struct SpawnPoint {
     /// The hit point P = e + d·t as the ray computed it.
     pub p: Vec3,

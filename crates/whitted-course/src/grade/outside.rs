@@ -15,11 +15,12 @@
 //!
 //! The same code goes into the judge's copy (the instructor's bodies, and the tests) and into
 //! the server's (the student's bodies). An argument crosses by value: `&T` as a `T`, `&[T]` as
-//! a `Vec<T>`. A function with an argument that cannot cross gets no stub: [`Wired::kept`] names
-//! it, and it runs where it is called. Four do not cross yet: the road's three methods
-//! (`Tracer`'s `&self` holds the scene and the query by reference, and they take the recorder)
-//! and `transmittance`, whose iterator is pulled item by item (which items are pulled is part of
-//! its contract: it stops at the first 0).
+//! a `Vec<T>`. The road's three methods cross by the renderer's `render::crossing`: the
+//! tracer's parts go, the recorder stays, and the events recorded on the other side come back
+//! with the value. An iterator (`transmittance`'s) does not cross: the other side pulls its
+//! items one by one as the function asks for them, since which items are pulled is part of the
+//! contract (it stops at the first 0). A function with an argument that cannot cross gets no
+//! stub: [`Wired::kept`] names it, and it runs where it is called (none of the course's).
 //!
 //! Course book: [The instructor's guide](../../../../../docs/book/instructor-guide.html) (`docs/src/instructor-guide.md`).
 
@@ -38,9 +39,15 @@ pub const SERVER_VAR: &str = "WHITTED_JUDGE_SERVER";
 /// The server program a wired copy gains, beside the renderer's crate's sources.
 pub const SERVER_EXAMPLE: &str = "judged_server";
 
-/// The road's type, whose methods take the recorder and hold the scene by reference: its
-/// calls stay where they are made.
+/// The road's type: its methods read the tracer and tell a recorder what they compute, and
+/// cross by the renderer's `render::crossing` module.
 const ROAD: &str = "Tracer";
+
+/// The renderer's module that carries the road's methods across.
+const CROSSING: &str = "crate::render::crossing";
+
+/// The road's methods that `render::crossing` answers (`answer_NAME`).
+const ROAD_ANSWERS: [&str; 3] = ["local_light", "feeler", "reflect_and_refract"];
 
 /// What [`add_wire`] did.
 #[derive(Debug, Default, PartialEq, Eq)]
@@ -60,6 +67,9 @@ struct Crossing {
     decoded: String,
     /// What the answer passes to the function (`a0`, `&a0`).
     passed: String,
+    /// For an iterator, its name and its items' type: it does not cross with the arguments,
+    /// its items are pulled one by one.
+    pulled: Option<(String, String)>,
 }
 
 /// How the argument `param` (a parameter's text, `name: Type` or a receiver) crosses as the
@@ -70,14 +80,19 @@ fn crossing(param: &str, k: usize, self_type: Option<&str>) -> Result<Crossing, 
     if param == "&self" {
         let ty = self_type.ok_or("a receiver outside an `impl`")?;
         if ty == ROAD {
-            return Err(format!(
-                "`&self`: the road's `{ROAD}` holds its scene and query by reference"
-            ));
+            // the parts of the tracer its methods read; the other side asks every object
+            return Ok(Crossing {
+                sent: format!("{CROSSING}::RoadRef::of(self)"),
+                decoded: String::new(),
+                passed: String::new(),
+                pulled: None,
+            });
         }
         return Ok(Crossing {
             sent: "self".into(),
             decoded: ty.into(),
             passed: format!("&{a}"),
+            pulled: None,
         });
     }
     let (name, ty) =
@@ -92,29 +107,36 @@ fn crossing(param: &str, k: usize, self_type: Option<&str>) -> Result<Crossing, 
             "`{param}`: what the function changes stays in its process"
         ));
     }
+    if let Some(item) = ty
+        .strip_prefix("impl IntoIterator<Item =")
+        .and_then(|t| t.strip_suffix('>'))
+    {
+        // which items are pulled is part of the contract (`transmittance` stops at the first
+        // 0): they are pulled one by one, never sent as a whole
+        let item = item.trim();
+        return Ok(Crossing {
+            sent: String::new(),
+            decoded: String::new(),
+            passed: format!("crate::judged::pulled::<{item}>()"),
+            pulled: Some((name.into(), item.into())),
+        });
+    }
     if ty.starts_with("impl ") || ty.contains("dyn ") {
-        // an iterator's items are pulled one at a time, and which are pulled is part of the
-        // contract (`transmittance` stops at the first 0): it cannot cross as a `Vec`
         return Err(format!("`{param}`: a type the wire does not know"));
     }
-    if let Some(slice) = ty.strip_prefix("&[").and_then(|t| t.strip_suffix(']')) {
-        return Ok(Crossing {
-            sent: name.into(),
-            decoded: format!("Vec<{}>", slice.trim()),
-            passed: format!("&{a}"),
-        });
-    }
-    if let Some(inner) = ty.strip_prefix('&') {
-        return Ok(Crossing {
-            sent: name.into(),
-            decoded: inner.trim().into(),
-            passed: format!("&{a}"),
-        });
-    }
+    let (decoded, passed) =
+        if let Some(slice) = ty.strip_prefix("&[").and_then(|t| t.strip_suffix(']')) {
+            (format!("Vec<{}>", slice.trim()), format!("&{a}"))
+        } else if let Some(inner) = ty.strip_prefix('&') {
+            (inner.trim().to_string(), format!("&{a}"))
+        } else {
+            (ty.to_string(), a)
+        };
     Ok(Crossing {
         sent: name.into(),
-        decoded: ty.into(),
-        passed: a,
+        decoded,
+        passed,
+        pulled: None,
     })
 }
 
@@ -194,7 +216,7 @@ fn module_of(file: &Path) -> String {
 
 /// The stub and the answer of the function `path` (the manifest's, `module::Type::method` or
 /// `module::fn`) whose parameters are `params`, as exercise `n`.
-fn stub_and_answer(n: usize, path: &str, params: &[String]) -> Result<(String, String), String> {
+fn stub_and_answer(n: usize, path: &str, params: &[String]) -> Result<Made, String> {
     let segments: Vec<&str> = path.split("::").collect();
     let function = segments.last().copied().unwrap_or_default();
     let self_type = segments
@@ -202,30 +224,108 @@ fn stub_and_answer(n: usize, path: &str, params: &[String]) -> Result<(String, S
         .checked_sub(2)
         .map(|i| segments[i])
         .filter(|s| s.starts_with(|c: char| c.is_uppercase()));
+    if self_type == Some(ROAD) {
+        return road_stub(n, function, params);
+    }
     let crossings = params
         .iter()
         .enumerate()
         .map(|(k, p)| crossing(p, k, self_type))
         .collect::<Result<Vec<_>, _>>()?;
-    let sent: Vec<&str> = crossings.iter().map(|c| c.sent.as_str()).collect();
-    let stub = format!(
-        "if crate::judged::remote({n}) {{ return crate::judged::call({n}, &({},)); }}",
-        sent.join(", ")
-    );
-    let names: Vec<String> = (0..crossings.len()).map(|k| format!("a{k}")).collect();
-    let types: Vec<&str> = crossings.iter().map(|c| c.decoded.as_str()).collect();
+    let sent: Vec<&str> = crossings
+        .iter()
+        .filter(|c| c.pulled.is_none())
+        .map(|c| c.sent.as_str())
+        .collect();
+    let sent = tuple(&sent);
+    let pulled: Vec<&(String, String)> =
+        crossings.iter().filter_map(|c| c.pulled.as_ref()).collect();
+    let stub = match pulled.as_slice() {
+        [] => {
+            format!("if crate::judged::remote({n}) {{ return crate::judged::call({n}, &{sent}); }}")
+        }
+        [(name, item)] => format!(
+            "if crate::judged::remote({n}) {{ let mut items = {name}.into_iter(); return crate::judged::call_pulling::<_, _, {item}>({n}, &{sent}, &mut items); }}"
+        ),
+        _ => return Err("two iterators: the wire pulls from one".into()),
+    };
+    let names: Vec<String> = (0..crossings.len())
+        .filter(|&k| crossings[k].pulled.is_none())
+        .map(|k| format!("a{k}"))
+        .collect();
+    let types: Vec<&str> = crossings
+        .iter()
+        .filter(|c| c.pulled.is_none())
+        .map(|c| c.decoded.as_str())
+        .collect();
     let passed: Vec<&str> = crossings.iter().map(|c| c.passed.as_str()).collect();
     let callee = match self_type {
         Some(ty) => format!("{ty}::{function}"),
         None => function.to_string(),
     };
     let answer = format!(
-        "\n/// Written by `whitted grade`: exercise {n} run here for the other end of the grader's wire.\n#[doc(hidden)]\npub(crate) fn judged_answer_{n}(args: &[u8]) -> Result<Vec<u8>, String> {{\n    let ({},): ({},) = crate::judge::decode(args)?;\n    crate::judge::encode(&{callee}({}))\n}}\n",
-        names.join(", "),
-        types.join(", "),
+        "\n/// Written by `whitted grade`: exercise {n} run here for the other end of the grader's wire.\n#[doc(hidden)]\npub(crate) fn judged_answer_{n}(args: &[u8]) -> Result<Vec<u8>, String> {{\n    let {}: {} = crate::judge::decode(args)?;\n    crate::judge::encode(&{callee}({}))\n}}\n",
+        tuple(&names),
+        tuple(&types),
         passed.join(", "),
     );
-    Ok((stub, answer))
+    Ok(Made {
+        stub,
+        answer,
+        answered_by: None,
+    })
+}
+
+/// The Rust tuple of `parts`: `()` when there are none, `(a,)` for one.
+fn tuple<S: AsRef<str>>(parts: &[S]) -> String {
+    if parts.is_empty() {
+        return "()".into();
+    }
+    let parts: Vec<&str> = parts.iter().map(AsRef::as_ref).collect();
+    format!("({},)", parts.join(", "))
+}
+
+/// The stub of the road's method `function` (its parameters `params`): the tracer's parts and
+/// the other arguments cross, the recorder does not; the events the method recorded on the
+/// other side come back with its value, and the stub tells them to its own recorder.
+fn road_stub(n: usize, function: &str, params: &[String]) -> Result<Made, String> {
+    if !ROAD_ANSWERS.contains(&function) {
+        return Err(format!(
+            "`{ROAD}::{function}`: {CROSSING} has no answer for it"
+        ));
+    }
+    let mut sent = Vec::new();
+    let mut recorder = None;
+    for (k, p) in params.iter().enumerate() {
+        let name = p.split(':').next().unwrap_or_default().trim();
+        if p.contains("Recorder") {
+            recorder = Some(name.to_string());
+        } else {
+            sent.push(crossing(p, k, Some(ROAD))?.sent);
+        }
+    }
+    let sent = tuple(&sent);
+    let stub = match recorder {
+        Some(rec) => format!(
+            "if crate::judged::remote({n}) {{ let (value, events): (_, Vec<{CROSSING}::Event>) = crate::judged::call({n}, &{sent}); {CROSSING}::replay(&events, {rec}); return value; }}"
+        ),
+        None => {
+            format!("if crate::judged::remote({n}) {{ return crate::judged::call({n}, &{sent}); }}")
+        }
+    };
+    Ok(Made {
+        stub,
+        answer: String::new(),
+        answered_by: Some(format!("{CROSSING}::answer_{function}")),
+    })
+}
+
+/// One exercise's wire: its stub, the answer appended to its file, and the function that
+/// answers for it when that is not the appended one.
+struct Made {
+    stub: String,
+    answer: String,
+    answered_by: Option<String>,
 }
 
 /// What one source file gains: the stubs, put first in bodies, and the answers appended.
@@ -251,14 +351,14 @@ pub fn add_wire(project: &Path, manifest: &Manifest) -> Result<Wired, ToolError>
         let made = parameters(&text, at.body.start, name)
             .and_then(|params| stub_and_answer(n, &entry.function, &params));
         match made {
-            Ok((stub, answer)) => {
+            Ok(made) => {
                 let (edits, answers) = by_file.entry(at.file.clone()).or_default();
-                edits.push((at.body.clone(), Edit::Prepend(stub)));
-                answers.push_str(&answer);
-                arms.push(format!(
-                    "            {n} => {}::judged_answer_{n}(args),",
-                    module_of(&at.file)
-                ));
+                edits.push((at.body.clone(), Edit::Prepend(made.stub)));
+                answers.push_str(&made.answer);
+                let answer = made
+                    .answered_by
+                    .unwrap_or_else(|| format!("{}::judged_answer_{n}", module_of(&at.file)));
+                arms.push(format!("            {n} => {answer}(args),"));
                 wired.crossing.push(n);
             }
             Err(why) => wired.kept.push((n, why)),
@@ -316,6 +416,21 @@ pub mod judged {{
         crate::judge::call(&TABLE, n, args)
     }}
 
+    /// [`call`] for a function that also takes an iterator, whose items the other end pulls.
+    pub fn call_pulling<A: serde::Serialize + ?Sized, R: serde::de::DeserializeOwned, T: serde::Serialize>(
+        n: u16,
+        args: &A,
+        items: &mut dyn Iterator<Item = T>,
+    ) -> R {{
+        crate::judge::call_pulling(&TABLE, n, args, Some(items))
+    }}
+
+    /// The iterator of the call being answered, its items pulled from the other end.
+    #[must_use]
+    pub fn pulled<T>() -> crate::judge::Pulled<T> {{
+        crate::judge::Pulled::new(&TABLE)
+    }}
+
     /// The server's `main`.
     #[must_use]
     pub fn serve() -> std::process::ExitCode {{
@@ -342,8 +457,17 @@ mod tests {
         assert_eq!(c("ray: &Ray"), own("ray", "Ray", "&a1"));
         assert_eq!(c("steps: &[Step]"), own("steps", "Vec<Step>", "&a1"));
         assert_eq!(c("mut t: Real"), own("t", "Real", "a1"));
-        assert!(c("crossed: impl IntoIterator<Item = Real>").is_err());
+        let it = crossing("crossed: impl IntoIterator<Item = Real>", 1, None).unwrap();
+        assert_eq!(
+            (it.passed.as_str(), it.pulled),
+            (
+                "crate::judged::pulled::<Real>()",
+                Some(("crossed".to_string(), "Real".to_string()))
+            )
+        );
+        assert!(c("f: impl Fn(Real) -> Real").is_err());
         assert!(c("rec: &mut impl Recorder").is_err());
+        assert!(c("t: &dyn Query").is_err());
         assert!(c("(a, b): (Real, Real)").is_err());
     }
 

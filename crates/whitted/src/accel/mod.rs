@@ -71,7 +71,9 @@ use crate::real::Mat4;
 use crate::shapes::{Hits, Numerics, Object, Shape};
 
 /// Which acceleration technique answers the ray queries.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+#[derive(
+    Clone, Copy, Debug, Default, PartialEq, Eq, Hash, serde::Serialize, serde::Deserialize,
+)]
 pub enum Accel {
     /// Brute force: every ray against every object.
     None,

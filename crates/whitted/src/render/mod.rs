@@ -26,6 +26,7 @@
 //! Course book: [Chapter 1, camera rays](../../../../docs/book/ch01-camera-rays.html) (`docs/src/ch01-camera-rays.md`).
 
 pub mod accelerated;
+pub mod crossing;
 pub mod framebuffer;
 pub mod inspect;
 pub mod options;

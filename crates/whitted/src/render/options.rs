@@ -167,7 +167,7 @@ impl View {
 }
 
 /// Everything about a render that is not in the scene.
-#[derive(Clone, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
 pub struct Options {
     /// The chapter.
     pub chapter: Chapter,

@@ -40,7 +40,7 @@ pub trait Query {
 // ANCHOR_END: ch2_query
 
 /// What shading needs to know of a hit: the shading point of the notes' formulas.
-#[derive(Clone, Copy, Debug)]
+#[derive(Clone, Copy, Debug, serde::Serialize)]
 pub struct ShadingPoint<'s> {
     /// The hit (world normal, pointing out of the object; which side the ray came from).
     pub hit: Hit,

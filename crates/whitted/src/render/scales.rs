@@ -30,7 +30,7 @@ use crate::scene::Scene;
 pub const DEPTH_PROBES: u32 = 64;
 
 /// The scales of the depth and rays-per-pixel views, fixed before the first tile.
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Copy, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
 pub struct Scales {
     /// The nearest and farthest distance the depth probe found (the depth view only).
     pub depth: Option<(Real, Real)>,

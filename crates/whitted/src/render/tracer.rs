@@ -111,10 +111,10 @@ pub struct Tracer<'a, Q> {
     pub(crate) scene: &'a Scene,
     /// The options it renders with: size, chapter, view, depth …
     pub options: &'a Options,
-    camera: Camera,
-    query: Q,
+    pub(super) camera: Camera,
+    pub(super) query: Q,
     /// The scales of the depth and rays-per-pixel views, fixed before the first pixel.
-    scales: Scales,
+    pub(super) scales: Scales,
 }
 
 impl<'a, Q: Query> Tracer<'a, Q> {

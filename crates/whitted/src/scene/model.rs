@@ -11,7 +11,7 @@ use crate::real::{Real, Vec3};
 use crate::shapes::Object;
 
 /// The camera as the scene describes it; [`CameraSettings::camera`] adds the image size.
-#[derive(Clone, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
 pub struct CameraSettings {
     /// The eye e.
     pub eye: Vec3,
@@ -44,7 +44,7 @@ impl CameraSettings {
 }
 
 /// A scene ready to render.
-#[derive(Clone, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
 pub struct Scene {
     /// Where the camera is and how it sees.
     pub camera: CameraSettings,

@@ -48,7 +48,7 @@ use refine::Surface;
 
 /// The nearest hit of a ray over the objects of a scene: the hit (world normal) and the index
 /// of the object hit.
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Copy, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
 pub struct Nearest {
     /// The hit.
     pub hit: Hit,
@@ -159,7 +159,7 @@ impl Shape {
 }
 
 /// A generic shape placed in the scene, with the index of its material.
-#[derive(Clone, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
 pub struct Object {
     /// The generic shape.
     pub shape: Shape,
