@@ -22,15 +22,19 @@ pub(super) enum Frame {
     /// The judge's first word to a new server: the exercises the server runs itself.
     Start { local: Vec<u16> },
     /// Run exercise `exercise` on these arguments and send its value.
-    Call { exercise: u16, args: Vec<u8> },
+    Call {
+        exercise: u16,
+        #[serde(with = "serde_bytes")]
+        args: Vec<u8>,
+    },
     /// The value of the innermost call that is waiting.
-    Value(Vec<u8>),
+    Value(#[serde(with = "serde_bytes")] Vec<u8>),
     /// The innermost call that is waiting panicked, with this message.
     Panicked(String),
     /// The next item of the iterator the innermost waiting call took, please.
     Pull,
     /// That item (`Option<T>`, `None` at its end).
-    Item(Vec<u8>),
+    Item(#[serde(with = "serde_bytes")] Vec<u8>),
 }
 
 /// Writes `frame` as one line, in one write: the server's standard output writes a line at
