@@ -7,9 +7,10 @@
 #   cargo test -p whitted-course --test judge_outside -- --ignored   # builds the two copies
 #   bash benches/judge/cost.sh [RUNS]
 #
-# Prints the sum of the per-test medians for both, their ratio, and the five tests the wire
-# slows most. Uses the copies judge_outside leaves in target/judge-tests; the server's copy is
-# put back to the reference first (judge_outside leaves its last mutant in it).
+# Prints the sum of the per-test medians for both, their ratio, the median test's extra time,
+# and the five tests the wire slows most. Uses the copies judge_outside leaves in
+# target/judge-tests; the server's copy is put back to the reference first (judge_outside leaves
+# its last mutant in it).
 set -euo pipefail
 here="$(cd "$(dirname "$0")" && pwd)"
 root="$(cd "$here/../.." && pwd)"
@@ -57,6 +58,8 @@ sl, sw = sum(ml.values()), sum(mw.values())
 print(f"{len(ml)} exercise tests, medians of {sys.argv[2]} runs each")
 print(f"one process:     {sl:7.2f} s")
 print(f"across the wire: {sw:7.2f} s  ({sw / sl:.1f}x)")
+extra = statistics.median(mw[t] - ml[t] for t in ml)
+print(f"the median test's extra time across the wire: {extra * 1000:.1f} ms")
 print("slowed most (one process -> across the wire):")
 for t in sorted(mw, key=lambda t: mw[t] - ml[t], reverse=True)[:5]:
     print(f"  {ml[t]:7.3f} s -> {mw[t]:7.3f} s  {t}")

@@ -90,10 +90,11 @@ enum Command {
     /// point, CodeGrade's scripts, GitHub Classroom's workflow) into --out; its subcommands are
     /// what those packages run.
     Autograder(autograder::command::AutograderArgs),
-    /// Runs a test binary in the grader's sandbox: nextest's target runner while grading.
+    /// Runs a test binary in the grader's sandbox: nextest's target runner while grading;
+    /// with `--serve` first, the student's server of the judge outside their process.
     #[command(name = "sandbox-run", hide = true)]
     SandboxRun {
-        /// The test binary and its arguments.
+        /// The test binary and its arguments, or `--serve`, the server and its arguments.
         #[arg(trailing_var_arg = true, allow_hyphen_values = true, required = true)]
         command: Vec<std::ffi::OsString>,
     },

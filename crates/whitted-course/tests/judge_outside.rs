@@ -3,7 +3,7 @@
 //! only values cross between them.
 //!
 //! `#[ignore]`d in a plain `cargo test` (it builds the project twice and a server per
-//! submission, a few minutes); `.ci/run` runs it:
+//! submission, a few minutes, and runs the grader's sandbox as root); `.ci/run` runs it:
 //! `cargo test -p whitted-course --test judge_outside -- --ignored --nocapture`.
 
 mod common;
@@ -15,6 +15,8 @@ use std::process::Command;
 use common::{copy, index, manifest, mutant_body, mutants, root, set_body};
 use whitted_course::grade::alone::GRADED_TEST_VAR as TEST_VAR;
 use whitted_course::grade::outside::{SERVER_EXAMPLE, SERVER_VAR, add_wire};
+use whitted_course::grade::runner::SERVE;
+use whitted_course::grade::sandbox::{self, Level};
 use whitted_course::manifest::Manifest;
 
 /// The test targets whose exercise tests are judged.
@@ -113,6 +115,18 @@ fn judged(
     crossing: &BTreeSet<usize>,
     exe: &Path,
 ) -> BTreeMap<String, (bool, String)> {
+    judged_through(m, binaries, crossing, &exe.to_string_lossy(), &[])
+}
+
+/// [`judged`] with the server started by the command line `server` (its words separated by
+/// `\x1f`), the judge's processes given `env` too.
+fn judged_through(
+    m: &Manifest,
+    binaries: &[PathBuf],
+    crossing: &BTreeSet<usize>,
+    server: &str,
+    env: &[(&str, &str)],
+) -> BTreeMap<String, (bool, String)> {
     let mut results = BTreeMap::new();
     for bin in binaries {
         let list = Command::new(bin)
@@ -129,8 +143,9 @@ fn judged(
             }
             let out = Command::new(bin)
                 .args([test, "--exact", "--test-threads", "1"])
-                .env(SERVER_VAR, exe)
+                .env(SERVER_VAR, server)
                 .env(TEST_VAR, test)
+                .envs(env.iter().copied())
                 .output()
                 .unwrap();
             results.insert(test.to_string(), (out.status.success(), common::text(&out)));
@@ -181,8 +196,10 @@ fn every_exercise_crosses_the_wire() {
 
 /// Across the wire, the reference passes every test; each hand-written mutant, and each body
 /// that forges a pass from inside its process, fails its own exercise's tests and no other's.
+/// The reference and the forging bodies are judged again with their server in the grader's
+/// sandbox, at both levels (as root, with bubblewrap, like `grade_build`).
 #[test]
-#[ignore = "builds the project twice and a server per submission: .ci/run runs it"]
+#[ignore = "builds the project twice and a server per submission, and runs the sandbox as root: .ci/run runs it"]
 fn an_exercise_judged_across_the_wire_costs_only_its_own_tests() {
     let m = manifest();
     let (binaries, crossing) = judge(&m);
@@ -208,6 +225,24 @@ fn an_exercise_judged_across_the_wire_costs_only_its_own_tests() {
         "the reference: {} exercise tests passed across the wire",
         reference.len()
     );
+    for level in [Level::Namespaces, Level::User] {
+        let results = in_sandbox(&m, &binaries, &crossing, &exe, level);
+        let failing: Vec<&String> = results
+            .iter()
+            .filter(|(_, (p, _))| !p)
+            .map(|(t, _)| t)
+            .collect();
+        assert_eq!(results.len(), reference.len(), "{level:?}");
+        assert!(
+            failing.is_empty(),
+            "{level:?}: the reference's server in the sandbox fails: {failing:?}; e.g. {:?}",
+            results.values().find(|(p, _)| !p)
+        );
+        println!(
+            "the reference, its server in the sandbox ({level:?}): {} exercise tests passed",
+            results.len()
+        );
+    }
 
     // a body that forges a pass: libtest's lines, a report, then its process ended with 0
     let forger = "ray_direction";
@@ -269,6 +304,15 @@ fn an_exercise_judged_across_the_wire_costs_only_its_own_tests() {
                 own, total,
                 "{what}: {exercise}'s tests that fail, of its {total}: a forged pass passes none"
             );
+            for level in [Level::Namespaces, Level::User] {
+                let results = in_sandbox(&m, &binaries, &crossing, &exe, level);
+                let by = failed_by_exercise(&m, &results);
+                assert_eq!(
+                    by,
+                    BTreeMap::from([(exercise.clone(), total)]),
+                    "{what}, its server in the sandbox ({level:?}): the tests that fail, by exercise"
+                );
+            }
         }
         let others: Vec<&String> = by.keys().filter(|e| **e != exercise).collect();
         assert!(
@@ -278,4 +322,54 @@ fn an_exercise_judged_across_the_wire_costs_only_its_own_tests() {
                 && owner(&m, t).map(|e| &m.entries[e].exercise.name) != Some(&exercise))
         );
     }
+}
+
+/// [`judged`] with the server run by the grader's runner in its sandbox at `level`, as the
+/// grader starts it (`whitted sandbox-run --serve SERVER`, the policy in the environment, a
+/// slot of its own): the judge's pipes pass through the sandbox untouched. The server is
+/// copied where the sandbox's user can run it.
+fn in_sandbox(
+    m: &Manifest,
+    binaries: &[PathBuf],
+    crossing: &BTreeSet<usize>,
+    exe: &Path,
+    level: Level,
+) -> BTreeMap<String, (bool, String)> {
+    use std::os::unix::fs::PermissionsExt;
+    let dir = tempfile::tempdir().unwrap();
+    std::fs::set_permissions(dir.path(), std::fs::Permissions::from_mode(0o755)).unwrap();
+    let server = dir.path().join(SERVER_EXAMPLE);
+    std::fs::copy(exe, &server).unwrap();
+    let bwrap = ["/usr/bin/bwrap", "/bin/bwrap"]
+        .into_iter()
+        .map(PathBuf::from)
+        .find(|p| p.exists())
+        .expect("bubblewrap");
+    let policy = sandbox::Policy {
+        level,
+        bwrap,
+        uid: Some(sandbox::FIRST_UID + sandbox::SLOTS * 10),
+        slot: 0,
+        limits: sandbox::Limits::default(),
+        read: Vec::new(),
+        write: Vec::new(),
+        timeout_ms: None,
+    };
+    let json = serde_json::to_string(&policy).unwrap();
+    let line = format!(
+        "{}\x1f{}\x1f{SERVE}\x1f{}",
+        env!("CARGO_BIN_EXE_whitted"),
+        sandbox::RUNNER_COMMAND,
+        server.display()
+    );
+    judged_through(
+        m,
+        binaries,
+        crossing,
+        &line,
+        &[
+            (sandbox::POLICY_VAR, &json),
+            ("NEXTEST_TEST_GLOBAL_SLOT", "7"),
+        ],
+    )
 }

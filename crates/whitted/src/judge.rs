@@ -157,7 +157,7 @@ where
 {
     let wire = WIRE.get_or_init(|| judge_side(table));
     let turn = wire.turn();
-    let args = bincode::serialize(args)
+    let args = once(args)
         .unwrap_or_else(|e| wire.broken(&format!("exercise {n}'s arguments cannot be sent: {e}")));
     let mut pull = items.map(|it| move || bincode::serialize(&it.next()).unwrap_or_default());
     let pull = pull.as_mut().map(|p| p as &mut dyn FnMut() -> Vec<u8>);
@@ -191,6 +191,14 @@ fn name(table: &Table, n: u16) -> String {
     )
 }
 
+/// `value` encoded in one pass: what it writes is decided as it is written
+/// (`render::crossing::RoadRef`), and `bincode::serialize` writes twice (once to count).
+fn once<T: Serialize + ?Sized>(value: &T) -> bincode::Result<Vec<u8>> {
+    let mut bytes = Vec::new();
+    bincode::serialize_into(&mut bytes, value)?;
+    Ok(bytes)
+}
+
 /// Decodes an exercise's arguments (the grader's generated dispatch).
 pub fn decode<A: DeserializeOwned>(args: &[u8]) -> Result<A, String> {
     bincode::deserialize(args).map_err(|e| format!("arguments that are no such values: {e}"))
@@ -198,7 +206,7 @@ pub fn decode<A: DeserializeOwned>(args: &[u8]) -> Result<A, String> {
 
 /// Encodes an exercise's value (the grader's generated dispatch).
 pub fn encode<R: Serialize + ?Sized>(value: &R) -> Result<Vec<u8>, String> {
-    bincode::serialize(value).map_err(|e| format!("a value that cannot be sent: {e}"))
+    once(value).map_err(|e| format!("a value that cannot be sent: {e}"))
 }
 
 /// The iterator a function that crosses takes, on the side that runs it: each item is pulled

@@ -21,6 +21,10 @@
 //! - **Output that is safe to quote.** Its standard output and error reach nextest cleaned
 //!   ([`super::clean`]) and cut at the policy's size.
 //!
+//! With [`SERVE`] first (`whitted sandbox-run --serve SERVER`) it runs instead the server of
+//! the judge outside the student's process (the renderer's `judge` module) in the same
+//! sandbox, its standard input and output the judge's pipes ([`serve`]).
+//!
 //! Course book: [The instructor's guide](../../../../../docs/book/instructor-guide.html) (`docs/src/instructor-guide.md`).
 
 use std::ffi::{OsStr, OsString};
@@ -179,6 +183,93 @@ fn private_tmp(policy: &Policy) -> Result<Option<tempfile::TempDir>, String> {
     Ok(Some(dir))
 }
 
+/// The runner's first word that makes it run the server of the grader's wire ([`serve`]).
+pub const SERVE: &str = "--serve";
+
+/// The sandbox's policy from [`POLICY_VAR`], its slot set from nextest's: a test has a slot
+/// no other running test has; a listing of the tests (`--list`) has none, and runs beside the
+/// other listings.
+fn policy_of_env() -> Result<(Policy, Option<u32>), String> {
+    let mut policy: Policy = std::env::var(POLICY_VAR)
+        .map_err(|e| e.to_string())
+        .and_then(|t| serde_json::from_str(&t).map_err(|e| e.to_string()))
+        .map_err(|e| format!("no sandbox policy in {POLICY_VAR}: {e}"))?;
+    let slot: Option<u32> = std::env::var(SLOT_VAR).ok().and_then(|s| s.parse().ok());
+    policy.slot = slot.unwrap_or(0);
+    Ok((policy, slot))
+}
+
+/// Runs the student's server of the grader's wire (`sandbox-run --serve SERVER ARGS…`,
+/// started by the judge's test process, whose slot it inherits) in the sandbox of
+/// [`POLICY_VAR`]: its standard input and output are the judge's pipes, passed through
+/// untouched; its standard error arrives cleaned and cut at the policy's size. Nothing it
+/// prints is a verdict: the judge decides on the values that cross. When it ends, every
+/// process of its user ends too and its temporary directory is removed; it ends with the
+/// server's status. Its time is the judge's test's: when that test is stopped, so is this.
+fn serve(command: &[OsString]) -> ExitCode {
+    let fail = |why: String| {
+        eprintln!("whitted {RUNNER_COMMAND} {SERVE}: {why}");
+        ExitCode::from(2)
+    };
+    let Some((bin, args)) = command.split_first() else {
+        return fail("no server to run".into());
+    };
+    let (policy, slot) = match policy_of_env() {
+        Ok(p) => p,
+        Err(e) => return fail(e),
+    };
+    let tmp = match private_tmp(&policy) {
+        Ok(t) => t,
+        Err(e) => return fail(e),
+    };
+    let cwd = std::env::current_dir().unwrap_or_else(|_| PathBuf::from("/tmp"));
+    let mut command = policy.command(Path::new(bin), &cwd);
+    if let Some(t) = &tmp {
+        command.env("TMPDIR", t.path()).env("HOME", t.path());
+    }
+    let mut child = match command
+        .args(args)
+        .stdin(Stdio::inherit())
+        .stdout(Stdio::inherit())
+        .stderr(Stdio::piped())
+        .spawn()
+    {
+        Ok(c) => c,
+        Err(e) => return fail(format!("cannot start the sandbox: {e}")),
+    };
+    // a process the server left behind may hold its standard error open: the server is
+    // waited for first, what it left is ended, and only then is its error read to the end
+    let err = child.stderr.take();
+    let waited = std::thread::scope(|s| {
+        let reader =
+            err.map(|err| s.spawn(|| relay(err, std::io::stderr(), policy.limits.output, None)));
+        let waited = child.wait();
+        wind_up(&policy, slot, reader);
+        waited
+    });
+    drop(tmp);
+    match waited {
+        Ok(status) => ExitCode::from(u8::try_from(status.code().unwrap_or(1)).unwrap_or(1)),
+        Err(e) => fail(format!("waiting for the sandbox: {e}")),
+    }
+}
+
+/// What follows the end of a sandboxed process: with a slot, every process its user left is
+/// ended, which closes the output such a process may hold open; then that output is read to
+/// its end (`reader`).
+fn wind_up(
+    policy: &Policy,
+    slot: Option<u32>,
+    reader: Option<std::thread::ScopedJoinHandle<'_, ()>>,
+) {
+    if slot.is_some() {
+        policy.sweep();
+    }
+    if let Some(r) = reader {
+        let _ = r.join();
+    }
+}
+
 /// The target runner: runs the test binary `command[0]` with its arguments in the sandbox
 /// that [`POLICY_VAR`] describes, passes its output on (cleaned, cut at the policy's size),
 /// and ends as it ended (by the same signal when it was killed, so that nextest sees a
@@ -193,17 +284,13 @@ pub fn run_test(command: &[OsString]) -> ExitCode {
     let Some((bin, args)) = command.split_first() else {
         return fail("no test binary to run".into());
     };
-    let mut policy: Policy = match std::env::var(POLICY_VAR)
-        .map_err(|e| e.to_string())
-        .and_then(|t| serde_json::from_str(&t).map_err(|e| e.to_string()))
-    {
+    if bin == SERVE {
+        return serve(args);
+    }
+    let (policy, slot) = match policy_of_env() {
         Ok(p) => p,
-        Err(e) => return fail(format!("no sandbox policy in {POLICY_VAR}: {e}")),
+        Err(e) => return fail(e),
     };
-    // a test has a slot no other running test has; a listing of the tests (`--list`) has
-    // none, and runs beside the other listings
-    let slot: Option<u32> = std::env::var(SLOT_VAR).ok().and_then(|s| s.parse().ok());
-    policy.slot = slot.unwrap_or(0);
     let test = test_of(args);
     let args = if test.is_some() {
         captured(args)
@@ -278,12 +365,7 @@ pub fn run_test(command: &[OsString]) -> ExitCode {
                 }
             },
         };
-        if slot.is_some() {
-            policy.sweep();
-        }
-        if let Some(r) = reader {
-            let _ = r.join();
-        }
+        wind_up(&policy, slot, reader);
         waited
     });
     drop(tmp);

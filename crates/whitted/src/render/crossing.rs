@@ -122,18 +122,25 @@ pub fn replay(events: &[Event], rec: &mut impl Recorder) {
 
 /// What a road's method reads of its tracer, as the stub sends it: the parts themselves the
 /// first time, then only their number while they stay the same (a render asks thousands of
-/// times with one scene). Each side numbers what it sends.
+/// times with one scene). Which of the two is decided as it is written, so it must be written
+/// once, inside the wire's turn, as [`crate::judge`] writes a call's arguments: decided
+/// before, a render's threads could send a number before the parts it stands for.
+pub struct RoadRef<'a> {
+    parts: Parts<'a>,
+}
+
+/// [`RoadRef`] as it is written.
 #[derive(Serialize)]
-pub enum RoadRef<'a> {
+enum RoadOut<'p, 'a> {
     /// New parts, and the number they go by.
-    Parts(u64, Parts<'a>),
+    Parts(u64, &'p Parts<'a>),
     /// The parts sent last, under this number.
     Same(u64),
 }
 
 /// The parts of a tracer its road's methods read, borrowed.
 #[derive(Serialize)]
-pub struct Parts<'a> {
+struct Parts<'a> {
     scene: &'a Scene,
     options: &'a Options,
     camera: &'a Camera,
@@ -156,35 +163,42 @@ impl<'a> RoadRef<'a> {
     /// What to send for the parts of `tracer` its road's methods read.
     #[must_use]
     pub fn of<Q>(tracer: &'a Tracer<'a, Q>) -> Self {
-        let mut sent = SENT.lock().unwrap_or_else(PoisonError::into_inner);
-        let same = sent.as_ref().is_some_and(|s| {
-            s.road.scene == *tracer.scene
-                && s.road.options == *tracer.options
-                && s.road.camera == tracer.camera
-                && s.road.scales == tracer.scales
-        });
-        if let (true, Some(s)) = (same, sent.as_ref()) {
-            return Self::Same(s.number);
-        }
-        let number = sent.as_ref().map_or(0, |s| s.number + 1);
-        *sent = Some(Sent {
-            number,
-            road: Road {
-                scene: tracer.scene.clone(),
-                options: tracer.options.clone(),
-                camera: tracer.camera.clone(),
-                scales: tracer.scales,
-            },
-        });
-        Self::Parts(
-            number,
-            Parts {
+        Self {
+            parts: Parts {
                 scene: tracer.scene,
                 options: tracer.options,
                 camera: &tracer.camera,
                 scales: &tracer.scales,
             },
-        )
+        }
+    }
+}
+
+impl Serialize for RoadRef<'_> {
+    fn serialize<S: serde::Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
+        let p = &self.parts;
+        let mut sent = SENT.lock().unwrap_or_else(PoisonError::into_inner);
+        let same = sent.as_ref().filter(|s| {
+            s.road.scene == *p.scene
+                && s.road.options == *p.options
+                && s.road.camera == *p.camera
+                && s.road.scales == *p.scales
+        });
+        if let Some(s) = same {
+            return RoadOut::Same(s.number).serialize(serializer);
+        }
+        let number = sent.as_ref().map_or(0, |s| s.number + 1);
+        *sent = Some(Sent {
+            number,
+            road: Road {
+                scene: p.scene.clone(),
+                options: p.options.clone(),
+                camera: p.camera.clone(),
+                scales: *p.scales,
+            },
+        });
+        drop(sent);
+        RoadOut::Parts(number, p).serialize(serializer)
     }
 }
 
@@ -289,4 +303,50 @@ pub fn answer_reflect_and_refract(args: &[u8]) -> Result<Vec<u8>, String> {
         .tracer()
         .reflect_and_refract(&s, color, depth, weight, &mut log);
     encode(&(value, log.0))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::render::Chapter;
+
+    /// A tracer's parts cross whole the first time, then as their number, and the other side
+    /// finds the same parts under it; other parts cross whole again. Each is decided as it is
+    /// written: written twice (a count, then the bytes), the first write of new parts would
+    /// carry only their number.
+    #[test]
+    fn a_tracers_parts_cross_once_then_as_their_number() {
+        let text = "[camera]\neye = [0.0, 0.0, 5.0]\n[[objects]]\nsphere = {}\n";
+        let road = |text: &str| {
+            let scene = crate::scene::parse(text, "crossing.toml").unwrap();
+            let options = Options::for_scene(&scene, Chapter::Shading);
+            Road {
+                camera: options.camera(&scene),
+                scene,
+                options,
+                scales: Scales::default(),
+            }
+        };
+        let (one, other) = (road(text), road(&text.replace("5.0", "6.0")));
+        let send = |road: &Road| -> RoadMsg {
+            decode(&encode(&RoadRef::of(&road.tracer())).unwrap()).unwrap()
+        };
+        let RoadMsg::Parts(n, _) = send(&one) else {
+            panic!("new parts crossed as a number only");
+        };
+        let first = RoadMsg::Parts(n, Box::new(road(text))).road().unwrap();
+        let RoadMsg::Same(m) = send(&one) else {
+            panic!("the same parts crossed whole again");
+        };
+        assert_eq!(m, n, "the number of the parts sent last");
+        let found = RoadMsg::Same(m).road().unwrap();
+        assert!(Arc::ptr_eq(&first, &found), "the parts under that number");
+        assert!(found.scene == one.scene && found.camera == one.camera);
+        let RoadMsg::Parts(k, sent) = send(&other) else {
+            panic!("other parts crossed as a number only");
+        };
+        assert_eq!(k, n + 1, "other parts' number");
+        assert!(sent.scene == other.scene, "the other parts, whole");
+        assert!(RoadMsg::Same(n + 7).road().is_err(), "a number never sent");
+    }
 }
