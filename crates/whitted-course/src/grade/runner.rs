@@ -23,7 +23,7 @@
 //!
 //! With [`SERVE`] first (`whitted sandbox-run --serve SERVER`) it runs instead the server of
 //! the judge outside the student's process (the renderer's `judge` module) in the same
-//! sandbox, its standard input and output the judge's pipes ([`serve`]).
+//! sandbox, its standard input and output the judge's pipes.
 //!
 //! Course book: [The instructor's guide](../../../../../docs/book/instructor-guide.html) (`docs/src/instructor-guide.md`).
 
@@ -183,7 +183,8 @@ fn private_tmp(policy: &Policy) -> Result<Option<tempfile::TempDir>, String> {
     Ok(Some(dir))
 }
 
-/// The runner's first word that makes it run the server of the grader's wire ([`serve`]).
+/// The runner's first word that makes it run the server of the grader's wire instead of a
+/// test, in the same sandbox, its standard input and output the judge's pipes.
 pub const SERVE: &str = "--serve";
 
 /// The sandbox's policy from [`POLICY_VAR`], its slot set from nextest's: a test has a slot
