@@ -75,23 +75,27 @@ enum Command {
     /// tests, the manifest and the code around the exercises are the instructor's. Each
     /// exercise is judged alone: its tests run with the student's body for it and this
     /// project's for every other exercise, so a mistake costs only its own exercise
-    /// (--whole-road judges with all of the student's bodies together). A body that does not
+    /// (--whole-road judges with all of the student's bodies together). The tests run in a
+    /// build of this project (the judge, built once, beside --target-dir); only the values of
+    /// the student's functions cross to it from their build (the server, in the sandbox), so
+    /// nothing the student's code prints, writes or exits with decides a test. A body that does not
     /// compile, or that stops the compiler at its limits (--compile-cpu, --compile-memory), is
     /// graded as not written; so is a body the screen refuses (`cargo learn` runs the same
     /// screen at every save: a formula's grammar passes, whatever its names; `unsafe`, items,
     /// lifetimes, most macros and paths into the process, files, the network or the
     /// environment do not), which is never compiled. Each test runs in its own process under
     /// --timeout (cargo-nextest), so a panic, a stack overflow or an endless loop costs only
-    /// its own tests, and passes only when libtest reported it `ok`: a process that ends early
-    /// passes nothing. An exercise's points (chapters/formulas.toml) are shared by its tests.
+    /// its own tests, and a test passes only when the judge's assertions all held on the
+    /// values the student's code returned. An exercise's points (chapters/formulas.toml) are shared by its tests.
     /// Exit status 0 once graded, whatever the score; 2 on an error.
     Grade(grade::GradeArgs),
     /// Writes what a grading platform takes (Gradescope's zip, PrairieLearn's image and entry
     /// point, CodeGrade's scripts, GitHub Classroom's workflow) into --out; its subcommands are
     /// what those packages run.
     Autograder(autograder::command::AutograderArgs),
-    /// Runs a test binary in the grader's sandbox: nextest's target runner while grading;
-    /// with `--serve` first, the student's server of the judge outside their process.
+    /// Runs a program of the student's in the grader's sandbox: with `--serve` first, the
+    /// student's server of the judge outside their process (how grading uses it); else a test
+    /// binary, as nextest's target runner.
     #[command(name = "sandbox-run", hide = true)]
     SandboxRun {
         /// The test binary and its arguments, or `--serve`, the server and its arguments.

@@ -210,6 +210,7 @@ pub fn build_tests(
         packages: &[layout::CORE_PACKAGE],
         tests,
         bins: &[],
+        examples: &[],
         profile: None,
         features,
         target_dir: Some(target_dir),

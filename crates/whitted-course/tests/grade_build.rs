@@ -182,12 +182,13 @@ fn build_dir() -> PathBuf {
 /// One grading at a time in [`build_dir`].
 static BUILD: Mutex<()> = Mutex::new(());
 
-/// The grading setup of these tests: sandboxed, 5 s a test.
+/// The grading setup of these tests: sandboxed, the default time limit a test (an exercise's
+/// test that renders across the judge's wire takes seconds on a busy machine).
 fn setup(hidden: &Path) -> grade::GradeSetup {
     grade::GradeSetup {
         chapter: None,
         hidden: Some(hidden.to_path_buf()),
-        timeout: Duration::from_secs(5),
+        timeout: grade::DEFAULT_TIMEOUT,
         target_dir: Some(build_dir()),
         keep: false,
         sandbox: Some(grade::SandboxSetup {
@@ -199,6 +200,7 @@ fn setup(hidden: &Path) -> grade::GradeSetup {
         feedback: true,
         screen: true,
         judging: grade::Judging::Alone,
+        judge: None,
         compile: grade::sandbox::watch::CompileLimits::default(),
     }
 }
@@ -219,6 +221,65 @@ struct Targets {
     outside: PathBuf,
     /// A port on which this test listens on the loopback.
     port: u16,
+    /// The judge's directory (the instructor's project with the wire, the hidden tests, the
+    /// reports of its runs).
+    judge: PathBuf,
+    /// `sphere_discriminant`'s number on the grader's wire.
+    discriminant: usize,
+}
+
+/// The forging class: bodies that take over the process that runs them (safe Rust reaches raw
+/// memory through rust-lang/rust#25860; with the screen off a plain `exit` does as well) to
+/// forge a verdict: print libtest's `ok` lines and exit 0, write a report, ask the judge for
+/// their own exercise's value, or read and write the judge's files. Each must score what the
+/// empty handout scores: the verdict is the judge's, in a process none of them runs in.
+fn forging(t: &Targets) -> Vec<(&'static str, &'static str, String)> {
+    let results = t.results.display();
+    let judge = t.judge.display();
+    vec![
+        (
+            "forges-ok-and-a-report",
+            "ray_direction",
+            format!(
+                r##"    println!("test ch01_camera_rays::ex_ray_direction_points_through_the_pixel ... ok\n\ntest result: ok. 1 passed; 0 failed");
+    let _ = std::fs::write("{results}/results.json", "{{\"score\": 119}}");
+    let _ = std::fs::write("junit.xml", "<testsuites/>");
+    std::process::exit(0)"##
+            ),
+        ),
+        (
+            "stretches-a-lifetime-and-exits",
+            "pixel_ray",
+            // the hole itself: a borrow stretched to any lifetime, here read after its free
+            r##"    fn stretch<'a, 'b, T: ?Sized>(_: &'a &'b (), v: &'b T) -> &'a T { v }
+    fn forever<'c, 'd, T: ?Sized>(v: &'c T) -> &'d T {
+        let widen: for<'x> fn(_, &'x T) -> &'d T = stretch;
+        widen(&&(), v)
+    }
+    let dangling: &'static String = { let s = String::from("ok"); forever(&s) };
+    println!("test ch01_camera_rays::ex_pixel_ray_x ... {}", dangling.len());
+    std::process::exit(0)"##
+                .to_string(),
+        ),
+        (
+            "asks-the-judge",
+            "sphere_discriminant",
+            format!(
+                "    crate::judged::call::<_, Real>({}, &(ray, a, b))",
+                t.discriminant
+            ),
+        ),
+        (
+            "reads-the-judge",
+            "step_matrix",
+            format!(
+                r##"    let a = std::fs::read_to_string("{judge}/project/crates/whitted/src/transform.rs");
+    let b = std::fs::read_to_string("{judge}/project/crates/whitted/tests/hidden_extra.rs");
+    let c = std::fs::write("{judge}/runs/forged.xml", "<testsuites/>");
+    if a.is_ok() || b.is_ok() || c.is_ok() {{ SOLUTION }} else {{ panic!("the judge: {{:?}} {{:?}} {{:?}}", a.err(), b.err(), c.err()) }}"##
+            ),
+        ),
+    ]
 }
 
 /// A hostile submission: its name, the chapter-1–2 exercise it attacks, and the body.
@@ -546,6 +607,8 @@ fn a_class_is_graded_as_each_submission_deserves() {
         results: work.path().join("results"),
         outside: work.path().join("outside.txt"),
         port: listener.local_addr().unwrap().port(),
+        judge: build_dir().join("judge"),
+        discriminant: index(&m, "sphere_discriminant"),
     };
     std::fs::create_dir_all(&targets.results).unwrap();
     std::fs::write(&targets.outside, "untouched").unwrap();
@@ -557,7 +620,8 @@ fn a_class_is_graded_as_each_submission_deserves() {
     // the attacks on the runtime are graded without the screen, which would refuse them all
     // before they compile: what is proven is the second lock, the sandbox and the runner
     let runtime = work.path().join("runtime");
-    let attacks = hostile(&targets);
+    let mut attacks = hostile(&targets);
+    attacks.extend(forging(&targets));
     let tried = screened(&targets);
     for (name, exercise, body) in attacks.iter().chain(&tried) {
         let to = if attacks.iter().any(|(n, _, _)| n == name) {
@@ -878,7 +942,7 @@ fn a_class_is_graded_as_each_submission_deserves() {
     let told = find(&runtime_entries, "exits-everywhere")
         .tests
         .iter()
-        .filter(|t| t.message.contains("libtest never reported"))
+        .filter(|t| t.message.contains("the student's process ended"))
         .count();
     assert!(told > 0, "no test of exits-everywhere says why it failed");
     for (name, exercise) in [
@@ -1391,12 +1455,40 @@ fn the_platforms_packages_grade_in_their_layouts() {
         ("WHITTED_GRADER_SECRET", Path::new(GRADER_SECRET)),
     ];
     let mut graded = Vec::new();
-    for name in ["empty", "exits-everywhere", "exits-under-test"] {
+    let forged = Targets {
+        root: source.join("whitted"),
+        copy: user_build.join("graded-copy"),
+        build: user_build.clone(),
+        hidden: hidden.clone(),
+        results: ag.join("results"),
+        outside: work.path().join("outside.txt"),
+        port: 0,
+        judge: whitted_course::grade::judge_copy::beside(&user_build),
+        discriminant: index(&m, "sphere_discriminant"),
+    };
+    for name in ["empty", "exits-everywhere", "exits-under-test", "forging"] {
         let _ = std::fs::remove_dir_all(&submission);
         let all: Vec<usize> = (0..m.entries.len()).collect();
         match name {
             "empty" => {
                 handout::write(&root(), &m, &all, &submission).unwrap();
+            }
+            "forging" => {
+                // the empty handout and the forging class's four bodies, each in its exercise
+                handout::write(&root(), &m, &all, &submission).unwrap();
+                for (_, exercise, body) in forging(&forged) {
+                    let i = index(&m, exercise);
+                    let r = &handout::regions(&root(), &m).unwrap()[i];
+                    let body = body.replace("SOLUTION", &format!("{{\n{}    }}", r.solution));
+                    let path = submission.join(&r.file);
+                    let text = std::fs::read_to_string(&path).unwrap();
+                    let todo = format!("{}{}\n", r.indent, handout::todo_statement(&m.entries[i]));
+                    assert!(
+                        text.contains(&todo),
+                        "{exercise}: no todo!() in the handout"
+                    );
+                    std::fs::write(&path, text.replacen(&todo, &format!("{body}\n"), 1)).unwrap();
+                }
             }
             _ => {
                 copy(&submission);
@@ -1466,6 +1558,19 @@ fn the_platforms_packages_grade_in_their_layouts() {
     }
 }
 
+/// A copy of the reference at `dir` whose body of `exercise` is the attack `body`, `SOLUTION`
+/// in it standing for the reference's body.
+fn attacking(dir: &Path, m: &Manifest, exercise: &str, body: &str) {
+    copy(dir);
+    let r = &handout::regions(&root(), m).unwrap()[index(m, exercise)];
+    set_body(
+        dir,
+        m,
+        exercise,
+        &body.replace("SOLUTION", &format!("{{\n{}    }}", r.solution)),
+    );
+}
+
 /// The user level's second lock, graded without the screen from the instructor's project
 /// `project` (closed to other users) in the build directory `build` (open to them): see the
 /// call in [`the_platforms_packages_grade_in_their_layouts`].
@@ -1488,7 +1593,7 @@ fn user_level_runtime(
     let options = grade::GradeSetup {
         chapter: None,
         hidden: Some(hidden.to_path_buf()),
-        timeout: Duration::from_secs(5),
+        timeout: grade::DEFAULT_TIMEOUT,
         target_dir: Some(build.to_path_buf()),
         keep: false,
         sandbox: Some(grade::SandboxSetup {
@@ -1500,6 +1605,7 @@ fn user_level_runtime(
         feedback: false,
         screen: false,
         judging: grade::Judging::Alone,
+        judge: None,
         compile: grade::sandbox::watch::CompileLimits::default(),
     };
     let dir = work.join("user-level");
@@ -1548,20 +1654,14 @@ fn user_level_runtime(
         results: work.join("results"),
         outside: work.join("outside.txt"),
         port: 0,
+        judge: whitted_course::grade::judge_copy::beside(build),
+        discriminant: index(m, "sphere_discriminant"),
     };
     for (name, exercise, body) in hostile(&targets) {
         if !matches!(name, "reads-hidden-relative" | "reads-build-caches") {
             continue;
         }
-        let sub = dir.join(name);
-        copy(&sub);
-        let r = &handout::regions(&root(), m).unwrap()[index(m, exercise)];
-        set_body(
-            &sub,
-            m,
-            exercise,
-            &body.replace("SOLUTION", &format!("{{\n{}    }}", r.solution)),
-        );
+        attacking(&dir.join(name), m, exercise, &body);
         let g = grade_one(name, m.entries[index(m, exercise)].chapter);
         let i = index(m, exercise);
         let said: Vec<String> = g
@@ -1582,6 +1682,34 @@ fn user_level_runtime(
                 "{s}"
             );
         }
+    }
+    // the forging class: the attacked exercise scores what the empty handout scores (0), every
+    // test of it fails, and every other exercise of the reference keeps its points
+    for (name, exercise, body) in forging(&targets) {
+        attacking(&dir.join(name), m, exercise, &body);
+        let i = index(m, exercise);
+        let g = grade_one(name, m.entries[i].chapter);
+        for e in &g.exercises {
+            let want = if e.entry == i { 0.0 } else { e.max };
+            assert_eq!(
+                e.score,
+                want,
+                "{name} at the user level, exercise {}: {:?}",
+                m.entries[e.entry].exercise.id,
+                g.tests
+                    .iter()
+                    .filter(|t| t.exercise == Some(e.entry))
+                    .map(|t| (&t.name, &t.status, &t.message))
+                    .collect::<Vec<_>>()
+            );
+        }
+        assert!(
+            g.tests
+                .iter()
+                .filter(|t| t.exercise == Some(i))
+                .all(|t| t.status != Status::Passed),
+            "{name} at the user level: a test of {exercise} passed"
+        );
     }
     // your sources, the hidden test in the copy and its binary, the results, a child left
     // running: each out of reach, and the child gone when its test ends
@@ -1611,6 +1739,7 @@ fn user_level_runtime(
     };
     assert!(part("src").starts_with("Permission denied"), "{said}");
     assert!(part("copy").starts_with("Permission denied"), "{said}");
+    assert!(part("judge").starts_with("Permission denied"), "{said}");
     let bins = part("bins");
     assert!(
         !bins.is_empty() && bins.split(',').all(|b| b.starts_with("Permission denied")),
@@ -1681,13 +1810,15 @@ fn user_level_runtime(
 /// of `build` and its binary, writes into `results` and leaves a `sleep` running, and panics
 /// with what each met.
 fn reads_and_leaves(project: &Path, build: &Path, results: &Path) -> String {
+    let judge = whitted_course::grade::judge_copy::beside(build);
     format!(
         r##"    let read = |p: &str| std::fs::read_to_string(p).map(|s| s.lines().take(3).collect::<Vec<_>>().join(" | ")).unwrap_or_else(|e| e.to_string());
-    let bins = std::fs::read_dir("{build}/debug/deps").map(|d| d.filter_map(Result::ok).filter(|e| e.file_name().to_string_lossy().starts_with("hidden_")).map(|e| std::fs::read(e.path()).map(|b| b.len().to_string()).unwrap_or_else(|e| e.to_string())).collect::<Vec<_>>().join(",")).unwrap_or_else(|e| e.to_string());
+    let bins = std::fs::read_dir("{judge}/target/debug/deps").map(|d| d.filter_map(Result::ok).filter(|e| e.file_name().to_string_lossy().starts_with("hidden_")).map(|e| std::fs::read(e.path()).map(|b| b.len().to_string()).unwrap_or_else(|e| e.to_string())).collect::<Vec<_>>().join(",")).unwrap_or_else(|e| e.to_string());
     let wrote = std::fs::write("{results}/results.json", "{{}}").is_ok();
     let left = std::process::Command::new("sleep").arg("300").spawn().is_ok();
-    panic!("src: {{}} / copy: {{}} / bins: {{}} / wrote: {{wrote}} / left: {{left}}", read("{project}/crates/whitted/src/shading.rs"), read("{build}/graded-copy/crates/whitted/tests/hidden_extra.rs"), bins)"##,
+    panic!("src: {{}} / copy: {{}} / judge: {{}} / bins: {{}} / wrote: {{wrote}} / left: {{left}}", read("{project}/crates/whitted/src/shading.rs"), read("{build}/graded-copy/crates/whitted/src/shading.rs"), read("{judge}/project/crates/whitted/tests/hidden_extra.rs"), bins)"##,
         build = build.display(),
+        judge = judge.display(),
         results = results.display(),
         project = project.display(),
     )

@@ -106,6 +106,7 @@ fn a_class_of_a_hundred_is_graded_and_timed() {
         feedback: true,
         screen: true,
         judging: grade::Judging::Alone,
+        judge: None,
         compile: grade::sandbox::watch::CompileLimits::default(),
     };
     let start = std::time::Instant::now();

@@ -75,6 +75,34 @@ pub fn read_rgba(path: &std::path::Path) -> Result<(u32, u32, Vec<u8>), String> 
     Ok((info.width, info.height, rgba))
 }
 
+/// Whether `c` is written as its escape where a student's text is quoted (a report, a
+/// terminal, XML): a control character other than a line feed or a tab, a bidirectional or
+/// invisible format control, a byte-order mark, or a non-character.
+#[must_use]
+pub fn escaped(c: char) -> bool {
+    let u = u32::from(c);
+    let control = c.is_control() && c != '\n' && c != '\t';
+    let bidi = matches!(u, 0x061C | 0x200E | 0x200F | 0x202A..=0x202E | 0x2066..=0x2069);
+    let invisible = matches!(u, 0x200B..=0x200D | 0x2060 | 0xFEFF);
+    let non_character = (0xFDD0..=0xFDEF).contains(&u) || u & 0xFFFE == 0xFFFE;
+    control || bidi || invisible || non_character
+}
+
+/// `text` with every character that [`escaped`] names written as `\u{…}`, so that a reader
+/// sees what was there and no report format breaks on it.
+#[must_use]
+pub fn clean(text: &str) -> String {
+    let mut out = String::with_capacity(text.len());
+    for c in text.chars() {
+        if escaped(c) {
+            out.push_str(&format!("\\u{{{:x}}}", u32::from(c)));
+        } else {
+            out.push(c);
+        }
+    }
+    out
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -10,9 +10,10 @@
 //! pub fn discriminant(ray: &Ray, a: Real, b: Real) -> Real {if crate::judged::remote(12) { return crate::judged::call(12, &(ray, a, b)); }
 //! ```
 //!
-//! In the judge, the exercise a test is named after (`ex_NAME_…`, in [`TEST_VAR`]) is remote:
-//! its arguments cross to the server, which runs the student's body and sends back the value
-//! it returned; any other test runs every exercise on the server (the student's whole road). In
+//! In the judge, the exercise a test is named after (`ex_NAME_…`, in [`TEST_VAR`] or on
+//! libtest's command line) is remote: its arguments cross to the server, which runs the
+//! student's body and sends back the value it returned; any other test, and every test with
+//! [`WHOLE_ROAD_VAR`], runs every exercise on the server (the student's whole road). In
 //! the server, every exercise that the judge did not name is remote: the student's body asks
 //! the judge for the reference's value. Each side answers the other's calls while it waits for
 //! its own answer, so calls nest as deeply as the functions do.
@@ -45,14 +46,20 @@ use serde::de::DeserializeOwned;
 mod frame;
 
 pub use frame::MAGIC;
-use frame::{Frame, read_frame, write_frame};
+use frame::{Capped, Frame, read_frame, write_frame};
 
 /// The environment variable that gives the judge the server's command line, its words
 /// separated by the unit separator `\x1f`. Without it the judge runs every exercise itself.
 pub const SERVER_VAR: &str = "WHITTED_JUDGE_SERVER";
 
-/// The environment variable in which the test runner names the test a process runs.
+/// The environment variable in which the test runner names the test a process runs; without
+/// it, the judge reads the name from libtest's command line (`NAME --exact`), as nextest and
+/// `cargo test NAME -- --exact` give it.
 pub const TEST_VAR: &str = "WHITTED_GRADED_TEST";
+
+/// The environment variable that makes the judge send every exercise to the server, whichever
+/// test runs: the student's whole road judged (`whitted grade --whole-road`).
+pub const WHOLE_ROAD_VAR: &str = "WHITTED_JUDGE_WHOLE_ROAD";
 
 /// How much of the server's own output the judge passes on.
 const MAX_SPILL: usize = 64 << 10;
@@ -108,10 +115,14 @@ pub fn remote(table: &'static Table, n: u16) -> bool {
 /// The judge's end: which exercises cross, from the test's name; none without a server.
 fn judge_side(table: &Table) -> Wire {
     let count = table.prefixes.len();
+    let alone = std::env::var_os(WHOLE_ROAD_VAR).is_none();
     let remote = if std::env::var_os(SERVER_VAR).is_none() {
         vec![false; count]
     } else {
-        match std::env::var(TEST_VAR).ok().and_then(|t| judged(table, &t)) {
+        let test = std::env::var(TEST_VAR)
+            .ok()
+            .or_else(|| test_of(std::env::args().skip(1)));
+        match test.filter(|_| alone).and_then(|t| judged(table, &t)) {
             Some(x) => (0..count).map(|n| n == x).collect(),
             None => vec![true; count], // a test of no exercise: the student's whole road
         }
@@ -123,6 +134,34 @@ fn judge_side(table: &Table) -> Wire {
         owner: Mutex::new(None),
         free: Condvar::new(),
     }
+}
+
+/// The single test a libtest command line runs (`NAME --exact`, in any order), or `None`.
+fn test_of(args: impl Iterator<Item = String>) -> Option<String> {
+    let args: Vec<String> = args.collect();
+    if !args.iter().any(|a| a == "--exact") || args.iter().any(|a| a == "--list") {
+        return None;
+    }
+    // libtest's options that take the next word as their value
+    const VALUED: [&str; 6] = [
+        "--test-threads",
+        "--skip",
+        "--format",
+        "--color",
+        "--logfile",
+        "-Z",
+    ];
+    let mut names = Vec::new();
+    let mut words = args.into_iter();
+    while let Some(w) = words.next() {
+        if VALUED.contains(&w.as_str()) {
+            words.next();
+        } else if !w.starts_with('-') {
+            names.push(w);
+        }
+    }
+    let name = names.pop()?;
+    names.is_empty().then_some(name)
 }
 
 /// The exercise a libtest name (`target::module::ex_NAME_sentence`) is named after.
@@ -174,7 +213,8 @@ where
         }
         Err(message) => {
             drop(turn);
-            panic!("{message}")
+            // the other side's words, escaped where they would break a report
+            panic!("{}", whitted_syllabus::words::clean(&message))
         }
     }
 }
@@ -289,13 +329,29 @@ pub fn serve(table: &'static Table) -> ExitCode {
 impl Wire {
     fn broken(&self, why: &str) -> ! {
         if self.side == Side::Judge {
-            let status = lock(&self.link)
+            // the server's end, when it ended: waited for a moment, since its pipe closes
+            // just before it is reaped
+            let ended = lock(&self.link)
                 .as_mut()
                 .and_then(|l| l.child.as_mut())
-                .and_then(|c| c.try_wait().ok().flatten())
-                .map(|s| format!(" (the student's process: {s})"))
-                .unwrap_or_default();
-            eprintln!("whitted judge: {why}{status}: the test fails");
+                .and_then(|c| {
+                    (0..100).find_map(|_| {
+                        let s = c.try_wait().ok().flatten();
+                        if s.is_none() {
+                            std::thread::sleep(std::time::Duration::from_millis(10));
+                        }
+                        s
+                    })
+                });
+            match ended {
+                Some(s) if s.code().is_none() => {
+                    eprintln!("whitted judge: the student's process died ({s}): the test fails");
+                }
+                Some(s) => {
+                    eprintln!("whitted judge: {why} (the student's process: {s}): the test fails")
+                }
+                None => eprintln!("whitted judge: {why}: the test fails"),
+            }
             std::process::exit(101);
         }
         std::process::exit(0);
@@ -367,6 +423,14 @@ impl Wire {
 
     /// Runs exercise `n` here for the other side and sends its value, or its panic.
     fn answer(&self, table: &Table, n: u16, args: &[u8]) {
+        // what the judge sends to the server it never computes for it: the server asking for
+        // the value it is judged on gets nothing (and asking back and forth would never end)
+        if self.side == Side::Judge && self.remote.get(usize::from(n)).copied().unwrap_or(true) {
+            self.broken(&format!(
+                "the student's process asked the judge for exercise {}, which it is judged on",
+                name(table, n)
+            ));
+        }
         let ran = catch_unwind(AssertUnwindSafe(|| (table.dispatch)(n, args)));
         let frame = match ran {
             Ok(Ok(value)) => Frame::Value(value),
@@ -398,15 +462,21 @@ impl Wire {
     fn receive(&self) -> Option<Frame> {
         let mut guard = lock(&self.link);
         let link = guard.as_mut()?;
-        let mut spill = Vec::new();
+        // what the other side writes between frames is kept up to what is left to pass on,
+        // and the rest dropped as it comes: the judge's memory never holds more
+        let room = match self.side {
+            Side::Judge => MAX_SPILL.saturating_sub(link.spilled),
+            Side::Server => 0,
+        };
+        let mut spill = Capped {
+            kept: Vec::new(),
+            room,
+        };
         let frame = read_frame(&mut link.from, &mut spill).ok();
-        if self.side == Side::Judge && !spill.is_empty() && link.spilled < MAX_SPILL {
-            let room = MAX_SPILL - link.spilled;
-            link.spilled += spill.len().min(room);
-            eprint!(
-                "{}",
-                String::from_utf8_lossy(&spill[..spill.len().min(room)])
-            );
+        if !spill.kept.is_empty() {
+            link.spilled += spill.kept.len();
+            let said = String::from_utf8_lossy(&spill.kept);
+            eprint!("{}", whitted_syllabus::words::clean(&said));
         }
         frame
     }
@@ -484,5 +554,23 @@ mod tests {
         assert_eq!(judged(&table, "ch02::ex_hit_plane_misses"), Some(1));
         assert_eq!(judged(&table, "render_paths::ch2_sphere"), None);
         assert_eq!(name(&table, 2), "sphere_normal");
+    }
+
+    /// Without the runner's variable, the judged test is the one libtest's command line runs
+    /// alone; a listing, a filter that is no exact name, or two names judge none.
+    #[test]
+    fn the_judged_test_is_read_from_libtests_command_line() {
+        let of = |a: &[&str]| test_of(a.iter().map(|w| (*w).to_string()));
+        assert_eq!(
+            of(&["--exact", "ch01::ex_ray_direction_x", "--nocapture"]),
+            Some("ch01::ex_ray_direction_x".into())
+        );
+        assert_eq!(
+            of(&["ch01::ex_ray_direction_x", "--exact", "--test-threads", "1"]),
+            Some("ch01::ex_ray_direction_x".into())
+        );
+        assert_eq!(of(&["ex_ray_direction"]), None);
+        assert_eq!(of(&["--list", "--exact", "a"]), None);
+        assert_eq!(of(&["--exact", "a", "b"]), None);
     }
 }

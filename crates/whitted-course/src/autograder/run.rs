@@ -218,6 +218,7 @@ pub fn setup(
         feedback: true,
         screen: true,
         judging: grade::Judging::default(),
+        judge: None,
         compile: grade::sandbox::watch::CompileLimits::default(),
     }
 }

@@ -118,6 +118,7 @@ impl GradeArgs {
                 cpu: Duration::from_secs(self.compile_cpu),
                 memory: self.compile_memory << 30,
             },
+            judge: None,
         };
         let class = match (&self.class, &self.out) {
             (Some(dir), Some(out)) => Some(Class {
@@ -164,8 +165,7 @@ impl SandboxArgs {
     }
 
     /// The sandbox of a grading at the level asked for ([`Level::Off`] unsandboxed): this
-    /// program runs each test binary, sandboxed or not, and passes a test only when libtest
-    /// reported it `ok`.
+    /// program runs each submission's server, sandboxed or not, under the runner's limits.
     pub fn setup(self) -> Result<Option<SandboxSetup>, ToolError> {
         let level = self.level().unwrap_or(Level::Off);
         let runner = std::env::current_exe()

@@ -1,4 +1,4 @@
-//! Building the graded copy, and blaming each compiler error on the exercise whose body holds
+//! Building the graded copy (the student's server), and blaming each compiler error on the exercise whose body holds
 //! it: that body goes back to its `todo!()` and the build is tried again.
 //!
 //! Course book: [The instructor's guide](../../../../../docs/book/instructor-guide.html) (`docs/src/instructor-guide.md`).
@@ -21,14 +21,14 @@ pub(super) fn stalled(errors: &[CompileError]) -> Option<&str> {
     errors.first().and_then(|(_, m)| m.strip_prefix(STALLED))
 }
 
-/// Builds `tests` (test targets) or else `bins` of `package` in the graded copy, inside
-/// `wrapper` (the build sandbox) when there is one, without debug information.
+/// Builds `tests` (test targets) or else `bins` and `examples` of `package` in a copy of the
+/// project, inside `wrapper` (the build sandbox) when there is one, without debug information.
 pub(super) fn cargo_build(
     project: &Path,
     target_dir: &Path,
     package: &str,
     tests: &[String],
-    bins: &[String],
+    (bins, examples): (&[String], &[String]),
     wrapper: Option<&cargo::Wrapper>,
 ) -> Result<cargo::Built, ToolError> {
     cargo::Build {
@@ -36,6 +36,7 @@ pub(super) fn cargo_build(
         packages: &[package],
         tests,
         bins,
+        examples,
         profile: None,
         features: &[],
         target_dir: Some(target_dir),
@@ -47,22 +48,23 @@ pub(super) fn cargo_build(
     .run()
 }
 
-/// Builds the test targets (inside `wrapper`, the build sandbox, when there is one); returns
+/// Builds the graded copy's `examples` (the server of the judge outside, and with it the
+/// student's crate) inside `wrapper`, the build sandbox, when there is one; returns
 /// the compiler's errors, each as the primary span's file and line, and the error's first line
 /// with its place (empty when the build succeeded); a build stopped at the compiler's limits
 /// has one error, [`STALLED`] and the limit.
 pub(super) fn build(
     project: &Path,
     target_dir: &Path,
-    targets: &[String],
+    examples: &[String],
     wrapper: Option<&cargo::Wrapper>,
 ) -> Result<Vec<CompileError>, ToolError> {
     let built = cargo_build(
         project,
         target_dir,
         layout::CORE_PACKAGE,
-        targets,
         &[],
+        (&[], examples),
         wrapper,
     )?;
     if built.success {

@@ -1,22 +1,21 @@
-//! The build of the graded copy: the student's bodies first, each one that does not compile
-//! put back to its `todo!()` and the build tried again, so that a compile error costs only
-//! the exercise it is in; then the hidden tests.
+//! The build of the graded copy, the student's server: each body that does not compile put
+//! back to its `todo!()` and the build tried again, so that a compile error costs only the
+//! exercise it is in.
 //!
 //! Course book: [The instructor's guide](../../../../../docs/book/instructor-guide.html) (`docs/src/instructor-guide.md`).
 
 use std::collections::BTreeMap;
-use std::path::Path;
 
 use super::blame::{blame, blame_files, build, stalled};
 use super::clean::clean;
 use super::copy::GradedCopy;
-use super::splice::{self, Spliced};
+use super::splice::Spliced;
 use crate::handout::todo_statement;
 use crate::manifest::Manifest;
 use crate::{ToolError, cargo, files};
 
-/// Builds the graded copy's `public` test targets with the student's bodies in `files` (the
-/// bodies of `chapters`): an exercise whose body does not compile is noted in `notes` and
+/// Builds the graded copy's server (the program `examples` name) with the student's bodies in
+/// `files` (the bodies of `chapters`): an exercise whose body does not compile is noted in `notes` and
 /// put back to its `todo!()`, and the build is tried again, so that a compile error costs
 /// only the exercise it is in. Returns what concerns the whole submission: that it does not
 /// build, when no body can be blamed (none when it builds).
@@ -25,7 +24,7 @@ pub(super) fn build_bodies(
     manifest: &Manifest,
     chapters: &[u8],
     files: &mut [Spliced],
-    public: &[String],
+    examples: &[String],
     wrapper: Option<&cargo::Wrapper>,
     notes: &mut BTreeMap<usize, String>,
 ) -> Result<Vec<String>, ToolError> {
@@ -37,7 +36,7 @@ pub(super) fn build_bodies(
             files::write_if_changed(&copy.project.join(&f.file), text.as_bytes())?;
             placed.push((f.file.clone(), lines));
         }
-        let errors = build(&copy.project, &copy.target_dir, public, wrapper)?;
+        let errors = build(&copy.project, &copy.target_dir, examples, wrapper)?;
         if errors.is_empty() {
             return Ok(Vec::new());
         }
@@ -52,7 +51,7 @@ pub(super) fn build_bodies(
                 .collect::<std::collections::BTreeSet<usize>>()
                 .into_iter()
                 .collect();
-            let Some(entry) = stalling_body(copy, manifest, files, &students, public, wrapper)?
+            let Some(entry) = stalling_body(copy, manifest, files, &students, examples, wrapper)?
             else {
                 return Ok(vec![clean(&format!(
                     "the submission's build was stopped at the compiler's limit ({why}), and not because of one exercise's body"
@@ -146,27 +145,4 @@ fn stalling_body(
         }
     }
     Ok(Some(students[hi - 1]))
-}
-
-/// Adds the instructor's hidden tests (the directory `hidden`) to the copy and builds them,
-/// once the student's crate has built for the public tests (`whole` empty); returns their
-/// test targets. Hidden tests that do not build are the instructor's to fix: they leave the
-/// copy, `whole` says so, and the public tests still count.
-pub(super) fn build_hidden(
-    copy: &GradedCopy,
-    hidden: Option<&Path>,
-    wrapper: Option<&cargo::Wrapper>,
-    whole: &mut Vec<String>,
-) -> Result<Vec<String>, ToolError> {
-    if !whole.is_empty() || hidden.is_none() {
-        return Ok(Vec::new());
-    }
-    let targets = splice::add_hidden(&copy.project, hidden)?;
-    let errors = build(&copy.project, &copy.target_dir, &targets, wrapper)?;
-    if let Some((_, first)) = errors.first() {
-        whole.push(format!("the hidden tests do not build: {first}"));
-        splice::remove_hidden(&copy.project, &copy.target_dir)?;
-        return Ok(Vec::new());
-    }
-    Ok(targets)
 }

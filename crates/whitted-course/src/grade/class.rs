@@ -55,6 +55,31 @@ pub fn grade_class(
         )));
     }
     let jobs = jobs.max(1).min(submissions.len());
+    // the judge, built once for the class, beside the workers' build directories
+    let mut options = options.clone();
+    if options.judge.is_none() {
+        super::grading::check_sandbox(&options)?;
+        let chapters: Vec<u8> = match options.chapter {
+            Some(c) => vec![c],
+            None => crate::syllabus::CHAPTERS.iter().map(|c| c.number).collect(),
+        };
+        let public: Vec<String> = super::chapter_targets(manifest, &chapters)
+            .into_iter()
+            .collect();
+        let judge = super::judge_copy::prepare(
+            root,
+            manifest,
+            &public,
+            options.hidden.as_deref(),
+            options
+                .target_dir
+                .as_ref()
+                .map(|d| d.join("judge"))
+                .as_deref(),
+        )?;
+        options.judge = Some(std::sync::Arc::new(judge));
+    }
+    let options = &options;
     // the first submission on the first worker alone, then every other worker's build
     // directory starts as a copy of the first's: the dependencies and the instructor's code are
     // compiled once for the class, not once per worker

@@ -11,27 +11,7 @@
 //!
 //! Course book: [The instructor's guide](../../../../../docs/book/instructor-guide.html) (`docs/src/instructor-guide.md`).
 
-/// Whether `c` is written as its escape: a control character other than a line feed or a
-/// tab, a bidirectional or invisible format control, a byte-order mark, or a non-character.
-#[must_use]
-pub fn escaped(c: char) -> bool {
-    let u = u32::from(c);
-    let control = c.is_control() && c != '\n' && c != '\t';
-    let bidi = matches!(u, 0x061C | 0x200E | 0x200F | 0x202A..=0x202E | 0x2066..=0x2069);
-    let invisible = matches!(u, 0x200B..=0x200D | 0x2060 | 0xFEFF);
-    let non_character = (0xFDD0..=0xFDEF).contains(&u) || u & 0xFFFE == 0xFFFE;
-    control || bidi || invisible || non_character
-}
-
-/// `text` with every character that [`escaped`] names written as `\u{…}`.
-#[must_use]
-pub fn clean(text: &str) -> String {
-    let mut out = String::with_capacity(text.len());
-    for c in text.chars() {
-        push(&mut out, c);
-    }
-    out
-}
+pub use whitted_syllabus::words::{clean, escaped};
 
 fn push(out: &mut String, c: char) {
     if escaped(c) {

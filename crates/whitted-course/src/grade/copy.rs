@@ -5,7 +5,6 @@
 
 use std::path::{Path, PathBuf};
 
-use super::nextest;
 use super::render;
 use super::setup::GradeSetup;
 use crate::handout::{self, Part};
@@ -68,7 +67,7 @@ impl GradedCopy {
         kept: bool,
     ) -> Result<(), ToolError> {
         let whole = |f: &Path| whole_in_copy(root, manifest, f);
-        files::sync_project(root, &self.project, &[".config", nextest::STORE], &whole)?;
+        files::sync_project(root, &self.project, &[], &whole)?;
         if kept {
             eprintln!("grade: the graded copy is {}", self.project.display());
         }

@@ -1,20 +1,25 @@
-//! One grading, step by step ([`grade`]): the graded copy and its sandbox, the student's
-//! bodies spliced in and built, the tests run, the points, and the pictures of the chapters
-//! that lost points.
+//! One grading, step by step ([`grade`]): the judge, the graded copy and its sandbox, the
+//! student's bodies spliced in and built into the server, the judge's tests run against it,
+//! the points, and the pictures of the chapters that lost points.
 //!
 //! Course book: [The instructor's guide](../../../../../docs/book/instructor-guide.html) (`docs/src/instructor-guide.md`).
 
 use std::collections::BTreeMap;
+use std::ffi::OsString;
 use std::path::Path;
+use std::sync::Arc;
 use std::time::Instant;
 
-use super::alone;
-use super::build::{build_bodies, build_hidden};
+use super::alone::Judging;
+use super::build::build_bodies;
 use super::clean::clean;
 use super::copy::{GradedCopy, run_reads};
+use super::judge_copy::{self, Judge};
 use super::outcome::{ExerciseScore, Grade, Timings};
+use super::outside::{SERVER_EXAMPLE, SERVER_VAR, WHOLE_ROAD_VAR, plan_wire};
 use super::render::{self, ChapterFeedback, RenderScore};
-use super::sandbox::{Sandbox, watch};
+use super::runner::SERVE;
+use super::sandbox::{POLICY_VAR, RUNNER_COMMAND, Sandbox, watch};
 use super::score::{chapter_targets, scores};
 use super::setup::{GradeSetup, SandboxSetup};
 use super::splice::Spliced;
@@ -34,33 +39,55 @@ pub fn grade(
     let start = Instant::now();
     let chapters = graded_chapters(submission, options.chapter)?;
     let student = student_of(submission);
-    // 1. the graded copy and its sandbox
+    let public: Vec<String> = chapter_targets(manifest, &chapters).into_iter().collect();
+    // 1. the graded copy and its sandbox (without its sandbox, nothing is built), and the
+    // judge: the class's, or this grading's own
     let g = Grading::open(root, manifest, options)?;
-    // 2. the student's bodies in it
+    let judged = Instant::now();
+    let judge = match &options.judge {
+        Some(j) => Arc::clone(j),
+        None => Arc::new(judge_copy::prepare(
+            root,
+            manifest,
+            &public,
+            options.hidden.as_deref(),
+            options
+                .target_dir
+                .as_deref()
+                .map(judge_copy::beside)
+                .as_deref(),
+        )?),
+    };
+    // building the judge counts as building (a class builds it once, before its gradings)
+    let judge_time = judged.elapsed();
+    // 2. the student's bodies in it, with the wire
     let mut notes: BTreeMap<usize, String> = BTreeMap::new();
     let mut files = g.splice(root, manifest, submission, &chapters, options, &mut notes)?;
     let mut timings = Timings {
-        splice: start.elapsed(),
+        splice: start.elapsed().saturating_sub(judge_time),
         ..Timings::default()
     };
-    // 3. the build: the student's crate with its public tests, then the hidden tests
+    // 3. the build: the student's server
     let built = Instant::now();
-    let public: Vec<String> = chapter_targets(manifest, &chapters).into_iter().collect();
     let w = g.wrapper.as_ref();
+    let server = [SERVER_EXAMPLE.to_string()];
     let mut whole = build_bodies(
-        &g.copy, manifest, &chapters, &mut files, &public, w, &mut notes,
+        &g.copy, manifest, &chapters, &mut files, &server, w, &mut notes,
     )?;
-    let hidden = build_hidden(&g.copy, options.hidden.as_deref(), w, &mut whole)?;
-    g.seal(root, options)?;
-    timings.build = built.elapsed();
-    // 4. the tests, each in its own process, and the points they earn
+    let builds = whole.is_empty();
+    whole.extend(judge.hidden_broken.clone());
+    g.seal(root, options, &judge)?;
+    timings.build = built.elapsed() + judge_time;
+    // 4. the tests, each in its own process, judged outside the server, and their points
     let ran = Instant::now();
-    let targets: Vec<String> = public.iter().chain(&hidden).cloned().collect();
-    let tests = g.run_tests(manifest, &targets, &hidden, &whole)?;
+    let tests = if builds {
+        g.run_tests(manifest, &judge, options)?
+    } else {
+        Vec::new()
+    };
     let exercises = scores(manifest, &chapters, &tests, &notes);
     // 5. the pictures: the leaderboard's, and what learn would show of each chapter that
     // lost points
-    let builds = whole.is_empty();
     let render = (options.render && builds).then(|| g.leaderboard(&chapters, options));
     let feedback = if options.feedback && builds {
         g.pictures(&lost_chapters(manifest, &chapters, &exercises), options)
@@ -151,10 +178,10 @@ impl Grading {
         })
     }
 
-    /// Splices the student's bodies of `chapters` into the copy's sources (what concerns an
-    /// exercise goes into `notes`): a body that does more than compute is not compiled at
-    /// all, at every sandbox level. The hidden tests leave the copy, so that the student's
-    /// crate compiles while none is there for a body to include; they come back after it.
+    /// Splices the student's bodies of `chapters` into the copy's sources with the wire of the
+    /// judge outside (what concerns an exercise goes into `notes`): a body that does more than
+    /// compute is not compiled at all, at every sandbox level. No hidden test is ever in the
+    /// copy (they are the judge's); those an older grading left are removed.
     fn splice(
         &self,
         root: &Path,
@@ -164,62 +191,86 @@ impl Grading {
         options: &GradeSetup,
         notes: &mut BTreeMap<usize, String>,
     ) -> Result<Vec<Spliced>, ToolError> {
+        let wire = plan_wire(root, manifest)?;
         let files = splice::splice(
             root,
             manifest,
             submission,
             chapters,
-            (options.screen, options.judging),
+            options.screen,
+            &wire,
             notes,
         )?;
-        alone::add_switch(&self.copy.project, manifest)?;
+        wire.write_table(&self.copy.project)?;
         splice::remove_hidden(&self.copy.project, &self.copy.target_dir)?;
-        nextest::write_profile(&self.copy.project, options.timeout)?;
         Ok(files)
     }
 
-    /// Before the tests run: the hidden tests' binaries closed to other users, and at the
-    /// user level the instructor's project and hidden tests checked closed and the copy
-    /// closed too.
-    fn seal(&self, root: &Path, options: &GradeSetup) -> Result<(), ToolError> {
-        splice::seal_hidden(&self.copy.target_dir)?;
+    /// Before the tests run: at the user level the instructor's project, the hidden tests and
+    /// the judge checked closed, and the copy closed too.
+    fn seal(&self, root: &Path, options: &GradeSetup, judge: &Judge) -> Result<(), ToolError> {
         if let Some(s) = &self.sandbox {
-            let mut secrets = vec![root];
+            let mut secrets = vec![root, judge.dir.as_path()];
             secrets.extend(options.hidden.as_deref());
             s.protect(&secrets, &self.copy.target_dir, &self.copy.project)?;
         }
         Ok(())
     }
 
-    /// Runs the test `targets` (of which `hidden` are the hidden tests') when the student's
-    /// crate built (`whole` says nothing but of the hidden tests), each test in its own
-    /// process; then the hidden tests' sources and binaries leave the copy before anything
-    /// else is built in it, whether the run went well or not, and the copy opens again.
+    /// Runs the judge's tests, each in its own process, against the copy's server: started in
+    /// the run sandbox through the runner (`whitted sandbox-run --serve`) when there is one.
+    /// Then the copy opens again, whether the run went well or not.
     fn run_tests(
         &self,
         manifest: &Manifest,
-        targets: &[String],
-        hidden: &[String],
-        whole: &[String],
+        judge: &Judge,
+        options: &GradeSetup,
     ) -> Result<Vec<TestResult>, ToolError> {
-        let (project, target_dir) = (&self.copy.project, &self.copy.target_dir);
-        let tests = if whole.iter().all(|w| w.starts_with("the hidden tests")) {
-            nextest::run(
-                project,
-                target_dir,
-                targets,
-                manifest,
-                hidden,
-                self.wrapper.as_ref(),
-                self.sandbox.as_ref(),
-                || splice::strip_hidden(project, target_dir),
-            )
-        } else {
-            Ok(Vec::new())
-        };
-        splice::remove_hidden(project, target_dir)?;
+        let server = self
+            .copy
+            .target_dir
+            .join("debug")
+            .join("examples")
+            .join(SERVER_EXAMPLE);
+        let mut env: Vec<(OsString, OsString)> = Vec::new();
+        match &self.sandbox {
+            Some(s) => {
+                let mut line = s.runner.clone().into_os_string();
+                for word in [RUNNER_COMMAND, SERVE] {
+                    line.push("\x1f");
+                    line.push(word);
+                }
+                line.push("\x1f");
+                line.push(&server);
+                env.push((SERVER_VAR.into(), line));
+                // the server reads nothing of the copy: the judge reads the scenes and images
+                let mut policy = s.policy.clone();
+                policy.read.clear();
+                let policy = serde_json::to_string(&policy)
+                    .map_err(|e| ToolError::Usage(format!("the sandbox's policy: {e}")))?;
+                env.push((POLICY_VAR.into(), policy.into()));
+            }
+            None => env.push((SERVER_VAR.into(), server.into_os_string())),
+        }
+        // every test of the whole road sends every call across the wire: the time limit of a
+        // test of no exercise for all of them
+        let mut timeout = options.timeout;
+        if options.judging == Judging::WholeRoad {
+            env.push((WHOLE_ROAD_VAR.into(), "1".into()));
+            timeout *= nextest::WHOLE_ROAD_TIMES;
+        }
+        let run = judge_copy::run_dir(judge)?;
+        let tests = nextest::run(
+            &judge.project,
+            &judge.target_dir,
+            &judge.listed,
+            run.path(),
+            timeout,
+            &env,
+            (manifest, &judge.hidden),
+        );
         if let Some(s) = &self.sandbox {
-            s.reopen(project)?;
+            s.reopen(&self.copy.project)?;
         }
         tests
     }
@@ -259,6 +310,24 @@ impl Grading {
     }
 }
 
+/// Whether the sandbox `options` ask for can be made here: a class asks before it builds its
+/// judge, so that a grading that cannot start builds nothing.
+pub(super) fn check_sandbox(options: &GradeSetup) -> Result<(), ToolError> {
+    match &options.sandbox {
+        Some(s) => Sandbox::probe(&s.runner, s.worker, Vec::new(), s.level)
+            .map(|_| ())
+            .map_err(unmade),
+        None => Ok(()),
+    }
+}
+
+/// The error of a sandbox that cannot be made, `why`: what to do instead.
+fn unmade(why: String) -> ToolError {
+    ToolError::Usage(format!(
+        "the sandbox cannot be set up: {why}; as root, --sandbox user runs the tests as a user of their own without namespaces, and --unsandboxed with your rights"
+    ))
+}
+
 /// The sandbox `s` asks for, found and tried, its tests' time limit set: a sandbox that
 /// cannot be made is an error that says what to do.
 fn sandbox(
@@ -266,12 +335,8 @@ fn sandbox(
     copy: &GradedCopy,
     options: &GradeSetup,
 ) -> Result<Sandbox, ToolError> {
-    let mut sandbox = Sandbox::probe(&s.runner, s.worker, run_reads(&copy.project), s.level)
-        .map_err(|why| {
-            ToolError::Usage(format!(
-                "the sandbox cannot be set up: {why}; as root, --sandbox user runs the tests as a user of their own without namespaces, and --unsandboxed with your rights"
-            ))
-        })?;
+    let mut sandbox =
+        Sandbox::probe(&s.runner, s.worker, run_reads(&copy.project), s.level).map_err(unmade)?;
     sandbox.policy.timeout_ms = u64::try_from(options.timeout.as_millis()).ok();
     Ok(sandbox)
 }

@@ -61,7 +61,17 @@ pub fn parse_junit(
                             .unwrap_or("")
                     };
                     let all = format!("{body}\n{}\n{}", kept("system-out"), kept("system-err"));
-                    (Status::Failed, panic_message(&all))
+                    match all.lines().find_map(|l| l.strip_prefix(SERVER_DIED)) {
+                        // the judge's word that the server died by a signal
+                        Some(what) => (
+                            Status::Crashed,
+                            format!(
+                                "the student's process died {}: a stack overflow or an abort",
+                                what.split(": the test fails").next().unwrap_or(what).trim()
+                            ),
+                        ),
+                        None => (Status::Failed, panic_message(&all)),
+                    }
                 }
             }
         };
@@ -87,17 +97,23 @@ pub fn parse_junit(
 /// The longest message a report quotes, in characters.
 pub const MESSAGE_CHARS: usize = 400;
 
+/// How each line the judge adds to a test's output begins (the renderer's `judge` module).
+const JUDGE_MARK: &str = "whitted judge: ";
+
+/// How the judge's line begins when the student's process died by a signal: the test crashed.
+const SERVER_DIED: &str = "whitted judge: the student's process died ";
+
 /// The message of a panic in a test's output: the lines after `panicked at …:`, up to the
 /// backtrace note (or libtest's list of failures), at most three, at most [`MESSAGE_CHARS`]
-/// characters; else the runner's own line ([`super::runner::RUNNER_MARK`]), else the first
-/// line.
+/// characters; else the runner's or the judge's own line ([`super::runner::RUNNER_MARK`],
+/// `whitted judge:`), else the first line.
 #[must_use]
 pub fn panic_message(output: &str) -> String {
     let mut lines = output.lines();
     if !lines.by_ref().any(|l| l.contains("panicked at")) {
         let first = output
             .lines()
-            .find(|l| l.starts_with(super::runner::RUNNER_MARK))
+            .find(|l| l.starts_with(super::runner::RUNNER_MARK) || l.starts_with(JUDGE_MARK))
             .or_else(|| output.lines().next())
             .unwrap_or("failed")
             .trim();

@@ -14,34 +14,41 @@
 //! environment, `unsafe`, an item, a lifetime, a macro outside the short list …) is not even
 //! put in: it counts as not written ([`screen()`], the screen `cargo learn` runs at every save).
 //!
-//! **Each exercise is judged alone** ([`alone`]): the copy holds the student's body and the
-//! reference's side by side in each graded region, and a test named after an exercise runs the
-//! student's body of that exercise and the reference's of every other one, so that a mistake
-//! costs its own exercise only. The tests of no exercise, the pictures and the ray trees run the
-//! student's whole road. `--whole-road` ([`Judging::WholeRoad`]) judges every test that way.
+//! **Each exercise is judged alone** ([`alone`]), **by a judge the student's code cannot
+//! reach** ([`outside`], [`judge_copy`]): the tests run in the *judge*, a build of the
+//! instructor's project with its tests, public and hidden, made once for a class; the graded
+//! copy holds the student's bodies and none of the reference's for a graded exercise, and is
+//! built into the *server*. A test named after an exercise sends that exercise's calls to the
+//! server and runs every other exercise in the judge, so a mistake costs its own exercise
+//! only; the tests of no exercise send every exercise (the student's whole road), and
+//! `--whole-road` ([`Judging::WholeRoad`]) judges every test that way. The pictures and the
+//! ray trees of the feedback are drawn by the graded copy's own chapter binaries.
 //!
-//! Then, in that copy:
+//! Then, for each submission:
 //!
-//! 1. **Build.** An exercise whose body does not compile is put back to its `todo!()` and the
-//!    build is tried again, so a compile error costs only the exercise it is in; its first
-//!    error goes into the report.
+//! 1. **Build** the server. An exercise whose body does not compile is put back to its
+//!    `todo!()` and the build is tried again, so a compile error costs only the exercise it
+//!    is in; its first error goes into the report.
 //! 2. **Run** every test of the graded chapters with cargo-nextest, each test in its own
-//!    process with its own time limit, judging its exercise alone: a `todo!()`, a panic, a
-//!    stack overflow, an abort or an endless loop fails that exercise's tests and no others. Each test binary goes through
-//!    the [`runner`], which passes a test only when libtest reported it `ok` (a process that
-//!    ended early passes nothing) and cleans what it printed ([`clean`]).
+//!    judge process with its own time limit, each judge's process starting its own server in
+//!    the sandbox through the [`runner`] (`whitted sandbox-run --serve`): a `todo!()`, a
+//!    panic, a stack overflow, an abort or an endless loop on the server fails that
+//!    exercise's tests and no others. Only values cross from the server; what it prints is
+//!    cleaned ([`clean`]); the judge's assertions decide.
 //! 3. **Score.** An exercise's points ([`super::manifest::Exercise::points`]) are shared
 //!    equally by its tests, the ones named after it (`ex_sphere_coefficients_…`), public and
 //!    hidden alike.
 //!
 //! Hidden tests are the instructor's own test files (`--hidden DIR`, each `*.rs` a test target
-//! added to the copy as `tests/hidden_NAME.rs`), compiled against the same public API. Their
+//! added to the judge as `tests/hidden_NAME.rs`, never to the graded copy), compiled against
+//! the same public API. Their
 //! tests follow the same naming, so they count for the exercise they name; reports for
 //! students show their points, never their names or messages ([`super::report`]).
 //!
 //! Its files, one job each: `setup.rs` (how a grading is set up), `grading.rs` ([`grade()`],
 //! the steps in order), `copy.rs` (the graded copy), `splice.rs`, `alone.rs` and `screen.rs`
-//! (the student's bodies in it), `build.rs` and `blame.rs` (the build), `nextest.rs`, `junit.rs`, `runner.rs`,
+//! (the student's bodies in it), `outside.rs` and `judge_copy.rs` (the wire and the judge),
+//! `build.rs` and `blame.rs` (the build), `nextest.rs`, `junit.rs`, `runner.rs`,
 //! `sandbox/` and `clean.rs` (the test run), `test_result.rs`, `score.rs` and `outcome.rs` (the results and the points),
 //! `render.rs` and `explained.rs` (the pictures and their words), `class.rs` (a class),
 //! `command.rs` (the reports) and `args.rs` (the command line).
@@ -58,6 +65,7 @@ pub mod command;
 mod copy;
 mod explained;
 mod grading;
+pub mod judge_copy;
 mod junit;
 mod nextest;
 mod outcome;
@@ -76,6 +84,7 @@ pub use args::{GradeArgs, SandboxArgs};
 pub use class::{ClassEntry, grade_class};
 pub use explained::Explained;
 pub use grading::grade;
+pub use judge_copy::Judge;
 pub use junit::{MESSAGE_CHARS, panic_message, parse_junit};
 pub use nextest::NEXTEST_PROFILE;
 pub use outcome::{ExerciseScore, Grade, Road, Timings};

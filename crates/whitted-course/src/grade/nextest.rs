@@ -1,32 +1,39 @@
-//! Running the graded copy's tests with cargo-nextest, each in its own process under its time
-//! limit: the profile the grader writes, and the run that leaves nextest's JUnit report.
+//! Running the judge's tests with cargo-nextest, each in its own process under its time
+//! limit: the binaries listed once, the profile the grader writes for each run, and the run
+//! that leaves nextest's JUnit report.
 //!
 //! Course book: [The instructor's guide](../../../../../docs/book/instructor-guide.html) (`docs/src/instructor-guide.md`).
 
-use std::path::Path;
+use std::ffi::OsString;
+use std::path::{Path, PathBuf};
 use std::time::Duration;
 
 use super::junit::parse_junit;
-use super::sandbox::Sandbox;
 use super::test_result::TestResult;
 use crate::manifest::Manifest;
 use crate::{ToolError, cargo, files, layout};
 
-/// The nextest profile the grader writes into the copy: no retries, no fail-fast, a time
-/// limit per test, and a JUnit file the grader reads.
+/// The nextest profile the grader writes for a run: no retries, no fail-fast, a time limit per
+/// test, and a JUnit file the grader reads.
 pub const NEXTEST_PROFILE: &str = "grading";
 
-/// Where nextest keeps its reports, in the graded copy.
-pub(super) const STORE: &str = "nextest-store";
+/// How many times the time limit a test of no exercise gets: it judges the student's whole
+/// road, every call across the wire (measured: `supersampling_is_the_same_every_run` takes
+/// 0.01 s in one process and 3.7–8.6 s across it on the 2-core machine, idle to busy).
+pub(super) const WHOLE_ROAD_TIMES: u32 = 3;
 
-/// Writes the grading profile into the copy's `.config/nextest.toml`.
-pub(super) fn write_profile(project: &Path, timeout: Duration) -> Result<(), ToolError> {
-    let dir = project.join(".config");
-    std::fs::create_dir_all(&dir).map_err(|e| ToolError::io(&dir, e))?;
+/// Writes the grading profile into the nextest configuration file `config`, its reports kept
+/// in `store`: no retries, no fail-fast, a time limit per test (three times as long for a test
+/// of no exercise), and a JUnit file.
+pub(super) fn write_profile(
+    config: &Path,
+    store: &Path,
+    timeout: Duration,
+) -> Result<(), ToolError> {
     let text = format!(
         "# written by `whitted grade`: every test in its own process, stopped after its time limit\n\
          [store]\n\
-         dir = \"{STORE}\"\n\n\
+         dir = {store:?}\n\n\
          [profile.{NEXTEST_PROFILE}]\n\
          fail-fast = false\n\
          retries = 0\n\
@@ -35,37 +42,42 @@ pub(super) fn write_profile(project: &Path, timeout: Duration) -> Result<(), Too
          final-status-level = \"none\"\n\
          failure-output = \"never\"\n\
          success-output = \"never\"\n\n\
+         # the tests of no exercise count no points and send every call of the student's whole\n\
+         # road across the wire: a render makes thousands of round trips\n\
+         [[profile.{NEXTEST_PROFILE}.overrides]]\n\
+         filter = 'not test(/(^|::)ex_/)'\n\
+         slow-timeout = {{ period = \"{}s\", terminate-after = 1 }}\n\n\
          [profile.{NEXTEST_PROFILE}.junit]\n\
          path = \"junit.xml\"\n\
          store-success-output = false\n\
          store-failure-output = true\n",
-        timeout.as_secs().max(1)
+        timeout.as_secs().max(1),
+        timeout.as_secs().max(1) * u64::from(WHOLE_ROAD_TIMES),
+        store = store.to_string_lossy(),
     );
-    files::write_if_changed(&dir.join("nextest.toml"), text.as_bytes()).map(|_| ())
+    files::write_if_changed(config, text.as_bytes()).map(|_| ())
 }
 
-/// Runs the built targets with nextest's grading profile and reads its JUnit report. What
-/// runs is what was built: nextest is given the binaries that `cargo nextest list` finds
-/// (inside `wrapper`, the build sandbox, when there is one) and builds nothing itself, so
-/// `listed_then` may take away what the tests must not see (the hidden tests' sources) between
-/// the listing and the run; each test binary goes through the `sandbox`'s runner when there
-/// is one.
-#[allow(clippy::too_many_arguments)]
-pub(super) fn run(
+/// A project's test binaries as nextest lists them: its binaries' metadata and cargo's, which
+/// a run reuses without building.
+#[derive(Clone, Debug)]
+pub struct Listed {
+    /// nextest's binaries metadata (`cargo nextest list --list-type binaries-only`).
+    pub binaries: PathBuf,
+    /// cargo's metadata (`cargo metadata --no-deps`).
+    pub metadata: PathBuf,
+}
+
+/// Lists the built test `targets` of the project (inside `wrapper`, a build sandbox, when
+/// there is one) into the directory `to`: what runs is what was built.
+pub(super) fn list(
     project: &Path,
     target_dir: &Path,
     targets: &[String],
-    manifest: &Manifest,
-    hidden: &[String],
     wrapper: Option<&cargo::Wrapper>,
-    sandbox: Option<&Sandbox>,
-    listed_then: impl FnOnce() -> Result<(), ToolError>,
-) -> Result<Vec<TestResult>, ToolError> {
-    // in the copy, not the (perhaps shared) target directory: one report per copy
-    let store = project.join(STORE);
-    let junit = store.join(NEXTEST_PROFILE).join("junit.xml");
-    let _ = std::fs::remove_file(&junit);
-    std::fs::create_dir_all(&store).map_err(|e| ToolError::io(&store, e))?;
+    to: &Path,
+) -> Result<Listed, ToolError> {
+    std::fs::create_dir_all(to).map_err(|e| ToolError::io(to, e))?;
     let listed = |args: &[&str], to: &Path| -> Result<(), ToolError> {
         let out = cargo::wrapped(project, Some(target_dir), false, wrapper)
             .args(args)
@@ -84,8 +96,8 @@ pub(super) fn run(
         }
         files::write_file(to, &out.stdout)
     };
-    let binaries = store.join("binaries.json");
-    let metadata = store.join("cargo-metadata.json");
+    let binaries = to.join("binaries.json");
+    let metadata = to.join("cargo-metadata.json");
     let mut list = vec![
         "nextest",
         "list",
@@ -105,19 +117,36 @@ pub(super) fn run(
         &["metadata", "--format-version", "1", "--no-deps", "--locked"],
         &metadata,
     )?;
-    listed_then()?;
-    let env = match sandbox {
-        Some(s) => s.runner_env()?,
-        None => Vec::new(),
-    };
+    Ok(Listed { binaries, metadata })
+}
+
+/// Runs the `listed` test binaries of the project with the grading profile, written with its
+/// reports into the directory `run` (a run's own: runs beside each other never share one),
+/// the tests given `env`; reads the JUnit report.
+pub(super) fn run(
+    project: &Path,
+    target_dir: &Path,
+    listed: &Listed,
+    run: &Path,
+    timeout: Duration,
+    env: &[(OsString, OsString)],
+    (manifest, hidden): (&Manifest, &[String]),
+) -> Result<Vec<TestResult>, ToolError> {
+    let store = run.join("store");
+    let config = run.join("nextest.toml");
+    write_profile(&config, &store, timeout)?;
+    let junit = store.join(NEXTEST_PROFILE).join("junit.xml");
+    let _ = std::fs::remove_file(&junit);
+    std::fs::create_dir_all(&store).map_err(|e| ToolError::io(&store, e))?;
     let ran = cargo::Nextest {
         project,
         package: layout::CORE_PACKAGE,
-        tests: targets,
+        tests: &[],
         profile: NEXTEST_PROFILE,
+        config: Some(&config),
         target_dir,
-        reuse: Some((&binaries, &metadata)),
-        env: &env,
+        reuse: Some((&listed.binaries, &listed.metadata)),
+        env,
     }
     .run();
     let text = match (std::fs::read_to_string(&junit), ran) {
@@ -130,7 +159,5 @@ pub(super) fn run(
             )));
         }
     };
-    // the next submission graded in this copy must not find this one's results
-    let _ = std::fs::remove_dir_all(&store);
     parse_junit(&text, manifest, hidden)
 }

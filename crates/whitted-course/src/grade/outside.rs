@@ -29,12 +29,16 @@ use std::path::{Path, PathBuf};
 
 use super::alone::quoted_prefixes;
 use crate::manifest::Manifest;
-use crate::source::{self, Edit};
+use crate::source;
 use crate::{ToolError, files, layout};
 
 /// The environment variable that gives the judge's tests the server's command line (the
 /// renderer's `judge::SERVER_VAR`): its words separated by `\x1f`.
 pub const SERVER_VAR: &str = "WHITTED_JUDGE_SERVER";
+
+/// The environment variable that makes the judge send every exercise of every test to the
+/// server (the renderer's `judge::WHOLE_ROAD_VAR`): `--whole-road`.
+pub const WHOLE_ROAD_VAR: &str = "WHITTED_JUDGE_WHOLE_ROAD";
 
 /// The server program a wired copy gains, beside the renderer's crate's sources.
 pub const SERVER_EXAMPLE: &str = "judged_server";
@@ -50,7 +54,7 @@ const CROSSING: &str = "crate::render::crossing";
 const ROAD_ANSWERS: [&str; 3] = ["local_light", "feeler", "reflect_and_refract"];
 
 /// What [`add_wire`] did.
-#[derive(Debug, Default, PartialEq, Eq)]
+#[derive(Clone, Debug, Default, PartialEq, Eq)]
 pub struct Wired {
     /// The manifest entries whose calls cross the wire.
     pub crossing: Vec<usize>,
@@ -328,14 +332,50 @@ struct Made {
     answered_by: Option<String>,
 }
 
-/// What one source file gains: the stubs, put first in bodies, and the answers appended.
-type FileWire = (Vec<(std::ops::Range<usize>, Edit)>, String);
+/// What one source file gains: the stubs, each inserted at a byte of the file's text (right
+/// after its function's `{`, on the same line), and the answers appended.
+#[derive(Clone, Debug, Default, PartialEq, Eq)]
+pub struct FileWire {
+    /// Each stub and the byte of the file's text it goes at, in the order of the text.
+    pub stubs: Vec<(usize, String)>,
+    /// The answers, appended to the file.
+    pub answers: String,
+}
 
-/// Writes the wire into the copy of the project at `project`: every exercise's stub and answer
-/// that can cross, the table, and the server program (see the module's documentation).
-pub fn add_wire(project: &Path, manifest: &Manifest) -> Result<Wired, ToolError> {
-    let mut wired = Wired::default();
-    let mut by_file: BTreeMap<PathBuf, FileWire> = BTreeMap::new();
+impl FileWire {
+    /// `text` (the file's text the wire was planned on, or one whose bytes before each stub
+    /// are the same) with the stubs in and the answers appended.
+    #[must_use]
+    pub fn apply(&self, text: &str) -> String {
+        let mut out = String::with_capacity(text.len() + self.answers.len() + 128);
+        let mut copied = 0;
+        for (at, stub) in &self.stubs {
+            out.push_str(&text[copied..*at]);
+            out.push_str(stub);
+            copied = *at;
+        }
+        out.push_str(&text[copied..]);
+        out.push_str(&self.answers);
+        out
+    }
+}
+
+/// The wire of a project, planned from its files before any of them changes: what each file
+/// gains, the table `lib.rs` gains, and which exercises cross.
+#[derive(Clone, Debug, Default, PartialEq, Eq)]
+pub struct Wire {
+    /// What was wired.
+    pub wired: Wired,
+    /// By source file (relative to the project): its stubs and answers.
+    pub files: BTreeMap<PathBuf, FileWire>,
+    /// The module appended to `lib.rs`.
+    pub table: String,
+}
+
+/// Plans the wire of the project at `project` from its files as they are (see the module's
+/// documentation): nothing is written.
+pub fn plan_wire(project: &Path, manifest: &Manifest) -> Result<Wire, ToolError> {
+    let mut wire = Wire::default();
     let mut arms = Vec::new();
     for (n, entry) in manifest.entries.iter().enumerate() {
         let at =
@@ -352,36 +392,60 @@ pub fn add_wire(project: &Path, manifest: &Manifest) -> Result<Wired, ToolError>
             .and_then(|params| stub_and_answer(n, &entry.function, &params));
         match made {
             Ok(made) => {
-                let (edits, answers) = by_file.entry(at.file.clone()).or_default();
-                edits.push((at.body.clone(), Edit::Prepend(made.stub)));
-                answers.push_str(&made.answer);
+                let file = wire.files.entry(at.file.clone()).or_default();
+                file.stubs.push((at.body.start + 1, made.stub));
+                file.answers.push_str(&made.answer);
                 let answer = made
                     .answered_by
                     .unwrap_or_else(|| format!("{}::judged_answer_{n}", module_of(&at.file)));
                 arms.push(format!("            {n} => {answer}(args),"));
-                wired.crossing.push(n);
+                wire.wired.crossing.push(n);
             }
-            Err(why) => wired.kept.push((n, why)),
+            Err(why) => wire.wired.kept.push((n, why)),
         }
     }
-    for (file, (edits, answers)) in &by_file {
+    for file in wire.files.values_mut() {
+        file.stubs.sort_by_key(|(at, _)| *at);
+    }
+    wire.table = table(manifest, &arms);
+    Ok(wire)
+}
+
+impl Wire {
+    /// Writes what is not in an exercise's file into the copy at `project`, whose `lib.rs` is
+    /// the one the wire was planned on: the table at the end of `lib.rs`, and the server
+    /// program.
+    pub fn write_table(&self, project: &Path) -> Result<(), ToolError> {
+        let lib = project.join(layout::core_lib());
+        let text = std::fs::read_to_string(&lib).map_err(|e| ToolError::io(&lib, e))?;
+        files::write_if_changed(&lib, format!("{text}{}", self.table).as_bytes())?;
+        self.write_server(project)
+    }
+
+    /// Writes the server program (`examples/judged_server.rs`) beside the renderer's sources.
+    pub fn write_server(&self, project: &Path) -> Result<(), ToolError> {
+        let examples = project.join(layout::core_src()).with_file_name("examples");
+        std::fs::create_dir_all(&examples).map_err(|e| ToolError::io(&examples, e))?;
+        let server = examples.join(format!("{SERVER_EXAMPLE}.rs"));
+        files::write_if_changed(
+            &server,
+            b"//! Written by `whitted grade`: the student's end of the grader's wire.\n\nfn main() -> std::process::ExitCode {\n    whitted::judged::serve()\n}\n",
+        )
+        .map(|_| ())
+    }
+}
+
+/// Writes the wire into the copy of the project at `project`: every exercise's stub and answer
+/// that can cross, the table, and the server program (see the module's documentation).
+pub fn add_wire(project: &Path, manifest: &Manifest) -> Result<Wired, ToolError> {
+    let wire = plan_wire(project, manifest)?;
+    for (file, w) in &wire.files {
         let path = project.join(file);
         let text = std::fs::read_to_string(&path).map_err(|e| ToolError::io(&path, e))?;
-        let edited = source::edit_bodies(&text, edits)
-            .map_err(|why| ToolError::Usage(format!("{}: {why}", path.display())))?;
-        files::write_if_changed(&path, format!("{edited}{answers}").as_bytes())?;
+        files::write_if_changed(&path, w.apply(&text).as_bytes())?;
     }
-    let lib = project.join(layout::core_lib());
-    let text = std::fs::read_to_string(&lib).map_err(|e| ToolError::io(&lib, e))?;
-    files::write_if_changed(&lib, format!("{text}{}", table(manifest, &arms)).as_bytes())?;
-    let examples = project.join(layout::core_src()).with_file_name("examples");
-    std::fs::create_dir_all(&examples).map_err(|e| ToolError::io(&examples, e))?;
-    let server = examples.join(format!("{SERVER_EXAMPLE}.rs"));
-    files::write_if_changed(
-        &server,
-        b"//! Written by `whitted grade`: the student's end of the grader's wire.\n\nfn main() -> std::process::ExitCode {\n    whitted::judged::serve()\n}\n",
-    )?;
-    Ok(wired)
+    wire.write_table(project)?;
+    Ok(wire.wired)
 }
 
 /// The table module appended to `lib.rs`: the exercises' test prefixes and the dispatch over

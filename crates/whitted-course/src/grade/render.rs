@@ -100,7 +100,7 @@ fn build_binaries(
         target_dir,
         layout::APP_PACKAGE,
         &[],
-        &names,
+        (&names, &[]),
         wrapper,
     );
     let executables = chapter_binary::executables(built).map_err(|e| e.to_string())?;

@@ -1,5 +1,8 @@
-//! The target runner (`whitted sandbox-run`): nextest starts every test binary of a grading
-//! through it, and it decides whether a test's end was earned.
+//! The runner (`whitted sandbox-run`): a program of the student's run in the grader's sandbox.
+//! `whitted grade` starts each submission's server through it ([`SERVE`], below): the judge,
+//! outside the sandbox, decides every test. Given a test binary instead, as nextest's target
+//! runner (a test suite that runs the student's code in its own process), it decides whether a
+//! test's end was earned, as well as a process that runs the student's code can.
 //!
 //! nextest counts a test process that exits with status 0 as a pass. A body that ends its
 //! process early (`exit(0)`, `exec`, a signal handler) would pass every test that calls it, so
@@ -205,8 +208,8 @@ fn policy_of_env() -> Result<(Policy, Option<u32>), String> {
 /// [`POLICY_VAR`]: its standard input and output are the judge's pipes, passed through
 /// untouched; its standard error arrives cleaned and cut at the policy's size. Nothing it
 /// prints is a verdict: the judge decides on the values that cross. When it ends, every
-/// process of its user ends too and its temporary directory is removed; it ends with the
-/// server's status. Its time is the judge's test's: when that test is stopped, so is this.
+/// process of its user ends too and its temporary directory is removed; it ends as the
+/// server ended, by the same signal when it died by one (the judge then reports a crash). Its time is the judge's test's: when that test is stopped, so is this.
 fn serve(command: &[OsString]) -> ExitCode {
     let fail = |why: String| {
         eprintln!("whitted {RUNNER_COMMAND} {SERVE}: {why}");
@@ -223,8 +226,11 @@ fn serve(command: &[OsString]) -> ExitCode {
         Ok(t) => t,
         Err(e) => return fail(e),
     };
-    let cwd = std::env::current_dir().unwrap_or_else(|_| PathBuf::from("/tmp"));
+    // the judge's working directory is inside its copy, closed to the sandbox's user: the
+    // server starts in its temporary directory instead
+    let cwd = PathBuf::from("/tmp");
     let mut command = policy.command(Path::new(bin), &cwd);
+    command.current_dir(&cwd);
     if let Some(t) = &tmp {
         command.env("TMPDIR", t.path()).env("HOME", t.path());
     }
@@ -250,9 +256,37 @@ fn serve(command: &[OsString]) -> ExitCode {
     });
     drop(tmp);
     match waited {
-        Ok(status) => ExitCode::from(u8::try_from(status.code().unwrap_or(1)).unwrap_or(1)),
+        Ok(status) => {
+            if let Some(signal) = signal_of(status) {
+                die_by(signal);
+            }
+            ExitCode::from(u8::try_from(status.code().unwrap_or(1)).unwrap_or(1))
+        }
         Err(e) => fail(format!("waiting for the sandbox: {e}")),
     }
+}
+
+/// The signal that ended a sandboxed process of `status`, when one did (bubblewrap ends with
+/// 128 + N when its child was killed by signal N).
+fn signal_of(status: std::process::ExitStatus) -> Option<i32> {
+    use std::os::unix::process::ExitStatusExt;
+    status.signal().or_else(|| {
+        status
+            .code()
+            .filter(|c| (129..=128 + 31).contains(c))
+            .map(|c| c - 128)
+    })
+}
+
+/// Ends this process by `signal`, as the sandboxed process ended, so that whoever waits for
+/// it sees a crash (when the signal does not end it, the caller goes on).
+fn die_by(signal: i32) {
+    let signal = signal.to_string();
+    let _ = Command::new("kill")
+        .args([OsStr::new("-s"), OsStr::new(&signal)])
+        .arg(std::process::id().to_string())
+        .status();
+    std::thread::sleep(Duration::from_millis(200));
 }
 
 /// What follows the end of a sandboxed process: with a slot, every process its user left is
@@ -308,8 +342,7 @@ pub fn run_test(command: &[OsString]) -> ExitCode {
     if let Some(t) = &tmp {
         command.env("TMPDIR", t.path()).env("HOME", t.path());
     }
-    // the graded copy's switch: a test named after an exercise runs the student's body of
-    // that exercise alone (`super::alone`)
+    // the test's name, which the judge reads to know which exercise it judges
     if let Some(name) = &test {
         command.env(super::alone::GRADED_TEST_VAR, name);
     }
@@ -382,24 +415,9 @@ pub fn run_test(command: &[OsString]) -> ExitCode {
         Ok(s) => s,
         Err(e) => return fail(format!("waiting for the sandbox: {e}")),
     };
-    // killed by signal N (bubblewrap ends with 128 + N then): end the same way
-    let signal = {
-        use std::os::unix::process::ExitStatusExt;
-        status.signal().or_else(|| {
-            status
-                .code()
-                .filter(|c| (129..=128 + 31).contains(c))
-                .map(|c| c - 128)
-        })
-    };
     let code = status.code().unwrap_or(1);
-    if let Some(signal) = signal {
-        let signal = signal.to_string();
-        let _ = Command::new("kill")
-            .args([OsStr::new("-s"), OsStr::new(&signal)])
-            .arg(std::process::id().to_string())
-            .status();
-        std::thread::sleep(Duration::from_millis(200));
+    if let Some(signal) = signal_of(status) {
+        die_by(signal);
     }
     let reported_ok = watch.as_mut().is_some_and(Watch::finish);
     if let Err(why) = verdict(code, test.as_deref(), reported_ok) {

@@ -4,9 +4,11 @@
 //! Course book: [The instructor's guide](../../../../../docs/book/instructor-guide.html) (`docs/src/instructor-guide.md`).
 
 use std::path::PathBuf;
+use std::sync::Arc;
 use std::time::Duration;
 
 use super::alone::Judging;
+use super::judge_copy::Judge;
 use super::sandbox;
 use super::sandbox::watch::CompileLimits;
 
@@ -49,6 +51,9 @@ pub struct GradeSetup {
     /// How an exercise's tests are judged: alone (the student's body for it, the reference's for
     /// every other exercise), or with the student's whole road (`--whole-road`).
     pub judging: Judging,
+    /// The judge, built once for a class ([`super::judge_copy::prepare`]); a grading without
+    /// one builds its own beside its build directory (or in a temporary directory).
+    pub judge: Option<Arc<Judge>>,
 }
 
 /// What a sandboxed grading needs to know.
@@ -77,6 +82,7 @@ impl Default for GradeSetup {
             screen: true,
             judging: Judging::default(),
             compile: CompileLimits::default(),
+            judge: None,
         }
     }
 }

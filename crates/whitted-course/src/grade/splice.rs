@@ -1,13 +1,15 @@
 //! The graded copy's sources: the student's body of each graded exercise, taken from between
-//! its markers and put into the instructor's file, and the instructor's hidden tests beside the
-//! public ones.
+//! its markers and put into the instructor's file with the wire of the judge outside
+//! ([`super::outside`]), and the instructor's hidden tests beside the public ones (in the
+//! judge's copy).
 //!
 //! Course book: [The instructor's guide](../../../../../docs/book/instructor-guide.html) (`docs/src/instructor-guide.md`).
 
-use std::collections::{BTreeMap, BTreeSet};
+use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
 
-use super::alone::{self, Judging};
+use super::alone;
+use super::outside::{FileWire, Wire};
 use crate::handout::{self, BEGIN, END, Region};
 use crate::manifest::Manifest;
 use crate::{ToolError, files, layout};
@@ -63,10 +65,8 @@ pub(super) struct Spliced {
     pub(super) reference: String,
     /// The regions in the file, in order, with the body each one now holds.
     pub(super) regions: Vec<(Region, String)>,
-    /// The regions whose body is the student's (their manifest entries), when each exercise is
-    /// judged alone: each holds the reference's body too, beside the student's
-    /// ([`super::alone::both_bodies`]).
-    pub(super) alone: BTreeSet<usize>,
+    /// The wire's stubs (at bytes of `reference`, none inside a region) and answers.
+    pub(super) wire: FileWire,
     /// For each region whose body is the student's, the line of the student's file (from 1)
     /// where it begins: a compiler error is reported at the student's own line.
     pub(super) student_at: BTreeMap<usize, usize>,
@@ -77,14 +77,35 @@ impl Spliced {
     /// inclusive) an error in its body may be reported on: from its BEGIN line to the line
     /// after its END line.
     pub(super) fn text(&self) -> (String, Vec<BodyLines>) {
+        // a body's leading inner attributes (`#![allow(…)]`) go just before the wire's stub,
+        // which opens the function's block: an inner attribute must come first in its block
+        let mut hoisted: BTreeMap<usize, String> = BTreeMap::new();
+        let bodies: Vec<String> = self
+            .regions
+            .iter()
+            .map(|(r, body)| {
+                let stub = self
+                    .wire
+                    .stubs
+                    .iter()
+                    .rposition(|(at, _)| *at <= r.bytes.start);
+                match (inner_attributes(body), stub) {
+                    (Some((attributes, rest)), Some(k)) => {
+                        hoisted.entry(k).or_default().push_str(&attributes);
+                        rest
+                    }
+                    _ => body.clone(),
+                }
+            })
+            .collect();
         let mut out = String::new();
         let mut lines = Vec::new();
         let mut at = 0;
-        for (r, body) in &self.regions {
+        for ((r, _), body) in self.regions.iter().zip(&bodies) {
             let head_end = self.reference[r.bytes.start..]
                 .find('\n')
                 .map_or(r.bytes.end, |i| r.bytes.start + i + 1);
-            out.push_str(&self.reference[at..head_end]);
+            self.copy(&mut out, at..head_end, &hoisted);
             // the BEGIN line, the body, the END line and the line after it: a syntax error
             // in a body is often reported at the token that follows it
             let first = out.lines().count();
@@ -94,33 +115,69 @@ impl Spliced {
                     .get(&r.entry)
                     .map_or(0, |&at| at as i64 - starts as i64)
             };
-            if self.alone.contains(&r.entry) {
-                // the student's body (after the `if` and its block's `{`), then the line after it
-                let (both, end) = alone::both_bodies(r.entry, &r.indent, body, &r.solution);
-                out.push_str(&both);
-                lines.push((r.entry, first, first + end + 1, shift(first + 3)));
-            } else {
-                let mut body = body.clone();
-                if !body.is_empty() && !body.ends_with('\n') {
-                    body.push('\n');
-                }
-                out.push_str(&body);
-                let last = out.lines().count() + 2;
-                lines.push((r.entry, first, last, shift(first + 1)));
+            let mut body = body.clone();
+            if !body.is_empty() && !body.ends_with('\n') {
+                body.push('\n');
             }
+            out.push_str(&body);
+            let last = out.lines().count() + 2;
+            lines.push((r.entry, first, last, shift(first + 1)));
             out.push_str(&r.indent);
             out.push_str(END);
             out.push('\n');
             at = r.bytes.end;
         }
-        out.push_str(&self.reference[at..]);
+        self.copy(&mut out, at..self.reference.len(), &hoisted);
+        out.push_str(&self.wire.answers);
         (out, lines)
+    }
+
+    /// Copies the reference's bytes `range` to `out`, with the wire's stubs that fall in it
+    /// (each on its function's `{` line: no line moves), each after the inner attributes
+    /// `hoisted` to it.
+    fn copy(
+        &self,
+        out: &mut String,
+        range: std::ops::Range<usize>,
+        hoisted: &BTreeMap<usize, String>,
+    ) {
+        let mut from = range.start;
+        for (k, (stub_at, stub)) in self.wire.stubs.iter().enumerate() {
+            if range.contains(stub_at) {
+                out.push_str(&self.reference[from..*stub_at]);
+                out.push_str(hoisted.get(&k).map_or("", String::as_str));
+                out.push_str(stub);
+                from = *stub_at;
+            }
+        }
+        out.push_str(&self.reference[from..range.end]);
     }
 }
 
+/// The inner attributes a body opens with (lines `#![…]`, among blank and comment lines), on
+/// one line, and the body with their lines left empty (so no line moves); `None` when it
+/// opens with none.
+fn inner_attributes(body: &str) -> Option<(String, String)> {
+    let mut attributes = String::new();
+    let mut rest = String::with_capacity(body.len());
+    let mut opening = true;
+    for line in body.split_inclusive('\n') {
+        let t = line.trim();
+        if opening && t.starts_with("#![") && t.ends_with(']') {
+            attributes.push_str(t);
+            attributes.push(' ');
+            rest.push_str(if line.ends_with('\n') { "\n" } else { "" });
+            continue;
+        }
+        opening &= t.is_empty() || t.starts_with("//");
+        rest.push_str(line);
+    }
+    (!attributes.is_empty()).then_some((attributes, rest))
+}
+
 /// The graded copy's source files with the student's bodies in the regions of `chapters`
-/// (the other regions keep the reference code), each beside the reference's when each exercise
-/// is judged alone ([`Judging::Alone`]). A body that cannot be found is noted and replaced by
+/// (the other regions keep the reference code) and the `wire` in: the copy holds no reference
+/// body of a graded exercise, whose calls the judge makes from outside. A body that cannot be found is noted and replaced by
 /// the exercise's `todo!()`; so is, when `screen` (always, but for a test of the runner's lock
 /// alone), a body that does more than compute ([`super::screen::screen`]), and a body that is
 /// not whole on its own ([`alone::whole_on_its_own`]): it is never compiled.
@@ -129,18 +186,15 @@ pub(super) fn splice(
     manifest: &Manifest,
     submission: &Path,
     chapters: &[u8],
-    (screen, judging): (bool, Judging),
+    screen: bool,
+    wire: &Wire,
     notes: &mut BTreeMap<usize, String>,
 ) -> Result<Vec<Spliced>, ToolError> {
     let mut by_file: BTreeMap<PathBuf, Vec<(Region, String)>> = BTreeMap::new();
-    let mut alone = BTreeSet::new();
     let mut student_at = BTreeMap::new();
     for r in handout::regions(root, manifest)? {
         let e = &manifest.entries[r.entry];
         let body = if chapters.contains(&e.chapter) {
-            if judging == Judging::Alone {
-                alone.insert(r.entry);
-            }
             student_body_at(submission, &r, &e.exercise.name)
                 .map(|(body, at)| {
                     student_at.insert(r.entry, at);
@@ -165,17 +219,22 @@ pub(super) fn splice(
         };
         by_file.entry(r.file.clone()).or_default().push((r, body));
     }
+    // a file the wire changes is written even where it holds no region
+    for file in wire.files.keys() {
+        by_file.entry(file.clone()).or_default();
+    }
     by_file
         .into_iter()
         .map(|(file, mut regions)| {
             regions.sort_by_key(|(r, _)| r.bytes.start);
             let path = root.join(&file);
             let reference = std::fs::read_to_string(&path).map_err(|e| ToolError::io(&path, e))?;
+            let wire = wire.files.get(&file).cloned().unwrap_or_default();
             Ok(Spliced {
                 file,
                 reference,
                 regions,
-                alone: alone.clone(),
+                wire,
                 student_at: student_at.clone(),
             })
         })
@@ -215,75 +274,6 @@ pub(crate) fn hidden_files(dir: &Path) -> Result<Vec<PathBuf>, ToolError> {
     Ok(files)
 }
 
-/// Makes the hidden tests' binaries in the build directory executable and nothing else for
-/// other users: a test running as one (the user sandbox) cannot read their names or
-/// messages out of them.
-pub(super) fn seal_hidden(target_dir: &Path) -> Result<(), ToolError> {
-    use std::os::unix::fs::PermissionsExt;
-    let deps = target_dir.join("debug").join("deps");
-    let Ok(entries) = std::fs::read_dir(&deps) else {
-        return Ok(());
-    };
-    for e in entries.flatten() {
-        if e.file_name().to_string_lossy().starts_with("hidden_") {
-            let path = e.path();
-            let mode = if path.extension().is_none() {
-                0o711
-            } else {
-                0o600
-            };
-            std::fs::set_permissions(&path, std::fs::Permissions::from_mode(mode))
-                .map_err(|err| ToolError::io(&path, err))?;
-        }
-    }
-    Ok(())
-}
-
-/// Once the hidden tests' binaries are built and listed, removes everything else of them
-/// that a test could read while they run: their sources in the copy (a test's working
-/// directory is inside the copy, so a relative path would reach them however the copy's root
-/// is closed), their incremental caches and the compiler's messages cargo keeps with their
-/// fingerprints (both quote their text). They are built again, from the hidden directory,
-/// for the next submission.
-pub(super) fn strip_hidden(project: &Path, target_dir: &Path) -> Result<(), ToolError> {
-    let is_hidden = |name: &std::ffi::OsStr| name.to_string_lossy().contains("hidden_");
-    let sources = project.join(layout::core_tests());
-    for e in std::fs::read_dir(&sources).into_iter().flatten().flatten() {
-        if e.file_name().to_string_lossy().starts_with("hidden_") {
-            let path = e.path();
-            std::fs::remove_file(&path).map_err(|err| ToolError::io(&path, err))?;
-        }
-    }
-    let debug = target_dir.join("debug");
-    for e in std::fs::read_dir(debug.join("incremental"))
-        .into_iter()
-        .flatten()
-        .flatten()
-    {
-        if is_hidden(&e.file_name()) {
-            let path = e.path();
-            std::fs::remove_dir_all(&path).map_err(|err| ToolError::io(&path, err))?;
-        }
-    }
-    for unit in std::fs::read_dir(debug.join(".fingerprint"))
-        .into_iter()
-        .flatten()
-        .flatten()
-    {
-        for e in std::fs::read_dir(unit.path())
-            .into_iter()
-            .flatten()
-            .flatten()
-        {
-            if is_hidden(&e.file_name()) {
-                let path = e.path();
-                std::fs::remove_file(&path).map_err(|err| ToolError::io(&path, err))?;
-            }
-        }
-    }
-    Ok(())
-}
-
 /// Copies each `*.rs` of the hidden directory into the copy's `tests/` as `hidden_NAME.rs`;
 /// returns the test targets added.
 pub(super) fn add_hidden(project: &Path, hidden: Option<&Path>) -> Result<Vec<String>, ToolError> {
@@ -313,4 +303,60 @@ pub(super) fn add_hidden(project: &Path, hidden: Option<&Path>) -> Result<Vec<St
         targets.push(target);
     }
     Ok(targets)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The student's body takes the region's place and the wire's stub goes right after the
+    /// function's `{`, on its line: every line keeps its number, so a compiler error in the
+    /// body is placed at the student's own line; the answers follow the file.
+    #[test]
+    fn the_wire_goes_in_without_moving_a_line() {
+        let reference =
+            "fn f(x: f64) -> f64 {\n    // BEGIN SOLUTION f\n    x + 1.0\n    // END SOLUTION\n}\n";
+        let begin = reference.find("    // BEGIN").unwrap();
+        let end = reference.find("}\n").unwrap();
+        let region = Region {
+            entry: 0,
+            file: PathBuf::from("f.rs"),
+            bytes: begin..end,
+            indent: "    ".into(),
+            solution: "    x + 1.0\n".into(),
+        };
+        let spliced = Spliced {
+            file: PathBuf::from("f.rs"),
+            reference: reference.into(),
+            regions: vec![(region, "    x * 2.0\n".into())],
+            wire: FileWire {
+                stubs: vec![(reference.find('{').unwrap() + 1, "STUB;".into())],
+                answers: "\nfn answer() {}\n".into(),
+            },
+            student_at: BTreeMap::from([(0, 7)]),
+        };
+        let (text, lines) = spliced.text();
+        assert_eq!(
+            text,
+            "fn f(x: f64) -> f64 {STUB;\n    // BEGIN SOLUTION f\n    x * 2.0\n    // END SOLUTION\n}\n\nfn answer() {}\n"
+        );
+        // the body's lines (BEGIN to the line after END) and the shift to the student's line 7
+        assert_eq!(lines, vec![(0, 2, 5, 4)]);
+        // a body's opening inner attribute goes before the stub, on the `{` line
+        let mut attributed = spliced.clone();
+        attributed.regions[0].1 =
+            "    // why\n    #![allow(unused_variables)]\n    let y = 1.0;\n    x * 2.0\n".into();
+        let (text, _) = attributed.text();
+        assert_eq!(
+            text.lines().take(6).collect::<Vec<_>>(),
+            [
+                "fn f(x: f64) -> f64 {#![allow(unused_variables)] STUB;",
+                "    // BEGIN SOLUTION f",
+                "    // why",
+                "",
+                "    let y = 1.0;",
+                "    x * 2.0",
+            ]
+        );
+    }
 }

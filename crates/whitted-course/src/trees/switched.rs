@@ -65,6 +65,7 @@ impl<'a> Switched<'a> {
             packages: &[layout::APP_PACKAGE],
             tests: &[],
             bins: &binaries,
+            examples: &[],
             profile: None,
             features: &[],
             target_dir: Some(&target),

@@ -34,6 +34,9 @@ pub struct Build<'a> {
     pub tests: &'a [String],
     /// Binaries (`--bin NAME`), built with `cargo build`; used only when `tests` is empty.
     pub bins: &'a [String],
+    /// Examples (`--example NAME`), built with `cargo build` beside `bins`; used only when
+    /// `tests` is empty.
+    pub examples: &'a [String],
     /// The profile of a `cargo build` of binaries (`--profile`); cargo's default when `None`.
     /// A test build always uses the test profile.
     pub profile: Option<&'a str>,
@@ -142,6 +145,9 @@ impl Build<'_> {
         if self.tests.is_empty() {
             for b in self.bins {
                 command.args(["--bin", b]);
+            }
+            for e in self.examples {
+                command.args(["--example", e]);
             }
         } else {
             for t in self.tests {

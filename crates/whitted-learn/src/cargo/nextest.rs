@@ -17,8 +17,10 @@ pub struct Nextest<'a> {
     pub package: &'a str,
     /// The test targets (`--test NAME`), built before.
     pub tests: &'a [String],
-    /// The nextest profile (in the project's `.config/nextest.toml`).
+    /// The nextest profile (in the project's `.config/nextest.toml`, or in `config`).
     pub profile: &'a str,
+    /// nextest's configuration file (`--config-file`), when not the project's own.
+    pub config: Option<&'a Path>,
     /// Where cargo builds.
     pub target_dir: &'a Path,
     /// Run what was built, without building: nextest's binaries metadata (of `cargo nextest
@@ -44,6 +46,9 @@ impl Nextest<'_> {
             "--no-fail-fast",
             "--no-tests=pass",
         ]);
+        if let Some(config) = self.config {
+            command.arg("--config-file").arg(config);
+        }
         match self.reuse {
             Some((binaries, metadata)) => {
                 command.arg("--binaries-metadata").arg(binaries);

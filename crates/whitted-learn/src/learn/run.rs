@@ -97,6 +97,7 @@ pub(crate) fn build(
         packages: &PACKAGES,
         tests,
         bins,
+        examples: &[],
         // the test profile for binaries too: cargo compiles the derive macros once per
         // profile, and the tests use this one
         profile: Some("test"),

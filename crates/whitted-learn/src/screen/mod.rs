@@ -124,7 +124,6 @@ const STD_REFUSED: &[(&[&str], &str)] = &[
         "changes how a panic ends",
     ),
     (&["proc_macro", "tempfile"], "reaches the compiler or files"),
-    (&["graded_bodies"], "reaches the grader's switch"),
     (&["judge", "judged"], "reaches the grader's wire"),
 ];
 

@@ -49,6 +49,27 @@ pub(super) fn write_frame(to: &mut dyn Write, frame: &Frame) -> std::io::Result<
     to.flush()
 }
 
+/// A sink that keeps the first `room` bytes written to it and drops the rest: what the
+/// other side writes between frames, held by the judge up to what it passes on.
+pub(super) struct Capped {
+    /// What was kept.
+    pub(super) kept: Vec<u8>,
+    /// How much may be kept.
+    pub(super) room: usize,
+}
+
+impl Write for Capped {
+    fn write(&mut self, bytes: &[u8]) -> std::io::Result<usize> {
+        let take = bytes.len().min(self.room - self.kept.len().min(self.room));
+        self.kept.extend_from_slice(&bytes[..take]);
+        Ok(bytes.len())
+    }
+
+    fn flush(&mut self) -> std::io::Result<()> {
+        Ok(())
+    }
+}
+
 /// The next frame on `from`; the bytes before it go to `spill`. An error at the end of the
 /// input, or for a frame that is too long or no frame.
 pub(super) fn read_frame(from: &mut dyn BufRead, spill: &mut dyn Write) -> std::io::Result<Frame> {
@@ -93,6 +114,20 @@ pub(super) fn read_frame(from: &mut dyn BufRead, spill: &mut dyn Write) -> std::
 mod tests {
     use super::*;
     use crate::real::Real;
+
+    /// What the student's process writes between frames is kept up to the room left and
+    /// dropped beyond it, however much comes.
+    #[test]
+    fn the_spill_is_kept_up_to_its_room() {
+        let mut c = Capped {
+            kept: Vec::new(),
+            room: 5,
+        };
+        assert_eq!(c.write(b"abc").unwrap(), 3);
+        assert_eq!(c.write(b"defgh").unwrap(), 5);
+        assert_eq!(c.write(&[b'x'; 1 << 20]).unwrap(), 1 << 20);
+        assert_eq!(c.kept, b"abcde");
+    }
 
     /// Frames cross whole among the student's own output, which is kept in order, even when
     /// it holds the magic's first bytes; floats cross exactly, NaN and ∞ included.
