@@ -1267,7 +1267,7 @@ fn the_platforms_packages_grade_in_their_layouts() {
     let options = autograder::package::Options {
         chapter: None,
         hidden: Some(hidden.clone()),
-        timeout: 5,
+        timeout: grade::DEFAULT_TIMEOUT.as_secs(),
         settings: Settings::default(),
         sandbox: Some(Level::Namespaces),
         judging: grade::Judging::Alone,
@@ -1987,7 +1987,7 @@ fn the_classroom_workflow_grades_the_students_repository() {
     let options = autograder::package::Options {
         chapter: None,
         hidden: None,
-        timeout: 5,
+        timeout: grade::DEFAULT_TIMEOUT.as_secs(),
         settings: Settings::default(),
         sandbox: Some(Level::Namespaces),
         judging: grade::Judging::Alone,
