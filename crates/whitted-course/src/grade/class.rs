@@ -59,18 +59,12 @@ pub fn grade_class(
     let mut options = options.clone();
     if options.judge.is_none() {
         super::grading::check_sandbox(&options)?;
-        let chapters: Vec<u8> = match options.chapter {
-            Some(c) => vec![c],
-            None => crate::syllabus::CHAPTERS.iter().map(|c| c.number).collect(),
-        };
-        let public: Vec<String> = super::chapter_targets(manifest, &chapters)
-            .into_iter()
-            .collect();
-        let judge = super::judge_copy::prepare(
+        let chapters = super::grading::chapters_asked(options.chapter)?;
+        let judge = super::grading::judge_for(
             root,
             manifest,
-            &public,
-            options.hidden.as_deref(),
+            &chapters,
+            &options,
             options
                 .target_dir
                 .as_ref()

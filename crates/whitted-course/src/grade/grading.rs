@@ -16,7 +16,7 @@ use super::clean::clean;
 use super::copy::{GradedCopy, run_reads};
 use super::judge_copy::{self, Judge};
 use super::outcome::{ExerciseScore, Grade, Timings};
-use super::outside::{SERVER_EXAMPLE, SERVER_VAR, WHOLE_ROAD_VAR, plan_wire};
+use super::outside::{SERVER_EXAMPLE, SERVER_VAR, WHOLE_ROAD_VAR, Wire};
 use super::render::{self, ChapterFeedback, RenderScore};
 use super::runner::SERVE;
 use super::sandbox::{POLICY_VAR, RUNNER_COMMAND, Sandbox, watch};
@@ -39,18 +39,17 @@ pub fn grade(
     let start = Instant::now();
     let chapters = graded_chapters(submission, options.chapter)?;
     let student = student_of(submission);
-    let public: Vec<String> = chapter_targets(manifest, &chapters).into_iter().collect();
     // 1. the graded copy and its sandbox (without its sandbox, nothing is built), and the
     // judge: the class's, or this grading's own
     let g = Grading::open(root, manifest, options)?;
     let judged = Instant::now();
     let judge = match &options.judge {
         Some(j) => Arc::clone(j),
-        None => Arc::new(judge_copy::prepare(
+        None => Arc::new(judge_for(
             root,
             manifest,
-            &public,
-            options.hidden.as_deref(),
+            &chapters,
+            options,
             options
                 .target_dir
                 .as_deref()
@@ -62,7 +61,14 @@ pub fn grade(
     let judge_time = judged.elapsed();
     // 2. the student's bodies in it, with the wire
     let mut notes: BTreeMap<usize, String> = BTreeMap::new();
-    let mut files = g.splice(root, manifest, submission, &chapters, options, &mut notes)?;
+    let mut files = g.splice(
+        root,
+        (manifest, &judge.wire),
+        submission,
+        &chapters,
+        options,
+        &mut notes,
+    )?;
     let mut timings = Timings {
         splice: start.elapsed().saturating_sub(judge_time),
         ..Timings::default()
@@ -120,6 +126,12 @@ fn graded_chapters(submission: &Path, chapter: Option<u8>) -> Result<Vec<u8>, To
             layout::core_src().display()
         )));
     }
+    chapters_asked(chapter)
+}
+
+/// The chapters `--chapter` asks for: the one named, or all five; an error when it names
+/// none of the course's.
+pub(super) fn chapters_asked(chapter: Option<u8>) -> Result<Vec<u8>, ToolError> {
     match chapter {
         Some(c) if syllabus::chapter(c).is_some() => Ok(vec![c]),
         Some(c) => Err(ToolError::Usage(format!(
@@ -129,6 +141,19 @@ fn graded_chapters(submission: &Path, chapter: Option<u8>) -> Result<Vec<u8>, To
         ))),
         None => Ok(syllabus::CHAPTERS.iter().map(|c| c.number).collect()),
     }
+}
+
+/// The judge of a grading of `chapters` (their test targets, and the hidden tests `options`
+/// name), made and built in `dir` (a temporary directory when `None`).
+pub(super) fn judge_for(
+    root: &Path,
+    manifest: &Manifest,
+    chapters: &[u8],
+    options: &GradeSetup,
+    dir: Option<&Path>,
+) -> Result<Judge, ToolError> {
+    let public: Vec<String> = chapter_targets(manifest, chapters).into_iter().collect();
+    judge_copy::prepare(root, manifest, &public, options.hidden.as_deref(), dir)
 }
 
 /// The submission's name in the reports: its directory's name, cleaned.
@@ -178,27 +203,26 @@ impl Grading {
         })
     }
 
-    /// Splices the student's bodies of `chapters` into the copy's sources with the wire of the
-    /// judge outside (what concerns an exercise goes into `notes`): a body that does more than
+    /// Splices the student's bodies of `chapters` into the copy's sources with the `wire` of
+    /// the judge outside (planned once, with the judge) (what concerns an exercise goes into `notes`): a body that does more than
     /// compute is not compiled at all, at every sandbox level. No hidden test is ever in the
     /// copy (they are the judge's); those an older grading left are removed.
     fn splice(
         &self,
         root: &Path,
-        manifest: &Manifest,
+        (manifest, wire): (&Manifest, &Wire),
         submission: &Path,
         chapters: &[u8],
         options: &GradeSetup,
         notes: &mut BTreeMap<usize, String>,
     ) -> Result<Vec<Spliced>, ToolError> {
-        let wire = plan_wire(root, manifest)?;
         let files = splice::splice(
             root,
             manifest,
             submission,
             chapters,
             options.screen,
-            &wire,
+            wire,
             notes,
         )?;
         wire.write_table(&self.copy.project)?;

@@ -14,7 +14,7 @@ use std::path::{Path, PathBuf};
 
 use super::blame::cargo_build;
 use super::nextest::{self, Listed};
-use super::outside::plan_wire;
+use super::outside::{Wire, plan_wire};
 use super::splice;
 use crate::manifest::Manifest;
 use crate::{ToolError, files, layout};
@@ -36,6 +36,9 @@ pub struct Judge {
     pub hidden: Vec<String>,
     /// Why the hidden tests do not count, when they do not build.
     pub hidden_broken: Option<String>,
+    /// The wire, planned on the instructor's files: the same in the judge and in every
+    /// submission's server.
+    pub wire: Wire,
     /// The temporary directory that holds it when the grading has no build directory.
     _temp: Option<tempfile::TempDir>,
 }
@@ -78,7 +81,7 @@ pub fn prepare(
     close(&dir)?;
     let project = dir.join("project");
     let target_dir = dir.join("target");
-    write_copy(root, manifest, &project)?;
+    let wire = write_copy(root, manifest, &project)?;
     let mut hidden_targets = splice::add_hidden(&project, hidden)?;
     remove_stale_hidden(&project, &hidden_targets)?;
     let build = |targets: &[String]| -> Result<(), ToolError> {
@@ -124,6 +127,7 @@ pub fn prepare(
         targets,
         hidden: hidden_targets,
         hidden_broken,
+        wire,
         _temp: temp,
     })
 }
@@ -137,8 +141,8 @@ fn close(dir: &Path) -> Result<(), ToolError> {
 }
 
 /// Writes the copy of the project at `root` into `project` with the wire in: each file as the
-/// project has it, or wired, written only when its bytes change.
-fn write_copy(root: &Path, manifest: &Manifest, project: &Path) -> Result<(), ToolError> {
+/// project has it, or wired, written only when its bytes change; returns the wire.
+fn write_copy(root: &Path, manifest: &Manifest, project: &Path) -> Result<Wire, ToolError> {
     let wire = plan_wire(root, manifest)?;
     let lib = layout::core_lib();
     for file in files::project_files(root)? {
@@ -163,7 +167,8 @@ fn write_copy(root: &Path, manifest: &Manifest, project: &Path) -> Result<(), To
         };
         files::write_if_changed(&project.join(&file), &bytes)?;
     }
-    wire.write_server(project)
+    wire.write_server(project)?;
+    Ok(wire)
 }
 
 /// Removes the copy's hidden tests (`tests/hidden_*.rs`) that are not of `targets`.
