@@ -22,6 +22,7 @@ pub mod chapter_binary;
 pub mod cli;
 pub mod figures;
 pub mod files;
+pub mod known;
 pub mod layout;
 pub mod learn;
 pub mod manifest;

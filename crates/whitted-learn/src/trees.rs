@@ -24,6 +24,7 @@
 //!
 //! Course book: [The student's guide](../../../../docs/book/student-guide.html) (`docs/src/student-guide.md`).
 
+use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
 
 use serde::{Deserialize, Serialize};
@@ -251,8 +252,14 @@ pub struct Mistake {
     pub looks_like: String,
     /// Its first wrong number, as `learn` shows it.
     pub first: String,
-    /// Its fingerprint.
-    pub fingerprint: Fingerprint,
+    /// Its fingerprint in the trees; `None` for a mistake its chapter's scene cannot show,
+    /// which its tests alone tell.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub fingerprint: Option<Fingerprint>,
+    /// What its exercise's own tests print with it: each failing test by name (without its
+    /// target) with its message's values ([`crate::known`]); empty when none fails.
+    #[serde(default, skip_serializing_if = "BTreeMap::is_empty")]
+    pub tests: BTreeMap<String, String>,
 }
 
 /// The file of known mistakes ([`MISTAKES`]).
@@ -287,9 +294,12 @@ pub fn known_mistake(
     if hints == 0 {
         return None;
     }
-    let m = mistakes
-        .iter()
-        .find(|m| m.exercise == exercise && fingerprint.resembles(&m.fingerprint))?;
+    let m = mistakes.iter().find(|m| {
+        m.exercise == exercise
+            && m.fingerprint
+                .as_ref()
+                .is_some_and(|known| fingerprint.resembles(known))
+    })?;
     Some(format!(
         "  a known mistake? this looks like {}\n",
         m.looks_like
@@ -351,12 +361,13 @@ mod tests {
             chapter: 2,
             looks_like: "normals transformed by M instead of (M⁻¹)ᵀ".into(),
             first: String::new(),
-            fingerprint: Fingerprint {
+            fingerprint: Some(Fingerprint {
                 quantity: "normal".into(),
                 nodes: vec!["camera ray".into(), "hit".into()],
                 pixels: vec![(10, 10), (20, 20)],
                 picture: (0, 0),
-            },
+            }),
+            tests: BTreeMap::new(),
         }
     }
 
@@ -452,7 +463,7 @@ mod tests {
 
     #[test]
     fn another_mistake_in_the_same_exercise_is_not_taken_for_the_known_one() {
-        let known = normals_by_m().fingerprint;
+        let known = normals_by_m().fingerprint.unwrap();
         // other pixels differ: normals wrong on every object, not only the ellipsoid
         let everywhere = Fingerprint {
             pixels: vec![(10, 10), (20, 20), (30, 30), (40, 40), (50, 50)],

@@ -106,8 +106,9 @@ pub fn mistakes_unseen(mutants: &[Mutant], known: &[Mistake]) -> Vec<String> {
     let mut out = Vec::new();
     for m in mutants {
         let found = known.iter().find(|k| k.name == m.name);
-        let moves =
-            found.is_some_and(|k| !k.fingerprint.pixels.is_empty() || k.fingerprint.picture.0 > 0);
+        let moves = found
+            .and_then(|k| k.fingerprint.as_ref())
+            .is_some_and(|f| !f.pixels.is_empty() || f.picture.0 > 0);
         match (&m.unseen, moves) {
             (None, false) => out.push(format!(
                 "mistake {} ({}): no kept number and no pixel of its chapter moves",

@@ -43,6 +43,7 @@ mod grid;
 mod run;
 mod shape;
 mod switched;
+mod values;
 
 pub use check::mistakes_unseen;
 pub use command::{TreesArgs, command};

@@ -34,6 +34,8 @@ pub(super) struct Switched<'a> {
     mutants: &'a [Mutant],
     /// The build of the copy with the switches.
     built: Built,
+    /// Each mistake's failing tests of its own exercise, with their values.
+    tests: BTreeMap<String, BTreeMap<String, String>>,
 }
 
 impl<'a> Switched<'a> {
@@ -81,6 +83,7 @@ impl<'a> Switched<'a> {
                 built.first_error()
             )));
         }
+        let tests = super::values::record(root, &copy, &target, manifest, mutants)?;
         Ok(Self {
             root,
             scratch,
@@ -88,6 +91,7 @@ impl<'a> Switched<'a> {
             manifest,
             mutants,
             built,
+            tests,
         })
     }
 
@@ -212,29 +216,36 @@ impl<'a> Switched<'a> {
                 Some((&book, &png)),
                 Some(&m.name),
             )?;
-            let Some(fingerprint) = Fingerprint::of(&compared, compare.as_deref()) else {
+            let tests = self.tests.get(&m.name).cloned().unwrap_or_default();
+            if tests.is_empty() {
                 println!(
-                    "warning: mistake {} ({}): no tree of chapter {} differs: learn cannot tell it",
-                    m.name, m.exercise, chapter.number
+                    "warning: mistake {} ({}): no test of its exercise fails: learn cannot tell it at the save",
+                    m.name, m.exercise
                 );
-                continue;
-            };
+            }
+            let fingerprint = Fingerprint::of(&compared, compare.as_deref());
             let first = compared
                 .iter()
                 .find_map(|a| a.first.clone())
                 .unwrap_or_default();
             let own = &manifest.entries[manifest.by_name(&m.exercise).unwrap_or(0)].function;
-            println!(
-                "mistake {} ({}): {}{}",
-                m.name,
-                m.exercise,
-                first.text,
-                if first.functions.contains(own) {
-                    String::new()
-                } else {
-                    format!(" — warning: not computed by {own}")
-                }
-            );
+            match &fingerprint {
+                None => println!(
+                    "mistake {} ({}): no tree of chapter {} differs; its tests alone tell it",
+                    m.name, m.exercise, chapter.number
+                ),
+                Some(_) => println!(
+                    "mistake {} ({}): {}{}",
+                    m.name,
+                    m.exercise,
+                    first.text,
+                    if first.functions.contains(own) {
+                        String::new()
+                    } else {
+                        format!(" — warning: not computed by {own}")
+                    }
+                ),
+            }
             known.push(Mistake {
                 name: m.name.clone(),
                 exercise: m.exercise.clone(),
@@ -242,13 +253,14 @@ impl<'a> Switched<'a> {
                 looks_like: m.why.clone(),
                 first: first.text,
                 fingerprint,
+                tests,
             });
         }
         let doc = Mistakes {
             about:
-                "The course's known mistakes, each made on the reference in one exercise, and how \
-                    its chapter's picture and ray trees then differ from the book's; written by \
-                    `whitted trees`, read by `cargo learn`."
+                "The course's known mistakes, each made on the reference in one exercise: how its \
+                    chapter's picture and ray trees then differ from the book's, and what its \
+                    exercise's failing tests print; written by `whitted trees`, read by `cargo learn`."
                     .into(),
             mistakes: known,
         };

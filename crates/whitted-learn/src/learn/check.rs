@@ -8,7 +8,7 @@ use std::path::Path;
 use super::progress::progress;
 use super::run::{check_targets, targets_of};
 use super::say::Say;
-use super::state::{State, save_states, saved_states, states};
+use super::state::{State, calls, rooted, save_states, saved_states, states};
 use super::style::Style;
 use super::verdict::{build_failure, verdict};
 use crate::ToolError;
@@ -40,14 +40,22 @@ pub fn check(
     let say = Say { report };
     let map = map::load_map(root, manifest).unwrap_or_default();
     let target_of = targets_of(manifest, &map);
+    let calls = calls(manifest, &map);
     let mut run = TestRun::default();
-    let state_now = |run: &TestRun, i: usize| -> State {
-        let fresh = states(manifest, run);
-        match &fresh[i] {
-            State::Unknown => known.get(i).cloned().unwrap_or(State::Unknown),
-            s => s.clone(),
-        }
+    // every state as the tests of this check say, else as the last check left it, with the
+    // root of each failure first (an exercise waits for a failing one its tests call)
+    let now = |run: &TestRun| -> Vec<State> {
+        let seen = states(manifest, run)
+            .into_iter()
+            .enumerate()
+            .map(|(i, s)| match s {
+                State::Unknown => known.get(i).cloned().unwrap_or(State::Unknown),
+                s => s,
+            })
+            .collect();
+        rooted(manifest, seen, &calls)
     };
+    let state_now = |run: &TestRun, i: usize| -> State { now(run)[i].clone() };
     // the grader's screen, on every body, before anything is built: what it would refuse is
     // told now, with its line and a way to write it
     for refused in crate::screen::refused::refused(root, manifest) {
@@ -81,7 +89,7 @@ pub fn check(
         }
     }
     let mut shown: Option<usize> = None;
-    let fresh = states(manifest, &run);
+    let fresh = now(&run);
     for &i in &touched {
         let x = &manifest.entries[i].exercise;
         if fresh[i] == State::Done && known.get(i) != Some(&State::Done) {
@@ -91,12 +99,16 @@ pub fn check(
             )));
         }
     }
-    // a changed exercise that fails: its verdict now, whatever comes before it
-    if let Some(&i) = touched
-        .iter()
-        .find(|&&i| matches!(fresh[i], State::Failing(_)))
-    {
+    // a changed exercise that fails, or waits for one that fails: the verdict on the one
+    // that fails now, whatever comes before it
+    let failing = |i: usize| matches!(fresh[i], State::Failing(_));
+    let root_of = |i: usize| match &fresh[i] {
+        State::Waiting(name) => manifest.by_name(name).filter(|&j| failing(j)),
+        _ => Some(i).filter(|&i| failing(i)),
+    };
+    if let Some(i) = touched.iter().find_map(|&i| root_of(i)) {
         say.report(&verdict(manifest, &run, &fresh, i, style, Some(root)));
+        say.report(&waiting_on(manifest, &fresh, &touched, i));
         shown = Some(i);
     }
     // 1. the verdict: the targets of the first exercises not done, one at a time
@@ -120,8 +132,9 @@ pub fn check(
                 }
             }
             _ => {
-                let fresh = states(manifest, &run);
+                let fresh = now(&run);
                 say.report(&verdict(manifest, &run, &fresh, next, style, Some(root)));
+                say.report(&waiting_on(manifest, &fresh, &touched, next));
                 shown = Some(next);
                 break;
             }
@@ -154,7 +167,7 @@ pub fn check(
             });
         }
     }
-    let all = states(manifest, &run);
+    let all = rooted(manifest, states(manifest, &run), &calls);
     let next = all.iter().position(|s| *s != State::Done);
     let mut out = String::new();
     match (next, shown) {
@@ -186,6 +199,34 @@ pub fn check(
     save_states(root, manifest, &all)?;
     crate::changes::save(root, &regions)?;
     Ok(Checked { run, states: all })
+}
+
+/// The line under a verdict on exercise `on` naming the exercises of `changed` that wait for
+/// it: their tests call it, so they are judged once it passes.
+fn waiting_on(manifest: &Manifest, states: &[State], changed: &[usize], on: usize) -> String {
+    let name = &manifest.entries[on].exercise.name;
+    let waiting: Vec<String> = changed
+        .iter()
+        .filter(|&&i| i != on && states[i] == State::Waiting(name.clone()))
+        .map(|&i| {
+            let e = &manifest.entries[i];
+            format!("{} ({})", e.exercise.id, e.function)
+        })
+        .collect();
+    if waiting.is_empty() {
+        return String::new();
+    }
+    format!(
+        "  you changed exercise {} too: its tests call exercise {}, so {} judged once exercise {} passes\n",
+        waiting.join(", "),
+        manifest.entries[on].exercise.id,
+        if waiting.len() == 1 {
+            "it is"
+        } else {
+            "they are"
+        },
+        manifest.entries[on].exercise.id,
+    )
 }
 
 /// `learn` itself: one check with its picture; `false` when the code does not compile.

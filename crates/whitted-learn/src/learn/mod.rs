@@ -62,7 +62,8 @@ pub use run::{PACKAGES, TEST_TIME_LIMIT, run_tests, targets_of};
 pub use say::COMMAND;
 pub(crate) use say::Say;
 pub use state::{
-    STATE_DIR, State, message_lines, newly_done, save_states, saved_states, states, todo_name,
+    STATE_DIR, State, calls, message_lines, newly_done, rooted, save_states, saved_states, states,
+    todo_name,
 };
 pub use style::Style;
 pub use verdict::{place, telling_order, verdict};

@@ -21,6 +21,9 @@ pub const PACKAGES: [&str; 2] = [layout::CORE_PACKAGE, layout::APP_PACKAGE];
 /// How long a build may run before its cargo lines are shown.
 const QUIET_BUILD: Duration = Duration::from_millis(1500);
 
+/// Whether this run of the tool has said why a build is slow.
+static SAID_SLOW: AtomicBool = AtomicBool::new(false);
+
 /// The time limit of one test target's run: a loop that never ends stops there.
 pub const TEST_TIME_LIMIT: Duration = Duration::from_secs(60);
 
@@ -83,10 +86,13 @@ pub(crate) fn build(
         held.push(line.to_string());
         if started.elapsed() > QUIET_BUILD {
             showing.store(true, Ordering::Relaxed);
-            say.status(
-                "  compiling (a fresh handout's first build compiles the renderer's dependencies \
-                 too: a minute or two; after that a save takes seconds)",
-            );
+            // said once a run: the builds of one check (its tests, its picture) are one wait
+            if !SAID_SLOW.swap(true, Ordering::Relaxed) {
+                say.status(
+                    "  compiling (a fresh handout's first build compiles the renderer's \
+                     dependencies too: a minute or two; after that a save takes seconds)",
+                );
+            }
             for l in held.drain(..) {
                 say.status(&l);
             }

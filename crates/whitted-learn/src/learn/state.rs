@@ -126,6 +126,63 @@ pub fn states(manifest: &Manifest, run: &TestRun) -> Vec<State> {
         .collect()
 }
 
+/// For each exercise (by manifest index), the other exercises its own tests call, by the
+/// measured map `map` (each test table whose tests are the exercise's own, `ex_NAME_…`), in
+/// the manifest's order.
+#[must_use]
+pub fn calls(manifest: &Manifest, map: &[crate::map::Group]) -> Vec<Vec<usize>> {
+    manifest
+        .entries
+        .iter()
+        .enumerate()
+        .map(|(i, e)| {
+            let prefix = e.exercise.test_prefix();
+            let own = |t: &String| {
+                t.split_once("::")
+                    .is_some_and(|(_, n)| n.starts_with(&prefix))
+            };
+            let called: BTreeSet<usize> = map
+                .iter()
+                .filter(|g| g.tests.iter().any(own))
+                .flat_map(|g| g.needs.iter().copied())
+                .filter(|&j| j != i)
+                .collect();
+            called.into_iter().collect()
+        })
+        .collect()
+}
+
+/// `states` with the root of each failure first: an exercise whose tests fail while an
+/// exercise they call ([`calls`]) is not done waits for that one (the first such, or what
+/// it waits for in turn) and is not told as failing, since its own code may be right.
+#[must_use]
+pub fn rooted(manifest: &Manifest, states: Vec<State>, calls: &[Vec<usize>]) -> Vec<State> {
+    let not_done = |s: &State| matches!(s, State::Failing(_) | State::ToDo | State::Waiting(_));
+    let mut out = states.clone();
+    for (i, state) in states.iter().enumerate() {
+        if !matches!(state, State::Failing(_)) {
+            continue;
+        }
+        let Some(&j) = calls
+            .get(i)
+            .and_then(|c| c.iter().find(|&&j| states.get(j).is_some_and(not_done)))
+        else {
+            continue;
+        };
+        // the root of the root: a called exercise that itself waits names what it waits for
+        let mut root = manifest.entries[j].exercise.name.clone();
+        for _ in 0..states.len() {
+            let next = match manifest.by_name(&root).map(|k| &out[k]) {
+                Some(State::Waiting(k)) if *k != root => k.clone(),
+                _ => break,
+            };
+            root = next;
+        }
+        out[i] = State::Waiting(root);
+    }
+    out
+}
+
 /// The lines of a failed test's output worth showing: the panic's place and message, without
 /// the notes on backtraces (the first panic of a test process prints `note: run with
 /// RUST_BACKTRACE=1 …`, in whichever test panicked first: it would come and go).

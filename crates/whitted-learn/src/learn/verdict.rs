@@ -42,7 +42,7 @@ pub fn verdict(
             format!("{} of its {own} tests fail", f.len())
         }
         State::Waiting(name) => format!(
-            "its tests wait for exercise {} ({name})",
+            "its tests call exercise {} ({name}), which is not done: that one first",
             manifest.display(name)
         ),
         State::NoTests => "it has no test in the handout: tell your instructor".into(),
@@ -59,6 +59,16 @@ pub fn verdict(
     );
     out += &format!("  the notes, \"{}\": {}\n", e.section, e.formula);
     let prefix = x.test_prefix();
+    // a known mistake, told by the values its tests print
+    if matches!(state, State::Failing(_))
+        && let Some(root) = root
+    {
+        let mistakes = crate::trees::load_mistakes(root);
+        let failing = crate::known::failing_values(run, &prefix);
+        if let Some(m) = crate::known::recognise(&mistakes, &x.name, &failing) {
+            out += &style.bad(&crate::known::line(m));
+        }
+    }
     let failing = telling_order(x, run);
     // a body not written fails every test the same way: one of them says so
     let shown = if *state == State::ToDo {

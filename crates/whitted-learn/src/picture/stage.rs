@@ -55,7 +55,10 @@ pub fn choose(
     now: &[State],
     on: Option<usize>,
 ) -> Vec<Stage> {
-    if let Some(chapter) = turned_green(manifest, before, now) {
+    // a chapter that turned green is the picture, unless the verdict is on an exercise that
+    // fails (one save may finish a chapter and break another): the picture follows that one
+    let verdict_fails = on.is_some_and(|x| matches!(now[x], State::Failing(_) | State::Waiting(_)));
+    if let Some(chapter) = turned_green(manifest, before, now).filter(|_| !verdict_fails) {
         return vec![Stage::Chapter(chapter)];
     }
     let Some(x) = on.or_else(|| next(now)) else {
