@@ -43,6 +43,19 @@ pub struct Located {
 #[must_use]
 pub fn located(root: &Path) -> Vec<Located> {
     let mut out = Vec::new();
+    for path in sources(root) {
+        if let Ok(text) = std::fs::read_to_string(&path) {
+            let file = path.strip_prefix(root).unwrap_or(&path).to_path_buf();
+            read_regions(&text, &file, &mut out);
+        }
+    }
+    out
+}
+
+/// The renderer's `.rs` sources, where the exercises' regions are, sorted; unreadable
+/// directories are skipped.
+#[must_use]
+pub fn sources(root: &Path) -> Vec<PathBuf> {
     let mut stack: Vec<PathBuf> = vec![root.join(layout::core_src())];
     let mut files = Vec::new();
     while let Some(dir) = stack.pop() {
@@ -58,13 +71,7 @@ pub fn located(root: &Path) -> Vec<Located> {
         }
     }
     files.sort();
-    for path in files {
-        if let Ok(text) = std::fs::read_to_string(&path) {
-            let file = path.strip_prefix(root).unwrap_or(&path).to_path_buf();
-            read_regions(&text, &file, &mut out);
-        }
-    }
-    out
+    files
 }
 
 /// Adds the regions of the source `text` (of `file`) to `out`.

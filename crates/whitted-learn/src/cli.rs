@@ -34,6 +34,22 @@ pub enum LearnCommand {
         #[arg(value_name = "EXERCISE")]
         id: Option<String>,
     },
+    /// Puts an exercise's body back to the handout's todo!(), keeping yours in
+    /// .whitted/reset/.
+    ///
+    /// The lines between `// BEGIN SOLUTION NAME` and `// END SOLUTION` become the one line the
+    /// handout gave, `todo!("exercise NAME (ID): …")`; the marker lines and the rest of the file
+    /// stay. What stood there is kept in .whitted/reset/NAME-1.rs (then NAME-2.rs …: an earlier
+    /// copy is never overwritten), and the line printed says where. An exercise your handout
+    /// gave written resets the same way: it becomes one for you to write, and the given body is
+    /// kept. Nothing is built; the next `cargo learn` checks this exercise first. A body that is
+    /// the handout's already, an unknown exercise or missing marker lines are an error (exit
+    /// status 2) that changes nothing.
+    Reset {
+        /// The exercise: its id as `list` shows it (1.1) or its name (viewing_basis).
+        #[arg(value_name = "EXERCISE")]
+        id: String,
+    },
     /// Checks again after every save: the verdict, the progress, and the picture of the
     /// newest chapter your code draws (.whitted/chNN_….png).
     Watch {
@@ -92,6 +108,11 @@ pub fn learn(args: &LearnArgs) -> Result<ExitCode, ToolError> {
                 },
             };
             print!("{}", learn::next_hint(&root, &manifest, index)?);
+            Ok(ExitCode::SUCCESS)
+        }
+        Some(LearnCommand::Reset { id }) => {
+            let done = learn::reset(&root, &manifest, id)?;
+            println!("{}", done.said(&manifest));
             Ok(ExitCode::SUCCESS)
         }
         Some(LearnCommand::Watch { cycles }) => {

@@ -4,7 +4,8 @@
 //! exercises (`chapters/formulas.toml`, read by [`manifest`]) and the measured map of which
 //! tests need which exercise ([`map`]), one runner for cargo and the test executables it
 //! builds ([`cargo`]), one for the chapter binaries that draw a figure ([`chapter_binary`]),
-//! where things are in a project ([`layout`]), and the loop itself ([`learn`]): the verdict on
+//! where things are in a project ([`layout`]), the body a handout gives an exercise to write
+//! ([`mod@todo`]), and the loop itself ([`learn`]): the verdict on
 //! the next exercise, the progress, hints and the chapter's picture ([`picture`]), after every
 //! save with `watch`.
 //!
@@ -29,6 +30,7 @@ pub mod manifest;
 pub mod map;
 pub mod picture;
 pub mod screen;
+pub mod todo;
 pub mod trees;
 
 /// The course's outline: the chapters (and the notes' sections, the todo!() message), read from

@@ -6,6 +6,7 @@
 //! cargo learn watch        the same after every save
 //! cargo learn hint [EXERCISE]  the next hint (of the next exercise, or of EXERCISE: 2.3 or its name)
 //! cargo learn list         every exercise with its state and points
+//! cargo learn reset EXERCISE  its body back to the handout's todo!(), yours kept in .whitted/reset/
 //! ```
 //!
 //! Exit status: 0 once checked (whatever the exercises' state), 1 when the code does not

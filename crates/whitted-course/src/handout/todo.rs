@@ -1,29 +1,17 @@
 //! What a handed-out exercise becomes: its region's body replaced by a `todo!()` that names
-//! the exercise, and the renderer's `lib.rs` allowing what is unused until the student writes it.
+//! the exercise (the text [`mod@whitted_learn::todo`] writes, which `cargo learn reset` puts back
+//! too), and the renderer's `lib.rs` allowing what is unused until the student writes it.
 //!
 //! Course book: [The instructor's guide](../../../../../docs/book/instructor-guide.html) (`docs/src/instructor-guide.md`).
 
 use super::regions::Region;
 use crate::layout::{BEGIN, END};
-use crate::manifest::{Entry, Manifest};
+use crate::manifest::Manifest;
+pub use whitted_learn::todo::todo_statement;
 
 /// The line the handout adds at the top of the renderer's `lib.rs`, after the crate's
 /// documentation.
 pub const LIB_ALLOW: &str = "// handout: the parameters of the exercises still to write are unused until you write them\n#![allow(unused_variables, unused_imports, unused_mut, dead_code)]\n";
-
-/// The statement that replaces a handed-out exercise's region: `todo!` with the syllabus's
-/// message, which names the exercise, its displayed id and its chapter's README.
-#[must_use]
-pub fn todo_statement(e: &Entry) -> String {
-    let readme = crate::syllabus::chapter(e.chapter).map_or_else(String::new, |c| c.readme());
-    let message = crate::syllabus::todo::message(
-        &e.exercise.name,
-        &e.exercise.id,
-        &e.exercise.title,
-        &readme,
-    );
-    format!("todo!({message:?})")
-}
 
 /// `text` with each region's body replaced by its exercise's `todo!()`, between the same
 /// marker lines.
@@ -38,7 +26,7 @@ pub(super) fn strip(text: &str, regions: &[&Region], manifest: &Manifest) -> Str
         // the markers stay: the student writes between them, and `whitted grade` takes
         // exactly what is there
         out.push_str(&format!("{}{BEGIN} {}\n", r.indent, e.exercise.name));
-        out.push_str(&format!("{}{}\n", r.indent, todo_statement(e)));
+        out.push_str(&whitted_learn::todo::todo_body(e, &r.indent, "\n"));
         out.push_str(&format!("{}{END}\n", r.indent));
         at = r.bytes.end;
     }

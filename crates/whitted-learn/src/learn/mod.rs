@@ -40,13 +40,15 @@
 //! | `hints.rs` | the next hint of an exercise ([`next_hint`]) |
 //! | `run.rs` | which target decides an exercise, the builds, the test runs ([`run_tests`]) |
 //! | `check.rs` | one check, steps 0 to 3 above ([`check`], [`once`]) |
-//! | `watch.rs` | a check after every save ([`watch`]) |
+//! | `watch.rs` | a check after every save, the screen redrawn for each ([`watch`]) |
+//! | `reset.rs` | an exercise's body put back to the handout's `todo!()` ([`reset()`]) |
 //!
 //! Course book: [The student's guide](../../../../docs/book/student-guide.html) (`docs/src/student-guide.md`).
 
 mod check;
 mod hints;
 mod progress;
+mod reset;
 mod run;
 mod say;
 mod state;
@@ -57,6 +59,7 @@ mod watch;
 pub use check::{Checked, check, once};
 pub use hints::{hints_shown, next_hint};
 pub use progress::{bar, list, progress};
+pub use reset::{Body, RESET_DIR, Reset, find_body, reset};
 pub(crate) use run::build;
 pub use run::{PACKAGES, TEST_TIME_LIMIT, run_tests, targets_of};
 pub use say::COMMAND;
@@ -67,4 +70,4 @@ pub use state::{
 };
 pub use style::Style;
 pub use verdict::{place, telling_order, verdict};
-pub use watch::{is_source_change, snapshot, watch, watched};
+pub use watch::{Between, CLEAR_SCREEN, is_source_change, snapshot, watch, watched};

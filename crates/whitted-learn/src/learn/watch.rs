@@ -2,9 +2,17 @@
 //! tests, chapters or scenes (what an editor's backup files and the compiler's reads do not
 //! count as).
 //!
+//! On a terminal each check starts on a cleared screen, as rustlings does, so the student sees
+//! only the current state (the terminal's scrollback keeps the earlier ones); the progress
+//! lines on stderr come after the clearing, above the report they announce, so the two
+//! streams never overwrite each other. Elsewhere (a pipe, a file, CI) the reports follow one
+//! another, each after a one-line divider ([`Between`]).
+//!
 //! Course book: [The student's guide](../../../../../docs/book/student-guide.html) (`docs/src/student-guide.md`).
 
 use std::collections::BTreeMap;
+use std::ffi::OsStr;
+use std::io::{IsTerminal, Write};
 use std::path::{Path, PathBuf};
 
 use super::check::check;
@@ -64,9 +72,62 @@ pub fn snapshot(root: &Path) -> BTreeMap<PathBuf, (std::time::SystemTime, u64)> 
     out
 }
 
+/// What `watch` writes on stdout before each check's report.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Between {
+    /// Clears the screen (the scrollback stays) and starts at its top: on a terminal.
+    Redraw,
+    /// Appends, after a one-line divider: anywhere else.
+    Divider,
+}
+
+/// Clears the screen and moves the cursor to its top left (ECMA-48's ED 2 and CUP), leaving
+/// the terminal's scrollback as it is.
+pub const CLEAR_SCREEN: &str = "\x1b[H\x1b[2J";
+
+impl Between {
+    /// [`Between::Redraw`] when stdout is a terminal that takes escape codes (not `TERM=dumb`;
+    /// on Windows, once its virtual terminal processing is on), else [`Between::Divider`].
+    #[must_use]
+    pub fn detect() -> Self {
+        let terminal = std::io::stdout().is_terminal()
+            && anstyle_query::windows::enable_ansi_colors().unwrap_or(true);
+        Self::choose(terminal, std::env::var_os("TERM").as_deref())
+    }
+
+    /// Redraw on a `terminal` unless `TERM` is `dumb` (a terminal that cannot move its cursor).
+    /// `NO_COLOR` does not matter: clearing is not a colour.
+    #[must_use]
+    pub fn choose(terminal: bool, term: Option<&OsStr>) -> Self {
+        if terminal && term != Some(OsStr::new("dumb")) {
+            Self::Redraw
+        } else {
+            Self::Divider
+        }
+    }
+
+    /// What goes before the report of check number `check` (0 for the first, before any
+    /// save): the clearing every time, or a divider before every check but the first.
+    #[must_use]
+    pub fn text(self, check: usize, style: Style) -> String {
+        match self {
+            Self::Redraw => CLEAR_SCREEN.to_string(),
+            Self::Divider if check == 0 => String::new(),
+            Self::Divider => format!(
+                "\n{}\n\n",
+                style.strong(&format!(
+                    "──────── check {}, after a save ────────",
+                    check + 1
+                ))
+            ),
+        }
+    }
+}
+
 /// `whitted learn watch`: a check with its picture, then another after every save (changes
 /// under [`watched`], debounced by 300 ms). Stops after `cycles` reruns when
-/// given (for scripts and tests), else runs until interrupted.
+/// given (for scripts and tests), else runs until interrupted. Each check's report comes after
+/// [`Between::detect`]'s text: on a cleared screen on a terminal, after a divider elsewhere.
 pub fn watch(
     root: &Path,
     manifest: &Manifest,
@@ -93,7 +154,14 @@ pub fn watch(
     let mut files = snapshot(root);
     let mut known = saved_states(root, manifest);
     let mut reruns = 0;
+    let between = Between::detect();
     loop {
+        // flushed before the check's first progress line reaches stderr, so that it lands
+        // on the cleared screen, not under the clearing
+        let mut out = std::io::stdout().lock();
+        let _ = out.write_all(between.text(reruns, style).as_bytes());
+        let _ = out.flush();
+        drop(out);
         let checked = check(root, manifest, &known, style, true, true)?;
         if checked.run.build_error.is_none() {
             known = checked.states;
@@ -124,6 +192,46 @@ pub fn watch(
             }
         }
         reruns += 1;
-        println!();
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A terminal redraws, unless it is a dumb one; a pipe appends.
+    #[test]
+    fn a_terminal_redraws_and_a_pipe_appends() {
+        let cases = [
+            (true, None, Between::Redraw),
+            (true, Some("xterm-256color"), Between::Redraw),
+            (true, Some("dumb"), Between::Divider),
+            (false, Some("xterm-256color"), Between::Divider),
+            (false, None, Between::Divider),
+        ];
+        for (terminal, term, want) in cases {
+            let got = Between::choose(terminal, term.map(OsStr::new));
+            assert_eq!(got, want, "terminal {terminal}, TERM {term:?}");
+        }
+    }
+
+    /// On a terminal every check, the first too, starts on a cleared screen; elsewhere the
+    /// first check has nothing before it and each later one a one-line divider between
+    /// blank lines, without colour when the style has none.
+    #[test]
+    fn each_check_starts_on_a_clear_screen_or_after_a_divider() {
+        let plain = Style::plain();
+        assert_eq!(Between::Redraw.text(0, plain), "\x1b[H\x1b[2J");
+        assert_eq!(Between::Redraw.text(3, plain), "\x1b[H\x1b[2J");
+        assert_eq!(Between::Divider.text(0, plain), "");
+        assert_eq!(
+            Between::Divider.text(1, plain),
+            "\n──────── check 2, after a save ────────\n\n"
+        );
+        let coloured = Style::choose(true, None);
+        assert_eq!(
+            Between::Divider.text(2, coloured),
+            "\n\x1b[1m──────── check 3, after a save ────────\x1b[0m\n\n"
+        );
     }
 }
