@@ -100,8 +100,14 @@ pub fn check(
         }
     }
     // a changed exercise that fails, or waits for one that fails: the verdict on the one
-    // that fails now, whatever comes before it
-    let failing = |i: usize| matches!(fresh[i], State::Failing(_));
+    // that fails now, whatever comes before it (one whose tests ran in this check: a failure
+    // known only from the last check is found again by step 1)
+    let failing = |i: usize| {
+        matches!(fresh[i], State::Failing(_))
+            && target_of[i]
+                .as_ref()
+                .is_some_and(|t| run.targets.contains(t))
+    };
     let root_of = |i: usize| match &fresh[i] {
         State::Waiting(name) => manifest.by_name(name).filter(|&j| failing(j)),
         _ => Some(i).filter(|&i| failing(i)),

@@ -38,7 +38,11 @@ impl Style {
 
     fn paint(self, code: &str, text: &str) -> String {
         if self.on {
-            format!("\x1b[{code}m{text}\x1b[0m")
+            // the line's end after the colour's: a terminal that keeps the colour past it
+            // would paint the next line's start
+            let body = text.trim_end_matches('\n');
+            let end = &text[body.len()..];
+            format!("\x1b[{code}m{body}\x1b[0m{end}")
         } else {
             text.to_string()
         }
@@ -60,5 +64,18 @@ impl Style {
     #[must_use]
     pub fn strong(self, text: &str) -> String {
         self.paint("1", text)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_line_end_comes_after_the_colour() {
+        let on = Style { on: true };
+        assert_eq!(on.good("✓ done\n"), "\x1b[32m✓ done\x1b[0m\n");
+        assert_eq!(on.bad("✗"), "\x1b[31m✗\x1b[0m");
+        assert_eq!(Style { on: false }.good("✓ done\n"), "✓ done\n");
     }
 }

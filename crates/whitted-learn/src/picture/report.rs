@@ -54,9 +54,10 @@ pub fn report(
             }
         }
     }
-    // the verdict's exercise when it is not done: a picture the same as the book's says it
-    // cannot show that exercise, and takes no ✓ beside the verdict's ✗
-    let open = on.filter(|&x| states[x] != State::Done);
+    // the verdict's exercise when it is written and fails: a picture the same as the book's
+    // says it cannot show that exercise, and takes no ✓ beside the verdict's ✗ (beside a
+    // verdict on an exercise not written yet, a ✓ says what is written draws right)
+    let open = on.filter(|&x| matches!(states[x], State::Failing(_)));
     for (stage, drawn) in drawn {
         out += &describe(root, manifest, states, stage, drawn, open, style);
     }
@@ -154,35 +155,30 @@ fn describe(
         .compare
         .as_deref()
         .map_or(String::new(), |c| format!("\n  {c}"));
-    if let (true, Some(x)) = (same, open) {
-        let id = &manifest.entries[x].exercise.id;
-        let why = match stage {
-            Stage::Before(c) => format!(
-                "it is drawn before chapter {c}'s exercises, so it cannot show exercise {id} yet"
-            ),
-            _ => format!(
-                "it does not show exercise {id}: what is wrong there does not reach this picture \
-                 yet; the tests above tell it"
-            ),
-        };
-        return format!(
-            "picture: {what} as your code draws it: {}{compare}\n  {why}\n{feedback}",
-            path.display()
-        );
-    }
-    let mark = if same {
-        style.good("✓")
+    let beside = if compare.is_empty() {
+        ""
     } else {
-        style.bad("✗")
+        ", beside the book's and their difference"
     };
-    match &picture.compare {
-        Some(_) => format!(
-            "{mark} picture: {what} as your code draws it, beside the book's and their difference: {}{compare}\n{feedback}",
-            path.display(),
-        ),
-        None => format!(
-            "{mark} picture: {what} as your code draws it: {}\n{feedback}",
-            path.display(),
-        ),
+    let line = format!(
+        "picture: {what} as your code draws it{beside}: {}{compare}\n",
+        path.display()
+    );
+    match (same, open) {
+        (true, Some(x)) => {
+            let id = &manifest.entries[x].exercise.id;
+            let why = match stage {
+                Stage::Before(c) => format!(
+                    "it is drawn before chapter {c}'s exercises, so it cannot show exercise {id} yet"
+                ),
+                _ => format!(
+                    "it does not show exercise {id}: what is wrong there does not reach this \
+                     picture yet; the tests above tell it"
+                ),
+            };
+            format!("{line}  {why}\n{feedback}")
+        }
+        (true, None) => format!("{} {line}{feedback}", style.good("✓")),
+        (false, _) => format!("{} {line}{feedback}", style.bad("✗")),
     }
 }
