@@ -391,7 +391,8 @@ fn exercise_by_exercise_learn_counts_up_to_all_of_them_and_tells_each_known_mist
 /// student who made that mistake and asked for the exercise's first hint runs `learn`: the
 /// verdict names the mutant's exercise; the exercise's own picture, when it has one, differs
 /// from the book's; the chapter's picture is drawn beside the book's; the first wrong number of its ray trees is computed in that exercise; and the mistake is told
-/// by its words (`chapters/mistakes.json`). A mutant the chapter's scene cannot show (its
+/// by its words (`chapters/mistakes.json`), in the verdict from its tests' values and under
+/// the picture from its trees. A mutant the chapter's scene cannot show (its
 /// picture and trees are the reference's, so `whitted trees` kept no fingerprint of it) is
 /// said to be so.
 fn each_known_mistake_is_told_as_itself(
@@ -448,6 +449,8 @@ fn each_known_mistake_is_told_as_itself(
             );
         };
         said(&format!("✗ exercise {} —", x.id));
+        // told by the values its tests print, as `whitted trees` recorded them
+        said(&format!("a known mistake: this looks like {}", mu.why));
         said(&format!(
             "picture: chapter {}'s scene as your code draws it, beside the book's",
             m.entries[i].chapter

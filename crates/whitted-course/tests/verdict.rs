@@ -199,3 +199,30 @@ fn the_picture_follows_the_failing_exercise() {
     let chosen = choose(&m, &before, &vec![State::Done; m.entries.len()], None);
     assert_eq!(chosen, vec![Stage::Chapter(3)]);
 }
+
+/// 3.4 wrong, the rest of chapter 3 written and waiting for it: chapter 3's picture is drawn
+/// (what waits for a written exercise is written too), and no picture waits for a `todo!()`.
+#[test]
+fn exercises_waiting_for_a_failing_one_are_written() {
+    let m = manifest();
+    let mirror = m.by_name("mirror_direction").unwrap();
+    let mut now = vec![State::Done; m.entries.len()];
+    now[mirror] = State::Failing(Vec::new());
+    for i in (mirror + 1)..m.entries.len() {
+        if m.entries[i].chapter == 3 {
+            now[i] = State::Waiting("mirror_direction".into());
+        }
+    }
+    let chosen = choose(&m, &now, &now, Some(mirror));
+    assert!(
+        chosen.contains(&Stage::Chapter(3)),
+        "chapter 3 is written (3.4 wrong): {chosen:?}"
+    );
+    // waiting for a todo!(): not written, no chapter picture
+    now[mirror] = State::ToDo;
+    let chosen = choose(&m, &now, &now, Some(mirror));
+    assert!(
+        !chosen.contains(&Stage::Chapter(3)),
+        "3.4 not written: {chosen:?}"
+    );
+}

@@ -65,7 +65,14 @@ pub fn choose(
         return vec![Stage::Chapter(whitted_syllabus::LAST)];
     };
     let chapter = manifest.entries[x].chapter;
-    let written = |i: usize| matches!(now[i], State::Done | State::Failing(_));
+    // written: done, failing, or waiting for a written exercise that fails (its tests call it)
+    let written = |i: usize| match &now[i] {
+        State::Done | State::Failing(_) => true,
+        State::Waiting(name) => manifest
+            .by_name(name)
+            .is_some_and(|j| matches!(now[j], State::Failing(_))),
+        _ => false,
+    };
     let has_picture = |i: usize| manifest.entries[i].exercise.picture.is_some();
     let mut out = Vec::new();
     let stage = if written(x) && has_picture(x) {
