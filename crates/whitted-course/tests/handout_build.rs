@@ -373,13 +373,26 @@ fn exercise_by_exercise_learn_counts_up_to_all_of_them_and_tells_each_known_mist
         assert_progress(&report, &m, k, (k < n).then_some(k));
         // from chapter 2 on, every verdict comes with a picture of what is written, the
         // book's (chapter 1's picture needs all of chapter 1: its exercises are the road)
+        // (a ✓ beside a verdict on an exercise not written; no mark beside one that fails, as
+        // the poison's todo!() does, which says the picture cannot show it yet)
         if m.entries.get(k).is_none_or(|e| e.chapter > 1) {
-            let said = report
-                .lines()
-                .filter(|l| l.starts_with("✓ picture: ") || l.starts_with("✗ picture: "))
-                .collect::<Vec<_>>();
+            let lines: Vec<&str> = report.lines().collect();
+            let first = lines.iter().position(|l| {
+                ["✓ picture: ", "✗ picture: ", "picture: "]
+                    .iter()
+                    .any(|p| l.starts_with(p))
+            });
+            let drawn_as_the_book = first.is_some_and(|at| {
+                let (line, next) = (lines[at], lines.get(at + 1).copied().unwrap_or(""));
+                line.starts_with("✓ picture: ")
+                    || (line.starts_with("picture: ")
+                        && next.contains("the same as the reference")
+                        && lines
+                            .get(at + 2)
+                            .is_some_and(|l| l.contains("show exercise")))
+            });
             assert!(
-                said.first().is_some_and(|l| l.starts_with("✓ picture: ")),
+                drawn_as_the_book,
                 "{k} exercises written: no picture, or one unlike the book's:\n{report}"
             );
         }
