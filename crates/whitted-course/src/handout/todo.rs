@@ -25,20 +25,20 @@ pub fn todo_statement(e: &Entry) -> String {
     format!("todo!({message:?})")
 }
 
-/// `text` with each region's body replaced by its exercise's `todo!()`, between the same
-/// marker lines.
-pub(super) fn strip(text: &str, regions: &[&Region], manifest: &Manifest) -> String {
-    let mut sorted: Vec<&&Region> = regions.iter().collect();
-    sorted.sort_by_key(|r| r.bytes.start);
+/// `text` with each region's body replaced by its statement (an exercise's `todo!()`, or a
+/// later chapter's, [`super::later::later_statement`]), between the same marker lines.
+pub(super) fn strip(text: &str, regions: &[(&Region, String)], manifest: &Manifest) -> String {
+    let mut sorted: Vec<&(&Region, String)> = regions.iter().collect();
+    sorted.sort_by_key(|(r, _)| r.bytes.start);
     let mut out = String::with_capacity(text.len());
     let mut at = 0;
-    for r in sorted {
+    for (r, statement) in sorted {
         let e = &manifest.entries[r.entry];
         out.push_str(&text[at..r.bytes.start]);
         // the markers stay: the student writes between them, and `whitted grade` takes
         // exactly what is there
         out.push_str(&format!("{}{BEGIN} {}\n", r.indent, e.exercise.name));
-        out.push_str(&format!("{}{}\n", r.indent, todo_statement(e)));
+        out.push_str(&format!("{}{statement}\n", r.indent));
         out.push_str(&format!("{}{END}\n", r.indent));
         at = r.bytes.end;
     }

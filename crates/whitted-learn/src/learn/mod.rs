@@ -56,7 +56,7 @@ mod watch;
 
 pub use check::{Checked, check, once};
 pub use hints::{hints_shown, next_hint};
-pub use progress::{bar, list, progress};
+pub use progress::{bar, list, progress, written_road};
 pub(crate) use run::build;
 pub use run::{PACKAGES, TEST_TIME_LIMIT, run_tests, targets_of};
 pub use say::COMMAND;
