@@ -57,9 +57,12 @@ enum Command {
     ///
     /// Each chosen exercise's reference body (between `// BEGIN SOLUTION NAME` and
     /// `// END SOLUTION` in src/) becomes `todo!("exercise NAME (ID): … — see chapters/…/README.md")`;
-    /// the others keep their reference code. Of tests/, only the targets of the manifest's
-    /// [handout] tests go along; .ci/ stays behind. Without --chapters or --exercises, every
-    /// exercise is taken out. DIR must not exist (or be empty).
+    /// earlier chapters' exercises keep their reference code, and a chapter after the last
+    /// chosen one is not part of the handout: its bodies say so, its tests and golden images
+    /// stay behind. Of tests/, only the targets of the manifest's [handout] tests go along;
+    /// .ci/ stays behind. The handout's manifest lists the chosen exercises, the only ones its
+    /// `cargo learn` counts. Without --chapters or --exercises, every exercise is taken out.
+    /// DIR must not exist (or be empty).
     Handout(handout::HandoutArgs),
     /// The student's loop: progress, the next exercise and its failing test, hints.
     ///

@@ -6,8 +6,11 @@
 //!   `chapters/exercise-tests.toml` says (each exercise's own tests, and the render tests
 //!   that need it) — set equality; `whitted learn` in it shows 0 of N and the first
 //!   exercise's failing test; a chapter binary says which exercise is missing, in one line.
-//! - A handout of chapter 4 alone fails exactly chapter 4's tests; putting its reference bodies
-//!   back one by one turns its exercises green in order, and `whitted learn` ends at N of N.
+//! - A handout of chapter 3 alone fails exactly chapter 3's tests (it holds none of chapters 4
+//!   and 5); putting its reference bodies back one by one turns its exercises green in order,
+//!   and `whitted learn`, which counts chapter 3's exercises alone, ends at N of N.
+//! - A week's handout (`--chapters 3-4`) counts 0 of 11, then all 11 pass, every test it holds
+//!   passes, and chapter 5's binary says chapter 5 is not part of it.
 //! - Across all chapters, exercise by exercise: in a copy where every exercise from the k-th
 //!   on is switched off (the poison switch of `whitted formulas prove`, one build for all
 //!   steps), `whitted learn` shows k of N done and exercise k next, for k = 0 … N. In the same
@@ -78,11 +81,11 @@ fn assert_same(failed: &BTreeSet<String>, expected: &BTreeSet<String>) {
     );
 }
 
-/// Asserts that a `whitted learn` report counts `done` exercises done and names exercise
-/// `next` (a manifest index) as the next one, or, with `None`, says that all of them pass.
+/// Asserts that a `whitted learn` report counts `done` of `n` exercises done and names
+/// exercise `next` (a manifest index) as the next one, or, with `None`, says that all of them
+/// pass.
 #[track_caller]
-fn assert_progress(report: &str, m: &Manifest, done: usize, next: Option<usize>) {
-    let n = m.entries.len();
+fn assert_progress(report: &str, m: &Manifest, n: usize, done: usize, next: Option<usize>) {
     assert!(
         report.contains(&format!("{done} of {n} exercises done")),
         "{report}"
@@ -217,12 +220,18 @@ fn a_full_handout_fails_exactly_the_tests_of_its_exercises() {
 #[ignore = "builds a handout (minutes); .ci/run runs it"]
 fn a_chapter_handout_fails_its_tests_and_turns_green_as_the_bodies_come_back() {
     let m = manifest();
-    let n = m.entries.len();
     let chapters = handout::select(&m, Some((3, 3)), &[]).unwrap();
+    // the handout counts its own exercises, chapter 3's, and nothing of chapters 4 and 5
+    let n = chapters.len();
     let dir = tempfile::tempdir().unwrap();
     let student = dir.path().join("ch3");
     handout::write(&root(), &m, &chapters, &student).unwrap();
-    let (failed, passed) = run_tests(&student, &m);
+    let own = whitted_course::manifest::load(&student.join(whitted_course::manifest::DEFAULT_PATH))
+        .unwrap();
+    assert_eq!(own.entries.len(), n);
+    // its test targets (chapters 1 to 3 and the render paths' tests of those chapters) fail
+    // exactly as the map says of chapter 3's exercises: no test meets a later chapter's body
+    let (failed, passed) = run_tests(&student, &own);
     let every: BTreeSet<String> = failed.union(&passed).cloned().collect();
     assert_same(&failed, &expected(&m, &every, &chapters));
 
@@ -235,7 +244,12 @@ fn a_chapter_handout_fails_its_tests_and_turns_green_as_the_bodies_come_back() {
             .filter(|t| learn_name(t).starts_with(&e.exercise.test_prefix()))
             .all(|t| deps::needs_of(&map, t).iter().all(|i| !missing.contains(i)))
     };
-    let done_with = |missing: &[usize]| m.entries.iter().filter(|e| is_done(e, missing)).count();
+    let done_with = |missing: &[usize]| {
+        chapters
+            .iter()
+            .filter(|&&i| is_done(&m.entries[i], missing))
+            .count()
+    };
     let report = learn(&student, None);
     assert!(
         report.contains(&format!("{} of {n} exercises done", done_with(&chapters))),
@@ -310,6 +324,7 @@ fn a_chapter_handout_fails_its_tests_and_turns_green_as_the_bodies_come_back() {
         assert_progress(
             &report,
             &m,
+            n,
             done_with(&chapters[j + 1..]),
             chapters.get(j + 1).copied(),
         );
@@ -370,7 +385,7 @@ fn exercise_by_exercise_learn_counts_up_to_all_of_them_and_tells_each_known_mist
         // exercises k … n−1 missing, those before written
         let poison = (k < n).then(|| format!("{k}-{}", n - 1));
         let report = learn(copy, Some(poison.unwrap_or_default()));
-        assert_progress(&report, &m, k, (k < n).then_some(k));
+        assert_progress(&report, &m, n, k, (k < n).then_some(k));
         // from chapter 2 on, every verdict comes with a picture of what is written, the
         // book's (chapter 1's picture needs all of chapter 1: its exercises are the road)
         // (a ✓ beside a verdict on an exercise not written; no mark beside one that fails, as
@@ -682,5 +697,79 @@ fn learn_answers_while_the_code_does_not_compile() {
     assert!(
         listed.contains("does not compile") && listed.contains(&m.entries[0].exercise.title),
         "{listed}"
+    );
+}
+
+/// A week's handout as a student meets it: `--chapters 3-4`'s first `whitted learn` counts
+/// its own exercises, 0 of 11 (chapters 3 and 4's), and once the 11 bodies are back all 11
+/// pass; its tests then all pass (chapter 5's are not in it), and chapter 5's binary says in
+/// one line, exit status 2, that chapter 5 is not part of the handout.
+#[test]
+#[ignore = "builds a handout (minutes); .ci/run runs it"]
+fn a_week_handout_counts_its_own_11_exercises() {
+    let m = manifest();
+    let week = handout::select(&m, Some((3, 4)), &[]).unwrap();
+    assert_eq!(week.len(), 11, "chapters 3 and 4's exercises");
+    let dir = tempfile::tempdir().unwrap();
+    let student = dir.path().join("week");
+    handout::write(&root(), &m, &week, &student).unwrap();
+    let report = learn(&student, None);
+    assert!(
+        report.contains("progress — 0 of 11 exercises done"),
+        "{report}"
+    );
+    assert!(!report.contains("chapter 5"), "{report}");
+    let regions = handout::regions(&root(), &m).unwrap();
+    for &i in &week {
+        let (path, now, back) = reference_body_back(&student, &m, &regions[i], i);
+        assert_ne!(
+            back, now,
+            "exercise {}'s todo!() not found",
+            m.entries[i].exercise.id
+        );
+        std::fs::write(&path, back).unwrap();
+    }
+    let report = learn(&student, None);
+    assert!(report.contains("✓ all 11 exercises pass"), "{report}");
+    assert!(
+        report.contains("progress — 11 of 11 exercises done"),
+        "{report}"
+    );
+    let own = whitted_course::manifest::load(&student.join(whitted_course::manifest::DEFAULT_PATH))
+        .unwrap();
+    let (failed, passed) = run_tests(&student, &own);
+    assert!(
+        failed.is_empty(),
+        "failing in the week's handout: {failed:?}"
+    );
+    assert!(
+        passed.iter().any(|t| t.starts_with("render_paths::ch4_")),
+        "{passed:?}"
+    );
+    let out = cargo()
+        .args([
+            "run",
+            "-q",
+            "--profile",
+            "test",
+            "-p",
+            "whitted-app",
+            "--bin",
+            "ch05_reflection_refraction",
+            "--",
+            "-o",
+        ])
+        .arg(dir.path().join("ch5.png"))
+        .current_dir(&student)
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(2), "{}", text(&out));
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    let last = stderr.lines().last().unwrap_or("");
+    assert!(
+        last.starts_with(
+            "error: chapter 5 (reflection and refraction) is not part of this handout: exercise 5."
+        ),
+        "{stderr}"
     );
 }

@@ -25,6 +25,8 @@ use super::ToolError;
 use crate::files::line_col;
 use whitted_syllabus::SECTIONS;
 
+pub mod handout;
+
 /// Where the manifest lives, relative to the project's root.
 pub const DEFAULT_PATH: &str = "chapters/formulas.toml";
 
@@ -62,12 +64,19 @@ impl Prove {
     }
 }
 
-/// The `[handout]` table: which test targets a student's copy keeps.
+/// The `[handout]` table: which test targets a student's copy keeps, and in a handout of some
+/// chapters, which exercises are the student's.
 #[derive(Clone, Debug, PartialEq)]
 pub struct HandoutTable {
     /// The test targets (files of `tests/` without `.rs`, or directories with a `main.rs`)
     /// that go into a handout; the others are the instructor's.
     pub tests: Vec<String>,
+    /// The exercises of a handout of some of them, by name (`exercises = [...]`); `None` (no
+    /// key) for all. [`Manifest::entries`] holds only these (see [`handout`]).
+    pub exercises: Option<Vec<String>>,
+    /// The names of the exercises [`HandoutTable::exercises`] leaves out: given earlier
+    /// chapters' and later chapters' (empty without the key). The map reads past them.
+    pub others: Vec<String>,
 }
 
 /// One `[[formula]]` entry: a function and the formula of the notes it computes.
@@ -179,6 +188,7 @@ struct RawProve {
 #[serde(deny_unknown_fields)]
 struct RawHandout {
     tests: Spanned<Vec<String>>,
+    exercises: Option<Spanned<Vec<String>>>,
 }
 
 #[derive(Deserialize)]
@@ -280,8 +290,10 @@ pub fn parse(text: &str, file: &str) -> Result<Manifest, ToolError> {
             ),
         ));
     }
-    let handout = HandoutTable {
+    let mut handout = HandoutTable {
         tests: tests.get_ref().clone(),
+        exercises: None,
+        others: Vec::new(),
     };
 
     if raw.formula.is_empty() {
@@ -384,6 +396,8 @@ pub fn parse(text: &str, file: &str) -> Result<Manifest, ToolError> {
         });
     }
 
+    let listed = raw.handout.get_ref().exercises.as_ref();
+    let entries = handout::only_listed(text, file, listed, entries, &mut handout)?;
     Ok(Manifest {
         file: file.to_string(),
         prove,

@@ -39,6 +39,45 @@ pub fn message(name: &str, id: &str, title: &str, readme: &str) -> String {
     format!("{LEAD}{name} ({id}): {title} — see {readme}")
 }
 
+/// How the panic of a later chapter's body begins in a handout that ends before that chapter
+/// (see [`later_message`]).
+pub const LATER_START: &str = "not yet implemented: chapter ";
+
+/// The message of the body of exercise `name` (displayed as `id`) of chapter `chapter` in a
+/// handout whose chapters end before it: the body is not the student's to write (it comes with
+/// that chapter's handout), so the message opens with the chapter, never with `exercise `, and
+/// [`find`] does not read it as an exercise not written yet.
+///
+/// ```
+/// use whitted_syllabus::todo;
+/// let m = todo::later_message("refract", "5.3", 5);
+/// assert_eq!(
+///     m,
+///     "chapter 5 (reflection and refraction) is not part of this handout: exercise 5.3 (refract) comes with chapter 5's handout"
+/// );
+/// let panic = format!("not yet implemented: {m}");
+/// assert_eq!(todo::find(&panic), None);
+/// assert_eq!(todo::find_later(&panic), Some(m.as_str()));
+/// ```
+#[must_use]
+pub fn later_message(name: &str, id: &str, chapter: u8) -> String {
+    let title = crate::chapter(chapter).map_or_else(String::new, |c| format!(" ({})", c.title));
+    format!(
+        "chapter {chapter}{title} is not part of this handout: {LEAD}{id} ({name}) comes with chapter {chapter}'s handout"
+    )
+}
+
+/// The message of the first panic of a later chapter's body ([`later_message`]) in `text` (a
+/// panic's text, or a test's whole output): its first line, from `chapter …` on.
+#[must_use]
+pub fn find_later(text: &str) -> Option<&str> {
+    let at = text.find(LATER_START)?;
+    let message = text[at + "not yet implemented: ".len()..].lines().next()?;
+    message
+        .contains(" is not part of this handout: ")
+        .then_some(message.trim_end())
+}
+
 /// An exercise's message, read back.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct Todo<'a> {

@@ -66,16 +66,29 @@ pub fn panic_message(payload: &(dyn std::any::Any + Send)) -> &str {
     panic_text(payload).unwrap_or("(no message)")
 }
 
+/// The prefix of the panic a later chapter's body raises in a handout that ends before it
+/// ([`whitted_syllabus::todo::later_message`]).
+pub const LATER: &str = whitted_syllabus::todo::LATER_START;
+
 /// For the panic of an exercise not written yet (a handout's `todo!()`), the one line that
 /// says which: `exercise 2.3 (sphere_coefficients) is not written yet: The sphere's quadratic
-/// — see …`.
+/// — see …`; for the panic of a later chapter's body in a handout that ends before it, the
+/// line that says so (`chapter 5 (reflection and refraction) is not part of this handout: …`).
 #[must_use]
 pub fn missing_exercise(payload: &(dyn std::any::Any + Send)) -> Option<String> {
-    let text = panic_text(payload)?;
-    if !text.starts_with(MISSING) {
-        return None;
+    handout_stub(panic_text(payload)?)
+}
+
+/// The one line of [`missing_exercise`] for a panic's text `text`, when it is a handout's stub.
+#[must_use]
+pub fn handout_stub(text: &str) -> Option<String> {
+    if text.starts_with(MISSING) {
+        whitted_syllabus::todo::find(text).map(|t| t.not_written())
+    } else if text.starts_with(LATER) {
+        whitted_syllabus::todo::find_later(text).map(str::to_string)
+    } else {
+        None
     }
-    whitted_syllabus::todo::find(text).map(|t| t.not_written())
 }
 
 #[cfg(test)]
@@ -91,6 +104,14 @@ mod tests {
         assert_eq!(
             missing_exercise(payload.as_ref()).unwrap(),
             "exercise 2.7 (sphere_discriminant) is not written yet: The sphere's discriminant — see chapters/ch02_generic_objects/README.md"
+        );
+        let later: Box<dyn std::any::Any + Send> = Box::new(format!(
+            "not yet implemented: {}",
+            whitted_syllabus::todo::later_message("refract", "5.3", 5)
+        ));
+        assert_eq!(
+            missing_exercise(later.as_ref()).unwrap(),
+            "chapter 5 (reflection and refraction) is not part of this handout: exercise 5.3 (refract) comes with chapter 5's handout"
         );
         let other: Box<dyn std::any::Any + Send> = Box::new("index out of bounds");
         assert_eq!(missing_exercise(other.as_ref()), None);

@@ -10,6 +10,10 @@
 //! replaced by `todo!()` must make every `chN_` test fail, which shows that every path of that
 //! chapter calls it (a path with a copy of its own would still pass).
 //!
+//! A handout that ends before a chapter holds no test of it: the tests of chapter N sit between
+//! `// BEGIN CHAPTER N` and `// END CHAPTER` lines, and such a handout leaves the section out
+//! (chapter 1's needs none: no handout ends before it).
+//!
 //! On a failure the render and a difference image (differing pixels in red over a grey copy)
 //! are written to `target/golden-diff/`. After an intended change, regenerate the references
 //! from the plain road with `WHITTED_BLESS=1 cargo test --test render_paths road` and look at
@@ -260,8 +264,18 @@ fn ch1_road() {
     check(1, ROAD);
 }
 
+// BEGIN CHAPTER 2
 paths!(2: ch2_road, ch2_boxes, ch2_extents, ch2_octree, ch2_octree_packets, ch2_bvh, ch2_bvh_packets, ch2_paths_agree);
+// END CHAPTER
+// BEGIN CHAPTER 3
 paths!(3: ch3_road, ch3_boxes, ch3_extents, ch3_octree, ch3_octree_packets, ch3_bvh, ch3_bvh_packets, ch3_paths_agree);
+// END CHAPTER
+// BEGIN CHAPTER 4
 paths!(4: ch4_road, ch4_boxes, ch4_extents, ch4_octree, ch4_octree_packets, ch4_bvh, ch4_bvh_packets, ch4_paths_agree);
+// END CHAPTER
+// BEGIN CHAPTER 5
 paths!(5: ch5_road, ch5_boxes, ch5_extents, ch5_octree, ch5_octree_packets, ch5_bvh, ch5_bvh_packets, ch5_paths_agree);
+// END CHAPTER
+// BEGIN CHAPTER 5 (the showcase's scene uses every chapter)
 paths!(0: showcase_road, showcase_boxes, showcase_extents, showcase_octree, showcase_octree_packets, showcase_bvh, showcase_bvh_packets, showcase_paths_agree);
+// END CHAPTER

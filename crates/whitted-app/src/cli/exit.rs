@@ -5,12 +5,12 @@
 
 use std::process::ExitCode;
 
-use whitted::error::{Error, MISSING, missing_exercise, panic_text};
+use whitted::error::{Error, handout_stub, missing_exercise, panic_text};
 
 /// Runs `work` and returns the exit status: 0 when it succeeds; 2 after one line on stderr,
-/// `error: …`, when it fails or panics on an exercise not written yet (from any thread: the
-/// line names the exercise, as [`missing_exercise`] writes it). Any other panic goes on as a
-/// panic.
+/// `error: …`, when it fails or panics on an exercise not written yet, or on a later chapter's
+/// body in a handout that ends before it (from any thread: the line names the exercise, or the
+/// chapter, as [`missing_exercise`] writes it). Any other panic goes on as a panic.
 pub fn guard(work: impl FnOnce() -> Result<(), Error>) -> ExitCode {
     quiet_missing_exercises();
     match std::panic::catch_unwind(std::panic::AssertUnwindSafe(work)) {
@@ -29,12 +29,12 @@ pub fn guard(work: impl FnOnce() -> Result<(), Error>) -> ExitCode {
     }
 }
 
-/// Keeps the panics of exercises not written yet quiet (no message, no backtrace, on any
+/// Keeps the panics of exercises not written yet (and of later chapters' bodies) quiet (no message, no backtrace, on any
 /// thread): [`guard`] turns the first into one line. Other panics are reported as usual.
 fn quiet_missing_exercises() {
     let default = std::panic::take_hook();
     std::panic::set_hook(Box::new(move |info| {
-        if !panic_text(info.payload()).is_some_and(|t| t.starts_with(MISSING)) {
+        if panic_text(info.payload()).is_none_or(|t| handout_stub(t).is_none()) {
             default(info);
         }
     }));

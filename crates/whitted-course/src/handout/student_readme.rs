@@ -11,7 +11,8 @@ use crate::manifest::Manifest;
 pub const README_TEMPLATE: &str = "crates/whitted-course/handout/README.md";
 
 /// The student's README: the template [`README_TEMPLATE`] with `{exercises}` (which exercises
-/// the handout takes out) and `{chapters}` (the chapters' list) filled in.
+/// the handout takes out, and which chapters come with a later handout) and `{chapters}` (the
+/// chapters' list) filled in.
 pub fn student_readme(
     root: &Path,
     manifest: &Manifest,
@@ -32,6 +33,15 @@ pub fn student_readme(
             ids.join(", ")
         )
     };
+    let last = super::later::last_chapter(manifest, selected);
+    let exercises = match last {
+        Some(last) => format!(
+            "{exercises}; the chapters after chapter {last} are not part of it (their exercises \
+             come with a later handout, and until then their functions and chapter binaries stop \
+             with a message that says so)"
+        ),
+        None => exercises,
+    };
     let mut chapters = String::new();
     for chapter in &crate::syllabus::CHAPTERS {
         let (n, title, dir) = (chapter.number, chapter.title, chapter.binary);
@@ -39,6 +49,10 @@ pub fn student_readme(
             .iter()
             .filter(|&&i| manifest.entries[i].chapter == n)
             .count();
+        let count = match last {
+            Some(last) if n > last => "a later handout".to_string(),
+            _ => count.to_string(),
+        };
         chapters += &format!(
             "| {n} | {title} | `{dir}` | [chapters/{dir}/README.md](chapters/{dir}/README.md) | {count} |\n"
         );

@@ -13,20 +13,21 @@ pub use whitted_learn::todo::todo_statement;
 /// documentation.
 pub const LIB_ALLOW: &str = "// handout: the parameters of the exercises still to write are unused until you write them\n#![allow(unused_variables, unused_imports, unused_mut, dead_code)]\n";
 
-/// `text` with each region's body replaced by its exercise's `todo!()`, between the same
-/// marker lines.
-pub(super) fn strip(text: &str, regions: &[&Region], manifest: &Manifest) -> String {
-    let mut sorted: Vec<&&Region> = regions.iter().collect();
-    sorted.sort_by_key(|r| r.bytes.start);
+/// `text` with each region's body replaced by its statement (an exercise's `todo!()`,
+/// [`todo_statement`], or a later chapter's, [`super::later::later_statement`]), between the
+/// same marker lines.
+pub(super) fn strip(text: &str, regions: &[(&Region, String)], manifest: &Manifest) -> String {
+    let mut sorted: Vec<&(&Region, String)> = regions.iter().collect();
+    sorted.sort_by_key(|(r, _)| r.bytes.start);
     let mut out = String::with_capacity(text.len());
     let mut at = 0;
-    for r in sorted {
+    for (r, statement) in sorted {
         let e = &manifest.entries[r.entry];
         out.push_str(&text[at..r.bytes.start]);
         // the markers stay: the student writes between them, and `whitted grade` takes
         // exactly what is there
         out.push_str(&format!("{}{BEGIN} {}\n", r.indent, e.exercise.name));
-        out.push_str(&whitted_learn::todo::todo_body(e, &r.indent, "\n"));
+        out.push_str(&format!("{}{statement}\n", r.indent));
         out.push_str(&format!("{}{END}\n", r.indent));
         at = r.bytes.end;
     }

@@ -6,10 +6,13 @@
 use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
 
+use super::later::{
+    cut_later_sections, handout_manifest, last_chapter, later_golden, later_statement, tests_up_to,
+};
 use super::parts::{Part, part_of};
 use super::regions::{Region, regions};
 use super::student_readme::student_readme;
-use super::todo::{allow_unused, strip};
+use super::todo::{allow_unused, strip, todo_statement};
 use super::workspace::{cargo_config, workspace_manifest};
 use crate::manifest::Manifest;
 use crate::{ToolError, files, layout};
@@ -24,7 +27,10 @@ pub struct Handout {
 }
 
 /// Writes the handout of `root`'s project into `out`, which must not exist or be an empty
-/// directory: the exercises `selected` (manifest indices) become `todo!()`.
+/// directory: the exercises `selected` (manifest indices) become `todo!()`. When they are not
+/// all of them, the handout's manifest lists them as its own (`[handout] exercises`), and when
+/// a chapter comes after the last of them, that chapter's bodies, test targets, tests and
+/// golden images are taken out too ([`super::later`]).
 pub fn write(
     root: &Path,
     manifest: &Manifest,
@@ -53,17 +59,46 @@ pub fn write(
         .tempdir_in(&parent)
         .map_err(|e| ToolError::io(&parent, e))?;
     let files = files::project_files(root)?;
-    let tests = &manifest.handout.tests;
-    let mut edits: BTreeMap<PathBuf, Vec<&Region>> = BTreeMap::new();
-    for r in regions.iter().filter(|r| selected.contains(&r.entry)) {
-        edits.entry(r.file.clone()).or_default().push(r);
+    let mut selected = selected.to_vec();
+    selected.sort_unstable();
+    selected.dedup();
+    let selected = &selected[..];
+    let last = last_chapter(manifest, selected);
+    let tests = &match last {
+        Some(last) => tests_up_to(&manifest.handout.tests, last),
+        None => manifest.handout.tests.clone(),
+    };
+    let later = |i: usize| last.is_some_and(|last| manifest.entries[i].chapter > last);
+    let mut edits: BTreeMap<PathBuf, Vec<(&Region, String)>> = BTreeMap::new();
+    for r in &regions {
+        let e = &manifest.entries[r.entry];
+        let statement = if selected.contains(&r.entry) {
+            todo_statement(e)
+        } else if later(r.entry) {
+            later_statement(e)
+        } else {
+            continue;
+        };
+        edits
+            .entry(r.file.clone())
+            .or_default()
+            .push((r, statement));
     }
+    // a handout of some exercises says which are the student's: the loop counts those alone
+    let own = (!selected.is_empty() && selected.len() < manifest.entries.len()).then(|| {
+        selected
+            .iter()
+            .map(|&i| manifest.entries[i].exercise.name.as_str())
+            .collect::<Vec<&str>>()
+    });
+    let manifest_file = Path::new(crate::manifest::DEFAULT_PATH);
+    let test_dir = layout::core_tests();
     let lib = layout::core_lib();
     let mut written = 0;
     let mut pages = Vec::new();
     for file in &files {
         let part = part_of(file, tests, root);
-        if part == Part::Left {
+        if part == Part::Left || last.is_some_and(|last| later_golden(file, last)) {
             continue;
         }
         let from = root.join(file);
@@ -79,6 +114,18 @@ pub fn write(
             Part::Page => {
                 pages.push(file.clone());
                 None
+            }
+            _ if file == manifest_file && own.is_some() => Some(handout_manifest(
+                &read()?,
+                crate::manifest::DEFAULT_PATH,
+                tests,
+                own.as_deref().unwrap_or_default(),
+            )?),
+            _ if file.starts_with(&test_dir) && file.extension().is_some_and(|x| x == "rs") => {
+                match last {
+                    Some(last) => Some(cut_later_sections(&read()?, file, last)?),
+                    None => None,
+                }
             }
             _ => match edits.get(file) {
                 Some(rs) => Some(strip(&read()?, rs, manifest)),

@@ -58,7 +58,7 @@ mod watch;
 
 pub use check::{Checked, check, once};
 pub use hints::{hints_shown, next_hint};
-pub use progress::{bar, list, progress};
+pub use progress::{bar, list, progress, written_road};
 pub use reset::{Body, RESET_DIR, Reset, find_body, reset};
 pub(crate) use run::build;
 pub use run::{PACKAGES, TEST_TIME_LIMIT, run_tests, targets_of};

@@ -53,6 +53,18 @@ pub fn progress(manifest: &Manifest, states: &[State], style: Style) -> String {
     out
 }
 
+/// What a check whose every exercise passes says is written: the whole road of one pixel, or
+/// in a handout that ends before the last chapter, the road up to its last chapter.
+#[must_use]
+pub fn written_road(manifest: &Manifest) -> String {
+    let last = manifest.last_chapter();
+    if last >= whitted_syllabus::LAST {
+        "the whole road of one pixel is written".into()
+    } else {
+        format!("the road of one pixel is written up to chapter {last}, the last of this handout")
+    }
+}
+
 /// The list of every exercise with its state and points, aligned, and a summary line.
 #[must_use]
 pub fn list(manifest: &Manifest, states: &[State], style: Style) -> String {

@@ -20,11 +20,12 @@ pub enum Stage {
 }
 
 /// The newest chapter whose exercises, and all earlier chapters', are done: the one whose
-/// picture the student's code can draw whole.
+/// picture the student's code can draw whole (never after the handout's last chapter, whose
+/// later chapters' bodies it does not hold).
 #[must_use]
 pub fn drawable_chapter(manifest: &Manifest, states: &[State]) -> Option<u8> {
     let mut out = None;
-    for chapter in whitted_syllabus::CHAPTERS.iter().map(|c| c.number) {
+    for chapter in whitted_syllabus::FIRST..=manifest.last_chapter() {
         if of_chapter(manifest, chapter).all(|i| states[i] == State::Done) {
             out = Some(chapter);
         } else {
@@ -42,7 +43,7 @@ pub fn drawable_chapter(manifest: &Manifest, states: &[State]) -> Option<u8> {
 pub fn picture_chapter(manifest: &Manifest, before: &[State], now: &[State]) -> u8 {
     turned_green(manifest, before, now)
         .or_else(|| next(now).map(|i| manifest.entries[i].chapter))
-        .unwrap_or(whitted_syllabus::LAST)
+        .unwrap_or(manifest.last_chapter())
 }
 
 /// The pictures a check draws, in the order they are shown (see [`crate::picture`]):
@@ -62,7 +63,7 @@ pub fn choose(
         return vec![Stage::Chapter(chapter)];
     }
     let Some(x) = on.or_else(|| next(now)) else {
-        return vec![Stage::Chapter(whitted_syllabus::LAST)];
+        return vec![Stage::Chapter(manifest.last_chapter())];
     };
     let chapter = manifest.entries[x].chapter;
     // written: done, failing, or waiting for a written exercise that fails (its tests call it)
