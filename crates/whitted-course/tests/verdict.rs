@@ -208,9 +208,9 @@ fn exercises_waiting_for_a_failing_one_are_written() {
     let mirror = m.by_name("mirror_direction").unwrap();
     let mut now = vec![State::Done; m.entries.len()];
     now[mirror] = State::Failing(Vec::new());
-    for i in (mirror + 1)..m.entries.len() {
-        if m.entries[i].chapter == 3 {
-            now[i] = State::Waiting("mirror_direction".into());
+    for (s, e) in now.iter_mut().zip(&m.entries).skip(mirror + 1) {
+        if e.chapter == 3 {
+            *s = State::Waiting("mirror_direction".into());
         }
     }
     let chosen = choose(&m, &now, &now, Some(mirror));

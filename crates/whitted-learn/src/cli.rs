@@ -40,9 +40,8 @@ pub enum LearnCommand {
     /// The lines between `// BEGIN SOLUTION NAME` and `// END SOLUTION` become the one line the
     /// handout gave, `todo!("exercise NAME (ID): …")`; the marker lines and the rest of the file
     /// stay. What stood there is kept in .whitted/reset/NAME-1.rs (then NAME-2.rs …: an earlier
-    /// copy is never overwritten), and the line printed says where. An exercise your handout
-    /// gave written resets the same way: it becomes one for you to write, and the given body is
-    /// kept. Nothing is built; the next `cargo learn` checks this exercise first. A body that is
+    /// copy is never overwritten), and the line printed says where. Only this handout's own
+    /// exercises (`list` shows them) can be reset. Nothing is built; the next `cargo learn` checks this exercise first. A body that is
     /// the handout's already, an unknown exercise or missing marker lines are an error (exit
     /// status 2) that changes nothing.
     Reset {
@@ -62,7 +61,7 @@ pub enum LearnCommand {
 /// Runs `learn` as the command line asks: 0 when all went well (whatever the exercises' state),
 /// 1 when the code does not compile, an error otherwise.
 pub fn learn(args: &LearnArgs) -> Result<ExitCode, ToolError> {
-    use crate::learn::{self, COMMAND, State, Style};
+    use crate::learn::{self, State, Style};
     let root = match &args.root {
         Some(root) => root.clone(),
         None => find_root()?,
@@ -89,11 +88,9 @@ pub fn learn(args: &LearnArgs) -> Result<ExitCode, ToolError> {
         }
         Some(LearnCommand::Hint { id }) => {
             let index = match id {
-                Some(id) => manifest.find(id).ok_or_else(|| {
-                    ToolError::Usage(format!(
-                        "there is no exercise {id}: `{COMMAND} list` shows the ids"
-                    ))
-                })?,
+                Some(id) => manifest
+                    .find(id)
+                    .ok_or_else(|| ToolError::Usage(manifest.not_found(id)))?,
                 // the first not done at the last check: no build, so a hint comes even while
                 // the code does not compile
                 None => match learn::saved_states(&root, &manifest)

@@ -62,27 +62,7 @@ impl<'a> Switched<'a> {
             mutants.len(),
             target.display()
         );
-        let built = Build {
-            project: &copy,
-            packages: &[layout::APP_PACKAGE],
-            tests: &[],
-            bins: &binaries,
-            examples: &[],
-            profile: None,
-            features: &[],
-            target_dir: Some(&target),
-            debug_info: false,
-            locked: true,
-            stderr: Stderr::Inherit,
-            wrapper: None,
-        }
-        .run()?;
-        if !built.success {
-            return Err(ToolError::Build(format!(
-                "the copy with the mistakes does not build: {}",
-                built.first_error()
-            )));
-        }
+        let built = build_copy(&copy, &target, &[], &binaries, "the copy with the mistakes")?;
         let tests = super::values::record(root, &copy, &target, manifest, mutants)?;
         Ok(Self {
             root,
@@ -275,4 +255,43 @@ impl<'a> Switched<'a> {
         );
         Ok(())
     }
+}
+
+/// Builds, in the copy `copy` with the mistakes behind their switches, into `target`, the
+/// renderer's test targets `tests` and the chapter binaries `bins` (the packages of each); an
+/// error that names `what` when it does not build.
+pub(super) fn build_copy(
+    copy: &Path,
+    target: &Path,
+    tests: &[String],
+    bins: &[String],
+    what: &str,
+) -> Result<Built, ToolError> {
+    let packages: &[&str] = if bins.is_empty() {
+        &[layout::CORE_PACKAGE]
+    } else {
+        &[layout::APP_PACKAGE]
+    };
+    let built = Build {
+        project: copy,
+        packages,
+        tests,
+        bins,
+        examples: &[],
+        profile: None,
+        features: &[],
+        target_dir: Some(target),
+        debug_info: false,
+        locked: true,
+        stderr: Stderr::Inherit,
+        wrapper: None,
+    }
+    .run()?;
+    if !built.success {
+        return Err(ToolError::Build(format!(
+            "{what} does not build: {}",
+            built.first_error()
+        )));
+    }
+    Ok(built)
 }

@@ -11,7 +11,6 @@ use std::collections::BTreeMap;
 use std::path::Path;
 use std::time::Duration;
 
-use crate::cargo::{Build, Stderr};
 use crate::manifest::Manifest;
 use crate::mistakes::{self, Mutant};
 use crate::{ToolError, layout};
@@ -54,27 +53,13 @@ pub(super) fn record(
         "building the tests of the mistakes' exercises ({}) with the mistakes behind a switch",
         targets.join(", ")
     );
-    let built = Build {
-        project: copy,
-        packages: &[layout::CORE_PACKAGE],
-        tests: &targets,
-        bins: &[],
-        examples: &[],
-        profile: None,
-        features: &[],
-        target_dir: Some(target),
-        debug_info: false,
-        locked: true,
-        stderr: Stderr::Inherit,
-        wrapper: None,
-    }
-    .run()?;
-    if !built.success {
-        return Err(ToolError::Build(format!(
-            "the tests of the copy with the mistakes do not build: {}",
-            built.first_error()
-        )));
-    }
+    let built = super::switched::build_copy(
+        copy,
+        target,
+        &targets,
+        &[],
+        "the tests of the copy with the mistakes",
+    )?;
     let mut out = BTreeMap::new();
     for m in mutants {
         let i = index(m)?;

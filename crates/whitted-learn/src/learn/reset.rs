@@ -8,10 +8,10 @@
 //! atomically, so a failure at any point loses no text. Nothing is built: the next check
 //! sees the region changed and checks that exercise first.
 //!
-//! An exercise the handout gave written (a chapter handed out on top of earlier ones) resets
-//! the same way: its body becomes one to write, and the given body is kept like any other.
-//! The handout records no list of what it took out, and a student who asks to write a given
-//! exercise too may; the kept copy brings the given body back.
+//! Only the exercises of the manifest can be reset: in a handout of some chapters, those it
+//! asks the student to write (its `[handout] exercises`); an exercise it gives written, or
+//! leaves to a later chapter's handout, is named as such ([`Manifest::not_found`]). In the
+//! project and a full handout, every exercise can be, and its body is kept like any other.
 //!
 //! Course book: [The student's guide](../../../../../docs/book/student-guide.html) (`docs/src/student-guide.md`).
 
@@ -115,11 +115,9 @@ pub fn find_body(text: &str, name: &str) -> Result<Option<Body>, String> {
 /// exercise, markers not found (or found twice), or a body that is the handout's already are
 /// [`ToolError::Usage`] or [`ToolError::Markers`] errors, one line each, and change nothing.
 pub fn reset(root: &Path, manifest: &Manifest, key: &str) -> Result<Reset, ToolError> {
-    let index = manifest.find(key).ok_or_else(|| {
-        ToolError::Usage(format!(
-            "there is no exercise {key}: `{COMMAND} list` shows the ids"
-        ))
-    })?;
+    let index = manifest
+        .find(key)
+        .ok_or_else(|| ToolError::Usage(manifest.not_found(key)))?;
     let e = &manifest.entries[index];
     let x = &e.exercise;
     let who = format!("exercise {} ({})", x.id, x.name);

@@ -73,3 +73,24 @@ impl Manifest {
         self.handout.others.iter().any(|n| n == name)
     }
 }
+
+impl Manifest {
+    /// The one line a student reads when `key` names no exercise of this manifest: a handout
+    /// of some chapters says when the name is one of the exercises it leaves out.
+    #[must_use]
+    pub fn not_found(&self, key: &str) -> String {
+        let key = key.trim();
+        if self.handout.others.iter().any(|n| n == key) {
+            format!(
+                "exercise {key} is not one of this handout's: it is given, or it comes with a \
+                 later chapter's handout (`{} list` shows this handout's)",
+                crate::learn::COMMAND
+            )
+        } else {
+            format!(
+                "there is no exercise {key}: `{} list` shows the ids",
+                crate::learn::COMMAND
+            )
+        }
+    }
+}
