@@ -317,6 +317,19 @@ fn a_handouts_list_of_exercises_names_known_exercises() {
     let m = manifests::parse(&one, "f.toml").unwrap();
     assert_eq!(m.entries.len(), 1);
     assert_eq!(m.entries[0].exercise.id, "3.1");
+    // an exercise it leaves out, by name or by an id of a chapter it has none of, is named as
+    // such; a key that is no exercise's is not
+    for key in ["attenuation", "2.1", "5.3"] {
+        let said = m.not_found(key);
+        assert!(
+            said.contains("is not one of this handout's"),
+            "{key}: {said}"
+        );
+    }
+    for key in ["9.9", "no_such", "3.9"] {
+        let said = m.not_found(key);
+        assert!(said.starts_with("there is no exercise"), "{key}: {said}");
+    }
 }
 
 /// A handout of chapter 1's exercise `viewing_basis` alone ends at chapter 1: chapters 2 to 5

@@ -80,7 +80,14 @@ impl Manifest {
     #[must_use]
     pub fn not_found(&self, key: &str) -> String {
         let key = key.trim();
-        if self.handout.others.iter().any(|n| n == key) {
+        // an id names its chapter before the dot: a chapter this handout has no exercise of
+        let chapter = key
+            .split_once('.')
+            .and_then(|(c, _)| c.parse::<u8>().ok())
+            .filter(|c| whitted_syllabus::chapter(*c).is_some());
+        let left_out = self.handout.exercises.is_some()
+            && chapter.is_some_and(|c| !self.entries.iter().any(|e| e.chapter == c));
+        if left_out || self.handout.others.iter().any(|n| n == key) {
             format!(
                 "exercise {key} is not one of this handout's: it is given, or it comes with a \
                  later chapter's handout (`{} list` shows this handout's)",
