@@ -48,7 +48,7 @@
 //! - [`grade`] grades a student's copy, or a class, with the instructor's tests (public and
 //!   hidden), each test in its own process under a time limit, the student's code built and
 //!   run in a sandbox; [`report`] writes the table, Gradescope's `results.json`, JUnit XML
-//!   and gradebook CSV;
+//!   and a submission's CSV row, and [`gradebook`] a class's `class.csv`;
 //! - [`autograder`] fits grading to Gradescope, GitHub Classroom, PrairieLearn and CodeGrade:
 //!   the package each one takes, and each one's results file from one report;
 //! - [`figures`] renders the course book's figures and compares them; [`book`] checks the
@@ -70,6 +70,7 @@ pub mod deps;
 pub mod figures;
 pub mod formulas;
 pub mod grade;
+pub mod gradebook;
 pub mod handout;
 pub mod mistakes;
 pub mod parallel;

@@ -455,7 +455,7 @@ fn the_prairielearn_package_has_its_entry_point_and_image() {
     std::fs::write(hidden.join("more.rs"), "").unwrap();
     let out = dir.path().join("pl");
     let options = package::Options {
-        chapter: Some(4),
+        chapter: Some(grade::Chapters { first: 4, last: 4 }),
         hidden: Some(hidden),
         timeout: 20,
         settings: Settings::default(),
@@ -647,6 +647,7 @@ fn the_user_sandbox_keeps_the_project_closed() {
         },
         runner: "/w/whitted".into(),
         triple: "x86_64-unknown-linux-gnu".into(),
+        lease: None,
     };
     let why = sandbox
         .protect(&[&project], &build, &copy)
@@ -779,4 +780,58 @@ fn the_feedback_of_a_chapter_reaches_every_report() {
 
     let junit = codegrade::junit(&r, &[4], Audience::Student);
     assert!(junit.contains(&computed), "{junit}");
+}
+
+/// An exercise's tests carry shares of its points that add up to them exactly, in the
+/// hundredths the platforms show (three tests of a 2-point exercise: 0.66 and 0.67, never
+/// 3 × 0.67 = 2.01); a test of no exercise carries none and is not listed to students.
+#[test]
+fn the_maxima_add_up_and_no_pointless_test_is_listed() {
+    let m = manifest();
+    let i = m.by_name("blocks_light").unwrap();
+    let points = m.entries[i].exercise.points;
+    let case = |name: &str| {
+        format!(
+            "    <testcase name=\"{name}\" classname=\"whitted::ch04_shadows\" time=\"0.1\"/>\n"
+        )
+    };
+    let junit = format!(
+        "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<testsuites name=\"nextest-run\" tests=\"4\" failures=\"0\">\n  <testsuite name=\"whitted::ch04_shadows\" tests=\"4\" failures=\"0\">\n{}{}{}{}  </testsuite>\n</testsuites>\n",
+        case("ex_blocks_light_one"),
+        case("ex_blocks_light_two"),
+        case("ex_blocks_light_three"),
+        case("shadows_of_the_whole_road"),
+    );
+    let tests = grade::parse_junit(&junit, &m, &[]).unwrap();
+    let g = Grade {
+        tests,
+        ..grade_of(&m)
+    };
+    let r = Report::new(&g, &m, &Settings::default());
+    let json = gradescope::results(&r);
+    let listed = json["tests"].as_array().unwrap();
+    assert_eq!(
+        listed.len(),
+        3,
+        "the tests listed: {:?}",
+        listed.iter().map(|t| &t["name"]).collect::<Vec<_>>()
+    );
+    assert!(listed.iter().all(|t| t["number"] != "-"), "{listed:?}");
+    let cents: i64 = listed
+        .iter()
+        .map(|t| (t["max_score"].as_f64().unwrap() * 100.0).round() as i64)
+        .sum();
+    assert_eq!(
+        cents,
+        i64::from(points) * 100,
+        "the maxima of blocks_light's 3 tests in hundredths, against its {points} points"
+    );
+    let scored: i64 = listed
+        .iter()
+        .map(|t| (t["score"].as_f64().unwrap() * 100.0).round() as i64)
+        .sum();
+    assert_eq!(
+        scored, cents,
+        "every test passed: the scores are the maxima"
+    );
 }

@@ -77,11 +77,11 @@ jobs:
 "#
     );
     let mut ids = Vec::new();
-    for e in manifest
-        .entries
-        .iter()
-        .filter(|e| options.chapter.is_none_or(|c| e.chapter == c))
-    {
+    for e in manifest.entries.iter().filter(|e| {
+        options
+            .chapter
+            .is_none_or(|c| c.list().contains(&e.chapter))
+    }) {
         let id = step_id(&e.exercise.id);
         let name = format!("{} {}", e.exercise.id, e.exercise.title);
         out += &format!(

@@ -9,9 +9,9 @@ use std::process::ExitCode;
 use super::options::Options;
 use super::run::{self, Submission};
 use super::{Platform, Settings, package};
-use crate::grade::{GradeSetup, Judging, SandboxArgs};
+use crate::ToolError;
+use crate::grade::{Chapters, GradeSetup, Judging, SandboxArgs};
 use crate::manifest::Manifest;
-use crate::{ToolError, syllabus};
 
 /// The arguments of `whitted autograder`: a package's, or a subcommand's.
 #[derive(clap::Args)]
@@ -43,10 +43,9 @@ struct PackageGrading {
     /// The instructor's hidden tests: a directory of .rs test files.
     #[arg(long, value_name = "DIR")]
     hidden: Option<PathBuf>,
-    /// Grade only this chapter's exercises (1-5).
-    #[arg(long, value_name = "N",
-          value_parser = clap::value_parser!(u8).range(i64::from(syllabus::FIRST)..=i64::from(syllabus::LAST)))]
-    chapter: Option<u8>,
+    /// Grade only these chapters' exercises: one (4) or a range (1-3), of chapters 1 to 5.
+    #[arg(long, value_name = "N|A-B", value_parser = Chapters::parse)]
+    chapter: Option<Chapters>,
     /// The time limit of one test, in seconds.
     #[arg(long, value_name = "SECONDS", default_value_t = 20,
           value_parser = clap::value_parser!(u64).range(1..=3600))]

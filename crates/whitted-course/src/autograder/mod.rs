@@ -167,10 +167,36 @@ pub struct Report {
     pub settings: Settings,
 }
 
+impl TestLine {
+    /// Whether a student's report lists it: a test of no exercise carries no points, and the
+    /// whole road's lines of the report's output say what such tests found.
+    #[must_use]
+    pub fn listed(&self) -> bool {
+        !self.tags.is_empty()
+    }
+}
+
 /// Points rounded to hundredths, as the platforms show them.
 #[must_use]
 pub fn round2(x: f64) -> f64 {
     (x * 100.0).round() / 100.0
+}
+
+/// The share of an exercise's `points` that its `k`-th test of `total` (from 1) carries, in
+/// hundredths, as the platforms show points: each test the hundredths of `points / total`
+/// rounded down, the last the remainder, so the shares add up to `points` exactly (2 points
+/// over 6 tests: five of 0.33 and one of 0.35), whatever a platform sums.
+#[must_use]
+pub fn share(points: u32, total: usize, k: usize) -> f64 {
+    let cents = u64::from(points) * 100;
+    let total = total.max(1) as u64;
+    let each = cents / total;
+    let mine = if k as u64 >= total {
+        cents - each * (total - 1)
+    } else {
+        each
+    };
+    mine as f64 / 100.0
 }
 
 impl Report {
@@ -186,13 +212,16 @@ impl Report {
             })
         };
         let mut hidden_seen: std::collections::BTreeMap<usize, usize> = Default::default();
+        let mut seen: std::collections::BTreeMap<usize, usize> = Default::default();
         let mut tests = Vec::new();
         for t in &grade.tests {
             let entry = t.exercise.map(|e| &manifest.entries[e]);
             let (score, max) = match t.exercise {
                 Some(e) => {
                     let total = grade.tests.iter().filter(|u| u.exercise == Some(e)).count();
-                    let max = f64::from(manifest.entries[e].exercise.points) / total.max(1) as f64;
+                    let k = seen.entry(e).or_default();
+                    *k += 1;
+                    let max = share(manifest.entries[e].exercise.points, total, *k);
                     (if t.status == Status::Passed { max } else { 0.0 }, max)
                 }
                 None => (0.0, 0.0),
@@ -417,4 +446,28 @@ pub fn write(path: &Path, text: &str) -> Result<(), ToolError> {
 #[must_use]
 pub fn json_text(value: &serde_json::Value) -> String {
     serde_json::to_string_pretty(value).unwrap_or_else(|_| value.to_string()) + "\n"
+}
+
+#[cfg(test)]
+mod tests {
+    use super::share;
+
+    #[test]
+    fn the_shares_of_an_exercise_add_up_to_its_points() {
+        for (points, total) in [(2, 6), (1, 3), (8, 7), (4, 1), (3, 200), (0, 4)] {
+            let shares: Vec<f64> = (1..=total).map(|k| share(points, total, k)).collect();
+            let cents: i64 = shares.iter().map(|s| (s * 100.0).round() as i64).sum();
+            assert_eq!(
+                cents,
+                i64::from(points) * 100,
+                "{points} points over {total} tests: shares {shares:?}"
+            );
+            assert!(shares.iter().all(|s| *s >= 0.0), "{shares:?}");
+        }
+        assert_eq!(
+            (share(2, 6, 1), share(2, 6, 6)),
+            (0.33, 0.35),
+            "2 points over 6 tests"
+        );
+    }
 }

@@ -16,7 +16,7 @@ pub const NEXTEST_VERSION: &str = "0.9.143";
 #[derive(Clone, Debug)]
 pub struct Options {
     /// Only this chapter, or all.
-    pub chapter: Option<u8>,
+    pub chapter: Option<crate::grade::Chapters>,
     /// The hidden tests' directory.
     pub hidden: Option<PathBuf>,
     /// The time limit of one test, in seconds.

@@ -30,6 +30,7 @@ pub fn results(report: &Report) -> Value {
     let tests: Vec<Value> = report
         .tests
         .iter()
+        .filter(|t| t.listed())
         .map(|t| {
             json!({
                 "name": t.name,

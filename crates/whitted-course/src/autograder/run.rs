@@ -43,10 +43,7 @@ pub fn grade_submission(
         .dir
         .file_name()
         .map_or_else(|| "submission".into(), |n| n.to_string_lossy().into_owned());
-    let chapters: Vec<u8> = setup.chapter.map_or_else(
-        || crate::syllabus::CHAPTERS.iter().map(|c| c.number).collect(),
-        |c| vec![c],
-    );
+    let chapters = crate::grade::Chapters::or_all(setup.chapter);
     let max: f64 = manifest
         .entries
         .iter()
@@ -200,7 +197,7 @@ pub fn check(results: &Path, exercise: &str) -> Result<ExitCode, ToolError> {
 /// render).
 #[must_use]
 pub fn setup(
-    chapter: Option<u8>,
+    chapter: Option<crate::grade::Chapters>,
     hidden: Option<PathBuf>,
     timeout: u64,
     target_dir: PathBuf,

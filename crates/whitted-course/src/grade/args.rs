@@ -11,8 +11,8 @@ use super::alone::Judging;
 use super::command::{Class, Reports, command};
 use super::sandbox::Level;
 use super::sandbox::watch::CompileLimits;
-use super::setup::{GradeSetup, SandboxSetup};
-use crate::{ToolError, syllabus};
+use super::setup::{Chapters, GradeSetup, SandboxSetup};
+use crate::ToolError;
 
 /// The arguments of `whitted grade`.
 #[derive(clap::Args)]
@@ -20,10 +20,9 @@ pub struct GradeArgs {
     /// The student's copy of the project [default: the current project].
     #[arg(value_name = "DIR", conflicts_with = "class")]
     submission: Option<PathBuf>,
-    /// Grade only this chapter's exercises (1-5).
-    #[arg(long, value_name = "N",
-          value_parser = clap::value_parser!(u8).range(i64::from(syllabus::FIRST)..=i64::from(syllabus::LAST)))]
-    chapter: Option<u8>,
+    /// Grade only these chapters' exercises: one (4) or a range (1-3), of chapters 1 to 5.
+    #[arg(long, value_name = "N|A-B", value_parser = Chapters::parse)]
+    chapter: Option<Chapters>,
     /// The instructor's hidden tests: a directory of .rs test files, each added as a test
     /// target; their tests are named after the exercise they check (ex_NAME_…), like the public
     /// ones. Students' reports show their points, not their names.
@@ -48,6 +47,14 @@ pub struct GradeArgs {
     /// With --class: where the reports go (one directory per student, and class.csv).
     #[arg(long, value_name = "DIR", requires = "class")]
     out: Option<PathBuf>,
+    /// With --class: a roster, lines `folder,id,email`, that fills the gradebook's id and
+    /// e-mail columns (the folder is the submission's directory name).
+    #[arg(long, value_name = "FILE", requires = "class")]
+    roster: Option<PathBuf>,
+    /// With --class: write class.csv anew. Without it, a regrade into an --out that holds a
+    /// gradebook updates the rows of the submissions it grades and keeps the others.
+    #[arg(long, requires = "class")]
+    new_gradebook: bool,
     /// With --class: submissions graded at a time [default: the cores].
     #[arg(long, value_name = "N", requires = "class",
           value_parser = clap::value_parser!(u64).range(1..=64))]
@@ -125,6 +132,8 @@ impl GradeArgs {
                 dir,
                 out,
                 jobs: self.jobs.map(|j| j as usize),
+                roster: self.roster.as_deref(),
+                new_gradebook: self.new_gradebook,
             }),
             _ => None,
         };

@@ -59,7 +59,15 @@ pub fn grade_class(
     let mut options = options.clone();
     if options.judge.is_none() {
         super::grading::check_sandbox(&options)?;
-        let chapters = super::grading::chapters_asked(options.chapter)?;
+        let chapters = super::grading::chapters_asked(options.chapter);
+        eprintln!(
+            "building the judge: your project with the grader's wire{} (the first time, a few minutes) …",
+            if options.hidden.is_some() {
+                " and your hidden tests"
+            } else {
+                ""
+            }
+        );
         let judge = super::grading::judge_for(
             root,
             manifest,
@@ -74,6 +82,8 @@ pub fn grade_class(
         options.judge = Some(std::sync::Arc::new(judge));
     }
     let options = &options;
+    preflight(root, manifest, options)?;
+    let progress = Progress::new(submissions.len(), jobs);
     // the first submission on the first worker alone, then every other worker's build
     // directory starts as a copy of the first's: the dependencies and the instructor's code are
     // compiled once for the class, not once per worker
@@ -92,6 +102,7 @@ pub fn grade_class(
             grade: grade(root, manifest, path, &own).map_err(|e| e.to_string()),
         };
         done(&entry);
+        progress.step(&entry);
         first.push(entry);
         for i in 1..jobs {
             let to = dir.join(format!("slot-{i}"));
@@ -134,9 +145,103 @@ pub fn grade_class(
         };
         slots.lock().unwrap_or_else(|p| p.into_inner()).push(slot);
         done(&entry);
+        progress.step(&entry);
         Ok(entry)
     })
     .map(|rest| first.into_iter().chain(rest).collect())
+}
+
+/// A class's progress, said after each submission: how many are graded, the median time of
+/// one, and about how long the rest will take at `jobs` at a time.
+struct Progress {
+    total: usize,
+    jobs: usize,
+    times: std::sync::Mutex<Vec<f64>>,
+}
+
+impl Progress {
+    fn new(total: usize, jobs: usize) -> Self {
+        Self {
+            total,
+            jobs,
+            times: std::sync::Mutex::new(Vec::new()),
+        }
+    }
+
+    /// Counts `entry` and says where the class stands.
+    fn step(&self, entry: &ClassEntry) {
+        let mut times = self.times.lock().unwrap_or_else(|p| p.into_inner());
+        times.push(
+            entry
+                .grade
+                .as_ref()
+                .map_or(0.0, |g| g.elapsed.as_secs_f64()),
+        );
+        let mut sorted = times.clone();
+        sorted.sort_by(f64::total_cmp);
+        let median = sorted[sorted.len() / 2];
+        let left = self.total - times.len();
+        let eta = median * left.div_ceil(self.jobs) as f64;
+        eprintln!(
+            "  [{} / {}] the median submission {median:.0} s; about {} left",
+            times.len(),
+            self.total,
+            if left == 0 {
+                "nothing".to_string()
+            } else if eta < 90.0 {
+                format!("{eta:.0} s")
+            } else {
+                format!("{:.0} min", eta / 60.0)
+            }
+        );
+    }
+}
+
+/// The preflight of a class: your project graded as a submission, with your tests, hidden
+/// ones included, on the first worker's build directory (which it leaves built for the
+/// class). Anything short of full marks is your mistake, not a student's, and stops the class
+/// before the first submission, naming the tests that failed.
+fn preflight(root: &Path, manifest: &Manifest, options: &GradeSetup) -> Result<(), ToolError> {
+    eprintln!("preflight: grading your own project with your tests …");
+    let mut own = options.clone();
+    own.target_dir = options.target_dir.as_ref().map(|d| d.join("slot-0"));
+    if let Some(s) = &mut own.sandbox {
+        s.worker = 0;
+    }
+    let g = grade(root, manifest, root, &own)?;
+    let failed: Vec<String> = g
+        .tests
+        .iter()
+        .filter(|t| t.status != super::Status::Passed)
+        .map(|t| {
+            let why = t.message.lines().next().unwrap_or("");
+            format!("{} ({}: {why})", t.name, t.status.word())
+        })
+        .collect();
+    if g.score() + 1e-9 < g.max() || !failed.is_empty() {
+        return Err(ToolError::Usage(format!(
+            "preflight: your own project scores {} / {} with your tests, so no submission is \
+             graded; {} test{} failed: {}",
+            crate::report::points(g.score()),
+            crate::report::points(g.max()),
+            failed.len(),
+            if failed.len() == 1 { "" } else { "s" },
+            failed
+                .iter()
+                .take(5)
+                .cloned()
+                .collect::<Vec<_>>()
+                .join("; ")
+        )));
+    }
+    eprintln!(
+        "preflight: your own project scores {} / {}, all {} of its tests passed, in {:.0} s",
+        crate::report::points(g.score()),
+        crate::report::points(g.max()),
+        g.tests.len(),
+        g.elapsed.as_secs_f64()
+    );
+    Ok(())
 }
 
 /// A submission's name: its directory's, cleaned ([`super::clean`]).

@@ -34,6 +34,10 @@ pub struct Class<'a> {
     pub out: &'a Path,
     /// Submissions graded at a time.
     pub jobs: Option<usize>,
+    /// The roster that fills the gradebook's id and e-mail columns.
+    pub roster: Option<&'a Path>,
+    /// Write the gradebook anew rather than update the one in `out`.
+    pub new_gradebook: bool,
 }
 
 /// Grades `submission` (the instructor's project `root` when `None`) or, with `class`, a
@@ -76,48 +80,83 @@ fn grade_a_class(
         dir: class,
         out,
         jobs,
+        roster,
+        new_gradebook,
     } = class;
+    let roster = roster
+        .map(crate::gradebook::read_roster)
+        .transpose()?
+        .unwrap_or_default();
     std::fs::create_dir_all(out).map_err(|e| ToolError::io(out, e))?;
+    // a gradebook of other columns is refused before anything is graded
+    let book = out.join(crate::gradebook::FILE);
+    let chapters = super::Chapters::or_all(setup.chapter);
+    let header = crate::gradebook::header(manifest, &chapters);
+    let existing = match std::fs::read_to_string(&book) {
+        Ok(text) => Some(text),
+        Err(e) if e.kind() == std::io::ErrorKind::NotFound => None,
+        Err(e) => return Err(ToolError::io(&book, e)),
+    };
+    let possible = crate::gradebook::possible(manifest, &chapters);
+    let merge = |fresh: &[(String, String)]| {
+        crate::gradebook::merged(
+            existing.as_deref(),
+            &header,
+            &possible,
+            fresh,
+            new_gradebook,
+        )
+        .map_err(|why| ToolError::Usage(format!("{}: {why}", book.display())))
+    };
+    merge(&[])?;
     let out = out.canonicalize().map_err(|e| ToolError::io(out, e))?;
     let jobs = jobs.unwrap_or_else(|| std::thread::available_parallelism().map_or(1, usize::from));
     let start = std::time::Instant::now();
+    // each student's reports as soon as they are graded: a stalled submission holds back no
+    // other student's
+    let written = |student: &str, g: &Grade| -> Result<(), ToolError> {
+        let dir = out.join(student);
+        std::fs::create_dir_all(&dir).map_err(|err| ToolError::io(&dir, err))?;
+        write_reports(
+            g,
+            manifest,
+            Some(&dir.join("report.txt")),
+            Some(&dir.join("results.json")),
+            Some(&dir.join("junit.xml")),
+            None,
+        )
+    };
     let entries = grade_class(root, manifest, class, setup, jobs, &|e| match &e.grade {
-        Ok(g) => eprintln!(
-            "graded {}: {} / {} points in {:.0} s",
-            e.student,
-            crate::report::points(g.score()),
-            crate::report::points(g.max()),
-            g.elapsed.as_secs_f64()
-        ),
+        Ok(g) => {
+            eprintln!(
+                "graded {}: {} / {} points in {:.0} s",
+                e.student,
+                crate::report::points(g.score()),
+                crate::report::points(g.max()),
+                g.elapsed.as_secs_f64()
+            );
+            if let Err(why) = written(&e.student, g) {
+                eprintln!("could not write {}'s reports: {why}", e.student);
+            }
+        }
         Err(why) => eprintln!("could not grade {}: {why}", e.student),
     })?;
-    let chapters: Vec<u8> = setup.chapter.map_or_else(
-        || crate::syllabus::CHAPTERS.iter().map(|c| c.number).collect(),
-        |c| vec![c],
-    );
-    let mut csv = crate::report::csv_header(manifest, &chapters) + "\n";
+    let mut rows = Vec::new();
     for e in &entries {
         match &e.grade {
             Ok(g) => {
-                let dir = out.join(&e.student);
-                std::fs::create_dir_all(&dir).map_err(|err| ToolError::io(&dir, err))?;
-                write_reports(
-                    g,
-                    manifest,
-                    Some(&dir.join("report.txt")),
-                    Some(&dir.join("results.json")),
-                    Some(&dir.join("junit.xml")),
-                    None,
-                )?;
-                csv += &crate::report::csv_row(g, manifest);
+                rows.push((
+                    e.student.clone(),
+                    crate::gradebook::graded(g, manifest, &roster),
+                ));
             }
-            Err(why) => {
-                csv += &format!("{},0,,\"not graded: {}\"", e.student, why.replace('"', "'"))
-            }
+            Err(why) => rows.push((
+                e.student.clone(),
+                crate::gradebook::ungraded(&e.student, why, manifest, &chapters, &roster),
+            )),
         }
-        csv.push('\n');
     }
-    files::write_file(&out.join("class.csv"), csv.as_bytes())?;
+    files::write_file(&book, merge(&rows)?.as_bytes())?;
     let graded: Vec<&Grade> = entries
         .iter()
         .filter_map(|e| e.grade.as_ref().ok())
@@ -143,7 +182,7 @@ fn grade_a_class(
         median(&|g| g.timings.build),
         median(&|g| g.timings.run),
         out.display(),
-        out.join("class.csv").display()
+        book.display()
     );
     Ok(ExitCode::SUCCESS)
 }

@@ -21,7 +21,7 @@ use super::render::{self, ChapterFeedback, RenderScore};
 use super::runner::SERVE;
 use super::sandbox::{POLICY_VAR, RUNNER_COMMAND, Sandbox, watch};
 use super::score::{chapter_targets, scores};
-use super::setup::{GradeSetup, SandboxSetup};
+use super::setup::{Chapters, GradeSetup, SandboxSetup};
 use super::splice::Spliced;
 use super::test_result::TestResult;
 use super::{nextest, splice};
@@ -77,11 +77,10 @@ pub fn grade(
     let built = Instant::now();
     let w = g.wrapper.as_ref();
     let server = [SERVER_EXAMPLE.to_string()];
-    let mut whole = build_bodies(
+    let whole = build_bodies(
         &g.copy, manifest, &chapters, &mut files, &server, w, &mut notes,
     )?;
     let builds = whole.is_empty();
-    whole.extend(judge.hidden_broken.clone());
     g.seal(root, options, &judge)?;
     timings.build = built.elapsed() + judge_time;
     // 4. the tests, each in its own process, judged outside the server, and their points
@@ -116,9 +115,9 @@ pub fn grade(
     })
 }
 
-/// The chapters graded: the one asked for, or all five; an error when `submission` is no
-/// copy of the handout or the chapter is none of the course's.
-fn graded_chapters(submission: &Path, chapter: Option<u8>) -> Result<Vec<u8>, ToolError> {
+/// The chapters graded: those asked for, or all five; an error when `submission` is no copy
+/// of the handout.
+fn graded_chapters(submission: &Path, chapter: Option<Chapters>) -> Result<Vec<u8>, ToolError> {
     if !submission.join(layout::core_src()).is_dir() {
         return Err(ToolError::Usage(format!(
             "{} is not a copy of the handout: it has no {}/ directory",
@@ -126,21 +125,12 @@ fn graded_chapters(submission: &Path, chapter: Option<u8>) -> Result<Vec<u8>, To
             layout::core_src().display()
         )));
     }
-    chapters_asked(chapter)
+    Ok(chapters_asked(chapter))
 }
 
-/// The chapters `--chapter` asks for: the one named, or all five; an error when it names
-/// none of the course's.
-pub(super) fn chapters_asked(chapter: Option<u8>) -> Result<Vec<u8>, ToolError> {
-    match chapter {
-        Some(c) if syllabus::chapter(c).is_some() => Ok(vec![c]),
-        Some(c) => Err(ToolError::Usage(format!(
-            "--chapter {c}: the chapters are {} to {}",
-            syllabus::FIRST,
-            syllabus::LAST
-        ))),
-        None => Ok(syllabus::CHAPTERS.iter().map(|c| c.number).collect()),
-    }
+/// The chapters `--chapter` asks for: those named (checked when read), or all five.
+pub(super) fn chapters_asked(chapter: Option<Chapters>) -> Vec<u8> {
+    Chapters::or_all(chapter)
 }
 
 /// The judge of a grading of `chapters` (their test targets, and the hidden tests `options`

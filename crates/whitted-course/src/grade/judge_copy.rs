@@ -34,8 +34,6 @@ pub struct Judge {
     pub targets: Vec<String>,
     /// The hidden tests' targets among them.
     pub hidden: Vec<String>,
-    /// Why the hidden tests do not count, when they do not build.
-    pub hidden_broken: Option<String>,
     /// The wire, planned on the instructor's files: the same in the judge and in every
     /// submission's server.
     pub wire: Wire,
@@ -55,9 +53,11 @@ pub fn beside(target_dir: &Path) -> PathBuf {
 }
 
 /// Makes and builds the judge of the project at `root` in `dir` (a fresh temporary directory
-/// when `None`): the test targets `public` and the hidden tests of the directory `hidden`. A public test that does not build is an error (the project is
-/// the instructor's); hidden tests that do not build leave the judge, and
-/// [`Judge::hidden_broken`] says why.
+/// when `None`): the test targets `public` and the hidden tests of the directory `hidden`.
+/// Before anything is graded, a hidden test named after no exercise ([`super::hidden`]), or
+/// a public or hidden test that does not build, is an error at its file and line: the
+/// project and the hidden tests are the instructor's, and a grade never silently goes
+/// without them.
 pub fn prepare(
     root: &Path,
     manifest: &Manifest,
@@ -81,8 +81,11 @@ pub fn prepare(
     close(&dir)?;
     let project = dir.join("project");
     let target_dir = dir.join("target");
+    if let Some(dir) = hidden {
+        super::hidden::check(manifest, dir)?;
+    }
     let wire = write_copy(root, manifest, &project)?;
-    let mut hidden_targets = splice::add_hidden(&project, hidden)?;
+    let hidden_targets = splice::add_hidden(&project, hidden)?;
     remove_stale_hidden(&project, &hidden_targets)?;
     let build = |targets: &[String]| -> Result<(), ToolError> {
         let built = cargo_build(
@@ -99,24 +102,37 @@ pub fn prepare(
             Err(ToolError::Cargo(built.first_error()))
         }
     };
-    let mut targets: Vec<String> = public.iter().chain(&hidden_targets).cloned().collect();
-    let broken = |e: ToolError| {
-        ToolError::Cargo(format!(
-            "the judge (the instructor's project with the grader's wire) does not build: {}",
-            e.to_string().trim_start_matches("error: ")
-        ))
-    };
-    let mut hidden_broken = None;
+    let targets: Vec<String> = public.iter().chain(&hidden_targets).cloned().collect();
     if let Err(e) = build(&targets) {
-        if hidden_targets.is_empty() {
-            return Err(broken(e));
-        }
-        // the public tests build alone: the hidden ones are the instructor's to fix
-        hidden_broken = Some(format!("the hidden tests do not build: {e}"));
-        hidden_targets.clear();
-        remove_stale_hidden(&project, &[])?;
-        targets = public.to_vec();
-        build(&targets).map_err(broken)?;
+        let why = e.to_string();
+        let why = why.trim_start_matches("error: ");
+        // a hidden file's error names its copy in the judge: the instructor's file instead
+        let hidden_file = hidden.and_then(|dir| {
+            hidden_targets
+                .iter()
+                .find_map(|t| {
+                    let copy = layout::core_test_file(t).display().to_string();
+                    why.contains(&copy).then(|| (copy, t.clone()))
+                })
+                .and_then(|(copy, t)| {
+                    let original = splice::hidden_files(dir)
+                        .ok()?
+                        .into_iter()
+                        .find(|f| splice::hidden_target(f) == t)?;
+                    Some(why.replace(&copy, &original.display().to_string()))
+                })
+        });
+        return Err(ToolError::Usage(match hidden_file {
+            Some(why) => format!("the hidden tests do not build, so no grading starts: {why}"),
+            None => format!(
+                "the judge (the instructor's project with the grader's wire{}) does not build: {why}",
+                if hidden_targets.is_empty() {
+                    ""
+                } else {
+                    " and the hidden tests"
+                }
+            ),
+        }));
     }
     let listed = nextest::list(&project, &target_dir, &targets, None, &dir.join("listed"))?;
     Ok(Judge {
@@ -126,7 +142,6 @@ pub fn prepare(
         listed,
         targets,
         hidden: hidden_targets,
-        hidden_broken,
         wire,
         _temp: temp,
     })

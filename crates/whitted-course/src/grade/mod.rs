@@ -43,12 +43,15 @@
 //! added to the judge as `tests/hidden_NAME.rs`, never to the graded copy), compiled against
 //! the same public API. Their
 //! tests follow the same naming, so they count for the exercise they name; reports for
-//! students show their points, never their names or messages ([`super::report`]).
+//! students show their points, never their names or messages ([`super::report`]). A hidden
+//! test named after no exercise, or a hidden file that does not build, stops the grading
+//! before the first submission, at its file and line ([`hidden`]): nothing of it reaches a
+//! student.
 //!
 //! Its files, one job each: `setup.rs` (how a grading is set up), `grading.rs` ([`grade()`],
 //! the steps in order), `copy.rs` (the graded copy), `splice.rs`, `alone.rs` and `screen.rs`
 //! (the student's bodies in it), `outside.rs` and `judge_copy.rs` (the wire and the judge),
-//! `build.rs` and `blame.rs` (the build), `nextest.rs`, `junit.rs`, `runner.rs`,
+//! `hidden.rs` (the hidden tests' names), `build.rs` and `blame.rs` (the build), `nextest.rs`, `junit.rs`, `runner.rs`,
 //! `sandbox/` and `clean.rs` (the test run), `test_result.rs`, `score.rs` and `outcome.rs` (the results and the points),
 //! `render.rs` and `explained.rs` (the pictures and their words), `class.rs` (a class),
 //! `command.rs` (the reports) and `args.rs` (the command line).
@@ -65,6 +68,7 @@ pub mod command;
 mod copy;
 mod explained;
 mod grading;
+pub mod hidden;
 pub mod judge_copy;
 mod junit;
 mod nextest;
@@ -91,7 +95,7 @@ pub use outcome::{ExerciseScore, Grade, Road, Timings};
 pub use render::{ChapterFeedback, PICTURE_BYTES, RenderScore};
 pub use score::{chapter_targets, scores};
 pub use screen::screen;
-pub use setup::{DEFAULT_TIMEOUT, GradeSetup, SandboxSetup};
+pub use setup::{Chapters, DEFAULT_TIMEOUT, GradeSetup, SandboxSetup};
 pub(crate) use splice::hidden_files;
 pub use splice::student_body;
 pub use test_result::{Status, TestResult};

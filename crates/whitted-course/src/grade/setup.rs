@@ -15,11 +15,62 @@ use super::sandbox::watch::CompileLimits;
 /// The default time limit of one test.
 pub const DEFAULT_TIMEOUT: Duration = Duration::from_secs(20);
 
+/// The chapters a grading asks for: one (`4`) or a range of them (`1-3`), as `--chapter`
+/// takes them and as a package's scripts pass them on ([`std::fmt::Display`] writes them back).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Chapters {
+    /// The first chapter.
+    pub first: u8,
+    /// The last chapter (the first, for one).
+    pub last: u8,
+}
+
+impl Chapters {
+    /// Reads `4` or `1-3`: chapters of the course, the first not after the last.
+    pub fn parse(text: &str) -> Result<Self, String> {
+        let (first, last) = crate::handout::parse_chapters(text)?;
+        let known = |c: u8| crate::syllabus::chapter(c).is_some();
+        if !known(first) || !known(last) || first > last {
+            return Err(format!(
+                "expected chapters from {} to {}, the first not after the last, found `{text}`",
+                crate::syllabus::FIRST,
+                crate::syllabus::LAST
+            ));
+        }
+        Ok(Self { first, last })
+    }
+
+    /// The chapters, in order.
+    #[must_use]
+    pub fn list(self) -> Vec<u8> {
+        (self.first..=self.last).collect()
+    }
+
+    /// Every chapter of `chapters` in order, or all of the course's when `None`.
+    #[must_use]
+    pub fn or_all(chapters: Option<Self>) -> Vec<u8> {
+        chapters.map_or_else(
+            || crate::syllabus::CHAPTERS.iter().map(|c| c.number).collect(),
+            Self::list,
+        )
+    }
+}
+
+impl std::fmt::Display for Chapters {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        if self.first == self.last {
+            write!(f, "{}", self.first)
+        } else {
+            write!(f, "{}-{}", self.first, self.last)
+        }
+    }
+}
+
 /// How a grading is set up: which chapter, the hidden tests, the time limit, where it builds.
 #[derive(Clone, Debug)]
 pub struct GradeSetup {
-    /// Grade only this chapter (its exercises and its test file); all five when `None`.
-    pub chapter: Option<u8>,
+    /// Grade only these chapters (their exercises and their test files); all five when `None`.
+    pub chapter: Option<Chapters>,
     /// The instructor's hidden tests: a directory of `*.rs` test files.
     pub hidden: Option<PathBuf>,
     /// The time limit of each test.

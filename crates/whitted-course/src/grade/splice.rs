@@ -274,6 +274,19 @@ pub(crate) fn hidden_files(dir: &Path) -> Result<Vec<PathBuf>, ToolError> {
     Ok(files)
 }
 
+/// The test target a hidden test file becomes in a copy: `hidden_STEM`, each character of its
+/// name that is not an ASCII letter or digit made `_`.
+pub(crate) fn hidden_target(file: &Path) -> String {
+    let stem: String = file
+        .file_stem()
+        .map(|s| s.to_string_lossy().into_owned())
+        .unwrap_or_default()
+        .chars()
+        .map(|c| if c.is_ascii_alphanumeric() { c } else { '_' })
+        .collect();
+    format!("hidden_{stem}")
+}
+
 /// Copies each `*.rs` of the hidden directory into the copy's `tests/` as `hidden_NAME.rs`;
 /// returns the test targets added.
 pub(super) fn add_hidden(project: &Path, hidden: Option<&Path>) -> Result<Vec<String>, ToolError> {
@@ -289,14 +302,7 @@ pub(super) fn add_hidden(project: &Path, hidden: Option<&Path>) -> Result<Vec<St
         )));
     }
     for f in files {
-        let stem: String = f
-            .file_stem()
-            .map(|s| s.to_string_lossy().into_owned())
-            .unwrap_or_default()
-            .chars()
-            .map(|c| if c.is_ascii_alphanumeric() { c } else { '_' })
-            .collect();
-        let target = format!("hidden_{stem}");
+        let target = hidden_target(&f);
         let to = project.join(layout::core_test_file(&target));
         let bytes = std::fs::read(&f).map_err(|e| ToolError::io(&f, e))?;
         files::write_if_changed(&to, &bytes)?;

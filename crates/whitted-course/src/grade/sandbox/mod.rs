@@ -50,4 +50,4 @@ mod worker;
 pub(crate) use policy::SLOT_VAR;
 pub use policy::{FIRST_UID, Level, Limits, POLICY_VAR, Policy, RUNNER_COMMAND, SLOTS};
 pub use sweep::{SHARED_TEMPORARY, processes_of, remove_left_files};
-pub use worker::Sandbox;
+pub use worker::{BLOCKS, Lease, Sandbox};

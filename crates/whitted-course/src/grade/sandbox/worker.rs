@@ -20,6 +20,79 @@ pub struct Sandbox {
     pub runner: PathBuf,
     /// The host's target triple (the `CARGO_TARGET_<TRIPLE>_RUNNER` variable's name).
     pub triple: String,
+    /// The block of user ids its tests run as, leased for as long as any copy of it lives
+    /// (when the grader is root).
+    pub lease: Option<std::sync::Arc<Lease>>,
+}
+
+/// How many blocks of [`SLOTS`] user ids there are from [`FIRST_UID`]: as many gradings at
+/// once on one host, whatever their levels and their `--jobs`.
+pub const BLOCKS: u32 = 64;
+
+/// Where the leases are taken: a directory of root's alone, which no test's user can open.
+const LEASES: &str = "/tmp/whitted-sandbox-leases";
+
+/// A block of user ids leased by one grading: a directory `block-N` of [`LEASES`], made by
+/// it (a directory is made or found atomically) and holding its process id, removed when the
+/// lease is dropped; a directory whose process is gone is a lease left by a grading that
+/// died, and is taken over. Two gradings on one host never run tests as the same user, so a
+/// clean-up, which ends every process of its users, reaches only its own grading's.
+#[derive(Debug)]
+pub struct Lease {
+    /// The block: user ids from `FIRST_UID + block × SLOTS`.
+    pub block: u32,
+    /// Its directory.
+    dir: PathBuf,
+}
+
+impl Lease {
+    /// The first free block, tried from `preferred` on (a worker's number, so that a class's
+    /// workers take one each).
+    pub fn take(preferred: u32) -> Result<Self, String> {
+        use std::os::unix::fs::{DirBuilderExt, PermissionsExt};
+        let leases = Path::new(LEASES);
+        std::fs::DirBuilder::new()
+            .recursive(true)
+            .mode(0o700)
+            .create(leases)
+            .map_err(|e| format!("{LEASES}: {e}"))?;
+        std::fs::set_permissions(leases, std::fs::Permissions::from_mode(0o700))
+            .map_err(|e| format!("{LEASES}: {e}"))?;
+        let me = std::process::id().to_string();
+        for k in 0..BLOCKS {
+            let block = (preferred + k) % BLOCKS;
+            let dir = leases.join(format!("block-{block}"));
+            let owner = dir.join("pid");
+            match std::fs::create_dir(&dir) {
+                Ok(()) => {}
+                Err(e) if e.kind() == std::io::ErrorKind::AlreadyExists => {
+                    // taken, unless its grading is gone (or never wrote its id)
+                    let alive = std::fs::read_to_string(&owner).ok().is_some_and(|pid| {
+                        let pid = pid.trim();
+                        !pid.is_empty() && Path::new("/proc").join(pid).exists()
+                    });
+                    if alive || std::fs::remove_dir_all(&dir).is_err() {
+                        continue;
+                    }
+                    if std::fs::create_dir(&dir).is_err() {
+                        continue;
+                    }
+                }
+                Err(e) => return Err(format!("{}: {e}", dir.display())),
+            }
+            std::fs::write(&owner, &me).map_err(|e| format!("{}: {e}", owner.display()))?;
+            return Ok(Self { block, dir });
+        }
+        Err(format!(
+            "all {BLOCKS} blocks of sandbox users are taken by other gradings on this host"
+        ))
+    }
+}
+
+impl Drop for Lease {
+    fn drop(&mut self) {
+        let _ = std::fs::remove_dir_all(&self.dir);
+    }
 }
 
 /// Whether this process runs as root.
@@ -66,8 +139,14 @@ impl Sandbox {
                 return Err(format!("{tool} (util-linux) is not installed"));
             }
         }
-        let uid = (is_root() && level != Level::Off)
-            .then(|| FIRST_UID + SLOTS * u32::try_from(worker).unwrap_or(0));
+        // a block of users of this grading's own: no other grading's clean-up reaches them
+        let lease = if is_root() && level != Level::Off {
+            let preferred = u32::try_from(worker).unwrap_or(0) % BLOCKS;
+            Some(std::sync::Arc::new(Lease::take(preferred)?))
+        } else {
+            None
+        };
+        let uid = lease.as_ref().map(|l| FIRST_UID + SLOTS * l.block);
         let policy = Policy {
             level,
             bwrap,
@@ -105,6 +184,7 @@ impl Sandbox {
             policy,
             runner: runner.to_path_buf(),
             triple,
+            lease,
         })
     }
 
