@@ -272,6 +272,41 @@ mod tests {
     }
 
     #[test]
+    fn an_ungraded_row_has_empty_cells_and_its_reason() {
+        let m = crate::manifest::load(
+            &Path::new(env!("CARGO_MANIFEST_DIR")).join("../../chapters/formulas.toml"),
+        )
+        .unwrap();
+        let roster = Roster::from([("bob".to_string(), ("s2".to_string(), "b@x".to_string()))]);
+        let head = header(&m, &[1]);
+        let max = possible(&m, &[1]);
+        let row = ungraded(
+            "bob",
+            "no crates/whitted/src, \"really\"",
+            &m,
+            &[1],
+            &roster,
+        );
+        let cells = |line: &str| line.split(',').count();
+        // the reason holds one comma, inside its quotes
+        assert_eq!(
+            (cells(&head), cells(&max)),
+            (cells(&row) - 1, cells(&row) - 1)
+        );
+        assert!(
+            row.starts_with(
+                "bob,s2,b@x,,13,,,,,,,,,\"not graded: no crates/whitted/src, \"\"really\"\"\""
+            ),
+            "computed {row:?}"
+        );
+        assert!(
+            max.starts_with("Points Possible,,,13,13,13,3,"),
+            "computed {max:?}"
+        );
+        assert!(head.ends_with(",ex 1.7,note"), "computed {head:?}");
+    }
+
+    #[test]
     fn a_roster_is_read_and_a_bad_line_is_placed() {
         let dir = tempfile::tempdir().unwrap();
         let path = dir.path().join("roster.csv");

@@ -111,6 +111,12 @@ fn grade_a_class(
     merge(&[])?;
     let out = out.canonicalize().map_err(|e| ToolError::io(out, e))?;
     let jobs = jobs.unwrap_or_else(|| std::thread::available_parallelism().map_or(1, usize::from));
+    let count = std::fs::read_dir(class).map_or(0, |d| {
+        d.filter_map(Result::ok)
+            .filter(|e| e.path().is_dir())
+            .count()
+    });
+    let jobs = jobs.min(count.max(1));
     let start = std::time::Instant::now();
     // each student's reports as soon as they are graded: a stalled submission holds back no
     // other student's
