@@ -10,10 +10,12 @@
 //! whitted formulas readmes                          each chapter README's exercises
 //! whitted handout --out DIR [--chapters 1-3 | --exercises NAME,2.4]
 //!                                                   a student's copy, the exercises as todo!()
-//! whitted learn [list | hint [EXERCISE] | watch]    progress, the next exercise, hints, rerun on save
-//! whitted grade [DIR] [--chapter N] [--hidden DIR] [--json F] [--junit F] [--csv F]
+//! whitted learn [list | hint [EXERCISE] | reset EXERCISE | watch]
+//!                                                   progress, the next exercise, hints, a fresh start, rerun on save
+//! whitted grade [DIR] [--chapter N|A-B] [--hidden DIR] [--json F] [--junit F] [--csv F]
 //!                                                   a student's copy graded with the instructor's tests
-//! whitted grade --class DIR --out REPORTS           every submission of a class
+//! whitted grade --class DIR --out REPORTS [--roster F] [--new-gradebook]
+//!                                                   every submission of a class, and its class.csv
 //! whitted autograder --platform P --out DIR         a grading platform's package (gradescope,
 //!                                                   classroom, prairielearn, codegrade)
 //! whitted autograder grade|prebuild|check           what those packages run

@@ -224,8 +224,13 @@ fn waiting_on(manifest: &Manifest, states: &[State], changed: &[usize], on: usiz
         return String::new();
     }
     format!(
-        "  you changed exercise {} too: its tests call exercise {}, so {} judged once exercise {} passes\n",
+        "  you changed exercise {} too: {} exercise {}, so {} judged once exercise {} passes\n",
         waiting.join(", "),
+        if waiting.len() == 1 {
+            "its tests call"
+        } else {
+            "their tests call"
+        },
         manifest.entries[on].exercise.id,
         if waiting.len() == 1 {
             "it is"

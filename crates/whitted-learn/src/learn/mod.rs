@@ -10,7 +10,10 @@
 //! 0. **What changed.** The exercises whose body changed since the last complete check
 //!    ([`crate::changes`]) are checked first: one that now passes says so at once, and one
 //!    that fails gets its verdict before anything else, though it was finished before.
-//! 1. **The verdict.** The exercise to look at is the first one that was not done at the last
+//! 1. **The verdict.** An exercise whose tests fail while an exercise they call (by the map)
+//!    is not done waits for that one ([`rooted`]): the verdict is always on the root of a
+//!    failure, and names a known mistake from the values its tests print
+//!    ([`crate::known`]). The exercise to look at is the first one that was not done at the last
 //!    check (`.whitted/progress.json`, by exercise name), or the first. Only the test target that holds its
 //!    tests (by the measured map, `chapters/exercise-tests.toml`) is built and run; if all of
 //!    that target's exercises pass, the next target is, until one is not done. That verdict is

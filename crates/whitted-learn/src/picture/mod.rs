@@ -17,6 +17,12 @@
 //!   nothing of the chapter that it can draw is written, or when what is chosen cannot be
 //!   drawn yet (chapter 2's scene holds every shape: its pictures need all of them).
 //!
+//! A stage whose road calls an exercise not written yet (by the map's render tests of its
+//! chapter) is not built: its line says which exercise it waits for. A picture the same as the
+//! book's beside a verdict on a written exercise that fails takes no ✓: its line says that it
+//! cannot show that exercise yet. When a save finishes a chapter and breaks another exercise,
+//! the picture follows the one that fails.
+//!
 //! Each is the book's figure as `docs/figures.toml` lists it ([`crate::figures`]), drawn by
 //! the project's own build of that figure's binary with the figure's arguments and
 //! `--compare` with the book's PNG ([`crate::chapter_binary`]), into `.whitted/FILE`. Nothing of the reference's code is
