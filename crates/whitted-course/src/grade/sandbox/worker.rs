@@ -32,7 +32,7 @@ pub const BLOCKS: u32 = 64;
 /// Where the leases are taken: a directory of root's alone, which no test's user can open.
 const LEASES: &str = "/tmp/whitted-sandbox-leases";
 
-/// A block of user ids leased by one grading: a directory `block-N` of [`LEASES`], made by
+/// A block of user ids leased by one grading: a directory `block-N` of `/tmp/whitted-sandbox-leases`, made by
 /// it (a directory is made or found atomically) and holding its process id, removed when the
 /// lease is dropped; a directory whose process is gone is a lease left by a grading that
 /// died, and is taken over. Two gradings on one host never run tests as the same user, so a
