@@ -18,7 +18,7 @@
 //!   graded and keeps the others, in their order; a gradebook of other columns (other
 //!   chapters) is refused unless `--new-gradebook` asks to write it anew.
 //!
-//! Course book: [The instructor's guide](../../../docs/book/instructor-guide.html) (`docs/src/instructor-guide.md`).
+//! Course book: [The instructor's guide](../../../../docs/book/instructor-guide.html) (`docs/src/instructor-guide.md`).
 
 use std::collections::BTreeMap;
 use std::path::Path;
@@ -26,7 +26,6 @@ use std::path::Path;
 use crate::ToolError;
 use crate::grade::Grade;
 use crate::manifest::Manifest;
-use crate::report::points;
 
 /// The gradebook's file name in `--out`.
 pub const FILE: &str = "class.csv";
@@ -73,15 +72,7 @@ fn first_cell(line: &str) -> String {
 #[must_use]
 pub fn header(manifest: &Manifest, chapters: &[u8]) -> String {
     let mut cols = vec!["student".to_string(), "id".into(), "email".into()];
-    cols.extend(["total".into(), "max".into()]);
-    cols.extend(chapters.iter().map(|c| format!("chapter {c}")));
-    cols.extend(
-        manifest
-            .entries
-            .iter()
-            .filter(|e| chapters.contains(&e.chapter))
-            .map(|e| format!("ex {}", e.exercise.id)),
-    );
+    cols.extend(crate::report::score_columns(manifest, chapters));
     cols.push("note".into());
     cols.join(",")
 }
@@ -118,18 +109,11 @@ fn who(student: &str, roster: &Roster) -> Vec<String> {
     vec![cell(student), cell(&id), cell(&email)]
 }
 
-/// The row of a graded submission.
+/// The row of the graded submission `student` (its folder's name).
 #[must_use]
-pub fn graded(grade: &Grade, manifest: &Manifest, roster: &Roster) -> String {
-    let mut cols = who(&grade.student, roster);
-    cols.extend([points(grade.score()), points(grade.max())]);
-    cols.extend(
-        grade
-            .chapters
-            .iter()
-            .map(|&c| points(grade.chapter(manifest, c).0)),
-    );
-    cols.extend(grade.exercises.iter().map(|e| points(e.score)));
+pub fn graded(student: &str, grade: &Grade, manifest: &Manifest, roster: &Roster) -> String {
+    let mut cols = who(student, roster);
+    cols.extend(crate::report::score_cells(grade, manifest));
     cols.push(String::new());
     cols.join(",")
 }

@@ -129,10 +129,18 @@ pub fn junit(grade: &Grade, manifest: &Manifest) -> String {
     crate::autograder::codegrade::junit(&report, &grade.chapters, Audience::Instructor)
 }
 
-/// The gradebook's header: student, total, maximum, each graded chapter, each exercise.
+/// The gradebook's header: student, then [`score_columns`].
 #[must_use]
 pub fn csv_header(manifest: &Manifest, chapters: &[u8]) -> String {
-    let mut cols = vec!["student".to_string(), "total".into(), "max".into()];
+    let mut cols = vec!["student".to_string()];
+    cols.extend(score_columns(manifest, chapters));
+    cols.join(",")
+}
+
+/// The score's columns of a gradebook: total, maximum, each graded chapter, each exercise.
+#[must_use]
+pub fn score_columns(manifest: &Manifest, chapters: &[u8]) -> Vec<String> {
+    let mut cols = vec!["total".to_string(), "max".into()];
     cols.extend(chapters.iter().map(|c| format!("chapter {c}")));
     cols.extend(
         manifest
@@ -141,7 +149,7 @@ pub fn csv_header(manifest: &Manifest, chapters: &[u8]) -> String {
             .filter(|e| chapters.contains(&e.chapter))
             .map(|e| format!("ex {}", e.exercise.id)),
     );
-    cols.join(",")
+    cols
 }
 
 /// One gradebook row, in the columns of [`csv_header`].
@@ -152,7 +160,15 @@ pub fn csv_row(grade: &Grade, manifest: &Manifest) -> String {
     } else {
         grade.student.clone()
     };
-    let mut cols = vec![quoted, points(grade.score()), points(grade.max())];
+    let mut cols = vec![quoted];
+    cols.extend(score_cells(grade, manifest));
+    cols.join(",")
+}
+
+/// A grade's cells in the columns of [`score_columns`].
+#[must_use]
+pub fn score_cells(grade: &Grade, manifest: &Manifest) -> Vec<String> {
+    let mut cols = vec![points(grade.score()), points(grade.max())];
     cols.extend(
         grade
             .chapters
@@ -160,5 +176,5 @@ pub fn csv_row(grade: &Grade, manifest: &Manifest) -> String {
             .map(|&c| points(grade.chapter(manifest, c).0)),
     );
     cols.extend(grade.exercises.iter().map(|e| points(e.score)));
-    cols.join(",")
+    cols
 }

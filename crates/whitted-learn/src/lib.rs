@@ -32,6 +32,7 @@ pub mod picture;
 pub mod screen;
 pub mod todo;
 pub mod trees;
+pub mod week;
 
 /// The course's outline: the chapters (and the notes' sections, the todo!() message), read from
 /// the one table every crate of whitted reads.

@@ -397,7 +397,9 @@ pub fn parse(text: &str, file: &str) -> Result<Manifest, ToolError> {
     }
 
     let listed = raw.handout.get_ref().exercises.as_ref();
-    let entries = handout::only_listed(text, file, listed, entries, &mut handout)?;
+    let (entries, split) = handout::only_listed(listed, entries, |e| e.exercise.name.as_str())
+        .map_err(|(span, message)| error_at(text, file, span, message))?;
+    (handout.exercises, handout.others) = split.map_or((None, Vec::new()), |(h, o)| (Some(h), o));
     Ok(Manifest {
         file: file.to_string(),
         prove,

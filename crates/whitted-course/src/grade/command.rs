@@ -153,7 +153,7 @@ fn grade_a_class(
             Ok(g) => {
                 rows.push((
                     e.student.clone(),
-                    crate::gradebook::graded(g, manifest, &roster),
+                    crate::gradebook::graded(&e.student, g, manifest, &roster),
                 ));
             }
             Err(why) => rows.push((

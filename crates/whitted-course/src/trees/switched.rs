@@ -11,12 +11,12 @@ use std::path::{Path, PathBuf};
 use super::choose::Chosen;
 use super::file::{MISTAKE_SHOWS, rel, tree_file, write_file};
 use super::run::{against, figure_of};
-use crate::cargo::{Build, Built, Stderr};
+use crate::ToolError;
+use crate::cargo::Built;
 use crate::figures::Figure;
 use crate::manifest::Manifest;
 use crate::mistakes::{self, Mutant};
 use crate::syllabus::{self, Chapter};
-use crate::{ToolError, layout};
 use whitted_learn::trees::{Fingerprint, MISTAKES, Mistake, Mistakes, trees_file};
 
 /// The reference's chapter binaries with every known mistake behind its switch, and what
@@ -62,7 +62,13 @@ impl<'a> Switched<'a> {
             mutants.len(),
             target.display()
         );
-        let built = build_copy(&copy, &target, &[], &binaries, "the copy with the mistakes")?;
+        let built = super::values::build_copy(
+            &copy,
+            &target,
+            &[],
+            &binaries,
+            "the copy with the mistakes",
+        )?;
         let tests = super::values::record(root, &copy, &target, manifest, mutants)?;
         Ok(Self {
             root,
@@ -255,43 +261,4 @@ impl<'a> Switched<'a> {
         );
         Ok(())
     }
-}
-
-/// Builds, in the copy `copy` with the mistakes behind their switches, into `target`, the
-/// renderer's test targets `tests` and the chapter binaries `bins` (the packages of each); an
-/// error that names `what` when it does not build.
-pub(super) fn build_copy(
-    copy: &Path,
-    target: &Path,
-    tests: &[String],
-    bins: &[String],
-    what: &str,
-) -> Result<Built, ToolError> {
-    let packages: &[&str] = if bins.is_empty() {
-        &[layout::CORE_PACKAGE]
-    } else {
-        &[layout::APP_PACKAGE]
-    };
-    let built = Build {
-        project: copy,
-        packages,
-        tests,
-        bins,
-        examples: &[],
-        profile: None,
-        features: &[],
-        target_dir: Some(target),
-        debug_info: false,
-        locked: true,
-        stderr: Stderr::Inherit,
-        wrapper: None,
-    }
-    .run()?;
-    if !built.success {
-        return Err(ToolError::Build(format!(
-            "{what} does not build: {}",
-            built.first_error()
-        )));
-    }
-    Ok(built)
 }

@@ -11,6 +11,7 @@ use std::collections::BTreeMap;
 use std::path::Path;
 use std::time::Duration;
 
+use crate::cargo::{Build, Built, Stderr};
 use crate::manifest::Manifest;
 use crate::mistakes::{self, Mutant};
 use crate::{ToolError, layout};
@@ -53,7 +54,7 @@ pub(super) fn record(
         "building the tests of the mistakes' exercises ({}) with the mistakes behind a switch",
         targets.join(", ")
     );
-    let built = super::switched::build_copy(
+    let built = build_copy(
         copy,
         target,
         &targets,
@@ -96,4 +97,43 @@ pub(super) fn record(
         out.insert(m.name.clone(), failing);
     }
     Ok(out)
+}
+
+/// Builds, in the copy `copy` with the mistakes behind their switches, into `target`, the
+/// renderer's test targets `tests` and the chapter binaries `bins` (the packages of each); an
+/// error that names `what` when it does not build.
+pub(super) fn build_copy(
+    copy: &Path,
+    target: &Path,
+    tests: &[String],
+    bins: &[String],
+    what: &str,
+) -> Result<Built, ToolError> {
+    let packages: &[&str] = if bins.is_empty() {
+        &[layout::CORE_PACKAGE]
+    } else {
+        &[layout::APP_PACKAGE]
+    };
+    let built = Build {
+        project: copy,
+        packages,
+        tests,
+        bins,
+        examples: &[],
+        profile: None,
+        features: &[],
+        target_dir: Some(target),
+        debug_info: false,
+        locked: true,
+        stderr: Stderr::Inherit,
+        wrapper: None,
+    }
+    .run()?;
+    if !built.success {
+        return Err(ToolError::Build(format!(
+            "{what} does not build: {}",
+            built.first_error()
+        )));
+    }
+    Ok(built)
 }

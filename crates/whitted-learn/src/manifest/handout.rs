@@ -11,93 +11,51 @@
 //!
 //! Course book: [The instructor's guide](../../../../../docs/book/instructor-guide.html) (`docs/src/instructor-guide.md`).
 
+use std::ops::Range;
+
 use toml::Spanned;
 
-use super::{Entry, HandoutTable, Manifest, error_at};
-use crate::ToolError;
+/// The names a handout's list holds and the names it leaves out, in the manifest's order.
+pub(super) type Split = (Vec<String>, Vec<String>);
 
-/// The entries of `listed` (the `[handout] exercises` value of the manifest text `text`, read
-/// from `file`), in the manifest's order, with the table's [`HandoutTable::exercises`] and
-/// [`HandoutTable::others`] filled in; all of `entries` when the key is absent. An empty list
-/// or a name that is no exercise's is an error at its place.
-pub(super) fn only_listed(
-    text: &str,
-    file: &str,
+/// An error in the list: its span in the manifest's text, and what is wrong.
+pub(super) type ListError = (Range<usize>, String);
+
+/// Which of `entries` (in the manifest's order, each named by `name`) a handout holds by its
+/// `[handout] exercises` list `listed`: those it lists, then the names it holds and the names
+/// it leaves out; all of them, and no names, when the key is absent. An empty list or a name
+/// that is no exercise's is an error: the span of the list in the manifest's text, and what is
+/// wrong.
+pub(super) fn only_listed<E>(
     listed: Option<&Spanned<Vec<String>>>,
-    entries: Vec<Entry>,
-    table: &mut HandoutTable,
-) -> Result<Vec<Entry>, ToolError> {
+    entries: Vec<E>,
+    name: impl Fn(&E) -> &str,
+) -> Result<(Vec<E>, Option<Split>), ListError> {
     let Some(listed) = listed else {
-        return Ok(entries);
+        return Ok((entries, None));
     };
     let names = listed.get_ref();
-    let err = |message: String| error_at(text, file, listed.span(), message);
     if names.is_empty() {
-        return Err(err(
+        return Err((
+            listed.span(),
             "handout.exercises: expected the names of the exercises this handout holds, found none (leave the key out for all of them)".into(),
         ));
     }
     if let Some(unknown) = names
         .iter()
-        .find(|n| !entries.iter().any(|e| e.exercise.name == **n))
+        .find(|n| !entries.iter().any(|e| name(e) == n.as_str()))
     {
-        return Err(err(format!(
-            "handout.exercises: {unknown:?} names no exercise of the manifest (the exercises' `name`s, such as \"viewing_basis\")"
-        )));
+        return Err((
+            listed.span(),
+            format!(
+                "handout.exercises: {unknown:?} names no exercise of the manifest (the exercises' `name`s, such as \"viewing_basis\")"
+            ),
+        ));
     }
-    let (kept, others): (Vec<Entry>, Vec<Entry>) = entries
+    let (kept, others): (Vec<E>, Vec<E>) = entries
         .into_iter()
-        .partition(|e| names.contains(&e.exercise.name));
-    table.exercises = Some(kept.iter().map(|e| e.exercise.name.clone()).collect());
-    table.others = others.into_iter().map(|e| e.exercise.name).collect();
-    Ok(kept)
-}
-
-impl Manifest {
-    /// The last chapter the manifest's exercises reach: the handout's last chapter when it
-    /// lists its own exercises, else the syllabus's last. A chapter after it has no exercise
-    /// in this handout, and no picture the loop draws.
-    #[must_use]
-    pub fn last_chapter(&self) -> u8 {
-        self.entries
-            .iter()
-            .map(|e| e.chapter)
-            .max()
-            .unwrap_or(whitted_syllabus::LAST)
-    }
-
-    /// Whether the exercise named `name` is one the manifest knows but this handout leaves
-    /// out (see [`HandoutTable::others`]).
-    #[must_use]
-    pub fn is_left_out(&self, name: &str) -> bool {
-        self.handout.others.iter().any(|n| n == name)
-    }
-}
-
-impl Manifest {
-    /// The one line a student reads when `key` names no exercise of this manifest: a handout
-    /// of some chapters says when the name is one of the exercises it leaves out.
-    #[must_use]
-    pub fn not_found(&self, key: &str) -> String {
-        let key = key.trim();
-        // an id names its chapter before the dot: a chapter this handout has no exercise of
-        let chapter = key
-            .split_once('.')
-            .and_then(|(c, _)| c.parse::<u8>().ok())
-            .filter(|c| whitted_syllabus::chapter(*c).is_some());
-        let left_out = self.handout.exercises.is_some()
-            && chapter.is_some_and(|c| !self.entries.iter().any(|e| e.chapter == c));
-        if left_out || self.handout.others.iter().any(|n| n == key) {
-            format!(
-                "exercise {key} is not one of this handout's: it is given, or it comes with a \
-                 later chapter's handout (`{} list` shows this handout's)",
-                crate::learn::COMMAND
-            )
-        } else {
-            format!(
-                "there is no exercise {key}: `{} list` shows the ids",
-                crate::learn::COMMAND
-            )
-        }
-    }
+        .partition(|e| names.iter().any(|n| n == name(e)));
+    let held = kept.iter().map(|e| name(e).to_string()).collect();
+    let left = others.iter().map(|e| name(e).to_string()).collect();
+    Ok((kept, Some((held, left))))
 }
