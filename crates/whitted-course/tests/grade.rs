@@ -372,13 +372,46 @@ fn whitted(args: &[&str]) -> std::process::Output {
         .unwrap()
 }
 
-/// A directory that is not a copy of the project, a chapter out of range, hidden tests that
-/// are not a directory: one line of error each, exit status 2, before anything is built.
+/// A directory that is not a copy of the project, a chapter out of range or a range the wrong
+/// way round, hidden tests that are not a directory, a hidden test named after no exercise:
+/// one line of error each, exit status 2, before anything is built.
 #[test]
 fn grading_something_that_cannot_be_graded_is_one_line_of_error() {
     let empty = tempfile::tempdir().unwrap();
     let dir = empty.path().to_str().unwrap();
+    let work = tempfile::tempdir().unwrap();
+    let submission = work.path().join("ada");
+    std::fs::create_dir_all(submission.join("crates/whitted/src")).unwrap();
+    let hidden = work.path().join("hidden");
+    std::fs::create_dir_all(&hidden).unwrap();
+    std::fs::write(
+        hidden.join("mine.rs"),
+        "#[test]\nfn ex_viewing_basis_fine() {}\n#[test]\nfn viewing_basis_no_prefix() {}\n",
+    )
+    .unwrap();
+    let target = work.path().join("build");
+    let (submission, hidden, target) = (
+        submission.to_str().unwrap(),
+        hidden.to_str().unwrap(),
+        target.to_str().unwrap(),
+    );
+    let named_after_none = format!(
+        "{hidden}/mine.rs:4:4: hidden test `viewing_basis_no_prefix` is named after no exercise"
+    );
     for (args, says) in [
+        (vec!["grade", "--chapter", "3-1"], "--chapter"),
+        (
+            vec![
+                "grade",
+                submission,
+                "--hidden",
+                hidden,
+                "--unsandboxed",
+                "--target-dir",
+                target,
+            ],
+            named_after_none.as_str(),
+        ),
         (
             vec!["grade", dir],
             "is not a copy of the handout: it has no crates/whitted/src/ directory",
