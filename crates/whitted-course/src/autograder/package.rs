@@ -432,6 +432,13 @@ pub fn write(
             );
         }
         Platform::Classroom => {
+            // the repository is the handout: when it lists its own exercises, those are what
+            // its workflow grades and scores, a step each (the grading reads the same list
+            // from the handout's first commit)
+            let own = crate::manifest::load(&out.join(crate::manifest::DEFAULT_PATH))
+                .ok()
+                .filter(|h| h.handout.exercises.is_some());
+            let manifest = own.as_ref().unwrap_or(manifest);
             let items = super::classroom::items(root, manifest, options)?
                 .into_iter()
                 .map(|(path, text)| Item {
