@@ -1062,7 +1062,13 @@ fn a_class_is_graded_as_each_submission_deserves() {
     // and its report says, as learn does, where the ray trees first go wrong and which
     // exercise computed it, for each mistake whose trees differ (chapters/mistakes.json)
     let known: serde_json::Value = json(&root().join("chapters/mistakes.json"));
-    for k in known["mistakes"].as_array().unwrap() {
+    // (a mistake no picture shows has no fingerprint: its tests alone tell it)
+    for k in known["mistakes"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .filter(|k| k.get("fingerprint").is_some())
+    {
         let name = k["name"].as_str().unwrap();
         let g = find(&entries, &format!("mutant-{name}"));
         let x = &m.entries[index(&m, k["exercise"].as_str().unwrap())].exercise;

@@ -50,7 +50,14 @@ pub fn regions(root: &Path, manifest: &Manifest) -> Result<Vec<Region>, ToolErro
         let relative = file.strip_prefix(root).unwrap_or(&file).to_path_buf();
         let mut offset = 0;
         for (n, line) in text.split_inclusive('\n').enumerate() {
+            // a week's handout keeps the markers of the exercises it gives or leaves to a
+            // later week (its manifest lists its own): those are not the student's regions
+            let left_out = line
+                .trim()
+                .strip_prefix(BEGIN)
+                .is_some_and(|name| manifest.is_left_out(name.trim()));
             if line.trim_start().starts_with(BEGIN)
+                && !left_out
                 && !known
                     .get(&relative)
                     .is_some_and(|starts| starts.contains(&offset))
