@@ -125,7 +125,13 @@ fn what_a_formula_never_needs_is_refused_with_its_line() {
 #[test]
 fn the_loop_names_the_refused_line_in_the_students_file() {
     let workspace = Path::new(env!("CARGO_MANIFEST_DIR")).join("../..");
-    let manifest = crate::manifest::load(&workspace.join(crate::manifest::DEFAULT_PATH)).unwrap();
+    // every exercise, in a week's handout too (whose list is left out)
+    let text = std::fs::read_to_string(workspace.join(crate::manifest::DEFAULT_PATH)).unwrap();
+    let all: String = text
+        .split_inclusive('\n')
+        .filter(|l| !l.starts_with("exercises = ["))
+        .collect();
+    let manifest = crate::manifest::parse(&all, crate::manifest::DEFAULT_PATH).unwrap();
     let dir = tempfile::tempdir().unwrap();
     let src = dir.path().join(crate::layout::core_src());
     std::fs::create_dir_all(&src).unwrap();
