@@ -54,3 +54,16 @@ impl Manifest {
         }
     }
 }
+
+/// The project's manifest with every exercise, in a week's handout too (its `exercises = [...]`
+/// line left out): for the tests that name exercises of every chapter.
+#[cfg(test)]
+pub(crate) fn every_exercise() -> Manifest {
+    let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../..");
+    let text = std::fs::read_to_string(root.join(crate::manifest::DEFAULT_PATH)).unwrap();
+    let all: String = text
+        .split_inclusive('\n')
+        .filter(|l| !l.starts_with("exercises = ["))
+        .collect();
+    crate::manifest::parse(&all, crate::manifest::DEFAULT_PATH).unwrap()
+}

@@ -55,7 +55,6 @@ pub fn check(
             .collect();
         rooted(manifest, seen, &calls)
     };
-    let state_now = |run: &TestRun, i: usize| -> State { now(run)[i].clone() };
     // the grader's screen, on every body, before anything is built: what it would refuse is
     // told now, with its line and a way to write it
     for refused in crate::screen::refused::refused(root, manifest) {
@@ -119,7 +118,7 @@ pub fn check(
     }
     // 1. the verdict: the targets of the first exercises not done, one at a time
     while shown.is_none() {
-        let next = (0..manifest.entries.len()).find(|&i| state_now(&run, i) != State::Done);
+        let next = now(&run).iter().position(|s| *s != State::Done);
         let Some(next) = next else { break };
         let target = target_of[next].clone();
         match target {
@@ -148,11 +147,13 @@ pub fn check(
     }
     // the picture, before the other chapters' tests: what the student looks at next
     if draw {
-        let now: Vec<State> = (0..manifest.entries.len())
-            .map(|i| state_now(&run, i))
-            .collect();
         say.report(&crate::picture::report(
-            root, manifest, known, &now, shown, style,
+            root,
+            manifest,
+            known,
+            &now(&run),
+            shown,
+            style,
         ));
     }
     // 2. the progress: every target not run yet
