@@ -1911,11 +1911,14 @@ fn the_runner_passes_only_what_libtest_passed_and_leaves_nothing_behind() {
         .map(PathBuf::from)
         .find(|p| p.exists())
         .expect("bubblewrap");
+    // a block of users of this test's own, as a grading takes: a grading beside it (another
+    // test binary of CI's) never sweeps these users
+    let lease = sandbox::Lease::take(9).expect("a block of sandbox users");
     for level in [Level::Namespaces, Level::User] {
         let policy = sandbox::Policy {
             level,
             bwrap: bwrap.clone(),
-            uid: Some(sandbox::FIRST_UID + sandbox::SLOTS * 9),
+            uid: Some(sandbox::FIRST_UID + sandbox::SLOTS * lease.block),
             slot: 0,
             limits: sandbox::Limits::default(),
             read: Vec::new(),

@@ -15,9 +15,11 @@ impl Policy {
     /// processes in this slot and could hold its output open, and a file left in `/tmp` could
     /// carry answers to the next submission. `kill -1` is sent again while a process of the
     /// user is alive (one that forks as it is killed can slip past one round). In namespaces
-    /// nothing is left: the PID namespace ends with the test, and its `/tmp` is its own.
+    /// the kernel ends what is left when the PID namespace's first process ends, but not at
+    /// once: the same rounds make sure that it has ended before the runner returns (the
+    /// namespace's `/tmp` is its own, so no file is left there).
     pub fn sweep(&self) {
-        let (Level::User, Some((uid, gid))) = (self.level, self.user()) else {
+        let (Level::User | Level::Namespaces, Some((uid, gid))) = (self.level, self.user()) else {
             return;
         };
         for round in 0..50 {
@@ -41,7 +43,9 @@ impl Policy {
             }
             std::thread::sleep(std::time::Duration::from_millis(5 * (round + 1)));
         }
-        remove_left_files(&(uid..uid + 1));
+        if self.level == Level::User {
+            remove_left_files(&(uid..uid + 1));
+        }
     }
 
     /// [`Policy::sweep`] for every slot of this worker: before a submission's tests, what the
