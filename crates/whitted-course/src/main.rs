@@ -89,7 +89,7 @@ enum Command {
     /// screen at every save: a formula's grammar passes, whatever its names; `unsafe`, items,
     /// lifetimes, most macros and paths into the process, files, the network or the
     /// environment do not), which is never compiled. Each test runs in its own process under
-    /// --timeout (cargo-nextest), so a panic, a stack overflow or an endless loop costs only
+    /// --timeout of CPU time (cargo-nextest), so a panic, a stack overflow or an endless loop costs only
     /// its own tests, and a test passes only when the judge's assertions all held on the
     /// values the student's code returned. An exercise's points (chapters/formulas.toml) are shared by its tests.
     /// Exit status 0 once graded, whatever the score; 2 on an error.
@@ -112,6 +112,14 @@ enum Command {
     #[command(name = "compile-watch", hide = true)]
     CompileWatch {
         /// `--cpu-ms N --memory BYTES -- PROGRAM ARGS…`
+        #[arg(trailing_var_arg = true, allow_hyphen_values = true, required = true)]
+        args: Vec<std::ffi::OsString>,
+    },
+    /// Runs one of the judge's tests under its limit of CPU time: the grader's target runner
+    /// for nextest.
+    #[command(name = "test-clock", hide = true)]
+    TestClock {
+        /// `--cpu-ms N --road-times K TEST-BINARY ARGS…`
         #[arg(trailing_var_arg = true, allow_hyphen_values = true, required = true)]
         args: Vec<std::ffi::OsString>,
     },
@@ -155,6 +163,7 @@ fn main() -> ExitCode {
         Command::Autograder(a) => a.run(),
         Command::SandboxRun { command } => return grade::runner::run_test(&command),
         Command::CompileWatch { args } => return grade::sandbox::watch::run(&args),
+        Command::TestClock { args } => return grade::clock::run(&args),
         Command::Figures(f) => f.run(),
         Command::Trees(t) => t.run(),
         Command::Book(b) => b.run(),

@@ -834,4 +834,33 @@ fn the_maxima_add_up_and_no_pointless_test_is_listed() {
         scored, cents,
         "every test passed: the scores are the maxima"
     );
+    // CodeGrade's JUnit: each test case's `max_points`, and its suite's, add up the same
+    let junit = codegrade::junit(&r, &[4], Audience::Student);
+    let doc = roxmltree::Document::parse(&junit).unwrap();
+    let property = |node: roxmltree::Node, name: &str| -> i64 {
+        let p = node
+            .children()
+            .filter(|n| n.has_tag_name("properties"))
+            .flat_map(|n| n.children())
+            .find(|n| n.attribute("name") == Some(name))
+            .unwrap_or_else(|| panic!("no {name} in {junit}"));
+        (p.attribute("value").unwrap().parse::<f64>().unwrap() * 100.0).round() as i64
+    };
+    let cases: Vec<_> = doc
+        .descendants()
+        .filter(|n| n.has_tag_name("testcase"))
+        .collect();
+    assert_eq!(cases.len(), 3, "{junit}");
+    let junit_cents: i64 = cases.iter().map(|&c| property(c, "max_points")).sum();
+    assert_eq!(
+        junit_cents,
+        i64::from(points) * 100,
+        "the JUnit maxima of blocks_light's 3 tests in hundredths, against its {points} points: {junit}"
+    );
+    let suite = doc
+        .descendants()
+        .find(|n| n.has_tag_name("testsuite"))
+        .unwrap();
+    assert_eq!(property(suite, "max_points"), junit_cents, "{junit}");
+    assert_eq!(property(suite, "points"), junit_cents, "{junit}");
 }

@@ -692,6 +692,22 @@ fn a_class_is_graded_as_each_submission_deserves() {
         "{:?}",
         failed(reference)
     );
+    // the instructor's JUnit carries each test's points: they add up to the course's exactly
+    let junit = whitted_course::report::junit(reference, &m);
+    let cents: i64 = roxmltree::Document::parse(&junit)
+        .unwrap()
+        .descendants()
+        .filter(|n| n.has_tag_name("testcase"))
+        .flat_map(|c| c.descendants())
+        .filter(|n| n.attribute("name") == Some("max_points"))
+        .map(|p| (p.attribute("value").unwrap().parse::<f64>().unwrap() * 100.0).round() as i64)
+        .sum();
+    let course: u32 = m.entries.iter().map(|e| e.exercise.points).sum();
+    assert_eq!(
+        cents,
+        i64::from(course) * 100,
+        "the JUnit maxima in hundredths, against {course} points"
+    );
     assert!(
         reference
             .tests
@@ -750,6 +766,22 @@ fn a_class_is_graded_as_each_submission_deserves() {
             .all(|s| *s == Status::TimedOut),
         "the endless loop"
     );
+    // stopped by the grader's clock, at its limit of CPU time, not by the wall clock
+    for t in b
+        .tests
+        .iter()
+        .filter(|t| t.exercise == Some(index(&m, "direction_colour")))
+    {
+        assert!(
+            t.message.starts_with(&format!(
+                "stopped after {} s of CPU, its limit",
+                grade::DEFAULT_TIMEOUT.as_secs()
+            )),
+            "the endless loop's test {}: {}",
+            t.name,
+            t.message
+        );
+    }
     let e222 = b
         .exercises
         .iter()
@@ -2118,4 +2150,164 @@ fn the_classroom_workflow_grades_the_students_repository() {
         "{score} of the chapter's {chapter4_points}"
     );
     eprintln!("classroom: the chapter-4 handout scored {score} through the workflow's commands");
+}
+
+/// Busy loops, ended when dropped: the load of a machine shared with other work.
+struct BusyLoops(Vec<std::process::Child>);
+
+impl BusyLoops {
+    fn start(n: usize) -> Self {
+        Self(
+            (0..n)
+                .map(|_| {
+                    std::process::Command::new("sh")
+                        .args(["-c", "while :; do :; done"])
+                        .spawn()
+                        .unwrap()
+                })
+                .collect(),
+        )
+    }
+}
+
+impl Drop for BusyLoops {
+    fn drop(&mut self) {
+        for c in &mut self.0 {
+            let _ = c.kill();
+            let _ = c.wait();
+        }
+    }
+}
+
+/// A grade that never changes under load: the reference's chapter 1, graded in namespaces
+/// while a user-level grading of another class runs beside it (its own build directory, its
+/// own block of users, its clean-ups ending every process of its users after each test) and
+/// 32 busy loops share the two cores, keeps full marks: each test's limit counts its own CPU
+/// time, and no other grading's clean-up reaches its processes. The other class (a copy of
+/// the reference and a chapter-1 handout) is graded as it deserves beside it. Both are graded
+/// once on an idle machine first, so that what runs under load is the tests, not the
+/// compiler.
+#[test]
+#[ignore = "grades the reference under 32 busy loops beside another grading (minutes): .ci/run runs it"]
+fn the_reference_keeps_full_marks_beside_another_grading_and_under_load() {
+    let _one = BUILD
+        .lock()
+        .unwrap_or_else(std::sync::PoisonError::into_inner);
+    let m = manifest();
+    let ours = grade::GradeSetup {
+        chapter: Some(grade::Chapters { first: 1, last: 1 }),
+        hidden: None,
+        target_dir: Some(build_dir().join("slot-0")),
+        feedback: false,
+        ..setup(Path::new("/nonexistent"))
+    };
+    let work = tempfile::tempdir().unwrap();
+    let class = work.path().join("class");
+    copy(&class.join("reference"));
+    let chapter_1: Vec<usize> = (0..m.entries.len())
+        .filter(|&i| m.entries[i].chapter == 1)
+        .collect();
+    handout::write(&root(), &m, &chapter_1, &class.join("handout")).unwrap();
+    // the other grading's build directory starts as a copy of a class worker's, as a class's
+    // workers do: only the judge is built anew
+    let theirs = build_dir().with_file_name("grade-tests-beside");
+    let seeded = theirs.join("slot-0").join("debug");
+    if !seeded.is_dir() {
+        std::fs::create_dir_all(seeded.parent().unwrap()).unwrap();
+        let status = std::process::Command::new("cp")
+            .arg("-a")
+            .arg(build_dir().join("slot-1").join("debug"))
+            .arg(&seeded)
+            .status()
+            .unwrap();
+        assert!(status.success(), "cp -a of the class's build directory");
+    }
+    let other = |out: &Path| {
+        let mut c = std::process::Command::new(env!("CARGO_BIN_EXE_whitted"));
+        c.current_dir(root())
+            .args([
+                "grade",
+                "--chapter",
+                "1",
+                "--sandbox",
+                "user",
+                "--no-feedback",
+            ])
+            .args(["--jobs", "1", "--class"])
+            .arg(&class)
+            .arg("--out")
+            .arg(out)
+            .arg("--target-dir")
+            .arg(&theirs);
+        c
+    };
+    let full = |g: &Grade, when: &str| {
+        let lost: Vec<String> = g
+            .tests
+            .iter()
+            .filter(|t| t.status != Status::Passed)
+            .map(|t| format!("{} ({}): {}", t.name, t.status.word(), t.message))
+            .collect();
+        assert!(
+            (g.score() - g.max()).abs() < 1e-9 && lost.is_empty(),
+            "the reference {when}: {} / {}, lost {lost:?}",
+            g.score(),
+            g.max()
+        );
+    };
+    // idle: both built
+    let started = std::time::Instant::now();
+    let g = grade::grade(&root(), &m, &root(), &ours).unwrap();
+    full(&g, "on an idle machine");
+    let out = other(&work.path().join("idle")).output().unwrap();
+    assert!(out.status.success(), "{}", common::text(&out));
+    eprintln!(
+        "under load: both built and graded idle in {:?}",
+        started.elapsed()
+    );
+    // under load, beside each other
+    let loops = BusyLoops::start(32);
+    let started = std::time::Instant::now();
+    let beside_out = work.path().join("loaded");
+    let mut beside = other(&beside_out)
+        .stdout(std::process::Stdio::null())
+        .stderr(std::process::Stdio::piped())
+        .spawn()
+        .unwrap();
+    let g = grade::grade(&root(), &m, &root(), &ours).unwrap();
+    let ours_took = started.elapsed();
+    let said = {
+        let mut err = String::new();
+        std::io::Read::read_to_string(beside.stderr.as_mut().unwrap(), &mut err).unwrap();
+        err
+    };
+    let status = beside.wait().unwrap();
+    drop(loops);
+    full(&g, "under 32 busy loops beside a user-level grading");
+    assert!(status.success(), "the grading beside it: {said}");
+    let book = std::fs::read_to_string(beside_out.join("class.csv")).unwrap();
+    let total = |student: &str| -> f64 {
+        let row = book
+            .lines()
+            .find(|l| l.starts_with(&format!("{student},")))
+            .unwrap_or_else(|| panic!("no row of {student} in {book}"));
+        row.split(',').nth(3).unwrap().parse().unwrap()
+    };
+    let max = f64::from(
+        chapter_1
+            .iter()
+            .map(|&i| m.entries[i].exercise.points)
+            .sum::<u32>(),
+    );
+    assert!(
+        (total("reference") - max).abs() < 1e-9,
+        "the other class's copy of the reference: {} / {max}\n{book}",
+        total("reference")
+    );
+    assert!(total("handout").abs() < 1e-9, "the handout: {book}");
+    eprintln!(
+        "under load: the reference kept {} / {} under 32 busy loops beside a user-level grading ({ours_took:?}); that grading gave its copy of the reference {max} / {max} and the handout 0",
+        g.score(),
+        g.max()
+    );
 }

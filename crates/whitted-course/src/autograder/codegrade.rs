@@ -1,6 +1,7 @@
 //! JUnit XML from a [`Report`]: what CodeGrade's JUnit step reads, and the instructor's
 //! `junit.xml` of `whitted grade`. A test suite per chapter, a test case per test with its
-//! `time`, and a `failure` (its status, its message, the first wrong number of the ray trees
+//! `time` and its points (`properties`: `points` earned and `max_points`, whose sum over the
+//! report is the course's points exactly), and a `failure` (its status, its message, the first wrong number of the ray trees
 //! where they point at its exercise, the formula) for each that did not pass.
 //! For the student ([`Audience::Student`]) a hidden test is named as in Gradescope and says
 //! only whether it passed; for the instructor it is named and quoted in full.
@@ -28,6 +29,15 @@ fn xml(text: &str) -> String {
         .replace('\'', "&apos;")
 }
 
+/// The `properties` of a test case or a suite (indented by `indent`): the points it earned
+/// and the most it carries, in the hundredths every platform shows, so that the maxima of a
+/// report add up to the course's points exactly ([`super::share`]).
+fn points(indent: &str, earned: f64, max: f64) -> String {
+    format!(
+        "{indent}<properties>\n{indent}  <property name=\"points\" value=\"{earned:.2}\"/>\n{indent}  <property name=\"max_points\" value=\"{max:.2}\"/>\n{indent}</properties>\n"
+    )
+}
+
 /// The JUnit XML of `report` for `audience`, its suites the graded `chapters`.
 #[must_use]
 pub fn junit(report: &Report, chapters: &[u8], audience: Audience) -> String {
@@ -53,21 +63,27 @@ pub fn junit(report: &Report, chapters: &[u8], audience: Audience) -> String {
         let failed = tests.iter().filter(|t| t.status != Status::Passed).count();
         let time: f64 = tests.iter().map(|t| t.time).sum();
         out += &format!(
-            "  <testsuite name=\"chapter {c} {}\" tests=\"{}\" failures=\"{failed}\" time=\"{time:.3}\">\n",
+            "  <testsuite name=\"chapter {c} {}\" tests=\"{}\" failures=\"{failed}\" time=\"{time:.3}\">\n{}",
             crate::syllabus::chapter(c).map_or("", |c| c.title),
-            tests.len()
+            tests.len(),
+            points(
+                "    ",
+                tests.iter().map(|t| t.score).sum(),
+                tests.iter().map(|t| t.max).sum()
+            )
         );
         for t in tests {
             let secret = t.hidden && audience == Audience::Student;
             let name = if secret { &t.name } else { &t.test };
             out += &format!(
-                "    <testcase name=\"{}\" classname=\"exercise {}\" time=\"{:.3}\"",
+                "    <testcase name=\"{}\" classname=\"exercise {}\" time=\"{:.3}\">\n{}",
                 xml(name),
                 xml(&t.number),
-                t.time
+                t.time,
+                points("      ", t.score, t.max)
             );
             if t.status == Status::Passed {
-                out += "/>\n";
+                out += "    </testcase>\n";
                 continue;
             }
             let (message, text) = if secret {
@@ -84,7 +100,7 @@ pub fn junit(report: &Report, chapters: &[u8], audience: Audience) -> String {
                 )
             };
             out += &format!(
-                ">\n      <failure type=\"{}\" message=\"{}\">{}</failure>\n    </testcase>\n",
+                "      <failure type=\"{}\" message=\"{}\">{}</failure>\n    </testcase>\n",
                 t.status.word(),
                 xml(&message),
                 xml(&text)

@@ -3,11 +3,12 @@
 //!
 //! Course book: [The instructor's guide](../../../../../docs/book/instructor-guide.html) (`docs/src/instructor-guide.md`).
 
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 use std::time::Duration;
 
 use super::alone::Judging;
+use super::claim::Claim;
 use super::command::{Class, Reports, command};
 use super::sandbox::Level;
 use super::sandbox::watch::CompileLimits;
@@ -37,7 +38,10 @@ pub struct GradeArgs {
     /// Write the gradebook's header and this submission's row here (CSV).
     #[arg(long, value_name = "FILE")]
     csv: Option<PathBuf>,
-    /// The time limit of one test, in seconds.
+    /// The limit of one test, in seconds of CPU time (the test and the student's process
+    /// together; a test of no exercise gets three times as much): a busy machine makes a
+    /// test slower, not costlier, so it fails no correct test. A test that waits without
+    /// computing is stopped on the clock after twice this, longer on a busy machine.
     #[arg(long, value_name = "SECONDS", default_value_t = 20,
           value_parser = clap::value_parser!(u64).range(1..=3600))]
     timeout: u64,
@@ -60,8 +64,9 @@ pub struct GradeArgs {
           value_parser = clap::value_parser!(u64).range(1..=64))]
     jobs: Option<u64>,
     /// Where cargo builds, kept between gradings so the dependencies are built once (a class
-    /// gives each of its --jobs its own directory in it) [default: target/grade in the
-    /// instructor's project].
+    /// gives each of its --jobs its own directory in it); no two gradings on one host build
+    /// in one at a time [default: target/grade in the instructor's project, or target/grade-2
+    /// … while another grading builds there].
     #[arg(long, value_name = "DIR")]
     target_dir: Option<PathBuf>,
     /// Keep each graded copy (its path is printed).
@@ -101,16 +106,14 @@ impl GradeArgs {
     pub fn run(&self) -> Result<ExitCode, ToolError> {
         let root = crate::project::root(self.root.as_ref())?;
         let manifest = crate::cli::read_manifest(&root)?;
+        // held until the grading ends: no other grading on this host builds in it
+        let (target_dir, _claim) = build_dir(&root, self.target_dir.as_deref())?;
         let setup = GradeSetup {
             chapter: self.chapter,
             hidden: self.hidden.clone(),
             timeout: Duration::from_secs(self.timeout),
             // kept between gradings: the dependencies are built once
-            target_dir: Some(
-                self.target_dir
-                    .clone()
-                    .unwrap_or_else(|| root.join("target").join("grade")),
-            ),
+            target_dir: Some(target_dir),
             keep: self.keep,
             sandbox: self.sandbox.setup()?,
             render: false,
@@ -151,6 +154,55 @@ impl GradeArgs {
             reports,
         )
     }
+}
+
+/// The build directory of a grading, claimed for as long as it runs (the claim beside it,
+/// `NAME.grading`; the judge's build is beside it too): `asked` (`--target-dir`), which no other
+/// live grading may hold, or else `target/grade` of the project at `root`, or, when another
+/// grading holds that one, the first of `target/grade-2`, `target/grade-3` … that none holds.
+fn build_dir(root: &Path, asked: Option<&Path>) -> Result<(PathBuf, Claim), ToolError> {
+    let claim = |dir: &Path| -> Result<Option<Claim>, ToolError> {
+        let name = dir
+            .file_name()
+            .map_or_else(|| "build".to_string(), |n| n.to_string_lossy().into_owned());
+        let at = dir.with_file_name(format!("{name}.grading"));
+        if let Some(parent) = at.parent() {
+            std::fs::create_dir_all(parent).map_err(|e| ToolError::io(parent, e))?;
+        }
+        Claim::try_take(&at).map_err(ToolError::Usage)
+    };
+    if let Some(dir) = asked {
+        let dir = std::path::absolute(dir).map_err(|e| ToolError::io(dir, e))?;
+        return match claim(&dir)? {
+            Some(c) => Ok((dir, c)),
+            None => Err(ToolError::Usage(format!(
+                "--target-dir {}: another grading on this host builds there now; give this one a build directory of its own",
+                dir.display()
+            ))),
+        };
+    }
+    let base = root.join("target").join("grade");
+    for k in 1..=16 {
+        let dir = if k == 1 {
+            base.clone()
+        } else {
+            base.with_file_name(format!("grade-{k}"))
+        };
+        if let Some(c) = claim(&dir)? {
+            if k > 1 {
+                eprintln!(
+                    "another grading on this host builds in {}: this one builds in {}",
+                    base.display(),
+                    dir.display()
+                );
+            }
+            return Ok((dir, c));
+        }
+    }
+    Err(ToolError::Usage(format!(
+        "16 gradings on this host build in {} and beside it: give this one a --target-dir of its own",
+        base.display()
+    )))
 }
 
 /// The sandbox of a grading.

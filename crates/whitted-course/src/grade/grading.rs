@@ -24,7 +24,7 @@ use super::score::{chapter_targets, scores};
 use super::setup::{Chapters, GradeSetup, SandboxSetup};
 use super::splice::Spliced;
 use super::test_result::TestResult;
-use super::{nextest, splice};
+use super::{clock, nextest, splice};
 use crate::cargo::Wrapper;
 use crate::manifest::Manifest;
 use crate::{ToolError, layout, syllabus};
@@ -273,13 +273,24 @@ impl Grading {
             env.push((WHOLE_ROAD_VAR.into(), "1".into()));
             timeout *= nextest::WHOLE_ROAD_TIMES;
         }
+        // each test under its limit of CPU time, when there is a `whitted` to run the clock
+        let clocked = match &self.sandbox {
+            Some(s) => {
+                env.extend(
+                    clock::runner_env(&s.runner, &s.triple, timeout, nextest::WHOLE_ROAD_TIMES)
+                        .map_err(ToolError::Usage)?,
+                );
+                true
+            }
+            None => false,
+        };
         let run = judge_copy::run_dir(judge)?;
         let tests = nextest::run(
             &judge.project,
             &judge.target_dir,
             &judge.listed,
             run.path(),
-            timeout,
+            (timeout, clocked),
             &env,
             (manifest, &judge.hidden),
         );

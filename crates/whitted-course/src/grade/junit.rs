@@ -61,16 +61,22 @@ pub fn parse_junit(
                             .unwrap_or("")
                     };
                     let all = format!("{body}\n{}\n{}", kept("system-out"), kept("system-err"));
-                    match all.lines().find_map(|l| l.strip_prefix(SERVER_DIED)) {
+                    let stopped = all
+                        .lines()
+                        .find_map(|l| l.strip_prefix(super::clock::STOPPED));
+                    let died = all.lines().find_map(|l| l.strip_prefix(SERVER_DIED));
+                    match (stopped, died) {
+                        // the grader's clock stopped it at its limit
+                        (Some(after), _) => (Status::TimedOut, format!("stopped after {after}")),
                         // the judge's word that the server died by a signal
-                        Some(what) => (
+                        (None, Some(what)) => (
                             Status::Crashed,
                             format!(
                                 "the student's process died {}: a stack overflow or an abort",
                                 what.split(": the test fails").next().unwrap_or(what).trim()
                             ),
                         ),
-                        None => (Status::Failed, panic_message(&all)),
+                        (None, None) => (Status::Failed, panic_message(&all)),
                     }
                 }
             }

@@ -30,7 +30,7 @@
 //!    `todo!()` and the build is tried again, so a compile error costs only the exercise it
 //!    is in; its first error goes into the report.
 //! 2. **Run** every test of the graded chapters with cargo-nextest, each test in its own
-//!    judge process with its own time limit, each judge's process starting its own server in
+//!    judge process with its own limit of CPU time ([`clock`]), each judge's process starting its own server in
 //!    the sandbox through the [`runner`] (`whitted sandbox-run --serve`): a `todo!()`, a
 //!    panic, a stack overflow, an abort or an endless loop on the server fails that
 //!    exercise's tests and no others. Only values cross from the server; what it prints is
@@ -51,8 +51,8 @@
 //! Its files, one job each: `setup.rs` (how a grading is set up), `grading.rs` ([`grade()`],
 //! the steps in order), `copy.rs` (the graded copy), `splice.rs`, `alone.rs` and `screen.rs`
 //! (the student's bodies in it), `outside.rs` and `judge_copy.rs` (the wire and the judge),
-//! `hidden.rs` (the hidden tests' names), `build.rs` and `blame.rs` (the build), `nextest.rs`, `junit.rs`, `runner.rs`,
-//! `sandbox/` and `clean.rs` (the test run), `test_result.rs`, `score.rs` and `outcome.rs` (the results and the points),
+//! `hidden.rs` (the hidden tests' names), `build.rs` and `blame.rs` (the build), `nextest.rs`, `clock.rs`, `junit.rs`, `runner.rs`,
+//! `sandbox/`, `claim.rs` and `clean.rs` (the test run), `test_result.rs`, `score.rs` and `outcome.rs` (the results and the points),
 //! `render.rs` and `explained.rs` (the pictures and their words), `class.rs` (a class),
 //! `command.rs` (the reports) and `args.rs` (the command line).
 //!
@@ -62,8 +62,10 @@ pub mod alone;
 mod args;
 mod blame;
 mod build;
+pub mod claim;
 mod class;
 pub mod clean;
+pub mod clock;
 pub mod command;
 mod copy;
 mod explained;

@@ -22,14 +22,27 @@ pub const NEXTEST_PROFILE: &str = "grading";
 /// 0.01 s in one process and 3.7–8.6 s across it on the 2-core machine, idle to busy).
 pub(super) const WHOLE_ROAD_TIMES: u32 = 3;
 
+/// How many times a test's limit of CPU time nextest's own limit on the wall clock is, when
+/// the grader's clock ([`super::clock`]) runs the tests: a last resort, far beyond the clock's
+/// own stop on the wall clock on any load it measures.
+pub(super) const CEILING_TIMES: u32 = 60;
+
 /// Writes the grading profile into the nextest configuration file `config`, its reports kept
 /// in `store`: no retries, no fail-fast, a time limit per test (three times as long for a test
-/// of no exercise), and a JUnit file.
+/// of no exercise), and a JUnit file. The limit is `timeout` on the wall clock, or, when the
+/// grader's clock runs the tests (`clocked`), [`CEILING_TIMES`] that: the clock stops a test
+/// at `timeout` of CPU time.
 pub(super) fn write_profile(
     config: &Path,
     store: &Path,
     timeout: Duration,
+    clocked: bool,
 ) -> Result<(), ToolError> {
+    let timeout = if clocked {
+        timeout * CEILING_TIMES
+    } else {
+        timeout
+    };
     let text = format!(
         "# written by `whitted grade`: every test in its own process, stopped after its time limit\n\
          [store]\n\
@@ -122,19 +135,20 @@ pub(super) fn list(
 
 /// Runs the `listed` test binaries of the project with the grading profile, written with its
 /// reports into the directory `run` (a run's own: runs beside each other never share one),
-/// the tests given `env`; reads the JUnit report.
+/// the tests given `env` (in which the grader's clock is nextest's runner when `clocked`) and
+/// their limit `timeout`; reads the JUnit report.
 pub(super) fn run(
     project: &Path,
     target_dir: &Path,
     listed: &Listed,
     run: &Path,
-    timeout: Duration,
+    (timeout, clocked): (Duration, bool),
     env: &[(OsString, OsString)],
     (manifest, hidden): (&Manifest, &[String]),
 ) -> Result<Vec<TestResult>, ToolError> {
     let store = run.join("store");
     let config = run.join("nextest.toml");
-    write_profile(&config, &store, timeout)?;
+    write_profile(&config, &store, timeout, clocked)?;
     let junit = store.join(NEXTEST_PROFILE).join("junit.xml");
     let _ = std::fs::remove_file(&junit);
     std::fs::create_dir_all(&store).map_err(|e| ToolError::io(&store, e))?;

@@ -84,15 +84,22 @@ pub fn stopped(stderr: &str) -> Option<String> {
 }
 
 /// One process as `/proc/PID/stat` tells it.
-struct Stat {
-    parent: u32,
-    name: String,
-    cpu: Duration,
-    memory: u64,
+pub struct Stat {
+    /// Its parent's process id.
+    pub parent: u32,
+    /// Its name (the program's, cut at 15 bytes).
+    pub name: String,
+    /// Its own CPU time, user and system.
+    pub cpu: Duration,
+    /// The CPU time of its children that it has waited for, user and system.
+    pub children_cpu: Duration,
+    /// Its resident memory, in bytes.
+    pub memory: u64,
 }
 
 /// Every process of the machine, by id.
-fn processes() -> BTreeMap<u32, Stat> {
+#[must_use]
+pub fn processes() -> BTreeMap<u32, Stat> {
     let tick = 100.0; // USER_HZ: 100 on every Linux the grader runs on
     let page = 4096; // the page size of the machines the grader runs on
     let mut out = BTreeMap::new();
@@ -115,13 +122,14 @@ fn processes() -> BTreeMap<u32, Stat> {
                 .and_then(|f| f.parse::<u64>().ok())
                 .unwrap_or(0)
         };
-        // after the name: state(0) ppid(1) … utime(11) stime(12) … rss(21)
+        // after the name: state(0) ppid(1) … utime(11) stime(12) cutime(13) cstime(14) … rss(21)
         out.insert(
             pid,
             Stat {
                 parent: u32::try_from(field(1)).unwrap_or(0),
                 name,
                 cpu: Duration::from_secs_f64((field(11) + field(12)) as f64 / tick),
+                children_cpu: Duration::from_secs_f64((field(13) + field(14)) as f64 / tick),
                 memory: field(21) * page,
             },
         );
@@ -130,7 +138,8 @@ fn processes() -> BTreeMap<u32, Stat> {
 }
 
 /// The processes that descend from `root`, `root` included.
-fn descendants(all: &BTreeMap<u32, Stat>, root: u32) -> Vec<u32> {
+#[must_use]
+pub fn descendants(all: &BTreeMap<u32, Stat>, root: u32) -> Vec<u32> {
     let mut out = vec![root];
     let mut i = 0;
     while i < out.len() {

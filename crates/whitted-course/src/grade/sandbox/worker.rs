@@ -9,6 +9,7 @@ use std::process::Command;
 
 use super::policy::{FIRST_UID, Level, Limits, POLICY_VAR, Policy, RUNNER_COMMAND, SLOTS};
 use crate::ToolError;
+use crate::grade::claim::Claim;
 
 /// The sandbox of one worker: found and tried by [`Sandbox::probe`].
 #[derive(Clone, Debug)]
@@ -32,17 +33,16 @@ pub const BLOCKS: u32 = 64;
 /// Where the leases are taken: a directory of root's alone, which no test's user can open.
 const LEASES: &str = "/tmp/whitted-sandbox-leases";
 
-/// A block of user ids leased by one grading: a directory `block-N` of `/tmp/whitted-sandbox-leases`, made by
-/// it (a directory is made or found atomically) and holding its process id, removed when the
-/// lease is dropped; a directory whose process is gone is a lease left by a grading that
-/// died, and is taken over. Two gradings on one host never run tests as the same user, so a
+/// A block of user ids leased by one grading: the claim `block-N` in `/tmp/whitted-sandbox-leases`
+/// ([`crate::grade::claim`]), given up when the lease is dropped; a claim left by a grading that
+/// died is taken over. Two gradings on one host never run tests as the same user, so a
 /// clean-up, which ends every process of its users, reaches only its own grading's.
 #[derive(Debug)]
 pub struct Lease {
     /// The block: user ids from `FIRST_UID + block × SLOTS`.
     pub block: u32,
-    /// Its directory.
-    dir: PathBuf,
+    /// Its claim.
+    _claim: Claim,
 }
 
 impl Lease {
@@ -58,40 +58,18 @@ impl Lease {
             .map_err(|e| format!("{LEASES}: {e}"))?;
         std::fs::set_permissions(leases, std::fs::Permissions::from_mode(0o700))
             .map_err(|e| format!("{LEASES}: {e}"))?;
-        let me = std::process::id().to_string();
         for k in 0..BLOCKS {
             let block = (preferred + k) % BLOCKS;
-            let dir = leases.join(format!("block-{block}"));
-            let owner = dir.join("pid");
-            match std::fs::create_dir(&dir) {
-                Ok(()) => {}
-                Err(e) if e.kind() == std::io::ErrorKind::AlreadyExists => {
-                    // taken, unless its grading is gone (or never wrote its id)
-                    let alive = std::fs::read_to_string(&owner).ok().is_some_and(|pid| {
-                        let pid = pid.trim();
-                        !pid.is_empty() && Path::new("/proc").join(pid).exists()
-                    });
-                    if alive || std::fs::remove_dir_all(&dir).is_err() {
-                        continue;
-                    }
-                    if std::fs::create_dir(&dir).is_err() {
-                        continue;
-                    }
-                }
-                Err(e) => return Err(format!("{}: {e}", dir.display())),
+            if let Some(claim) = Claim::try_take(&leases.join(format!("block-{block}")))? {
+                return Ok(Self {
+                    block,
+                    _claim: claim,
+                });
             }
-            std::fs::write(&owner, &me).map_err(|e| format!("{}: {e}", owner.display()))?;
-            return Ok(Self { block, dir });
         }
         Err(format!(
             "all {BLOCKS} blocks of sandbox users are taken by other gradings on this host"
         ))
-    }
-}
-
-impl Drop for Lease {
-    fn drop(&mut self) {
-        let _ = std::fs::remove_dir_all(&self.dir);
     }
 }
 
