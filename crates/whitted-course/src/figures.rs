@@ -79,9 +79,18 @@ pub enum Difference {
 /// Compares two PNGs channel by channel; a difference of at most `tolerance` levels counts as
 /// the same.
 pub fn compare(committed: &Path, fresh: &Path, tolerance: u8) -> Result<Difference, ToolError> {
-    let (a, b) = (read_rgba(committed)?, read_rgba(fresh)?);
+    Ok(compare_rgba(
+        &read_rgba(committed)?,
+        &read_rgba(fresh)?,
+        tolerance,
+    ))
+}
+
+/// [`compare`] of two images already read: each its size and its 8-bit RGBA pixels.
+#[must_use]
+pub fn compare_rgba(a: &Rgba, b: &Rgba, tolerance: u8) -> Difference {
     if a.0 != b.0 {
-        return Ok(Difference::Size(a.0, b.0));
+        return Difference::Size(a.0, b.0);
     }
     let mut pixels = 0;
     let mut largest = 0;
@@ -101,18 +110,21 @@ pub fn compare(committed: &Path, fresh: &Path, tolerance: u8) -> Result<Differen
             first.get_or_insert((x, y));
         }
     }
-    Ok(match first {
+    match first {
         None => Difference::Same,
         Some(first) => Difference::Pixels {
             pixels,
             largest,
             first,
         },
-    })
+    }
 }
 
+/// An image's size (width, height) and its pixels as 8-bit RGBA, row by row from the top.
+pub type Rgba = ((u32, u32), Vec<u8>);
+
 /// A PNG's size and its pixels as 8-bit RGBA, row by row from the top.
-fn read_rgba(path: &Path) -> Result<((u32, u32), Vec<u8>), ToolError> {
+pub fn read_rgba(path: &Path) -> Result<Rgba, ToolError> {
     let (width, height, rgba) = whitted_syllabus::words::read_rgba(path)
         .map_err(|e| ToolError::Usage(format!("{}: cannot read the PNG: {e}", path.display())))?;
     Ok(((width, height), rgba))

@@ -138,7 +138,7 @@ fn gradescope_results_carry_every_field_gradescope_lists() {
     );
 
     r.leaderboard = vec![Board {
-        name: "M rays/s".into(),
+        name: "M pixels/s".into(),
         value: 3.5,
         order: "desc".into(),
     }];
@@ -146,7 +146,7 @@ fn gradescope_results_carry_every_field_gradescope_lists() {
     let json = gradescope::results(&r);
     assert_eq!(
         json["leaderboard"],
-        serde_json::json!([{"name": "M rays/s", "value": 3.5, "order": "desc"}])
+        serde_json::json!([{"name": "M pixels/s", "value": 3.5, "order": "desc"}])
     );
     let hidden = json["tests"]
         .as_array()

@@ -56,7 +56,15 @@ pub fn leave_after_args(
 #[cfg(feature = "png")]
 pub fn read_rgba(path: &std::path::Path) -> Result<(u32, u32, Vec<u8>), String> {
     let file = std::fs::File::open(path).map_err(|e| e.to_string())?;
-    let mut decoder = png::Decoder::new(std::io::BufReader::new(file));
+    decode_rgba(std::io::BufReader::new(file))
+}
+
+/// [`read_rgba`] of a PNG read from `png` (a file, or bytes in memory).
+#[cfg(feature = "png")]
+pub fn decode_rgba(
+    png: impl std::io::BufRead + std::io::Seek,
+) -> Result<(u32, u32, Vec<u8>), String> {
+    let mut decoder = png::Decoder::new(png);
     // palettes and low bit depths become 8-bit channels, 16-bit channels become 8-bit
     decoder.set_transformations(png::Transformations::EXPAND | png::Transformations::STRIP_16);
     let mut reader = decoder.read_info().map_err(|e| e.to_string())?;

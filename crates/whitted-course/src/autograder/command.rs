@@ -54,7 +54,9 @@ struct PackageGrading {
     #[arg(long, value_name = "WHEN", default_value = "after_due_date",
           value_parser = ["hidden", "after_due_date", "after_published", "visible"])]
     hidden_visibility: String,
-    /// Post the leaderboard: the render's M rays/s and its error against the reference.
+    /// Post the leaderboard: the render's speed (millions of the figure's pixels a second, on
+    /// the grader's clock) and its share of pixels off the book's figure, as the grader
+    /// compares them.
     #[arg(long)]
     leaderboard: bool,
     /// Judge every test with all of the student's bodies together, as `whitted grade

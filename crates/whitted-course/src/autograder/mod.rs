@@ -116,7 +116,7 @@ pub struct TestLine {
 /// An entry of Gradescope's leaderboard.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct Board {
-    /// What is measured (`M rays/s`).
+    /// What is measured (`M pixels/s`).
     pub name: String,
     /// The value.
     pub value: f64,
@@ -322,8 +322,8 @@ impl Report {
             match &grade.render {
                 Some(Ok(r)) => {
                     leaderboard.push(Board {
-                        name: "M rays/s".into(),
-                        value: r.rays_per_second,
+                        name: "M pixels/s".into(),
+                        value: r.pixels_per_second,
                         order: "desc".into(),
                     });
                     leaderboard.push(Board {

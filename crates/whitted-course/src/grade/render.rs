@@ -10,9 +10,12 @@
 //!   exercise that computed it, and show the three pictures side by side (the student's, the
 //!   book's, their difference). A chapter that cannot render says why (the exercise it waits
 //!   for).
-//! - **The leaderboard** ([`measure`]): the last graded chapter's speed, the binary's
-//!   `M rays/s` (stderr), and its error, the share of pixels the `compare:` line (stdout) says
-//!   differ.
+//! - **The leaderboard** ([`measure`]): the last graded chapter's figure drawn alone (no
+//!   `--compare`: the render is shown nothing of the book's), its speed in millions of the
+//!   figure's pixels a second on the grader's clock, from the binary's start to its end, and
+//!   its error, the share of its pixels that differ from the book's figure as the grader
+//!   compares them. Nothing the binary prints is read, so a body that prints a speed or a
+//!   comparison changes neither.
 //!
 //! Course book: [The instructor's guide](../../../../../docs/book/instructor-guide.html) (`docs/src/instructor-guide.md`).
 
@@ -36,11 +39,16 @@ pub(super) use whitted_learn::figures::FIGURES;
 pub struct RenderScore {
     /// The figure rendered (`ch05_reflection_refraction.png`).
     pub figure: String,
-    /// Millions of rays a second.
-    pub rays_per_second: f64,
-    /// The share of pixels that differ from the committed figure, in percent.
+    /// Millions of the figure's pixels a second, on the grader's clock.
+    pub pixels_per_second: f64,
+    /// The share of pixels that differ from the committed figure, in percent, as the grader
+    /// compares them.
     pub differing: f64,
 }
+
+/// By how many 8-bit levels a channel may differ from the book's figure and count as the
+/// same, as the chapter binaries' `--compare` counts.
+const SAME_WITHIN: u8 = 2;
 
 /// The files the renders need in the graded copy: the figures' manifest, the figures and the
 /// reference's ray trees (public data: every handout holds them).
@@ -81,6 +89,10 @@ struct Ran {
     stdout: String,
     stderr: String,
     picture: Option<Vec<u8>>,
+    /// From the binary's start to its end, on the grader's clock.
+    took: Duration,
+    /// The book's figure of the chapter.
+    book: PathBuf,
 }
 
 /// The binaries of `chapters`, built from the graded copy in one build (in the build
@@ -161,17 +173,18 @@ fn read_capped(path: &Path, limit: u64) -> String {
     super::clean::clean(&String::from_utf8_lossy(&bytes))
 }
 
-/// Runs chapter `chapter`'s binary `exe` on its figure's scene at the figure's settings with
-/// `--compare` (and `--against` its trees when `against`), in the run sandbox when there is
-/// one, under `timeout`. The picture goes to a directory made for this run alone, and is
-/// taken back only when it is a PNG of at most [`PICTURE_BYTES`].
+/// Runs chapter `chapter`'s binary `exe` on its figure's scene at the figure's settings, in
+/// the run sandbox when there is one, under `timeout`: for `feedback`, with `--compare` and
+/// `--against` its trees; else alone, shown nothing of the book's. The picture goes to a
+/// directory made for this run alone, and is taken back only when it is a PNG of at most
+/// [`PICTURE_BYTES`].
 fn run_figure(
     project: &Path,
     target_dir: &Path,
     (chapter, exe): (u8, &Path),
     sandbox: Option<&Sandbox>,
     timeout: Duration,
-    against: bool,
+    feedback: bool,
 ) -> Result<Ran, String> {
     let about = crate::syllabus::chapter(chapter).ok_or_else(|| format!("no chapter {chapter}"))?;
     let binary = about.binary;
@@ -179,7 +192,7 @@ fn run_figure(
     let figure = chapter_binary::chapter_figure(&figures, chapter)
         .ok_or_else(|| format!("{FIGURES} lists no figure of {binary}"))?;
     let reference = project.join(figure.path());
-    let trees = chapter_binary::chapter_trees(project, chapter).filter(|_| against);
+    let trees = chapter_binary::chapter_trees(project, chapter).filter(|_| feedback);
     let out_dir = target_dir.join("feedback").join(binary);
     if out_dir.exists() {
         std::fs::remove_dir_all(&out_dir).map_err(|e| format!("{}: {e}", out_dir.display()))?;
@@ -200,7 +213,9 @@ fn run_figure(
     let policy = match sandbox {
         Some(s) => {
             let mut policy = s.policy.clone();
-            policy.read.push(reference.clone());
+            if feedback {
+                policy.read.push(reference.clone());
+            }
             policy.read.extend(trees.clone());
             policy
                 .writable(&out_dir)
@@ -215,9 +230,10 @@ fn run_figure(
     let command = policy
         .as_ref()
         .map_or_else(|| Command::new(exe), |p| p.command(exe, project));
+    let started = std::time::Instant::now();
     let rendered = Render {
         args: &args,
-        compare: Some(&reference),
+        compare: feedback.then_some(reference.as_path()),
         against: trees.as_deref(),
         out: Some(&out_png),
         timeout: Some(timeout),
@@ -229,6 +245,7 @@ fn run_figure(
         RunError::Start(e) => format!("cannot run {binary}: {e}"),
         RunError::Output(e) => e.to_string(),
     })?;
+    let took = started.elapsed();
     policy.iter().for_each(Policy::sweep);
     if rendered.status.is_none() {
         let _ = std::fs::remove_dir_all(&out_dir);
@@ -242,6 +259,8 @@ fn run_figure(
         stdout: super::clean::clean(&rendered.stdout),
         stderr: super::clean::clean(&rendered.stderr),
         picture,
+        took,
+        book: reference,
     })
 }
 
@@ -298,8 +317,8 @@ pub(super) fn feedback(
 }
 
 /// Builds the binary of `chapter`'s figure from the graded copy `project` and renders it for
-/// the leaderboard; `Err` says why there is no score (the code panics, the figure is not
-/// listed …).
+/// the leaderboard, alone; `Err` says why there is no score (the code panics, the figure is
+/// not listed …).
 pub(super) fn measure(
     project: &Path,
     target_dir: &Path,
@@ -319,37 +338,88 @@ pub(super) fn measure(
             one_line_error(&ran.stderr)
         ));
     }
-    parse(&ran.figure, &ran.stdout, &ran.stderr)
+    let picture = ran
+        .picture
+        .as_deref()
+        .ok_or("the render wrote no picture".to_string())?;
+    let book = figures::read_rgba(&ran.book).map_err(|e| e.to_string())?;
+    judged(&ran.figure, picture, &book, ran.took)
 }
 
-/// The score in a chapter binary's output: `… M rays/s` on stderr, the `compare:` line on
-/// stdout.
-pub(super) fn parse(figure: &str, stdout: &str, stderr: &str) -> Result<RenderScore, String> {
-    let rays = stderr
-        .lines()
-        .rev()
-        .find_map(|l| {
-            let before = l.strip_suffix(" M rays/s")?;
-            before.rsplit(' ').next()?.parse::<f64>().ok()
-        })
-        .ok_or("no `M rays/s` in the render's output".to_string())?;
-    let compare = stdout
-        .lines()
-        .find(|l| l.starts_with("compare:"))
-        .ok_or("no `compare:` line in the render's output".to_string())?;
-    let differing = if compare.contains("the same as the reference") {
-        0.0
-    } else {
-        compare
-            .split('(')
-            .nth(1)
-            .and_then(|r| r.split('%').next())
-            .and_then(|p| p.parse::<f64>().ok())
-            .ok_or_else(|| format!("cannot read `{compare}`"))?
+/// The leaderboard's score of a render that wrote `picture` (a PNG) in `took`, against the
+/// book's figure `book`: the speed in millions of its pixels a second, and the share of its
+/// pixels off by more than [`SAME_WITHIN`], both the grader's own figures.
+pub(super) fn judged(
+    figure: &str,
+    picture: &[u8],
+    book: &figures::Rgba,
+    took: Duration,
+) -> Result<RenderScore, String> {
+    let (width, height, rgba) = whitted_syllabus::words::decode_rgba(std::io::Cursor::new(picture))
+        .map_err(|e| format!("the render's picture: {e}"))?;
+    let pixels = f64::from(width) * f64::from(height);
+    let differing = match figures::compare_rgba(book, &((width, height), rgba), SAME_WITHIN) {
+        figures::Difference::Same => 0.0,
+        figures::Difference::Pixels { pixels: off, .. } => 100.0 * off as f64 / pixels,
+        figures::Difference::Size(want, got) => {
+            return Err(format!(
+                "the render is {}×{}, the book's figure {}×{}",
+                got.0, got.1, want.0, want.1
+            ));
+        }
     };
     Ok(RenderScore {
         figure: figure.to_string(),
-        rays_per_second: rays,
+        pixels_per_second: pixels / took.as_secs_f64().max(1e-6) / 1e6,
         differing,
     })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A 2×2 RGB PNG of `pixels`, row by row.
+    fn png_of(pixels: [[u8; 3]; 4]) -> Vec<u8> {
+        let mut out = Vec::new();
+        let mut encoder = png::Encoder::new(&mut out, 2, 2);
+        encoder.set_color(png::ColorType::Rgb);
+        encoder.set_depth(png::BitDepth::Eight);
+        let mut writer = encoder.write_header().unwrap();
+        writer.write_image_data(pixels.as_flattened()).unwrap();
+        writer.finish().unwrap();
+        out
+    }
+
+    /// The leaderboard's figures are the grader's: the pixels of the picture over the time it
+    /// measured, and the share of pixels off the book's figure by more than two levels (one
+    /// of four here; one off by two levels counts as the same).
+    #[test]
+    fn the_leaderboard_counts_the_pictures_pixels_on_the_graders_clock() {
+        let grey = [100, 100, 100];
+        let book = (
+            (2, 2),
+            [grey; 4]
+                .iter()
+                .flat_map(|p| [p[0], p[1], p[2], 255])
+                .collect(),
+        );
+        let picture = png_of([grey, [102, 100, 98], [0, 0, 0], grey]);
+        let took = Duration::from_millis(2);
+        let score = judged("f.png", &picture, &book, took).unwrap();
+        assert!(
+            (score.differing - 25.0).abs() < 1e-9,
+            "{} % of pixels off, expected 25 %",
+            score.differing
+        );
+        let expected = 4.0 / 0.002 / 1e6;
+        assert!(
+            (score.pixels_per_second - expected).abs() < 1e-12,
+            "{} M pixels/s, expected {expected}",
+            score.pixels_per_second
+        );
+        let wide = ((4, 1), vec![0; 16]);
+        let err = judged("f.png", &picture, &wide, took).unwrap_err();
+        assert_eq!(err, "the render is 2×2, the book's figure 4×1");
+    }
 }
