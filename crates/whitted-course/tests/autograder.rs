@@ -277,6 +277,7 @@ fn the_classroom_workflow_scores_every_exercise_once() {
         settings: Settings::default(),
         sandbox: Some(Level::Namespaces),
         judging: grade::Judging::Alone,
+        handout: None,
     };
     let yml = classroom::workflow(&m, &options);
     // each exercise judged alone unless the instructor asks for the whole road
@@ -392,6 +393,7 @@ fn the_gradescope_zip_holds_its_scripts_at_the_root() {
         settings: Settings::default(),
         sandbox: Some(Level::Namespaces),
         judging: grade::Judging::Alone,
+        handout: None,
     };
     package::write(&root(), &m, Platform::Gradescope, &options, &out).unwrap();
     let file = std::fs::File::open(out.join("autograder.zip")).unwrap();
@@ -461,6 +463,7 @@ fn the_prairielearn_package_has_its_entry_point_and_image() {
         settings: Settings::default(),
         sandbox: Some(Level::Namespaces),
         judging: grade::Judging::Alone,
+        handout: None,
     };
     package::write(&root(), &manifest(), Platform::Prairielearn, &options, &out).unwrap();
     let run = std::fs::read_to_string(out.join("run.sh")).unwrap();
@@ -863,4 +866,79 @@ fn the_maxima_add_up_and_no_pointless_test_is_listed() {
         .unwrap();
     assert_eq!(property(suite, "max_points"), junit_cents, "{junit}");
     assert_eq!(property(suite, "points"), junit_cents, "{junit}");
+}
+
+/// A package made for a week's handout (`whitted autograder --handout DIR`) carries the
+/// handout's own list of exercises in its manifest, so that its gradings count what the
+/// handout gave the students to write and not the earlier chapters' code it gave them: a
+/// chapter-4 handout's package counts chapter 4's points, and a test of chapter 3 counts for
+/// no exercise.
+#[test]
+fn a_package_for_a_weeks_handout_counts_only_its_exercises() {
+    let m = manifest();
+    let work = tempfile::tempdir().unwrap();
+    let chapter4: Vec<usize> = (0..m.entries.len())
+        .filter(|&i| m.entries[i].chapter == 4)
+        .collect();
+    let handout4 = work.path().join("handout4");
+    whitted_course::handout::write(&root(), &m, &chapter4, &handout4).unwrap();
+    let names = whitted_course::handout::later::listed_in(&handout4).unwrap();
+    let expected: Vec<String> = chapter4
+        .iter()
+        .map(|&i| m.entries[i].exercise.name.clone())
+        .collect();
+    assert_eq!(names, expected, "the chapter-4 handout's own list");
+    let options = package::Options {
+        chapter: None,
+        hidden: None,
+        timeout: 20,
+        settings: Settings::default(),
+        sandbox: Some(Level::Namespaces),
+        judging: grade::Judging::Alone,
+        handout: Some(names),
+    };
+    let out = work.path().join("codegrade");
+    package::write(&root(), &m, Platform::Codegrade, &options, &out).unwrap();
+    let path = out
+        .join("whitted")
+        .join(whitted_course::manifest::DEFAULT_PATH);
+    let packaged =
+        whitted_course::manifest::parse(&std::fs::read_to_string(&path).unwrap(), "packaged")
+            .unwrap();
+    let points = |m: &Manifest| m.entries.iter().map(|e| e.exercise.points).sum::<u32>();
+    let chapter4_points: u32 = chapter4.iter().map(|&i| m.entries[i].exercise.points).sum();
+    assert_eq!(
+        points(&packaged),
+        chapter4_points,
+        "the package's manifest counts {} points, chapter 4 holds {chapter4_points}",
+        points(&packaged)
+    );
+    // an exercise of chapter 3, which the chapter-4 handout gives
+    let ch3 = &m
+        .entries
+        .iter()
+        .find(|e| e.chapter == 3)
+        .unwrap()
+        .exercise
+        .name;
+    let junit = format!(
+        "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<testsuites name=\"nextest-run\" tests=\"2\" failures=\"0\">\n  <testsuite name=\"whitted::ch03_shading\" tests=\"2\" failures=\"0\">\n    <testcase name=\"ex_{ch3}_given\" classname=\"whitted::ch03_shading\" time=\"0.1\"/>\n    <testcase name=\"ex_blocks_light_mine\" classname=\"whitted::ch04_shadows\" time=\"0.1\"/>\n  </testsuite>\n</testsuites>\n"
+    );
+    let tests = grade::parse_junit(&junit, &packaged, &[]).unwrap();
+    let of = |name: &str| {
+        tests
+            .iter()
+            .find(|t| t.name.starts_with(name))
+            .unwrap()
+            .exercise
+    };
+    assert_eq!(
+        of(&format!("ex_{ch3}")),
+        None,
+        "a given exercise's test counts"
+    );
+    assert!(
+        of("ex_blocks_light").is_some(),
+        "4's test counts for nothing"
+    );
 }

@@ -1318,6 +1318,7 @@ fn the_platforms_packages_grade_in_their_layouts() {
         settings: Settings::default(),
         sandbox: Some(Level::Namespaces),
         judging: grade::Judging::Alone,
+        handout: None,
     };
     let _one = BUILD.lock().unwrap_or_else(|p| p.into_inner());
 
@@ -2057,6 +2058,7 @@ fn the_classroom_workflow_grades_the_students_repository() {
         settings: Settings::default(),
         sandbox: Some(Level::Namespaces),
         judging: grade::Judging::Alone,
+        handout: None,
     };
     autograder::package::write(&root(), &m, Platform::Classroom, &options, &repo).unwrap();
     let git = |args: &[&str]| {

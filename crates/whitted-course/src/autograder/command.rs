@@ -35,6 +35,11 @@ pub struct AutograderArgs {
     /// directory].
     #[arg(long, value_name = "DIR")]
     root: Option<PathBuf>,
+    /// The handout the students were given (`whitted handout --chapters 4 --out DIR`): the
+    /// package's manifest carries its list of the students' exercises, so only those are
+    /// graded and counted, not the earlier chapters' code it gave them.
+    #[arg(long, value_name = "DIR")]
+    handout: Option<PathBuf>,
 }
 
 /// How a package grades: the same for the package and for each grading it runs.
@@ -46,7 +51,8 @@ struct PackageGrading {
     /// Grade only these chapters' exercises: one (4) or a range (1-3), of chapters 1 to 5.
     #[arg(long, value_name = "N|A-B", value_parser = Chapters::parse)]
     chapter: Option<Chapters>,
-    /// The time limit of one test, in seconds.
+    /// The limit of one test, in seconds of CPU time (the test and the student's process
+    /// together), as `whitted grade --timeout`.
     #[arg(long, value_name = "SECONDS", default_value_t = 20,
           value_parser = clap::value_parser!(u64).range(1..=3600))]
     timeout: u64,
@@ -179,6 +185,11 @@ impl AutograderArgs {
                     settings: self.grading.settings(),
                     sandbox: self.sandbox.level(),
                     judging: self.grading.judging(),
+                    handout: self
+                        .handout
+                        .as_deref()
+                        .map(crate::handout::later::listed_in)
+                        .transpose()?,
                 };
                 write_package(self.root.as_ref(), platform, &options, &out)
             }
@@ -232,6 +243,21 @@ fn write_package(
             "--hidden {}: not a directory",
             h.display()
         )));
+    }
+    let manifest = match &options.handout {
+        Some(names) => crate::handout::later::listed_manifest(&root, names)?.1,
+        None => manifest,
+    };
+    if options.chapter.is_none() && manifest.handout.exercises.is_none() {
+        eprintln!(
+            "note: the package grades every exercise of the manifest ({} of them, {} points); for a week's handout, --handout DIR grades only the exercises it gave the students to write, --chapter N a chapter's",
+            manifest.entries.len(),
+            manifest
+                .entries
+                .iter()
+                .map(|e| e.exercise.points)
+                .sum::<u32>()
+        );
     }
     let written = package::write(&root, &manifest, platform, options, out)?;
     println!(

@@ -29,4 +29,8 @@ pub struct Options {
     pub sandbox: Option<Level>,
     /// How each exercise's tests are judged (`--whole-road` for the student's whole road).
     pub judging: Judging,
+    /// The exercises of the handout the students were given (its manifest's own list), which
+    /// the package's manifest carries: only those are graded and counted. `None`: every
+    /// exercise of the manifest (or of `chapter`).
+    pub handout: Option<Vec<String>>,
 }

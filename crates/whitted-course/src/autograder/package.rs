@@ -280,7 +280,15 @@ fn project_items(root: &Path, options: &Options) -> Result<Vec<Item>, ToolError>
             continue;
         }
         let path = root.join(&f);
-        let bytes = std::fs::read(&path).map_err(|e| ToolError::io(&path, e))?;
+        let bytes = match &options.handout {
+            // the handout's own list travels in the package's manifest
+            Some(names) if f == Path::new(crate::manifest::DEFAULT_PATH) => {
+                crate::handout::later::listed_manifest(root, names)?
+                    .0
+                    .into_bytes()
+            }
+            _ => std::fs::read(&path).map_err(|e| ToolError::io(&path, e))?,
+        };
         items.push(Item {
             path: Path::new("whitted").join(&f),
             bytes,

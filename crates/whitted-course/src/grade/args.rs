@@ -69,6 +69,11 @@ pub struct GradeArgs {
     /// … while another grading builds there].
     #[arg(long, value_name = "DIR")]
     target_dir: Option<PathBuf>,
+    /// The handout the students were given (`whitted handout --chapters 4 --out DIR`): only
+    /// the exercises its manifest lists as theirs are graded and counted, not the earlier
+    /// chapters' code it gave them. Without it or --chapter, every exercise counts.
+    #[arg(long, value_name = "DIR")]
+    handout: Option<PathBuf>,
     /// Keep each graded copy (its path is printed).
     #[arg(long)]
     keep: bool,
@@ -105,7 +110,16 @@ impl GradeArgs {
     /// Runs `whitted grade` as the arguments ask: one submission, or a class.
     pub fn run(&self) -> Result<ExitCode, ToolError> {
         let root = crate::project::root(self.root.as_ref())?;
-        let manifest = crate::cli::read_manifest(&root)?;
+        let manifest = match &self.handout {
+            Some(dir) => {
+                crate::handout::later::listed_manifest(
+                    &root,
+                    &crate::handout::later::listed_in(dir)?,
+                )?
+                .1
+            }
+            None => crate::cli::read_manifest(&root)?,
+        };
         // held until the grading ends: no other grading on this host builds in it
         let (target_dir, _claim) = build_dir(&root, self.target_dir.as_deref())?;
         let setup = GradeSetup {

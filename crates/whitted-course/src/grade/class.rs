@@ -59,7 +59,7 @@ pub fn grade_class(
     let mut options = options.clone();
     if options.judge.is_none() {
         super::grading::check_sandbox(&options)?;
-        let chapters = super::grading::chapters_asked(options.chapter);
+        let chapters = super::grading::chapters_asked(manifest, options.chapter);
         eprintln!(
             "building the judge: your project with the grader's wire{} (the first time, a few minutes) …",
             if options.hidden.is_some() {

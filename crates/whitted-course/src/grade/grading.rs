@@ -37,7 +37,7 @@ pub fn grade(
     options: &GradeSetup,
 ) -> Result<Grade, ToolError> {
     let start = Instant::now();
-    let chapters = graded_chapters(submission, options.chapter)?;
+    let chapters = graded_chapters(submission, manifest, options.chapter)?;
     let student = student_of(submission);
     // 1. the graded copy and its sandbox (without its sandbox, nothing is built), and the
     // judge: the class's, or this grading's own
@@ -117,7 +117,11 @@ pub fn grade(
 
 /// The chapters graded: those asked for, or all five; an error when `submission` is no copy
 /// of the handout.
-fn graded_chapters(submission: &Path, chapter: Option<Chapters>) -> Result<Vec<u8>, ToolError> {
+fn graded_chapters(
+    submission: &Path,
+    manifest: &Manifest,
+    chapter: Option<Chapters>,
+) -> Result<Vec<u8>, ToolError> {
     if !submission.join(layout::core_src()).is_dir() {
         return Err(ToolError::Usage(format!(
             "{} is not a copy of the handout: it has no {}/ directory",
@@ -125,12 +129,17 @@ fn graded_chapters(submission: &Path, chapter: Option<Chapters>) -> Result<Vec<u
             layout::core_src().display()
         )));
     }
-    Ok(chapters_asked(chapter))
+    Ok(chapters_asked(manifest, chapter))
 }
 
-/// The chapters `--chapter` asks for: those named (checked when read), or all five.
-pub(super) fn chapters_asked(chapter: Option<Chapters>) -> Vec<u8> {
-    Chapters::or_all(chapter)
+/// The chapters `--chapter` asks for: those named (checked when read), or every chapter that
+/// holds an exercise of `manifest` (all five, unless it is a handout's with a list of its own).
+pub(super) fn chapters_asked(manifest: &Manifest, chapter: Option<Chapters>) -> Vec<u8> {
+    let mut chapters = Chapters::or_all(chapter);
+    if chapter.is_none() {
+        chapters.retain(|&c| manifest.entries.iter().any(|e| e.chapter == c));
+    }
+    chapters
 }
 
 /// The judge of a grading of `chapters` (their test targets, and the hidden tests `options`

@@ -214,3 +214,32 @@ pub fn handout_manifest(
     }
     Ok(out)
 }
+
+/// The exercises the handout at `dir` gives its students to write: its manifest's `[handout]
+/// exercises` list. A handout without the list (one of every exercise) is an error that says
+/// so: grading it needs no list.
+pub fn listed_in(dir: &Path) -> Result<Vec<String>, ToolError> {
+    let path = dir.join(crate::manifest::DEFAULT_PATH);
+    let text = std::fs::read_to_string(&path).map_err(|e| ToolError::io(&path, e))?;
+    let read = crate::manifest::parse(&text, &path.display().to_string())?;
+    read.handout.exercises.ok_or_else(|| {
+        ToolError::Usage(format!(
+            "--handout {}: its manifest lists no exercises of its own (a handout of every exercise), so the grading needs no --handout",
+            dir.display()
+        ))
+    })
+}
+
+/// The manifest of the project at `root` with the list `exercises` of a handout's own
+/// (`[handout] exercises`), as its text and as read: what a grading of that handout counts,
+/// and what a package of it carries.
+pub fn listed_manifest(root: &Path, exercises: &[String]) -> Result<(String, Manifest), ToolError> {
+    let path = root.join(crate::manifest::DEFAULT_PATH);
+    let text = std::fs::read_to_string(&path).map_err(|e| ToolError::io(&path, e))?;
+    let file = crate::manifest::DEFAULT_PATH;
+    let full = crate::manifest::parse(&text, file)?;
+    let names: Vec<&str> = exercises.iter().map(String::as_str).collect();
+    let listed = handout_manifest(&text, file, &full.handout.tests, &names)?;
+    let read = crate::manifest::parse(&listed, file)?;
+    Ok((listed, read))
+}
