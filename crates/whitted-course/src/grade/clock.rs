@@ -245,10 +245,7 @@ fn run_once(program: &OsString, args: &[OsString], cpu: Duration) -> Result<Run,
 fn end_as(status: ExitStatus) -> ExitCode {
     use std::os::unix::process::ExitStatusExt;
     if let Some(signal) = status.signal() {
-        let _ = Command::new("kill")
-            .args(["-s", &signal.to_string(), &std::process::id().to_string()])
-            .status();
-        std::thread::sleep(Duration::from_millis(200));
+        super::runner::die_by(signal);
     }
     ExitCode::from(u8::try_from(status.code().unwrap_or(1)).unwrap_or(1))
 }

@@ -280,7 +280,7 @@ fn signal_of(status: std::process::ExitStatus) -> Option<i32> {
 
 /// Ends this process by `signal`, as the sandboxed process ended, so that whoever waits for
 /// it sees a crash (when the signal does not end it, the caller goes on).
-fn die_by(signal: i32) {
+pub(super) fn die_by(signal: i32) {
     let signal = signal.to_string();
     let _ = Command::new("kill")
         .args([OsStr::new("-s"), OsStr::new(&signal)])
