@@ -90,6 +90,9 @@ pub fn table(grade: &Grade, manifest: &Manifest) -> String {
             if let Some(note) = &e.note {
                 out += &format!("      note: {note}\n");
             }
+            if let Some(known) = &e.known {
+                out += &format!("      a known mistake: this looks like {known}\n");
+            }
             if let Some((Some(at), lines)) = told.and_then(|x| x.first_wrong.as_ref())
                 && *at == e.entry
             {

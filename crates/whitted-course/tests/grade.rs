@@ -271,6 +271,7 @@ fn the_reports_say_how_it_was_judged_and_what_the_whole_road_draws() {
         exercise: None,
         status,
         message: String::new(),
+        values: String::new(),
     };
     g.tests
         .push(whole("render_paths", "ch1_road", Status::Failed));
@@ -693,4 +694,94 @@ fn the_screen_knows_every_function_of_the_project_that_reaches_files_or_exits() 
             }
         }
     }
+}
+
+/// The grader names the known mistake an exercise looks like from its tests' values, as `cargo
+/// learn` does at the save: a judge's report in which the tests of exercise 3.4 fail with the
+/// values r's wrong sign makes them compute (`chapters/mistakes.json`) names that mistake in
+/// the table, in Gradescope's output (the exercise's and each failing test's) and in the
+/// student's JUnit; the same tests failing with other values name nothing.
+#[test]
+fn a_known_mistake_is_named_in_every_report_from_the_tests_values() {
+    let m = manifest();
+    let mistakes = whitted_learn::trees::load_mistakes(&root());
+    let mistake = mistakes
+        .iter()
+        .find(|k| !k.tests.is_empty() && k.chapter == 3)
+        .expect("a known mistake of chapter 3 with its tests' values");
+    let i = m.by_name(&mistake.exercise).unwrap();
+    let junit_of = |values: &dyn Fn(&str) -> String| {
+        let cases: String = mistake
+            .tests
+            .iter()
+            .map(|(name, recorded)| {
+                format!(
+                    "    <testcase name=\"{name}\" classname=\"whitted::ch03_shading\" time=\"0.2\">\n      <failure type=\"test failure\" message=\"test failed\">test failed</failure>\n      <system-err>thread '{name}' panicked at crates/whitted/tests/ch03_shading.rs:40:5:\n{}\nnote: run with `RUST_BACKTRACE=1` environment variable to display a backtrace\n</system-err>\n    </testcase>\n",
+                    values(recorded)
+                        .replace('&', "&amp;")
+                        .replace('<', "&lt;")
+                        .replace('>', "&gt;")
+                )
+            })
+            .collect();
+        format!(
+            "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<testsuites name=\"nextest-run\">\n  <testsuite name=\"whitted::ch03_shading\">\n{cases}  </testsuite>\n</testsuites>\n"
+        )
+    };
+    let graded = |junit: &str| {
+        let tests = grade::parse_junit(junit, &m, &[]).unwrap();
+        let mut exercises = grade::scores(&m, &[3], &tests, &Default::default());
+        grade::recognise_known(&m, &mut exercises, &tests, &mistakes);
+        Grade {
+            student: "ada".into(),
+            chapters: vec![3],
+            exercises,
+            tests,
+            notes: vec![],
+            elapsed: Duration::from_secs(1),
+            timings: Default::default(),
+            render: None,
+            feedback: Vec::new(),
+            judging: grade::Judging::Alone,
+        }
+    };
+    let g = graded(&junit_of(&|recorded| recorded.to_string()));
+    let e = g.exercises.iter().find(|e| e.entry == i).unwrap();
+    assert_eq!(
+        e.known.as_deref(),
+        Some(mistake.looks_like.as_str()),
+        "the known mistake of {} from its tests' values",
+        mistake.exercise
+    );
+    let line = format!("a known mistake: this looks like {}", mistake.looks_like);
+    let table = report::table(&g, &m);
+    assert!(table.contains(&line), "the table:\n{table}");
+    let results = report::gradescope(&g, &m);
+    assert!(
+        results["output"].as_str().unwrap().contains(&line),
+        "Gradescope's output: {}",
+        results["output"]
+    );
+    for t in results["tests"].as_array().unwrap() {
+        assert!(
+            t["output"].as_str().unwrap().contains(&line),
+            "Gradescope's failing test: {t}"
+        );
+    }
+    let audience = whitted_course::autograder::codegrade::Audience::Student;
+    let report_of = whitted_course::autograder::Report::new(
+        &g,
+        &m,
+        &whitted_course::autograder::Settings::default(),
+    );
+    let junit = whitted_course::autograder::codegrade::junit(&report_of, &[3], audience);
+    assert!(
+        junit.contains(&line.replace('\'', "&apos;")),
+        "the student's JUnit:\n{junit}"
+    );
+    // other values: the same tests fail, but not as that mistake makes them
+    let other = graded(&junit_of(&|recorded| recorded.replace('0', "7")));
+    let e = other.exercises.iter().find(|e| e.entry == i).unwrap();
+    assert_eq!(e.known, None, "named from values the mistake does not make");
+    assert!(!report::table(&other, &m).contains("a known mistake"));
 }

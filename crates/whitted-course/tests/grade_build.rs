@@ -1091,6 +1091,32 @@ fn a_class_is_graded_as_each_submission_deserves() {
         }
         assert_blames_only_its_own(g, &m);
     }
+    // each known mistake is named in the grade from its tests' values, as `cargo learn` names
+    // it at the save (chapters/mistakes.json)
+    let recorded = whitted_learn::trees::load_mistakes(&root());
+    let mut named = 0;
+    for k in recorded.iter().filter(|k| !k.tests.is_empty()) {
+        let g = find(&entries, &format!("mutant-{}", k.name));
+        let i = index(&m, &k.exercise);
+        let e = g.exercises.iter().find(|e| e.entry == i).unwrap();
+        assert_eq!(
+            e.known.as_deref(),
+            Some(k.looks_like.as_str()),
+            "mutant {}: the known mistake its tests' values tell; its failing tests: {:?}",
+            k.name,
+            g.tests
+                .iter()
+                .filter(|t| t.exercise == Some(i) && t.status != Status::Passed)
+                .map(|t| (&t.name, &t.values))
+                .collect::<Vec<_>>()
+        );
+        named += 1;
+    }
+    eprintln!("known mistakes named in the grade from their tests' values: {named}");
+    assert!(
+        named >= 10,
+        "only {named} known mistakes have their tests' values"
+    );
     // and its report says, as learn does, where the ray trees first go wrong and which
     // exercise computed it, for each mistake whose trees differ (chapters/mistakes.json)
     let known: serde_json::Value = json(&root().join("chapters/mistakes.json"));

@@ -89,11 +89,11 @@ pub fn junit(report: &Report, chapters: &[u8], audience: Audience) -> String {
             let (message, text) = if secret {
                 (t.status.word().to_string(), t.status.word().to_string())
             } else {
-                let wrong = if t.first_wrong.is_empty() {
-                    String::new()
-                } else {
-                    format!("\n{}", t.first_wrong)
-                };
+                let wrong: String = [&t.first_wrong, &t.known]
+                    .iter()
+                    .filter(|s| !s.is_empty())
+                    .map(|s| format!("\n{s}"))
+                    .collect();
                 (
                     t.message.clone(),
                     format!("{}{wrong}\n— formula: {}", t.message, t.formula),

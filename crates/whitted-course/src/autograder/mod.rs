@@ -105,6 +105,9 @@ pub struct TestLine {
     /// For a failed public test of the exercise a chapter's ray trees point at, the first
     /// wrong number (learn's lines); empty otherwise.
     pub first_wrong: String,
+    /// For a failed public test of an exercise that looks like a known mistake, the line that
+    /// names it (`a known mistake: this looks like …`); empty otherwise.
+    pub known: String,
     /// Whether it is one of the instructor's hidden tests.
     pub hidden: bool,
     /// The chapter it counts for (0 when its name says no exercise).
@@ -211,6 +214,14 @@ impl Report {
                 _ => None,
             })
         };
+        // the known mistake each exercise looks like, told by its tests' values
+        let known_of = |entry: usize| {
+            grade
+                .exercises
+                .iter()
+                .find(|e| e.entry == entry)
+                .and_then(|e| e.known.as_deref())
+        };
         let mut hidden_seen: std::collections::BTreeMap<usize, usize> = Default::default();
         let mut seen: std::collections::BTreeMap<usize, usize> = Default::default();
         let mut tests = Vec::new();
@@ -258,6 +269,17 @@ impl Report {
             } else {
                 format!("{output}\n{wrong}")
             };
+            let known = match t.exercise.and_then(&known_of) {
+                Some(k) if !t.hidden && t.status != Status::Passed => {
+                    format!("a known mistake: this looks like {k}")
+                }
+                _ => String::new(),
+            };
+            let output = if known.is_empty() {
+                output
+            } else {
+                format!("{output}\n{known}")
+            };
             let mut tags = Vec::new();
             if let Some(e) = entry {
                 tags.push(format!("chapter {}", e.chapter));
@@ -275,6 +297,7 @@ impl Report {
                 output,
                 message: t.message.clone(),
                 first_wrong: wrong,
+                known,
                 hidden: t.hidden,
                 chapter: entry.map_or(0, |e| e.chapter),
                 time: t.time,
@@ -313,6 +336,12 @@ impl Report {
             if let Some(note) = &e.note {
                 output += &format!(
                     "exercise {}: {note}\n",
+                    manifest.entries[e.entry].exercise.id
+                );
+            }
+            if let Some(known) = &e.known {
+                output += &format!(
+                    "exercise {}: a known mistake: this looks like {known}\n",
                     manifest.entries[e.entry].exercise.id
                 );
             }

@@ -90,7 +90,10 @@ pub fn grade(
     } else {
         Vec::new()
     };
-    let exercises = scores(manifest, &chapters, &tests, &notes);
+    let mut exercises = scores(manifest, &chapters, &tests, &notes);
+    // the known mistakes, told by the tests' values as `cargo learn` tells them
+    let mistakes = whitted_learn::trees::load_mistakes(root);
+    super::score::recognise_known(manifest, &mut exercises, &tests, &mistakes);
     // 5. the pictures: the leaderboard's, and what learn would show of each chapter that
     // lost points
     let render = (options.render && builds).then(|| g.leaderboard(&chapters, options));

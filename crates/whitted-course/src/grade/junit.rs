@@ -34,6 +34,7 @@ pub fn parse_junit(
         let failure = case
             .children()
             .find(|n| n.has_tag_name("failure") || n.has_tag_name("error"));
+        let mut values = String::new();
         let (status, message) = match failure {
             None => (Status::Passed, String::new()),
             Some(f) => {
@@ -76,7 +77,10 @@ pub fn parse_junit(
                                 what.split(": the test fails").next().unwrap_or(what).trim()
                             ),
                         ),
-                        (None, None) => (Status::Failed, panic_message(&all)),
+                        (None, None) => {
+                            values = self::values(&all);
+                            (Status::Failed, panic_message(&all))
+                        }
                     }
                 }
             }
@@ -94,6 +98,7 @@ pub fn parse_junit(
             exercise,
             status,
             message: super::clean::clean(&message),
+            values,
         });
     }
     out.sort_by(|a, b| (&a.target, &a.name).cmp(&(&b.target, &b.name)));
@@ -109,14 +114,42 @@ const JUDGE_MARK: &str = "whitted judge: ";
 /// How the judge's line begins when the student's process died by a signal: the test crashed.
 const SERVER_DIED: &str = "whitted judge: the student's process died ";
 
+/// The lines of the first panic's message in a test's output: after its `panicked at …:`
+/// line, up to the backtrace's note (or libtest's list of failures), blank ones left out;
+/// `None` when nothing panicked.
+fn panic_lines(output: &str) -> Option<Vec<&str>> {
+    let mut lines = output.lines();
+    lines.by_ref().find(|l| l.contains("panicked at"))?;
+    Some(
+        lines
+            .take_while(|l| {
+                !l.starts_with("note:") && !l.starts_with("stack backtrace") && *l != "failures:"
+            })
+            .filter(|l| !l.trim().is_empty())
+            .collect(),
+    )
+}
+
+/// A failed test's message as a known mistake's values are recorded (`chapters/mistakes.json`,
+/// [`whitted_learn::known::values_of`]): every line of its panic's message, each without its
+/// trailing spaces, joined by `\n`; empty when nothing panicked.
+#[must_use]
+pub fn values(output: &str) -> String {
+    panic_lines(output)
+        .unwrap_or_default()
+        .iter()
+        .map(|l| l.trim_end())
+        .collect::<Vec<_>>()
+        .join("\n")
+}
+
 /// The message of a panic in a test's output: the lines after `panicked at …:`, up to the
 /// backtrace note (or libtest's list of failures), at most three, at most [`MESSAGE_CHARS`]
 /// characters; else the runner's or the judge's own line ([`super::runner::RUNNER_MARK`],
 /// `whitted judge:`), else the first line.
 #[must_use]
 pub fn panic_message(output: &str) -> String {
-    let mut lines = output.lines();
-    if !lines.by_ref().any(|l| l.contains("panicked at")) {
+    let Some(lines) = panic_lines(output) else {
         let first = output
             .lines()
             .find(|l| l.starts_with(super::runner::RUNNER_MARK) || l.starts_with(JUDGE_MARK))
@@ -124,15 +157,13 @@ pub fn panic_message(output: &str) -> String {
             .unwrap_or("failed")
             .trim();
         return first.chars().take(MESSAGE_CHARS).collect();
-    }
-    let message: Vec<&str> = lines
-        .take_while(|l| {
-            !l.starts_with("note:") && !l.starts_with("stack backtrace") && *l != "failures:"
-        })
-        .filter(|l| !l.trim().is_empty())
+    };
+    let mut text = lines
+        .iter()
         .take(3)
-        .collect();
-    let mut text = message.join(" / ");
+        .copied()
+        .collect::<Vec<_>>()
+        .join(" / ");
     // a report quotes a message, not a test's whole output
     if let Some((cut, _)) = text.char_indices().nth(MESSAGE_CHARS) {
         text.truncate(cut);

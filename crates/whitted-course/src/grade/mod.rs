@@ -95,7 +95,7 @@ pub use junit::{MESSAGE_CHARS, panic_message, parse_junit};
 pub use nextest::NEXTEST_PROFILE;
 pub use outcome::{ExerciseScore, Grade, Road, Timings};
 pub use render::{ChapterFeedback, PICTURE_BYTES, RenderScore};
-pub use score::{chapter_targets, scores};
+pub use score::{chapter_targets, recognise_known, scores};
 pub use screen::screen;
 pub use setup::{Chapters, DEFAULT_TIMEOUT, GradeSetup, SandboxSetup};
 pub(crate) use splice::hidden_files;

@@ -24,6 +24,9 @@ pub struct ExerciseScore {
     pub total: usize,
     /// What the grader noticed: the body did not compile, its markers were missing …
     pub note: Option<String>,
+    /// The known mistake (`chapters/mistakes.json`) its failing tests say it looks like, in
+    /// words ([`super::score::recognise_known`]).
+    pub known: Option<String>,
 }
 
 /// A graded submission.

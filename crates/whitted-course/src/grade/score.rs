@@ -43,9 +43,35 @@ pub fn scores(
                 passed,
                 total: own.len(),
                 note,
+                known: None,
             }
         })
         .collect()
+}
+
+/// Names the known mistake each exercise of `exercises` that lost points looks like, as
+/// `cargo learn` names it at the save ([`whitted_learn::known::recognise`]): its failing public
+/// tests are exactly those one of `mistakes` (the project's `chapters/mistakes.json`) makes
+/// fail, each with the same values.
+pub fn recognise_known(
+    manifest: &Manifest,
+    exercises: &mut [ExerciseScore],
+    tests: &[TestResult],
+    mistakes: &[whitted_learn::trees::Mistake],
+) {
+    for e in exercises.iter_mut().filter(|e| e.score < e.max) {
+        let failing: BTreeMap<String, String> = tests
+            .iter()
+            .filter(|t| t.exercise == Some(e.entry) && !t.hidden && t.status == Status::Failed)
+            .map(|t| {
+                let name = t.name.rsplit("::").next().unwrap_or(&t.name);
+                (name.to_string(), t.values.clone())
+            })
+            .collect();
+        let name = &manifest.entries[e.entry].exercise.name;
+        e.known =
+            whitted_learn::known::recognise(mistakes, name, &failing).map(|m| m.looks_like.clone());
+    }
 }
 
 /// The test targets of the graded chapters that the manifest's handout lists.

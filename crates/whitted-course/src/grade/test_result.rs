@@ -46,4 +46,7 @@ pub struct TestResult {
     pub message: String,
     /// How long it ran, in seconds.
     pub time: f64,
+    /// What it printed when it failed, as `cargo learn` compares it with a known mistake's
+    /// ([`whitted_learn::known::values_of`]); empty otherwise.
+    pub values: String,
 }
